@@ -1,0 +1,27 @@
+#include "mlndt/common/types.h"
+
+#include "mlndt/common/enum_strings.h"
+
+namespace mlndt {
+
+const char* TerminationTypeToString(TerminationType type) {
+  switch (type) {
+    case TerminationType::CONVERGENCE:
+      return "CONVERGENCE";
+    case TerminationType::NO_CONVERGENCE:
+      return "NO_CONVERGENCE";
+    case TerminationType::FAILURE:
+      return "FAILURE";
+  }
+  return "UNKNOWN";
+}
+
+bool StringToTerminationType(std::string value, TerminationType* result) {
+  UpperCase(&value);
+  MLNDT_STRING_TO_ENUM(CONVERGENCE, TerminationType);
+  MLNDT_STRING_TO_ENUM(NO_CONVERGENCE, TerminationType);
+  MLNDT_STRING_TO_ENUM(FAILURE, TerminationType);
+  return false;
+}
+
+}  // namespace mlndt

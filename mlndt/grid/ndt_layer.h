@@ -1,0 +1,75 @@
+#pragma once
+
+// One layer of the layered NDT map: a regular grid of cubic cells of edge
+// `cell_size` [m] over the reference scan's bounding box, keeping the cells
+// that hold enough points (ML-NDT Section 4, Table 1, "generative process").
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mlndt/grid/cell_index.h"
+#include "mlndt/grid/ndt_cell.h"
+
+namespace mlndt {
+
+class NdtLayer {
+ public:
+  NdtLayer() = default;
+  // `keys[i]` is the linear key of `cells[i]`; keys are unique and in range.
+  NdtLayer(const Eigen::Vector3d& origin,
+           double cell_size,
+           const Eigen::Vector3i& dims,
+           std::vector<NdtCell> cells,
+           std::vector<int64_t> keys);
+
+  const Eigen::Vector3d& origin() const { return origin_; }  // Min corner [m].
+  double cell_size() const { return cell_size_; }            // Cell edge [m].
+  const Eigen::Vector3i& dims() const { return dims_; }      // Cells per axis.
+  int64_t num_grid_cells() const {
+    return int64_t{dims_.x()} * dims_.y() * dims_.z();
+  }
+  const std::vector<NdtCell>& cells() const { return cells_; }  // Occupied.
+  const std::vector<int64_t>& keys() const { return keys_; }
+
+  // Integer cell coordinates of `point` (may lie outside the grid).
+  Eigen::Vector3i CellCoordinates(const Eigen::Vector3d& point) const {
+    const Eigen::Vector3d scaled = (point - origin_) * inverse_cell_size_;
+    // Clamp before the cast so that far-away or non-finite points stay
+    // outside the grid instead of overflowing.
+    const Eigen::Vector3d clamped = scaled.array().floor().max(-1.0).min(
+        dims_.cast<double>().array());
+    return clamped.allFinite() ? clamped.cast<int>() : Eigen::Vector3i(-1, -1, -1);
+  }
+
+  // The occupied cell at integer coordinates `ijk`, or nullptr.
+  const NdtCell* CellAt(const Eigen::Vector3i& ijk) const {
+    if ((ijk.array() < 0).any() || (ijk.array() >= dims_.array()).any()) {
+      return nullptr;
+    }
+    const int32_t slot = index_.Find(LinearKey(ijk));
+    return slot < 0 ? nullptr : &cells_[static_cast<size_t>(slot)];
+  }
+
+  // O(1) lookup of the occupied cell containing `point`, or nullptr.
+  const NdtCell* Lookup(const Eigen::Vector3d& point) const {
+    return CellAt(CellCoordinates(point));
+  }
+
+  int64_t LinearKey(const Eigen::Vector3i& ijk) const {
+    return ijk.x() + int64_t{dims_.x()} * (ijk.y() + int64_t{dims_.y()} * ijk.z());
+  }
+
+ private:
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  double cell_size_ = 0.0;
+  double inverse_cell_size_ = 0.0;
+  Eigen::Vector3i dims_ = Eigen::Vector3i::Zero();
+  std::vector<NdtCell> cells_;
+  std::vector<int64_t> keys_;
+  CellIndex index_;
+};
+
+}  // namespace mlndt
