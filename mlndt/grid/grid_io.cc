@@ -66,7 +66,8 @@ bool SaveLayeredGrid(const std::string& path, const LayeredGrid& grid, std::stri
   w.Put(int32_t{o.division_constant});
   w.Put(int32_t{grid.num_layers()});
   w.Put(int32_t{o.min_points_per_cell});
-  w.Put(o.min_eigenvalue_ratio);
+  w.Put(o.regularization.min_eigenvalue_ratio);
+  w.Put(o.regularization.min_eigenvalue_m2);
   for (int a = 0; a < 3; ++a) w.Put(grid.bounds().min()(a));
   for (int a = 0; a < 3; ++a) w.Put(grid.bounds().max()(a));
   w.Put(uint64_t{grid.num_points()});
@@ -133,10 +134,12 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
   }
   LayeredGridOptions options;
   int32_t q = 0, n = 0, min_points = 0;
-  double ratio = 0;
+  CellRegularization& regularization = options.regularization;
   Eigen::Vector3d lo, hi;
   uint64_t num_points = 0;
-  bool ok = r.Get(&q) && r.Get(&n) && r.Get(&min_points) && r.Get(&ratio);
+  bool ok = r.Get(&q) && r.Get(&n) && r.Get(&min_points) &&
+            r.Get(&regularization.min_eigenvalue_ratio) &&
+            r.Get(&regularization.min_eigenvalue_m2) ;
   for (int a = 0; a < 3; ++a) ok = ok && r.Get(&lo(a));
   for (int a = 0; a < 3; ++a) ok = ok && r.Get(&hi(a));
   ok = ok && r.Get(&num_points);
@@ -144,7 +147,6 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
   options.num_layers = n;
   options.max_num_layers = 16;
   options.min_points_per_cell = min_points;
-  options.min_eigenvalue_ratio = ratio;
   std::string option_error;
   if (!ok || !options.IsValid(&option_error)) {
     return Fail(path, "bad map header " + option_error, error);
@@ -187,7 +189,7 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
       NdtCell cell;
       if (!ok || key < 0 || key >= grid_cells ||
           seen.FindOrInsert(key, static_cast<int32_t>(c)) != static_cast<int32_t>(c) ||
-          !MakeNdtCell(count, mean, covariance, ratio, &cell)) {
+          !MakeNdtCell(count, mean, covariance, regularization, &cell)) {
         return Fail(path, "bad cell " + std::to_string(c) + " in layer " + std::to_string(i), error);
       }
       cells.push_back(cell);

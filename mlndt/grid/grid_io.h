@@ -4,7 +4,7 @@
 // argument: a map is a few thousand cells, far smaller than the scan).
 //
 // Layout, little-endian:
-//   "MLNDTMAP" | uint32 version (1) | options (q, n, min points, eigen ratio)
+//   "MLNDTMAP" | uint32 version (1) | options (q, n, min points, eigen ratio, eigen floor)
 //   | bounds (6 doubles) | uint64 points | per layer: origin (3 doubles),
 //   cell size (double), dims (3 int32), uint64 cells, then per cell: int64 key,
 //   int32 count, mean (3 doubles), upper covariance (6 doubles)

@@ -119,7 +119,7 @@ NdtLayer FinishLayer(const RawLayer& raw,
     if (!MakeNdtCell(static_cast<int32_t>(m.count),
                      mean + centre,
                      covariance,
-                     options.min_eigenvalue_ratio,
+                     options.regularization,
                      &cell)) {
       ++info->degenerate_cells;
       continue;
@@ -160,8 +160,9 @@ bool LayeredGridOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_LE(num_layers, max_num_layers);
   MLNDT_OPTION_GE(finest_cell_size_m, 0.0);
   MLNDT_OPTION_GE(min_points_per_cell, 4);
-  MLNDT_OPTION_GT(min_eigenvalue_ratio, 0.0);
-  MLNDT_OPTION_LE(min_eigenvalue_ratio, 1.0);
+  MLNDT_OPTION_GT(regularization.min_eigenvalue_ratio, 0.0);
+  MLNDT_OPTION_LE(regularization.min_eigenvalue_ratio, 1.0);
+  MLNDT_OPTION_GE(regularization.min_eigenvalue_m2, 0.0);
   return true;
 }
 

@@ -42,9 +42,9 @@ struct LayeredGridOptions {
   // A cell keeps a distribution when it holds at least this many points.
   // >= 4 (3 points always give a singular covariance).
   int min_points_per_cell = 5;
-  // Eigenvalues of a cell covariance below this fraction of the largest one
-  // are raised to it (Section 4.1: 1/100). In (0, 1].
-  double min_eigenvalue_ratio = 0.01;
+  // Covariance regularisation (ndt_cell.h). min_eigenvalue_ratio in (0, 1],
+  // min_eigenvalue_m2 >= 0.
+  CellRegularization regularization;
 
   bool IsValid(std::string* error) const;
 };

@@ -1,5 +1,7 @@
 #include "mlndt/grid/ndt_cell.h"
 
+#include <algorithm>
+
 #include <Eigen/Eigenvalues>
 
 namespace mlndt {
@@ -7,7 +9,7 @@ namespace mlndt {
 bool MakeNdtCell(int32_t count,
                  const Eigen::Vector3d& mean,
                  const Eigen::Matrix3d& covariance,
-                 double min_eigenvalue_ratio,
+                 const CellRegularization& regularization,
                  NdtCell* cell) {
   if (!mean.allFinite() || !covariance.allFinite()) return false;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
@@ -16,8 +18,9 @@ bool MakeNdtCell(int32_t count,
   Eigen::Vector3d eigenvalues = solver.eigenvalues();
   const double largest = eigenvalues(2);
   if (!(largest > 0.0)) return false;
-  // Section 4.1: l_j = max(l_j, l3 / 100).
-  const double floor_value = largest * min_eigenvalue_ratio;
+  // Section 4.1: l_j = max(l_j, l3 / 100), and the absolute floor.
+  const double floor_value = std::max(largest * regularization.min_eigenvalue_ratio,
+                                     regularization.min_eigenvalue_m2);
   eigenvalues = eigenvalues.cwiseMax(floor_value);
   if (!(eigenvalues(0) > 0.0)) return false;
   const Eigen::Matrix3d& V = solver.eigenvectors();

@@ -6,7 +6,10 @@
 // N points in the cell. Section 4.1 (after Magnusson) regularises a nearly
 // singular covariance: with eigenvalues l1 <= l2 <= l3, every eigenvalue below
 // l3 / 100 is raised to l3 / 100 and C is rebuilt as V diag(l) V^T. The ratio
-// is an option (`min_eigenvalue_ratio`, 0.01 in the paper).
+// is an option (`min_eigenvalue_ratio`, 0.01 in the paper). We add an
+// absolute floor (`min_eigenvalue_m2`, sensor noise): without it a cell whose
+// few points nearly coincide (one laser ring crossing a corner) gets an
+// information matrix of 1e8 and more, and dominates the whole score.
 //
 // The score of a point x in the cell is e^T C^-1 e with e = x - mu (Eq. 10).
 // We also keep the whitening matrix W = diag(l)^(-1/2) V^T, for which
@@ -27,6 +30,14 @@ struct NdtCell {
   Eigen::Matrix3d whitening = Eigen::Matrix3d::Zero();     // W, W^T W = C^-1 [1/m].
 };
 
+// How a cell covariance is regularised (eigenvalues l1 <= l2 <= l3).
+struct CellRegularization {
+  // Section 4.1: l1, l2 >= ratio * l3 (the paper: 1/100).
+  double min_eigenvalue_ratio = 0.01;
+  // Absolute floor on every eigenvalue [m^2] (sensor noise).
+  double min_eigenvalue_m2 = 1e-3;
+};
+
 // Fills `cell` from a mean and an unbiased covariance (Eq. 3), regularising
 // the eigenvalues as described above. Returns false (and leaves `cell`
 // untouched) when the covariance is not finite or has no positive eigenvalue,
@@ -34,7 +45,7 @@ struct NdtCell {
 bool MakeNdtCell(int32_t count,
                  const Eigen::Vector3d& mean,
                  const Eigen::Matrix3d& covariance,
-                 double min_eigenvalue_ratio,
+                 const CellRegularization& regularization,
                  NdtCell* cell);
 
 }  // namespace mlndt

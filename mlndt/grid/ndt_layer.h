@@ -37,11 +37,12 @@ class NdtLayer {
   // Integer cell coordinates of `point` (may lie outside the grid).
   Eigen::Vector3i CellCoordinates(const Eigen::Vector3d& point) const {
     const Eigen::Vector3d scaled = (point - origin_) * inverse_cell_size_;
-    // Clamp before the cast so that far-away or non-finite points stay
-    // outside the grid instead of overflowing.
-    const Eigen::Vector3d clamped = scaled.array().floor().max(-1.0).min(
-        dims_.cast<double>().array());
-    return clamped.allFinite() ? clamped.cast<int>() : Eigen::Vector3i(-1, -1, -1);
+    // Clamp before the cast so that far-away points stay outside the grid
+    // instead of overflowing, two cells out so that not even their
+    // neighbours are inside. Non-finite points go far outside.
+    const Eigen::Vector3d clamped = scaled.array().floor().max(-2.0).min(
+        dims_.cast<double>().array() + 1.0);
+    return clamped.allFinite() ? clamped.cast<int>() : Eigen::Vector3i(-2, -2, -2);
   }
 
   // The occupied cell at integer coordinates `ijk`, or nullptr.

@@ -181,7 +181,7 @@ TEST(LayeredGrid, InvalidOptionsNameTheField) {
   EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
   EXPECT_NE(error.find("division_constant"), std::string::npos);
   options = LayeredGridOptions();
-  options.min_eigenvalue_ratio = std::nan("");
+  options.regularization.min_eigenvalue_ratio = std::nan("");
   EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
   EXPECT_NE(error.find("min_eigenvalue_ratio"), std::string::npos);
   options = LayeredGridOptions();

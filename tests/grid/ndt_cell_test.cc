@@ -6,6 +6,13 @@
 namespace mlndt {
 namespace {
 
+// Section 4.1 exactly: the relative floor only.
+CellRegularization Paper() {
+  CellRegularization r;
+  r.min_eigenvalue_m2 = 0.0;
+  return r;
+}
+
 Eigen::Matrix3d NonDiagonalCovariance() {
   Eigen::Matrix3d a;
   a << 2.0, 0.7, -0.3,  //
@@ -16,7 +23,7 @@ Eigen::Matrix3d NonDiagonalCovariance() {
 
 TEST(NdtCell, WhiteningSatisfiesWtWEqualsInverseCovariance) {
   NdtCell cell;
-  ASSERT_TRUE(MakeNdtCell(10, Eigen::Vector3d(1, 2, 3), NonDiagonalCovariance(), 0.01, &cell));
+  ASSERT_TRUE(MakeNdtCell(10, Eigen::Vector3d(1, 2, 3), NonDiagonalCovariance(), Paper(), &cell));
   const Eigen::Matrix3d inverse = NonDiagonalCovariance().inverse();
   EXPECT_TRUE((cell.whitening.transpose() * cell.whitening).isApprox(inverse, 1e-12));
   EXPECT_TRUE(cell.information.isApprox(inverse, 1e-12));
@@ -34,7 +41,7 @@ TEST(NdtCell, RegularisesNearlySingularCovariance) {
   const Eigen::Matrix3d c =
       rotation * Eigen::Vector3d(4.0, 1.0, 1e-6).asDiagonal() * rotation.transpose();
   NdtCell cell;
-  ASSERT_TRUE(MakeNdtCell(10, Eigen::Vector3d::Zero(), c, 0.01, &cell));
+  ASSERT_TRUE(MakeNdtCell(10, Eigen::Vector3d::Zero(), c, Paper(), &cell));
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cell.covariance);
   EXPECT_NEAR(es.eigenvalues()(0), 0.04, 1e-12);
   EXPECT_NEAR(es.eigenvalues()(1), 1.0, 1e-12);
@@ -44,10 +51,10 @@ TEST(NdtCell, RegularisesNearlySingularCovariance) {
 
 TEST(NdtCell, RejectsShapelessCovariance) {
   NdtCell cell;
-  EXPECT_FALSE(MakeNdtCell(5, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero(), 0.01, &cell));
+  EXPECT_FALSE(MakeNdtCell(5, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero(), Paper(), &cell));
   Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
   bad(0, 0) = std::nan("");
-  EXPECT_FALSE(MakeNdtCell(5, Eigen::Vector3d::Zero(), bad, 0.01, &cell));
+  EXPECT_FALSE(MakeNdtCell(5, Eigen::Vector3d::Zero(), bad, Paper(), &cell));
   EXPECT_EQ(cell.count, 0);  // Untouched.
 }
 
