@@ -1,0 +1,51 @@
+#pragma once
+
+// The embedding API: adds ML-NDT residuals of an input scan against one layer
+// of a reference map to a ceres::Problem the caller owns, on the caller's own
+// pose blocks. This is how ML-NDT goes into a bundle-adjustment or pose-graph
+// back end; mlndt::Register is built on it.
+//
+// Ownership: the Problem owns the cost functions (and, under its default
+// options, the loss function). The NdtLayer must outlive the Problem.
+
+#include <vector>
+
+#include <ceres/loss_function.h>
+#include <ceres/problem.h>
+
+#include "mlndt/cost/cell_match.h"
+#include "mlndt/grid/ndt_layer.h"
+
+namespace mlndt {
+
+struct ResidualOptions {
+  // What a point in no occupied cell contributes (cell_match.h).
+  UnmatchedPolicy unmatched_policy = UnmatchedPolicy::ZERO_RESIDUAL;
+  // Applied to every residual block; nullptr = plain squares (the paper).
+  // Shared by all the blocks; the Problem takes ownership unless its options
+  // say otherwise.
+  ceres::LossFunction* loss_function = nullptr;
+};
+
+// One residual block (3 residuals) per input point, on the 6-vector pose
+// block `reference_from_input_xi` = (tx, ty, tz, alpha, beta, gamma) of
+// Eq. (11). Returns the ids of the blocks added.
+std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
+    const NdtLayer& reference_layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const ResidualOptions& options,
+    double* reference_from_input_xi,
+    ceres::Problem* problem);
+
+// The same residuals on a quaternion block (Eigen order x, y, z, w) and a
+// translation block. Sets ceres::EigenQuaternionManifold on the rotation
+// block unless the caller has already given it a manifold.
+std::vector<ceres::ResidualBlockId> AddMlNdtResidualsQuaternion(
+    const NdtLayer& reference_layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const ResidualOptions& options,
+    double* reference_from_input_rotation,
+    double* reference_from_input_translation,
+    ceres::Problem* problem);
+
+}  // namespace mlndt

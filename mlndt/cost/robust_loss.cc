@@ -1,0 +1,65 @@
+#include "mlndt/cost/robust_loss.h"
+
+#include <cmath>
+
+#include "mlndt/common/enum_strings.h"
+
+namespace mlndt {
+
+const char* LossTypeToString(LossType type) {
+  switch (type) {
+    case LossType::NONE:
+      return "NONE";
+    case LossType::HUBER:
+      return "HUBER";
+    case LossType::CAUCHY:
+      return "CAUCHY";
+  }
+  return "UNKNOWN";
+}
+
+bool StringToLossType(std::string value, LossType* result) {
+  UpperCase(&value);
+  MLNDT_STRING_TO_ENUM(NONE, LossType);
+  MLNDT_STRING_TO_ENUM(HUBER, LossType);
+  MLNDT_STRING_TO_ENUM(CAUCHY, LossType);
+  return false;
+}
+
+ceres::LossFunction* CreateLoss(LossType type, double scale) {
+  switch (type) {
+    case LossType::NONE:
+      return nullptr;
+    case LossType::HUBER:
+      return new ceres::HuberLoss(scale);
+    case LossType::CAUCHY:
+      return new ceres::CauchyLoss(scale);
+  }
+  return nullptr;
+}
+
+void EvaluateLoss(LossType type, double scale, double s, double* rho, double* rho_prime) {
+  const double b = scale * scale;
+  switch (type) {
+    case LossType::NONE:
+      *rho = s;
+      *rho_prime = 1.0;
+      return;
+    case LossType::HUBER:  // Same as ceres::HuberLoss.
+      if (s > b) {
+        const double r = std::sqrt(s);
+        *rho = 2.0 * scale * r - b;
+        *rho_prime = scale / r;
+      } else {
+        *rho = s;
+        *rho_prime = 1.0;
+      }
+      return;
+    case LossType::CAUCHY:  // Same as ceres::CauchyLoss.
+      *rho = b * std::log1p(s / b);
+      *rho_prime = 1.0 / (1.0 + s / b);
+      return;
+  }
+}
+
+}  // namespace mlndt

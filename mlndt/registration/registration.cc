@@ -1,0 +1,216 @@
+#include "mlndt/registration/registration.h"
+
+#include <chrono>
+#include <iomanip>
+#include <memory>
+#include <sstream>
+
+#include <glog/logging.h>
+
+#include "mlndt/common/check_option.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/cost/score.h"
+
+namespace mlndt {
+namespace {
+
+double NowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+void Fail(const std::string& message, RegistrationSummary* summary) {
+  summary->termination_type = TerminationType::FAILURE;
+  summary->message = message;
+  LOG(ERROR) << "mlndt::Register: " << message;
+}
+
+std::unique_ptr<Backend> CreateBackend(const RegistrationOptions& options, std::string* error) {
+  switch (options.backend) {
+    case BackendType::CERES:
+      return std::make_unique<CeresBackend>(options.ceres);
+    case BackendType::NEWTON:
+    case BackendType::LEVENBERG_MARQUARDT:
+      break;
+  }
+  *error = std::string("backend ") + BackendTypeToString(options.backend) + " is not built yet";
+  return nullptr;
+}
+
+// The whole registration after the map exists; times are added to *summary.
+void RegisterOnMap(const RegistrationOptions& options,
+                   const LayeredGrid& reference_map,
+                   const PointCloud& input,
+                   const Isometry3d& initial_reference_from_input,
+                   double start_time_s,
+                   RegistrationSummary* summary) {
+  std::string error;
+  if (!options.IsValid(&error)) return Fail(error, summary);
+  if (reference_map.empty()) return Fail("the reference map is empty", summary);
+  if (input.empty()) return Fail("the input cloud is empty", summary);
+  if (!AllFinite(input)) return Fail("the input cloud has non-finite points", summary);
+  if (!initial_reference_from_input.matrix().allFinite()) {
+    return Fail("the initial guess is not finite", summary);
+  }
+  std::unique_ptr<Backend> backend = CreateBackend(options, &error);
+  if (!backend) return Fail(error, summary);
+
+  // Sampling (Section 4.3).
+  double t0 = NowSeconds();
+  PointCloud sampled;
+  SamplingSummary sampling_summary;
+  if (!SamplePoints(options.sampling, input, &sampled, &sampling_summary, &error)) {
+    return Fail("sampling: " + error, summary);
+  }
+  summary->sampling_time_s = NowSeconds() - t0;
+  summary->input_points = input.size();
+  summary->sampled_points = sampled.size();
+  if (sampled.empty()) return Fail("sampling kept no input points", summary);
+
+  // Registration process (Table 1).
+  const Vector6d initial_xi = IsometryToPoseVector(initial_reference_from_input);
+  Vector6d xi = initial_xi;
+  const int n = reference_map.num_layers();
+  const NdtLayer& last = reference_map.layer(n);
+  summary->initial_reference_from_input_xi = initial_xi;
+  summary->num_layers = n;
+  summary->start_layer = ResolveStartLayer(options.schedule, n);
+  summary->initial_score = EvaluateScore(last, sampled.points(), xi, options.unmatched_policy,
+                                         options.loss, options.loss_scale)
+                               .score;
+  t0 = NowSeconds();
+  StageOptions stage;
+  stage.unmatched_policy = options.unmatched_policy;
+  stage.loss = options.loss;
+  stage.loss_scale = options.loss_scale;
+  stage.start_time_s = start_time_s;
+  ScheduleSummary schedule;
+  RunLayerSchedule(options.schedule, reference_map, sampled.points(), stage, backend.get(), &xi,
+                   &schedule);
+  summary->solve_time_s = NowSeconds() - t0;
+  summary->trace = schedule.trace;
+  summary->iterations_per_layer = schedule.iterations_per_layer;
+  summary->num_iterations = static_cast<int>(schedule.trace.size());
+  if (schedule.termination_type == TerminationType::FAILURE) {
+    return Fail(schedule.message, summary);
+  }
+  if (!xi.allFinite()) return Fail("the solver returned a non-finite pose", summary);
+
+  // Results on the last layer at the solution.
+  const ScoreEvaluation final = EvaluateScore(last, sampled.points(), xi,
+                                              options.unmatched_policy, options.loss,
+                                              options.loss_scale);
+  summary->reference_from_input_xi = xi;
+  summary->reference_from_input = PoseVectorToIsometry(xi);
+  summary->final_score = final.score;
+  summary->matched_points = final.matched;
+  summary->unmatched_points = final.unmatched;
+  summary->hessian = final.hessian;
+  const Eigen::FullPivLU<Matrix6d> lu(final.hessian);
+  summary->covariance = lu.isInvertible() ? Matrix6d(2.0 * lu.inverse()) : Matrix6d::Zero();
+  summary->termination_type = schedule.termination_type;
+  summary->message = schedule.message;
+  const double matched_fraction =
+      static_cast<double>(final.matched) / static_cast<double>(sampled.size());
+  if (matched_fraction < options.min_matched_fraction) {
+    std::ostringstream message;
+    message << "only " << final.matched << " of " << sampled.size()
+            << " sampled points lie in an occupied cell at the solution (min_matched_fraction "
+            << options.min_matched_fraction << ")";
+    Fail(message.str(), summary);
+  }
+}
+
+}  // namespace
+
+LayeredGridOptions DefaultRegistrationGridOptions() {
+  LayeredGridOptions options;
+  options.finest_cell_size_m = 2.0;
+  return options;
+}
+
+LayerScheduleOptions DefaultRegistrationScheduleOptions() {
+  LayerScheduleOptions options;
+  options.start_layer = 1;
+  options.iterations_per_layer = 6;
+  return options;
+}
+
+bool RegistrationOptions::IsValid(std::string* error) const {
+  if (!grid.IsValid(error) || !sampling.IsValid(error) || !schedule.IsValid(error) ||
+      !ceres.IsValid(error)) {
+    return false;
+  }
+  MLNDT_OPTION_GT(loss_scale, 0.0);
+  MLNDT_OPTION_GE(min_matched_fraction, 0.0);
+  MLNDT_OPTION_LE(min_matched_fraction, 1.0);
+  return true;
+}
+
+void Register(const RegistrationOptions& options,
+              const LayeredGrid& reference_map,
+              const PointCloud& input,
+              const Isometry3d& initial_reference_from_input,
+              RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  const double start = NowSeconds();
+  RegisterOnMap(options, reference_map, input, initial_reference_from_input, start, summary);
+  summary->total_time_s = NowSeconds() - start;
+}
+
+void Register(const RegistrationOptions& options,
+              const PointCloud& reference,
+              const PointCloud& input,
+              const Isometry3d& initial_reference_from_input,
+              RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  const double start = NowSeconds();
+  std::string error;
+  LayeredGrid map;
+  if (!options.IsValid(&error)) {
+    Fail(error, summary);
+  } else if (!LayeredGrid::Build(options.grid, reference, &map, &error)) {
+    Fail("reference map: " + error, summary);
+  } else {
+    summary->map_time_s = NowSeconds() - start;
+    RegisterOnMap(options, map, input, initial_reference_from_input, start, summary);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
+std::string RegistrationSummary::BriefReport() const {
+  std::ostringstream out;
+  out << "ML-NDT registration: " << TerminationTypeToString(termination_type) << ", "
+      << num_iterations << " iterations, score " << initial_score << " -> " << final_score
+      << ", " << std::fixed << std::setprecision(1) << total_time_s * 1e3 << " ms";
+  return out.str();
+}
+
+std::string RegistrationSummary::FullReport() const {
+  std::ostringstream out;
+  out << BriefReport() << "\n";
+  out << "  message:        " << message << "\n";
+  out << std::setprecision(4) << std::fixed;
+  const Vector6d& xi = reference_from_input_xi;
+  out << "  pose xi:        t = (" << xi(0) << ", " << xi(1) << ", " << xi(2) << ") m, "
+      << "(alpha, beta, gamma) = (" << xi(3) * kRadToDeg << ", " << xi(4) * kRadToDeg << ", "
+      << xi(5) * kRadToDeg << ") deg\n";
+  out << "  layers:         start " << start_layer << " of " << num_layers << ", iterations";
+  for (size_t i = 0; i < iterations_per_layer.size(); ++i) {
+    out << " L" << i + 1 << "=" << iterations_per_layer[i];
+  }
+  out << "\n  points:         " << input_points << " input, " << sampled_points << " sampled, "
+      << matched_points << " matched, " << unmatched_points << " unmatched\n";
+  out << std::setprecision(2) << "  time [ms]:      map " << map_time_s * 1e3 << ", sampling "
+      << sampling_time_s * 1e3 << ", solve " << solve_time_s * 1e3 << ", total "
+      << total_time_s * 1e3 << "\n";
+  out << std::setprecision(4) << "  sigma (cov):    t = (" << std::sqrt(covariance(0, 0)) << ", "
+      << std::sqrt(covariance(1, 1)) << ", " << std::sqrt(covariance(2, 2)) << ") m, angles = ("
+      << std::sqrt(covariance(3, 3)) * kRadToDeg << ", " << std::sqrt(covariance(4, 4)) * kRadToDeg
+      << ", " << std::sqrt(covariance(5, 5)) * kRadToDeg << ") deg\n";
+  return out.str();
+}
+
+}  // namespace mlndt

@@ -1,0 +1,101 @@
+#include "mlndt/solvers/ceres_backend.h"
+
+#include <chrono>
+
+#include <ceres/iteration_callback.h>
+#include <ceres/solver.h>
+
+#include "mlndt/common/check_option.h"
+#include "mlndt/cost/add_residuals.h"
+
+namespace mlndt {
+namespace {
+
+double NowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// Records the trace and ends the final stage on a small update norm.
+class TraceCallback : public ceres::IterationCallback {
+ public:
+  TraceCallback(const StageOptions& options, const double* xi, StageSummary* summary)
+      : options_(options), xi_(xi), summary_(summary) {}
+
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (s.iteration == 0) return ceres::SOLVER_CONTINUE;  // Initial evaluation.
+    IterationRecord record;
+    record.layer = options_.layer;
+    record.iteration = options_.first_iteration + static_cast<int>(summary_->trace.size());
+    record.score = 2.0 * s.cost;  // Ceres minimises 1/2 sum ||r||^2.
+    record.step_norm = s.step_norm;
+    record.step_is_successful = s.step_is_successful;
+    record.reference_from_input_xi = Eigen::Map<const Vector6d>(xi_);
+    record.time_s = NowSeconds() - options_.start_time_s;
+    summary_->trace.push_back(record);
+    if (options_.step_tolerance > 0.0 && s.step_is_successful &&
+        s.step_norm < options_.step_tolerance) {
+      converged_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+  bool converged() const { return converged_; }
+
+ private:
+  const StageOptions& options_;
+  const double* xi_;
+  StageSummary* summary_;
+  bool converged_ = false;
+};
+
+}  // namespace
+
+bool CeresBackendOptions::IsValid(std::string* error) const {
+  MLNDT_OPTION_GE(num_threads, 1);
+  return true;
+}
+
+void CeresBackend::SolveStage(const NdtLayer& layer,
+                              const std::vector<Eigen::Vector3d>& input_points,
+                              const StageOptions& options,
+                              Vector6d* reference_from_input_xi,
+                              StageSummary* summary) {
+  *summary = StageSummary();
+  ceres::Problem problem;
+  ResidualOptions residual_options;
+  residual_options.unmatched_policy = options.unmatched_policy;
+  residual_options.loss_function = CreateLoss(options.loss, options.loss_scale);
+  AddMlNdtResiduals(layer, input_points, residual_options, reference_from_input_xi->data(),
+                    &problem);
+
+  TraceCallback callback(options, reference_from_input_xi->data(), summary);
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = options_.linear_solver_type;
+  solver_options.trust_region_strategy_type = options_.trust_region_strategy_type;
+  solver_options.num_threads = options_.num_threads;
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.minimizer_progress_to_stdout = false;
+  solver_options.logging_type = ceres::SILENT;
+  // Convergence is the update norm (callback); Ceres' own tests stay tight.
+  solver_options.function_tolerance = 1e-10;
+  solver_options.gradient_tolerance = 1e-12;
+  solver_options.parameter_tolerance = 1e-10;
+  solver_options.update_state_every_iteration = true;
+  solver_options.callbacks.push_back(&callback);
+
+  ceres::Solver::Summary ceres_summary;
+  ceres::Solve(solver_options, &problem, &ceres_summary);
+  summary->iterations = static_cast<int>(summary->trace.size());
+  summary->final_score = 2.0 * ceres_summary.final_cost;
+  summary->message = ceres_summary.message;
+  if (ceres_summary.termination_type == ceres::FAILURE) {
+    summary->termination_type = TerminationType::FAILURE;
+  } else if (callback.converged() || ceres_summary.termination_type == ceres::CONVERGENCE) {
+    summary->termination_type = TerminationType::CONVERGENCE;
+  } else {
+    summary->termination_type = TerminationType::NO_CONVERGENCE;
+  }
+}
+
+}  // namespace mlndt
