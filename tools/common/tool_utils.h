@@ -1,0 +1,64 @@
+#pragma once
+
+// Small helpers shared by the tools: number lists from flags, 4x4 matrix
+// text files, timing.
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mlndt/common/types.h"
+
+namespace mlndt {
+namespace tools {
+
+// Parses "a,b,c" into numbers; false when any item is not a finite number.
+inline bool ParseNumberList(const std::string& text, std::vector<double>* values) {
+  values->clear();
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    try {
+      size_t used = 0;
+      const double v = std::stod(item, &used);
+      if (used != item.size() && item.find_first_not_of(" \t", used) != std::string::npos) {
+        return false;
+      }
+      if (!std::isfinite(v)) return false;
+      values->push_back(v);
+    } catch (...) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Reads 12 or 16 whitespace-separated numbers (row-major 3x4 or 4x4).
+inline bool ReadMatrixFile(const std::string& path, Isometry3d* transform, std::string* error) {
+  std::ifstream in(path);
+  if (!in) {
+    *error = path + ": cannot open";
+    return false;
+  }
+  std::vector<double> v;
+  double x;
+  while (in >> x) v.push_back(x);
+  if (!in.eof() || (v.size() != 12 && v.size() != 16)) {
+    *error = path + ": expected 12 or 16 numbers (a row-major 3x4 or 4x4 matrix)";
+    return false;
+  }
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[static_cast<size_t>(i)];
+  transform->matrix() = m;
+  return true;
+}
+
+inline double NowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,171 @@
+// mlndt_info: describes point-cloud files, one JSON object per line.
+//
+//   mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]
+//              [--division_constant=8] [--min_points_per_cell=5]] FILE...
+//
+// For every file:
+//   {"file": ..., "format": "PCD", "points": N, "dropped_non_finite": N,
+//    "min": [x, y, z], "max": [x, y, z]}
+// "points" counts the points kept (finite ones); "min" and "max" are null
+// for an empty cloud. With --layers the object also holds "layers": one entry
+// per layer of the ML-NDT map (LayeredGrid) built from the cloud, coarsest
+// first, with "layer", "cell_size_m", "dims", "occupied_cells",
+// "sparse_cells" and "degenerate_cells" (layered_grid.h LayerInfo).
+//
+// A file that cannot be read, or whose map cannot be built, is reported on
+// stderr; the tool goes on with the other files and exits with 1 at the end.
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include "mlndt/cloud/io.h"
+#include "mlndt/grid/layered_grid.h"
+#include "tools/common/json_writer.h"
+
+DEFINE_bool(layers, false, "Also build the layered NDT map and report its layers");
+DEFINE_int32(num_layers, mlndt::LayeredGridOptions().num_layers,
+             "--layers: number of layers n (the paper's 4); ignored with --finest_cell_size");
+DEFINE_int32(division_constant, mlndt::LayeredGridOptions().division_constant,
+             "--layers: division constant q (layer i has about q^i cells)");
+DEFINE_double(finest_cell_size, mlndt::LayeredGridOptions().finest_cell_size_m,
+              "--layers: when > 0, use the fewest layers whose finest cell edge is <= this [m] "
+              "instead of --num_layers; 0 = paper sizing");
+DEFINE_int32(min_points_per_cell, mlndt::LayeredGridOptions().min_points_per_cell,
+             "--layers: a cell keeps a distribution when it holds at least this many points");
+
+namespace mlndt {
+namespace {
+
+constexpr char kToolName[] = "mlndt_info";
+
+void PrintError(const std::string& message) {
+  std::cerr << kToolName << ": " << message << std::endl;
+}
+
+bool IsDefault(const char* flag) {
+  return gflags::GetCommandLineFlagInfoOrDie(flag).is_default;
+}
+
+// Map options from the flags; false with *error for contradictory flags.
+bool GridOptionsFromFlags(LayeredGridOptions* options, std::string* error) {
+  const bool grid_flags_given = !IsDefault("num_layers") || !IsDefault("division_constant") ||
+                                !IsDefault("finest_cell_size") ||
+                                !IsDefault("min_points_per_cell");
+  if (!FLAGS_layers) {
+    if (grid_flags_given) {
+      *error =
+          "--num_layers, --division_constant, --finest_cell_size and --min_points_per_cell "
+          "need --layers";
+      return false;
+    }
+    return true;
+  }
+  if (!IsDefault("num_layers") && FLAGS_finest_cell_size > 0.0) {
+    *error = "give --num_layers or --finest_cell_size, not both";
+    return false;
+  }
+  options->num_layers = FLAGS_num_layers;
+  options->division_constant = FLAGS_division_constant;
+  options->finest_cell_size_m = FLAGS_finest_cell_size;
+  options->min_points_per_cell = FLAGS_min_points_per_cell;
+  std::string why;
+  if (!options->IsValid(&why)) {
+    *error = "invalid map options: " + why;
+    return false;
+  }
+  return true;
+}
+
+std::string PointJson(const Eigen::Vector3d& point) {
+  return tools::JsonArray(std::vector<double>{point.x(), point.y(), point.z()});
+}
+
+std::string LayersJson(const LayeredGrid& grid) {
+  std::string out = "[";
+  bool first = true;
+  for (const LayerInfo& info : grid.layer_info()) {
+    tools::JsonObject layer;
+    layer.AddNumber("layer", info.layer)
+        .AddNumber("cell_size_m", info.cell_size_m)
+        .Add("dims", tools::JsonArray(std::vector<int>{info.dims.x(), info.dims.y(), info.dims.z()}))
+        .AddNumber("occupied_cells", static_cast<double>(info.occupied_cells))
+        .AddNumber("sparse_cells", static_cast<double>(info.sparse_cells))
+        .AddNumber("degenerate_cells", static_cast<double>(info.degenerate_cells));
+    out += (first ? "" : ", ") + layer.str();
+    first = false;
+  }
+  return out + "]";
+}
+
+// Prints the JSON line of one file. Returns false (after reporting on stderr)
+// when the file cannot be read or its map cannot be built.
+bool DescribeFile(const std::string& path, const LayeredGridOptions& grid_options) {
+  PointCloud cloud;
+  ReadCloudInfo info;
+  std::string error;
+  if (!ReadPointCloud(path, &cloud, &info, &error)) {
+    // ReadPointCloud's messages start with the path; make sure it is named.
+    PrintError(error.find(path) == std::string::npos ? path + ": " + error : error);
+    return false;
+  }
+
+  const Eigen::AlignedBox3d box = BoundingBox(cloud);
+  tools::JsonObject json;
+  json.AddString("file", path)
+      .AddString("format", CloudFormatToString(info.format))
+      .AddNumber("points", static_cast<double>(cloud.size()))
+      .AddNumber("dropped_non_finite", static_cast<double>(info.dropped_non_finite))
+      // An empty cloud has no bounding box.
+      .Add("min", cloud.empty() ? "null" : PointJson(box.min()))
+      .Add("max", cloud.empty() ? "null" : PointJson(box.max()));
+
+  bool ok = true;
+  if (FLAGS_layers) {
+    LayeredGrid grid;
+    if (LayeredGrid::Build(grid_options, cloud, &grid, &error)) {
+      json.Add("layers", LayersJson(grid));
+    } else {
+      error = path + ": cannot build the layered map: " + error;
+      ok = false;
+    }
+  }
+  std::cout << json.str() << std::endl;
+  if (!ok) PrintError(error);
+  return ok;
+}
+
+int Run(const std::vector<std::string>& files) {
+  LayeredGridOptions grid_options;
+  std::string error;
+  if (!GridOptionsFromFlags(&grid_options, &error)) {
+    PrintError(error);
+    return 1;
+  }
+  bool all_ok = true;
+  for (const std::string& file : files) {
+    all_ok = DescribeFile(file, grid_options) && all_ok;
+  }
+  return all_ok ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace mlndt
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "Prints one JSON line per point-cloud file: format, point count, bounding box and, with "
+      "--layers, the layers of its ML-NDT map.\n"
+      "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]] FILE...");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  FLAGS_logtostderr = true;
+  if (argc < 2) {
+    std::cerr << "mlndt_info: no input files\n" << gflags::ProgramUsage() << "\n";
+    return 1;
+  }
+  return mlndt::Run(std::vector<std::string>(argv + 1, argv + argc));
+}
