@@ -1,0 +1,73 @@
+// Adds ML-NDT residuals of one scan against a layered map to a
+// ceres::Problem that also holds the user's own residual (a weak prior on the
+// translation, standing in for odometry), solves it, and prints the pose.
+//
+//   mlndt_consumer reference.pcd input.pcd
+
+#include <iostream>
+
+#include <ceres/ceres.h>
+
+#include "mlndt/mlndt.h"
+
+// The user's own residual: the translation stays near a prior [m].
+struct TranslationPrior {
+  explicit TranslationPrior(const Eigen::Vector3d& prior) : prior_(prior) {}
+  template <typename T>
+  bool operator()(const T* translation, T* residual) const {
+    for (int i = 0; i < 3; ++i) residual[i] = T(0.1) * (translation[i] - T(prior_(i)));
+    return true;
+  }
+  Eigen::Vector3d prior_;
+};
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::cerr << "usage: mlndt_consumer reference.pcd input.pcd\n";
+    return 1;
+  }
+  mlndt::PointCloud reference, input;
+  std::string error;
+  if (!mlndt::ReadPointCloud(argv[1], &reference, nullptr, &error) ||
+      !mlndt::ReadPointCloud(argv[2], &input, nullptr, &error)) {
+    std::cerr << error << "\n";
+    return 1;
+  }
+  mlndt::LayeredGrid map;
+  if (!mlndt::LayeredGrid::Build(mlndt::DefaultRegistrationGridOptions(), reference, &map,
+                                 &error)) {
+    std::cerr << error << "\n";
+    return 1;
+  }
+  mlndt::PointCloud samples;
+  if (!mlndt::SamplePoints(mlndt::SamplingOptions(), input, &samples, nullptr, &error)) {
+    std::cerr << error << "\n";
+    return 1;
+  }
+
+  // The caller's pose blocks: quaternion (x, y, z, w) and translation.
+  double rotation[4] = {0.0, 0.0, 0.0, 1.0};
+  double translation[3] = {0.0, 0.0, 0.0};
+  // Coarse to fine, one Problem per layer (what mlndt::Register does).
+  for (int layer = 1; layer <= map.num_layers(); ++layer) {
+    ceres::Problem problem;
+    mlndt::ResidualOptions residual_options;
+    residual_options.unmatched_policy = mlndt::UnmatchedPolicy::NEAREST_CELL;
+    residual_options.loss_function = new ceres::CauchyLoss(3.0);
+    mlndt::AddMlNdtResidualsQuaternion(map.layer(layer), samples.points(), residual_options,
+                                       rotation, translation, &problem);
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<TranslationPrior, 3, 3>(
+            new TranslationPrior(Eigen::Vector3d::Zero())),
+        nullptr, translation);
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.max_num_iterations = layer == map.num_layers() ? 30 : 6;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    std::cout << "layer " << layer << ": " << summary.BriefReport() << "\n";
+  }
+  std::cout << "translation [m]: " << translation[0] << " " << translation[1] << " "
+            << translation[2] << "\n";
+  return 0;
+}
