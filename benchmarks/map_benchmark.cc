@@ -6,8 +6,8 @@
 //
 // The scan is the first of these that is set / exists:
 //   1. $MLNDT_BENCH_SCAN (any format mlndt reads; an error if missing),
-//   2. data/kitti/000000.pcd below the current folder,
-//   3. data/kitti/000000.pcd of the repository, when the binary sits in
+//   2. data/kitti/pcd/000000.pcd below the current folder,
+//   3. data/kitti/pcd/000000.pcd of the repository, when the binary sits in
 //      <repo>/<build>/benchmarks/,
 //   4. $MLNDT_DATA_DIR/kitti00_frames_0000_0007/pcd/000000.pcd.
 //
@@ -29,7 +29,7 @@
 namespace mlndt {
 namespace {
 
-constexpr char kBundledScan[] = "data/kitti/000000.pcd";
+constexpr char kBundledScan[] = "data/kitti/pcd/000000.pcd";
 constexpr char kSharedScan[] = "kitti00_frames_0000_0007/pcd/000000.pcd";
 
 // The scan every benchmark uses; loaded by main() before they run.

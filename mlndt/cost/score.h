@@ -1,10 +1,22 @@
 #pragma once
 
-// The ML-NDT objective over a set of input points on one layer, evaluated
-// directly (no ceres::Problem): score = sum_k rho(e_k^T C_k^-1 e_k) (Eq. 10,
-// with an optional robust loss), its gradient and the Gauss-Newton part of
-// its Hessian, 2 sum J^T W^T W J (Eq. 14 without the second-order term).
-// Used for reports (final score, Hessian, covariance, matched counts).
+// The ML-NDT objective over a set of input points on one layer, with its
+// analytic derivatives (no ceres::Problem, no auto-diff):
+//
+//   score = sum_k rho(s_k),   s_k = e_k^T C_k^-1 e_k            (Eq. 10, 12)
+//   g     = sum_k rho'(s_k) 2 J_k^T C_k^-1 e_k                   (Eq. 13)
+//   H     = sum_k rho'(s_k) 2 (J_k^T C_k^-1 J_k
+//                              + sum_i (C_k^-1 e_k)_i d2x'_i/dxi2) (Eq. 14)
+//
+// with J_k = d x'_k / d xi (transform_derivatives.h). HessianType::FULL
+// keeps the second-order term of Eq. (14) (Newton, Section 4.1);
+// GAUSS_NEWTON drops it (LM, reports). With a robust loss the rho'' term is
+// left out of H (iteratively reweighted least squares), so H stays positive
+// semi-definite in the Gauss-Newton case. rho = identity for LossType::NONE.
+//
+// The hand-written backends and the reports (final score, Hessian,
+// covariance, matched counts) use it; the Ceres backend minimises the same
+// sum through auto-diff residuals W e_k (||W e||^2 = s).
 
 #include <vector>
 
@@ -15,14 +27,36 @@
 
 namespace mlndt {
 
-struct ScoreEvaluation {
-  double score = 0.0;                         // sum_k rho(s_k).
-  size_t matched = 0;                         // Points scored against a cell.
-  size_t unmatched = 0;                       // Points contributing nothing.
-  Vector6d gradient = Vector6d::Zero();       // d score / d xi.
-  Matrix6d hessian = Matrix6d::Zero();        // Gauss-Newton Hessian of score.
+enum class HessianType {
+  NONE,          // Score and counts only (line searches, reports).
+  GAUSS_NEWTON,  // 2 sum J^T C^-1 J.
+  FULL,          // Plus the second-order term of Eq. (14).
 };
 
+struct ScoreOptions {
+  UnmatchedPolicy unmatched_policy = UnmatchedPolicy::ZERO_RESIDUAL;
+  LossType loss = LossType::NONE;
+  double loss_scale = 1.0;  // Mahalanobis distance where the loss bends.
+  HessianType hessian = HessianType::GAUSS_NEWTON;
+  // OpenMP threads over points. >= 1. The sum is reduced in a fixed order,
+  // so a given thread count always gives the same bits.
+  int num_threads = 1;
+};
+
+struct ScoreEvaluation {
+  double score = 0.0;                    // sum_k rho(s_k).
+  size_t matched = 0;                    // Points scored against a cell.
+  size_t unmatched = 0;                  // Points contributing nothing.
+  Vector6d gradient = Vector6d::Zero();  // d score / d xi.
+  Matrix6d hessian = Matrix6d::Zero();   // As ScoreOptions::hessian says.
+};
+
+ScoreEvaluation EvaluateScore(const NdtLayer& layer,
+                              const std::vector<Eigen::Vector3d>& input_points,
+                              const Vector6d& reference_from_input_xi,
+                              const ScoreOptions& options);
+
+// Gauss-Newton Hessian, one thread.
 ScoreEvaluation EvaluateScore(const NdtLayer& layer,
                               const std::vector<Eigen::Vector3d>& input_points,
                               const Vector6d& reference_from_input_xi,

@@ -1,6 +1,5 @@
 #include "mlndt/registration/registration.h"
 
-#include <chrono>
 #include <iomanip>
 #include <memory>
 #include <sstream>
@@ -9,15 +8,11 @@
 
 #include "mlndt/common/check_option.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/common/timer.h"
 #include "mlndt/cost/score.h"
 
 namespace mlndt {
 namespace {
-
-double NowSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
 
 void Fail(const std::string& message, RegistrationSummary* summary) {
   summary->termination_type = TerminationType::FAILURE;
@@ -30,10 +25,11 @@ std::unique_ptr<Backend> CreateBackend(const RegistrationOptions& options, std::
     case BackendType::CERES:
       return std::make_unique<CeresBackend>(options.ceres);
     case BackendType::NEWTON:
+      return std::make_unique<NewtonBackend>(options.newton);
     case BackendType::LEVENBERG_MARQUARDT:
-      break;
+      return std::make_unique<LevenbergMarquardtBackend>(options.levenberg_marquardt);
   }
-  *error = std::string("backend ") + BackendTypeToString(options.backend) + " is not built yet";
+  *error = "unknown backend";
   return nullptr;
 }
 
@@ -83,6 +79,7 @@ void RegisterOnMap(const RegistrationOptions& options,
   stage.unmatched_policy = options.unmatched_policy;
   stage.loss = options.loss;
   stage.loss_scale = options.loss_scale;
+  stage.num_threads = options.num_threads;
   stage.start_time_s = start_time_s;
   ScheduleSummary schedule;
   RunLayerSchedule(options.schedule, reference_map, sampled.points(), stage, backend.get(), &xi,
@@ -138,9 +135,10 @@ LayerScheduleOptions DefaultRegistrationScheduleOptions() {
 
 bool RegistrationOptions::IsValid(std::string* error) const {
   if (!grid.IsValid(error) || !sampling.IsValid(error) || !schedule.IsValid(error) ||
-      !ceres.IsValid(error)) {
+      !ceres.IsValid(error) || !newton.IsValid(error) || !levenberg_marquardt.IsValid(error)) {
     return false;
   }
+  MLNDT_OPTION_GE(num_threads, 1);
   MLNDT_OPTION_GT(loss_scale, 0.0);
   MLNDT_OPTION_GE(min_matched_fraction, 0.0);
   MLNDT_OPTION_LE(min_matched_fraction, 1.0);

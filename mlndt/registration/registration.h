@@ -27,6 +27,8 @@
 #include "mlndt/schedule/layer_scheduler.h"
 #include "mlndt/solvers/backend.h"
 #include "mlndt/solvers/ceres_backend.h"
+#include "mlndt/solvers/levenberg_marquardt_backend.h"
+#include "mlndt/solvers/newton_backend.h"
 
 namespace mlndt {
 
@@ -54,6 +56,11 @@ struct RegistrationOptions {
   LayerScheduleOptions schedule = DefaultRegistrationScheduleOptions();
   BackendType backend = BackendType::CERES;
   CeresBackendOptions ceres;
+  NewtonOptions newton;
+  LevenbergMarquardtOptions levenberg_marquardt;
+  // Threads for every backend: Ceres' evaluator threads, or OpenMP threads
+  // over points in the hand-written backends. >= 1.
+  int num_threads = 1;
   // What a point in no occupied cell contributes (cell_match.h). Measured on
   // KITTI pairs pushed off by up to 10 m / 45 deg: NEAREST_CELL converged
   // in 35 of 35 starts, ZERO_RESIDUAL in 34 (README, "Defaults").

@@ -16,6 +16,15 @@ const char* BackendTypeToString(BackendType type) {
   return "UNKNOWN";
 }
 
+ScoreOptions ScoreOptionsForStage(const StageOptions& options) {
+  ScoreOptions score;
+  score.unmatched_policy = options.unmatched_policy;
+  score.loss = options.loss;
+  score.loss_scale = options.loss_scale;
+  score.num_threads = options.num_threads;
+  return score;
+}
+
 bool StringToBackendType(std::string value, BackendType* result) {
   UpperCase(&value);
   if (value == "LM") value = "LEVENBERG_MARQUARDT";

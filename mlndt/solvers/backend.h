@@ -13,14 +13,15 @@
 #include "mlndt/common/types.h"
 #include "mlndt/cost/cell_match.h"
 #include "mlndt/cost/robust_loss.h"
+#include "mlndt/cost/score.h"
 #include "mlndt/grid/ndt_layer.h"
 
 namespace mlndt {
 
 enum class BackendType {
   CERES,                // Auto-diff residuals in a ceres::Problem per stage.
-  NEWTON,               // Hand-written Newton (Sec. 4.1); not built yet.
-  LEVENBERG_MARQUARDT,  // Hand-written LM (Sec. 4.2); not built yet.
+  NEWTON,               // Hand-written Newton, full Hessian (Sec. 4.1).
+  LEVENBERG_MARQUARDT,  // Hand-written LM on whitened residuals (Sec. 4.2).
 };
 
 const char* BackendTypeToString(BackendType type);
@@ -47,6 +48,7 @@ struct StageOptions {
   UnmatchedPolicy unmatched_policy = UnmatchedPolicy::ZERO_RESIDUAL;
   LossType loss = LossType::NONE;
   double loss_scale = 1.0;       // Mahalanobis distance where the loss bends.
+  int num_threads = 1;           // Threads for evaluating the objective. >= 1.
   double start_time_s = 0.0;     // Registration start (for IterationRecord::time_s).
   int first_iteration = 1;       // Number of the stage's first iteration.
 };
@@ -58,6 +60,9 @@ struct StageSummary {
   double final_score = 0.0;
   std::vector<IterationRecord> trace;
 };
+
+// The per-point settings of a stage as ScoreOptions.
+ScoreOptions ScoreOptionsForStage(const StageOptions& options);
 
 class Backend {
  public:

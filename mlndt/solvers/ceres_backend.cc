@@ -1,20 +1,14 @@
 #include "mlndt/solvers/ceres_backend.h"
 
-#include <chrono>
 
 #include <ceres/iteration_callback.h>
 #include <ceres/solver.h>
 
-#include "mlndt/common/check_option.h"
+#include "mlndt/common/timer.h"
 #include "mlndt/cost/add_residuals.h"
 
 namespace mlndt {
 namespace {
-
-double NowSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
 
 // Records the trace and ends the final stage on a small update norm.
 class TraceCallback : public ceres::IterationCallback {
@@ -52,7 +46,15 @@ class TraceCallback : public ceres::IterationCallback {
 }  // namespace
 
 bool CeresBackendOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_GE(num_threads, 1);
+  // Ceres checks the combination (e.g. a sparse solver without a sparse
+  // library, DOGLEG with an iterative solver).
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = linear_solver_type;
+  solver_options.trust_region_strategy_type = trust_region_strategy_type;
+  if (!solver_options.IsValid(error)) {
+    *error = "invalid Ceres options: " + *error;
+    return false;
+  }
   return true;
 }
 
@@ -73,7 +75,7 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = options_.linear_solver_type;
   solver_options.trust_region_strategy_type = options_.trust_region_strategy_type;
-  solver_options.num_threads = options_.num_threads;
+  solver_options.num_threads = options.num_threads;
   solver_options.max_num_iterations = options.max_iterations;
   solver_options.minimizer_progress_to_stdout = false;
   solver_options.logging_type = ceres::SILENT;

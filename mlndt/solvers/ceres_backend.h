@@ -18,7 +18,6 @@ struct CeresBackendOptions {
   // 6 parameters: dense normal equations are the cheapest adequate solver.
   ceres::LinearSolverType linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   ceres::TrustRegionStrategyType trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  int num_threads = 1;  // Ceres evaluator threads. >= 1.
 
   bool IsValid(std::string* error) const;
 };

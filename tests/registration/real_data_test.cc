@@ -26,7 +26,7 @@ class KittiFrames : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     for (int i = 0; i < 8; ++i) {
-      scans_.push_back(Load("kitti/00000" + std::to_string(i) + ".pcd"));
+      scans_.push_back(Load("kitti/pcd/00000" + std::to_string(i) + ".pcd"));
     }
     std::string error;
     ASSERT_TRUE(

@@ -535,7 +535,7 @@ TEST(VoxelKey, FloorsNegativeCoordinatesAndGroupsInFirstAppearanceOrder) {
 }
 
 TEST(PointSampler, GbsOnKittiFrame0) {
-  std::string path = testing::BundledDataPath("kitti/000000.pcd");
+  std::string path = testing::BundledDataPath("kitti/pcd/000000.pcd");
   if (!std::ifstream(path)) {
     MLNDT_REQUIRE_SHARED_DATA(dir);
     path = dir + "/kitti00_frames_0000_0007/pcd/000000.pcd";

@@ -42,7 +42,7 @@ DEFINE_double(loss_scale, mlndt::RegistrationOptions().loss_scale,
               "Mahalanobis distance where the robust loss bends");
 DEFINE_string(linear_solver, "dense_normal_cholesky", "Ceres linear solver type");
 DEFINE_string(trust_region, "levenberg_marquardt", "Ceres trust-region strategy");
-DEFINE_int32(threads, 1, "Ceres evaluator threads");
+DEFINE_int32(threads, 1, "Threads: Ceres evaluator threads, or OpenMP threads (newton, lm)");
 DEFINE_uint64(seed, 1, "Sampling seed");
 
 namespace mlndt {
@@ -98,7 +98,7 @@ inline bool RegistrationOptionsFromFlags(RegistrationOptions* options, std::stri
   options->grid.regularization.min_eigenvalue_m2 = FLAGS_min_eigenvalue;
   options->grid.regularization.min_eigenvalue_ratio = FLAGS_min_eigenvalue_ratio;
   options->loss_scale = FLAGS_loss_scale;
-  options->ceres.num_threads = FLAGS_threads;
+  options->num_threads = FLAGS_threads;
   return options->IsValid(error);
 }
 

@@ -55,10 +55,5 @@ inline bool ReadMatrixFile(const std::string& path, Isometry3d* transform, std::
   return true;
 }
 
-inline double NowSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
 }  // namespace tools
 }  // namespace mlndt

@@ -1,0 +1,47 @@
+#pragma once
+
+// Levenberg-Marquardt on the whitened residuals r_k = W_k e_k (Section 4.2).
+// The paper writes the per-point score s_k itself as the residual
+// (Eqs. 18-20); we use the 3-vector W_k e_k, whose squared norm is s_k, so
+// the objective sum_k s_k is the same as Newton's and Ceres', and J^T J is
+// the Gauss-Newton Hessian of that sum (README: "Choosing a solver").
+// The damping follows the paper: lambda starts at 1e-3 times the mean of
+// diag(J^T J), is divided by 10 after a step that lowers the score and
+// multiplied by 10 (the step rejected) otherwise.
+
+#include <string>
+
+#include "mlndt/solvers/backend.h"
+#include "mlndt/solvers/objective.h"
+
+namespace mlndt {
+
+struct LevenbergMarquardtOptions {
+  double initial_lambda_factor = 1e-3;  // lambda_0 / mean(diag(J^T J)). > 0.
+  double lambda_decrease = 10.0;        // After a successful step. > 1.
+  double lambda_increase = 10.0;        // After a rejected step. > 1.
+
+  bool IsValid(std::string* error) const;
+};
+
+void MinimizeLevenbergMarquardt(const Objective& objective,
+                                const LevenbergMarquardtOptions& lm_options,
+                                const StageOptions& options,
+                                Vector6d* reference_from_input_xi,
+                                StageSummary* summary);
+
+class LevenbergMarquardtBackend : public Backend {
+ public:
+  explicit LevenbergMarquardtBackend(const LevenbergMarquardtOptions& options)
+      : options_(options) {}
+  void SolveStage(const NdtLayer& layer,
+                  const std::vector<Eigen::Vector3d>& input_points,
+                  const StageOptions& options,
+                  Vector6d* reference_from_input_xi,
+                  StageSummary* summary) override;
+
+ private:
+  LevenbergMarquardtOptions options_;
+};
+
+}  // namespace mlndt

@@ -1,0 +1,49 @@
+#pragma once
+
+// Newton's method on the ML-NDT score, the paper's optimiser (Section 4.1,
+// Eqs. 12-17): the full Hessian of Eq. (14) including the second-order term
+// of the Euler-angle transform, the update xi <- xi - H^-1 g (Eq. 15), and H
+// replaced by H + gamma I when it is not safely positive definite. A
+// backtracking line search (halving the step until the score decreases) is on
+// by default: with cells changing under the points the full Newton step can
+// overshoot; without it the step is always taken, as in the paper.
+
+#include <string>
+
+#include "mlndt/solvers/backend.h"
+#include "mlndt/solvers/objective.h"
+
+namespace mlndt {
+
+struct NewtonOptions {
+  bool line_search = true;
+  int max_line_search_steps = 8;  // Halvings before the step is rejected. >= 1.
+  // H counts as safely positive definite when its smallest eigenvalue is at
+  // least this fraction of its largest; otherwise gamma lifts it there. > 0.
+  double min_eigenvalue_ratio = 1e-6;
+
+  bool IsValid(std::string* error) const;
+};
+
+// Minimises `objective` from *xi for at most options.max_iterations
+// iterations, recording the trace as the Ceres backend does.
+void MinimizeNewton(const Objective& objective,
+                    const NewtonOptions& newton_options,
+                    const StageOptions& options,
+                    Vector6d* reference_from_input_xi,
+                    StageSummary* summary);
+
+class NewtonBackend : public Backend {
+ public:
+  explicit NewtonBackend(const NewtonOptions& options) : options_(options) {}
+  void SolveStage(const NdtLayer& layer,
+                  const std::vector<Eigen::Vector3d>& input_points,
+                  const StageOptions& options,
+                  Vector6d* reference_from_input_xi,
+                  StageSummary* summary) override;
+
+ private:
+  NewtonOptions options_;
+};
+
+}  // namespace mlndt

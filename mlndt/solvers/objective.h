@@ -1,0 +1,46 @@
+#pragma once
+
+// What the hand-written minimisers minimise: a score of the pose vector xi
+// with its gradient and Hessian. MlNdtObjective is ML-NDT's Mahalanobis sum
+// on one layer (cost/score.h); the conventional NDT baseline provides the
+// Gaussian score of Eq. (4) through the same interface.
+
+#include <vector>
+
+#include "mlndt/common/types.h"
+#include "mlndt/cost/score.h"
+#include "mlndt/grid/ndt_layer.h"
+
+namespace mlndt {
+
+class Objective {
+ public:
+  virtual ~Objective() = default;
+  // Score at xi, with the requested Hessian (and the gradient unless NONE).
+  virtual ScoreEvaluation Evaluate(const Vector6d& reference_from_input_xi,
+                                   HessianType hessian) const = 0;
+};
+
+// Eq. (10) over `input_points` on `layer`. Keeps references: the layer and
+// the points must outlive the objective.
+class MlNdtObjective : public Objective {
+ public:
+  MlNdtObjective(const NdtLayer& layer,
+                 const std::vector<Eigen::Vector3d>& input_points,
+                 const ScoreOptions& options)
+      : layer_(layer), input_points_(input_points), options_(options) {}
+
+  ScoreEvaluation Evaluate(const Vector6d& reference_from_input_xi,
+                           HessianType hessian) const override {
+    ScoreOptions options = options_;
+    options.hessian = hessian;
+    return EvaluateScore(layer_, input_points_, reference_from_input_xi, options);
+  }
+
+ private:
+  const NdtLayer& layer_;
+  const std::vector<Eigen::Vector3d>& input_points_;
+  const ScoreOptions options_;
+};
+
+}  // namespace mlndt
