@@ -172,15 +172,47 @@ TEST(Registration, DisjointCloudsAreReportedAsFailure) {
   EXPECT_NE(summary.message.find("occupied cell"), std::string::npos) << summary.message;
 }
 
-TEST(Registration, BackendsNotBuiltYetSayWhich) {
-  const PointCloud cloud = testing::StreetScene(5000, 0.02, 8);
+class RegistrationBackends : public ::testing::TestWithParam<std::tuple<LossType, int>> {};
+
+TEST_P(RegistrationBackends, AllBackendsReachTheSameFinalScore) {
+  // Same objective, same cells, same samples: Ceres, Newton and LM must end
+  // at the same score and pose (compared on the score, as Ceres' SystemTest).
+  // From identity on the full schedule, and from near the truth on the last
+  // layer alone.
+  const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(2.5, -1, 0.1, 0, 1, 12));
   RegistrationOptions options;
-  options.backend = BackendType::NEWTON;
-  RegistrationSummary summary;
-  Register(options, cloud, cloud, Isometry3d::Identity(), &summary);
-  EXPECT_EQ(summary.termination_type, TerminationType::FAILURE);
-  EXPECT_NE(summary.message.find("NEWTON"), std::string::npos) << summary.message;
+  options.loss = std::get<0>(GetParam());
+  options.schedule.start_layer = std::get<1>(GetParam());
+  const Isometry3d initial =
+      options.schedule.start_layer == 0
+          ? PoseVectorToIsometry(PoseVectorFromDegrees(0.2, 0.1, 0, 0, 0, 1)) * truth
+          : Isometry3d::Identity();
+  options.schedule.step_tolerance = 1e-6;
+  options.schedule.max_final_iterations = 60;
+  std::vector<RegistrationSummary> results;
+  for (BackendType backend :
+       {BackendType::CERES, BackendType::NEWTON, BackendType::LEVENBERG_MARQUARDT}) {
+    options.backend = backend;
+    results.push_back(RegisterStreet(truth, initial, options));
+    ASSERT_TRUE(results.back().IsSolutionUsable())
+        << BackendTypeToString(backend) << ": " << results.back().message;
+  }
+  for (size_t b = 1; b < results.size(); ++b) {
+    EXPECT_NEAR(results[b].final_score, results[0].final_score, 1e-3 * results[0].final_score)
+        << "backend " << b;
+    EXPECT_LT(TranslationErrorM(results[b].reference_from_input, results[0].reference_from_input),
+              5e-3)
+        << "backend " << b;
+    EXPECT_LT(RotationErrorRad(results[b].reference_from_input, results[0].reference_from_input),
+              0.05 * kDegToRad)
+        << "backend " << b;
+  }
 }
+
+INSTANTIATE_TEST_SUITE_P(LossAndStartLayer,
+                         RegistrationBackends,
+                         ::testing::Combine(::testing::Values(LossType::NONE, LossType::CAUCHY),
+                                            ::testing::Values(1, 0)));
 
 TEST(Registration, PrebuiltMapGivesTheSameResult) {
   const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(2, 1, 0, 0, 0, 8));
