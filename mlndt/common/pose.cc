@@ -1,6 +1,5 @@
 #include "mlndt/common/pose.h"
 
-#include <algorithm>
 
 namespace mlndt {
 
@@ -17,9 +16,17 @@ Vector6d IsometryToPoseVector(const Isometry3d& transform) {
   xi.head<3>() = transform.translation();
   // From Eq. (7): r02 = sin(beta), r12 = -sin(alpha) cos(beta),
   // r22 = cos(alpha) cos(beta), r01 = -cos(beta) sin(gamma), r00 = cos(beta) cos(gamma).
-  xi(4) = std::asin(std::clamp(r(0, 2), -1.0, 1.0));
-  xi(3) = std::atan2(-r(1, 2), r(2, 2));
-  xi(5) = std::atan2(-r(0, 1), r(0, 0));
+  const double cos_beta = std::hypot(r(0, 0), r(0, 1));
+  xi(4) = std::atan2(r(0, 2), cos_beta);
+  if (cos_beta > 1e-9) {
+    xi(3) = std::atan2(-r(1, 2), r(2, 2));
+    xi(5) = std::atan2(-r(0, 1), r(0, 0));
+  } else {
+    // Gimbal lock (beta = +-90 deg): only alpha +- gamma is defined; take
+    // gamma = 0, then r10 = sin(alpha) sin(beta) and r11 = cos(alpha).
+    xi(5) = 0.0;
+    xi(3) = std::atan2(r(1, 0) * (r(0, 2) > 0 ? 1.0 : -1.0), r(1, 1));
+  }
   return xi;
 }
 

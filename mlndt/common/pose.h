@@ -44,7 +44,8 @@ Eigen::Matrix<T, 3, 1> TransformPoint(const T* xi, const Eigen::Vector3d& x) {
 
 // Pose vector <-> rigid transform.
 Isometry3d PoseVectorToIsometry(const Vector6d& xi);
-// Inverse of PoseVectorToIsometry; beta is returned in [-pi/2, pi/2].
+// Inverse of PoseVectorToIsometry; beta is returned in [-pi/2, pi/2], and at
+// beta = +-pi/2 (gimbal lock) gamma = 0.
 Vector6d IsometryToPoseVector(const Isometry3d& transform);
 
 // Builds a pose vector from translation [m] and angles [deg] (tool flags).
