@@ -31,10 +31,16 @@ void Accumulate(const NdtLayer& layer,
     EvaluateLoss(options.loss, options.loss_scale, e.dot(information_e), &rho, &rho_prime);
     sum->score += rho;
     if (options.hessian == HessianType::NONE) continue;
-    const Eigen::Matrix<double, 3, 6> jacobian = transform.Jacobian(p);
-    sum->gradient.noalias() += (2.0 * rho_prime) * (jacobian.transpose() * information_e);
-    sum->hessian.noalias() +=
-        (2.0 * rho_prime) * (jacobian.transpose() * cell->information * jacobian);
+    // J = [I | A] with A = d x' / d angles, so J^T C^-1 e = [C^-1 e; A^T C^-1 e]
+    // and J^T C^-1 J = [C^-1, C^-1 A; A^T C^-1, A^T C^-1 A].
+    const double w = 2.0 * rho_prime;
+    const Matrix3d a = transform.AngleJacobian(p);
+    const Matrix3d information_a = cell->information * a;
+    sum->gradient.head<3>() += w * information_e;
+    sum->gradient.tail<3>().noalias() += w * (a.transpose() * information_e);
+    sum->hessian.topLeftCorner<3, 3>() += w * cell->information;
+    sum->hessian.topRightCorner<3, 3>() += w * information_a;
+    sum->hessian.bottomRightCorner<3, 3>().noalias() += w * (a.transpose() * information_a);
     if (options.hessian == HessianType::FULL) {
       sum->hessian += (2.0 * rho_prime) * transform.WeightedSecondDerivative(p, information_e);
     }
@@ -57,6 +63,9 @@ ScoreEvaluation EvaluateScore(const NdtLayer& layer,
     const size_t end = n * static_cast<size_t>(t + 1) / static_cast<size_t>(threads);
     Accumulate(layer, input_points, begin, end, transform, options,
                &partial[static_cast<size_t>(t)]);
+  }
+  for (ScoreEvaluation& p : partial) {  // The lower-left block by symmetry.
+    p.hessian.bottomLeftCorner<3, 3>() = p.hessian.topRightCorner<3, 3>().transpose();
   }
   ScoreEvaluation total = partial[0];
   for (size_t t = 1; t < partial.size(); ++t) {

@@ -57,7 +57,7 @@ TransformDerivatives::TransformDerivatives(const Vector6d& xi) : translation_(xi
 Eigen::Matrix<double, 3, 6> TransformDerivatives::Jacobian(const Eigen::Vector3d& x) const {
   Eigen::Matrix<double, 3, 6> jacobian;
   jacobian.leftCols<3>().setIdentity();
-  for (int k = 0; k < 3; ++k) jacobian.col(3 + k) = first_[k] * x;
+  jacobian.rightCols<3>() = AngleJacobian(x);
   return jacobian;
 }
 

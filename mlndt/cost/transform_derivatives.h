@@ -31,8 +31,14 @@ class TransformDerivatives {
   // x' = R x + t.
   Eigen::Vector3d Transform(const Eigen::Vector3d& x) const { return rotation_ * x + translation_; }
 
-  // d x' / d xi (3 x 6).
+  // d x' / d xi (3 x 6) = [I | AngleJacobian(x)].
   Eigen::Matrix<double, 3, 6> Jacobian(const Eigen::Vector3d& x) const;
+  // d x' / d (alpha, beta, gamma) (3 x 3).
+  Matrix3d AngleJacobian(const Eigen::Vector3d& x) const {
+    Matrix3d a;
+    for (int k = 0; k < 3; ++k) a.col(k) = first_[k] * x;
+    return a;
+  }
 
   // sum_i w_i d2 x'_i / d xi d xi for a weight vector w (3), as a 6 x 6
   // matrix: the second-order term of Eq. (14) with w = C^-1 e. Only the

@@ -24,6 +24,14 @@ struct LayerScheduleOptions {
   // The last layer converges when a successful step has ||delta xi|| below
   // this (metres and radians). > 0.
   double step_tolerance = 1e-4;
+  // A coarse layer ends early once a successful step has ||delta xi|| below
+  // this; 0 runs every coarse layer for exactly iterations_per_layer
+  // iterations, as the paper. >= 0.
+  double coarse_step_tolerance = 0.0;
+  // Layer i of n uses every s-th sampled point, s = min(2^(n - i), this):
+  // a cell twice as large needs fewer points to be located. 1 uses every
+  // sampled point on every layer, as the paper. >= 1.
+  int max_coarse_point_stride = 1;
 
   bool IsValid(std::string* error) const;
 };
