@@ -8,13 +8,4 @@ CellIndex::CellIndex(int64_t num_grid_cells) {
   }
 }
 
-int32_t CellIndex::FindOrInsert(int64_t key, int32_t new_slot) {
-  if (!dense_.empty()) {
-    int32_t& slot = dense_[static_cast<size_t>(key)];
-    if (slot < 0) slot = new_slot;
-    return slot;
-  }
-  return sparse_.emplace(key, new_slot).first->second;
-}
-
 }  // namespace mlndt

@@ -27,7 +27,14 @@ class CellIndex {
   }
 
   // The slot of `key`; if it has none, stores `new_slot` and returns it.
-  int32_t FindOrInsert(int64_t key, int32_t new_slot);
+  int32_t FindOrInsert(int64_t key, int32_t new_slot) {
+    if (!dense_.empty()) {
+      int32_t& slot = dense_[static_cast<size_t>(key)];
+      if (slot < 0) slot = new_slot;
+      return slot;
+    }
+    return sparse_.emplace(key, new_slot).first->second;
+  }
 
  private:
   std::vector<int32_t> dense_;

@@ -18,7 +18,7 @@ struct Moments {
   void Add(const Eigen::Vector3d& d) {
     ++count;
     sum += d;
-    outer += d * d.transpose();
+    outer.selfadjointView<Eigen::Upper>().rankUpdate(d);  // Upper triangle only.
   }
   void Merge(const Moments& other) {
     count += other.count;
@@ -51,13 +51,11 @@ RawLayer BinPoints(const std::vector<Eigen::Vector3d>& points,
   CellIndex index(geometry.num_grid_cells());
   const double inverse_size = 1.0 / geometry.cell_size;
   for (const Eigen::Vector3d& p : points) {
-    // Points lie inside the box; min() keeps rounding at the max face inside.
+    // Points lie inside the box (p >= origin, so truncation is floor);
+    // min() keeps rounding at the max face inside.
     const Eigen::Vector3i ijk = ((p - origin) * inverse_size)
-                                    .array()
-                                    .floor()
                                     .cast<int>()
-                                    .max(0)
-                                    .min(geometry.dims.array() - 1);
+                                    .cwiseMin(geometry.dims - Eigen::Vector3i::Ones());
     const int32_t slot = index.FindOrInsert(geometry.Key(ijk),
                                             static_cast<int32_t>(raw.keys.size()));
     if (slot == static_cast<int32_t>(raw.keys.size())) {
@@ -113,8 +111,8 @@ NdtLayer FinishLayer(const RawLayer& raw,
     }
     const double n = static_cast<double>(m.count);
     const Eigen::Vector3d mean = m.sum / n;
-    const Eigen::Matrix3d covariance =
-        (m.outer - n * mean * mean.transpose()) / (n - 1.0);
+    const Eigen::Matrix3d outer = m.outer.selfadjointView<Eigen::Upper>();
+    const Eigen::Matrix3d covariance = (outer - n * mean * mean.transpose()) / (n - 1.0);
     NdtCell cell;
     if (!MakeNdtCell(static_cast<int32_t>(m.count),
                      mean + centre,

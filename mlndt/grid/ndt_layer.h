@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "mlndt/common/fast_floor.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/ndt_cell.h"
 
@@ -34,15 +35,22 @@ class NdtLayer {
   const std::vector<NdtCell>& cells() const { return cells_; }  // Occupied.
   const std::vector<int64_t>& keys() const { return keys_; }
 
-  // Integer cell coordinates of `point` (may lie outside the grid).
+  // Integer cell coordinates of `point` (may lie outside the grid). Points
+  // beyond the grid's border cells are put two cells out, so that not even
+  // their neighbours are inside, and so are non-finite points.
   Eigen::Vector3i CellCoordinates(const Eigen::Vector3d& point) const {
-    const Eigen::Vector3d scaled = (point - origin_) * inverse_cell_size_;
-    // Clamp before the cast so that far-away points stay outside the grid
-    // instead of overflowing, two cells out so that not even their
-    // neighbours are inside. Non-finite points go far outside.
-    const Eigen::Vector3d clamped = scaled.array().floor().max(-2.0).min(
-        dims_.cast<double>().array() + 1.0);
-    return clamped.allFinite() ? clamped.cast<int>() : Eigen::Vector3i(-2, -2, -2);
+    Eigen::Vector3i ijk;
+    for (int a = 0; a < 3; ++a) {
+      const double s = (point(a) - origin_(a)) * inverse_cell_size_;
+      if (!(s >= -1.0)) {  // Also NaN.
+        ijk(a) = -2;
+      } else if (!(s < dims_(a) + 1.0)) {
+        ijk(a) = dims_(a) + 1;
+      } else {
+        ijk(a) = static_cast<int>(FloorToInt64(s));
+      }
+    }
+    return ijk;
   }
 
   // The occupied cell at integer coordinates `ijk`, or nullptr.

@@ -20,6 +20,8 @@
 #include <limits>
 #include <vector>
 
+#include "mlndt/common/fast_floor.h"
+
 namespace mlndt {
 
 // Largest |voxel index| a key may hold (2^62): floor() of anything larger is
@@ -68,17 +70,17 @@ struct VoxelKeyHash {
 inline bool ComputeVoxelKey(const Eigen::Vector3d& point,
                             double voxel_size_m,
                             VoxelKey* key) {
-  const double fx = std::floor(point.x() / voxel_size_m);
-  const double fy = std::floor(point.y() / voxel_size_m);
-  const double fz = std::floor(point.z() / voxel_size_m);
+  const double fx = point.x() / voxel_size_m;
+  const double fy = point.y() / voxel_size_m;
+  const double fz = point.z() / voxel_size_m;
   // The negated comparisons also reject NaN.
   if (!(std::abs(fx) <= kMaxVoxelIndex) || !(std::abs(fy) <= kMaxVoxelIndex) ||
       !(std::abs(fz) <= kMaxVoxelIndex)) {
     return false;
   }
-  key->x = static_cast<int64_t>(fx);
-  key->y = static_cast<int64_t>(fy);
-  key->z = static_cast<int64_t>(fz);
+  key->x = FloorToInt64(fx);
+  key->y = FloorToInt64(fy);
+  key->z = FloorToInt64(fz);
   return true;
 }
 
