@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages mlndt needs, only those that are missing.
+#   scripts/install_deps.sh [--with-pcl]
+# --with-pcl also installs libpcl-dev (large), for -DMLNDT_WITH_PCL=ON.
 set -euo pipefail
 
 packages=(
@@ -8,6 +10,16 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev
   gnuplot-nox
 )
+
+for arg in "$@"; do
+  case "$arg" in
+    --with-pcl) packages+=(libpcl-dev) ;;
+    *)
+      echo "install_deps: unknown argument '$arg' (usage: $0 [--with-pcl])" >&2
+      exit 1
+      ;;
+  esac
+done
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,0 +1,199 @@
+// Runs the built mlndt_bench binary (tests/testing/test_data.h ToolPath) on
+// the bundled koide3 pair and checks its markdown table, CSV and exit codes.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/testing/test_data.h"
+
+namespace mlndt {
+namespace {
+
+struct ToolRun {
+  int exit_code = -1;
+  std::vector<std::string> lines;  // stdout, one entry per line.
+  std::string err;                 // stderr.
+};
+
+// Single-quotes `text` for /bin/sh.
+std::string Quote(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) {
+    if (c == '\'') {
+      out += "'\\''";
+    } else {
+      out += c;
+    }
+  }
+  return out + "'";
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+std::vector<std::string> Split(const std::string& text, char separator) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, separator)) items.push_back(item);
+  if (!text.empty() && text.back() == separator) items.push_back("");
+  return items;
+}
+
+std::string TempPath(const std::string& name) {
+  return ::testing::TempDir() + "mlndt_bench_test_" + name;
+}
+
+// Runs mlndt_bench with `args` (already quoted where needed); stderr goes to
+// a file named after the current test, since ctest may run tests in parallel.
+ToolRun RunBench(const std::string& args) {
+  const std::string err_path =
+      TempPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+               ".stderr");
+  const std::string command =
+      Quote(testing::ToolPath("mlndt_bench")) + " " + args + " 2>" + Quote(err_path);
+  ToolRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) {
+    ADD_FAILURE() << "popen failed: " << command;
+    return run;
+  }
+  std::string out;
+  char buffer[4096];
+  size_t n;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) out.append(buffer, n);
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::istringstream stream(out);
+  std::string line;
+  while (std::getline(stream, line)) {
+    if (!line.empty()) run.lines.push_back(line);
+  }
+  run.err = ReadFile(err_path);
+  return run;
+}
+
+// The cells of a markdown table row "| a | b |", trimmed.
+std::vector<std::string> TableCells(const std::string& line) {
+  std::vector<std::string> cells;
+  for (const std::string& cell : Split(line, '|')) {
+    const size_t begin = cell.find_first_not_of(' ');
+    if (begin == std::string::npos) continue;
+    cells.push_back(cell.substr(begin, cell.find_last_not_of(' ') - begin + 1));
+  }
+  return cells;
+}
+
+double ToNumber(const std::string& text) {
+  if (text.empty()) return std::nan("");
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  return *end == '\0' ? value : std::nan("");
+}
+
+const char kCsvHeader[] =
+    "pairs,method,backend,sampling,start_layer,linear_solver,trust_region,threads,runs,"
+    "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_score,"
+    "mean_translation_error_m,max_translation_error_m,mean_rotation_error_deg,"
+    "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_ms,pcl_over_ours";
+
+TEST(MlndtBench, NewtonAndLmOnTheKoide3Pair) {
+  const std::string csv_path = TempPath("koide3.csv");
+  std::remove(csv_path.c_str());
+  const ToolRun run = RunBench("--repetitions=1 --pairs=koide3 --backends=newton,lm --output_csv=" +
+                               Quote(csv_path));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+
+  // Markdown table: a header, a rule and one row per backend.
+  std::vector<std::vector<std::string>> rows;
+  for (const std::string& line : run.lines) {
+    if (line.rfind("|", 0) == 0 && line.find("---") == std::string::npos) {
+      rows.push_back(TableCells(line));
+    }
+  }
+  ASSERT_EQ(rows.size(), 3u) << "header + 2 rows expected";
+  const std::vector<std::string>& header = rows[0];
+  ASSERT_GE(header.size(), 2u);
+  EXPECT_EQ(header[0], "pairs");
+  EXPECT_EQ(header[1], "method");
+  EXPECT_EQ(rows[1][1], "newton");
+  EXPECT_EQ(rows[2][1], "lm");
+  for (size_t r = 1; r < rows.size(); ++r) {
+    EXPECT_EQ(rows[r].size(), header.size());
+    EXPECT_EQ(rows[r][0], "koide3");
+  }
+
+  // CSV: the header and one row per backend.
+  const std::vector<std::string> lines = Split(ReadFile(csv_path), '\n');
+  ASSERT_EQ(lines.size(), 4u) << "header, 2 rows and a final newline expected";
+  EXPECT_EQ(lines[3], "");
+  ASSERT_EQ(lines[0], kCsvHeader);
+  const std::vector<std::string> names = Split(lines[0], ',');
+  const std::vector<std::string> backends = {"newton", "lm"};
+  for (size_t r = 0; r < backends.size(); ++r) {
+    SCOPED_TRACE(lines[r + 1]);
+    const std::vector<std::string> values = Split(lines[r + 1], ',');
+    ASSERT_EQ(values.size(), names.size());
+    std::map<std::string, std::string> row;
+    for (size_t c = 0; c < names.size(); ++c) row[names[c]] = values[c];
+    EXPECT_EQ(row["pairs"], "koide3");
+    EXPECT_EQ(row["method"], "mlndt");
+    EXPECT_EQ(row["backend"], backends[r]);
+    EXPECT_EQ(row["runs"], "1");
+    EXPECT_EQ(row["linear_solver"], "");  // Ceres only.
+    EXPECT_EQ(row["pcl_over_ours"], "");  // No --compare_pcl.
+    // T_target_source.txt is a reference result, not ground truth: 5 cm / 1 deg.
+    const double translation_error = ToNumber(row["mean_translation_error_m"]);
+    const double rotation_error = ToNumber(row["mean_rotation_error_deg"]);
+    ASSERT_TRUE(std::isfinite(translation_error));
+    ASSERT_TRUE(std::isfinite(rotation_error));
+    EXPECT_LT(translation_error, 0.05);
+    EXPECT_LT(rotation_error, 1.0);
+    EXPECT_EQ(ToNumber(row["success_rate"]), 1.0);
+    const double time = ToNumber(row["time_median_ms"]);
+    EXPECT_GT(time, 0.0);
+    EXPECT_EQ(ToNumber(row["time_min_ms"]), time);  // One round.
+    EXPECT_EQ(ToNumber(row["time_max_ms"]), time);
+    EXPECT_GT(ToNumber(row["mean_iterations"]), 0.0);
+    EXPECT_TRUE(std::isfinite(ToNumber(row["mean_final_score"])));
+  }
+}
+
+TEST(MlndtBench, UnknownBackendFails) {
+  const ToolRun run = RunBench("--repetitions=1 --pairs=koide3 --backends=newton,foo");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_TRUE(run.lines.empty());
+  EXPECT_NE(run.err.find("--backends"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("foo"), std::string::npos) << run.err;
+}
+
+TEST(MlndtBench, RejectsBadFlagValues) {
+  for (const std::string flags :
+       {"--backends=foo", "--pairs=bar", "--samplings=none", "--threads=1,x", "--threads=0",
+        "--start_layers=", "--linear_solvers=cholesky", "--trust_regions=newton",
+        "--kitti_gaps=0", "--repetitions=0", "--pairs=koide3 --output_csv=/nonexistent/x.csv",
+        "unexpected_argument"}) {
+    SCOPED_TRACE(flags);
+    const ToolRun run = RunBench(flags);
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_TRUE(run.lines.empty());
+    EXPECT_NE(run.err.find("mlndt_bench: "), std::string::npos) << run.err;
+  }
+}
+
+}  // namespace
+}  // namespace mlndt
