@@ -1,4 +1,5 @@
-// mlndt_align: registers one input scan onto a reference scan with ML-NDT and
+// mlndt_align: registers one input scan onto a reference scan with ML-NDT
+// (or, with --method=ndt, the conventional single-grid NDT baseline) and
 // reports the pose, a per-iteration trace and timings (README's main job).
 //
 //   mlndt_align --reference=ref.pcd --input=in.pcd [--initial_guess=tx,ty,tz,a,b,g]
@@ -157,6 +158,7 @@ int Run() {
     tools::JsonObject json;
     json.AddString("reference", reference_path)
         .AddString("input", input_path)
+        .AddString("method", MethodToString(summary.method))
         .Add("reference_from_input", MatrixJson(summary.reference_from_input))
         .AddBool("converged", summary.termination_type == TerminationType::CONVERGENCE)
         .AddString("termination", TerminationTypeToString(summary.termination_type))
@@ -200,7 +202,7 @@ int Run() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
-      "Registers --input onto --reference with ML-NDT.\n"
+      "Registers --input onto --reference with ML-NDT (--method=mlndt) or NDT (--method=ndt).\n"
       "  mlndt_align --reference=ref.pcd --input=in.pcd [--initial_guess=tx,ty,tz,a,b,g]");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);

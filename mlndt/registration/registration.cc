@@ -7,9 +7,11 @@
 #include <glog/logging.h>
 
 #include "mlndt/common/check_option.h"
+#include "mlndt/common/enum_strings.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/score.h"
+#include "mlndt/registration/ndt_registration.h"
 
 namespace mlndt {
 namespace {
@@ -33,7 +35,53 @@ std::unique_ptr<Backend> CreateBackend(const RegistrationOptions& options, std::
   return nullptr;
 }
 
-// The whole registration after the map exists; times are added to *summary.
+// Checks the input and the initial guess and samples the input (Section
+// 4.3), filling the sampling counts and time. False (summary FAILURE) when
+// nothing usable is left.
+bool SampleInput(const RegistrationOptions& options,
+                 const PointCloud& input,
+                 const Isometry3d& initial_reference_from_input,
+                 PointCloud* sampled,
+                 RegistrationSummary* summary) {
+  std::string error;
+  if (input.empty()) {
+    error = "the input cloud is empty";
+  } else if (!AllFinite(input)) {
+    error = "the input cloud has non-finite points";
+  } else if (!initial_reference_from_input.matrix().allFinite()) {
+    error = "the initial guess is not finite";
+  } else {
+    const double t0 = NowSeconds();
+    SamplingSummary sampling_summary;
+    if (!SamplePoints(options.sampling, input, sampled, &sampling_summary, &error)) {
+      error = "sampling: " + error;
+    } else {
+      summary->sampling_time_s = NowSeconds() - t0;
+      summary->input_points = input.size();
+      summary->sampled_points = sampled->size();
+      if (sampled->empty()) error = "sampling kept no input points";
+    }
+  }
+  if (error.empty()) return true;
+  Fail(error, summary);
+  return false;
+}
+
+// FAILURE when too few sampled points are matched at the solution.
+void CheckMatchedFraction(const RegistrationOptions& options, RegistrationSummary* summary) {
+  const double matched_fraction = static_cast<double>(summary->matched_points) /
+                                  static_cast<double>(summary->sampled_points);
+  if (matched_fraction < options.min_matched_fraction) {
+    std::ostringstream message;
+    message << "only " << summary->matched_points << " of " << summary->sampled_points
+            << " sampled points lie in an occupied cell at the solution (min_matched_fraction "
+            << options.min_matched_fraction << ")";
+    Fail(message.str(), summary);
+  }
+}
+
+// The whole ML-NDT registration after the map exists; times are added to
+// *summary.
 void RegisterOnMap(const RegistrationOptions& options,
                    const LayeredGrid& reference_map,
                    const PointCloud& input,
@@ -42,26 +90,16 @@ void RegisterOnMap(const RegistrationOptions& options,
                    RegistrationSummary* summary) {
   std::string error;
   if (!options.IsValid(&error)) return Fail(error, summary);
-  if (reference_map.empty()) return Fail("the reference map is empty", summary);
-  if (input.empty()) return Fail("the input cloud is empty", summary);
-  if (!AllFinite(input)) return Fail("the input cloud has non-finite points", summary);
-  if (!initial_reference_from_input.matrix().allFinite()) {
-    return Fail("the initial guess is not finite", summary);
+  if (options.method != Method::MLNDT) {
+    return Fail("method NDT needs the reference cloud (it builds its own single grid); "
+                "call the Register overload that takes the reference PointCloud",
+                summary);
   }
+  if (reference_map.empty()) return Fail("the reference map is empty", summary);
   std::unique_ptr<Backend> backend = CreateBackend(options, &error);
   if (!backend) return Fail(error, summary);
-
-  // Sampling (Section 4.3).
-  double t0 = NowSeconds();
   PointCloud sampled;
-  SamplingSummary sampling_summary;
-  if (!SamplePoints(options.sampling, input, &sampled, &sampling_summary, &error)) {
-    return Fail("sampling: " + error, summary);
-  }
-  summary->sampling_time_s = NowSeconds() - t0;
-  summary->input_points = input.size();
-  summary->sampled_points = sampled.size();
-  if (sampled.empty()) return Fail("sampling kept no input points", summary);
+  if (!SampleInput(options, input, initial_reference_from_input, &sampled, summary)) return;
 
   // Registration process (Table 1).
   const Vector6d initial_xi = IsometryToPoseVector(initial_reference_from_input);
@@ -74,7 +112,7 @@ void RegisterOnMap(const RegistrationOptions& options,
   summary->initial_score = EvaluateScore(last, sampled.points(), xi, options.unmatched_policy,
                                          options.loss, options.loss_scale)
                                .score;
-  t0 = NowSeconds();
+  const double t0 = NowSeconds();
   StageOptions stage;
   stage.unmatched_policy = options.unmatched_policy;
   stage.loss = options.loss;
@@ -107,15 +145,30 @@ void RegisterOnMap(const RegistrationOptions& options,
   summary->covariance = lu.isInvertible() ? Matrix6d(2.0 * lu.inverse()) : Matrix6d::Zero();
   summary->termination_type = schedule.termination_type;
   summary->message = schedule.message;
-  const double matched_fraction =
-      static_cast<double>(final.matched) / static_cast<double>(sampled.size());
-  if (matched_fraction < options.min_matched_fraction) {
-    std::ostringstream message;
-    message << "only " << final.matched << " of " << sampled.size()
-            << " sampled points lie in an occupied cell at the solution (min_matched_fraction "
-            << options.min_matched_fraction << ")";
-    Fail(message.str(), summary);
+  CheckMatchedFraction(options, summary);
+}
+
+// The conventional NDT baseline (ndt_registration.h); options are valid.
+void RegisterNdt(const RegistrationOptions& options,
+                 const PointCloud& reference,
+                 const PointCloud& input,
+                 const Isometry3d& initial_reference_from_input,
+                 double start_time_s,
+                 RegistrationSummary* summary) {
+  std::string error;
+  NdtLayer grid;
+  if (!internal::BuildNdtGrid(options, reference, &grid, &error)) {
+    return Fail("reference map: " + error, summary);
   }
+  summary->map_time_s = NowSeconds() - start_time_s;
+  PointCloud sampled;
+  if (!SampleInput(options, input, initial_reference_from_input, &sampled, summary)) return;
+  if (!internal::RegisterOnNdtGrid(options, grid, sampled.points(),
+                                   IsometryToPoseVector(initial_reference_from_input),
+                                   start_time_s, summary, &error)) {
+    return Fail(error, summary);
+  }
+  CheckMatchedFraction(options, summary);
 }
 
 }  // namespace
@@ -130,12 +183,41 @@ LayerScheduleOptions DefaultRegistrationScheduleOptions() {
   LayerScheduleOptions options;
   options.start_layer = 1;
   options.iterations_per_layer = 6;
+  options.max_coarse_point_stride = 8;
   return options;
 }
 
+const char* MethodToString(Method method) {
+  switch (method) {
+    case Method::MLNDT:
+      return "MLNDT";
+    case Method::NDT:
+      return "NDT";
+  }
+  return "UNKNOWN";
+}
+
+bool StringToMethod(std::string value, Method* result) {
+  UpperCase(&value);
+  if (value == "ML-NDT" || value == "ML_NDT") value = "MLNDT";
+  MLNDT_STRING_TO_ENUM(MLNDT, Method);
+  MLNDT_STRING_TO_ENUM(NDT, Method);
+  return false;
+}
+
+bool NdtBaselineOptions::IsValid(std::string* error) const {
+  MLNDT_OPTION_GE(cell_size_m, 0.0);
+  MLNDT_OPTION_GT(outlier_ratio, 0.0);
+  MLNDT_OPTION_LT(outlier_ratio, 1.0);
+  MLNDT_OPTION_GE(max_iterations, 1);
+  MLNDT_OPTION_GE(max_step_norm, 0.0);
+  return true;
+}
+
 bool RegistrationOptions::IsValid(std::string* error) const {
-  if (!grid.IsValid(error) || !sampling.IsValid(error) || !schedule.IsValid(error) ||
-      !ceres.IsValid(error) || !newton.IsValid(error) || !levenberg_marquardt.IsValid(error)) {
+  if (!ndt.IsValid(error) || !grid.IsValid(error) || !sampling.IsValid(error) ||
+      !schedule.IsValid(error) || !ceres.IsValid(error) || !newton.IsValid(error) ||
+      !levenberg_marquardt.IsValid(error)) {
     return false;
   }
   MLNDT_OPTION_GE(num_threads, 1);
@@ -152,6 +234,7 @@ void Register(const RegistrationOptions& options,
               RegistrationSummary* summary) {
   CHECK(summary != nullptr);
   *summary = RegistrationSummary();
+  summary->method = options.method;
   const double start = NowSeconds();
   RegisterOnMap(options, reference_map, input, initial_reference_from_input, start, summary);
   summary->total_time_s = NowSeconds() - start;
@@ -164,11 +247,14 @@ void Register(const RegistrationOptions& options,
               RegistrationSummary* summary) {
   CHECK(summary != nullptr);
   *summary = RegistrationSummary();
+  summary->method = options.method;
   const double start = NowSeconds();
   std::string error;
   LayeredGrid map;
   if (!options.IsValid(&error)) {
     Fail(error, summary);
+  } else if (options.method == Method::NDT) {
+    RegisterNdt(options, reference, input, initial_reference_from_input, start, summary);
   } else if (!LayeredGrid::Build(options.grid, reference, &map, &error)) {
     Fail("reference map: " + error, summary);
   } else {
@@ -180,9 +266,10 @@ void Register(const RegistrationOptions& options,
 
 std::string RegistrationSummary::BriefReport() const {
   std::ostringstream out;
-  out << "ML-NDT registration: " << TerminationTypeToString(termination_type) << ", "
-      << num_iterations << " iterations, score " << initial_score << " -> " << final_score
-      << ", " << std::fixed << std::setprecision(1) << total_time_s * 1e3 << " ms";
+  out << (method == Method::NDT ? "NDT" : "ML-NDT") << " registration: "
+      << TerminationTypeToString(termination_type) << ", " << num_iterations
+      << " iterations, score " << initial_score << " -> " << final_score << ", " << std::fixed
+      << std::setprecision(1) << total_time_s * 1e3 << " ms";
   return out.str();
 }
 
@@ -195,9 +282,14 @@ std::string RegistrationSummary::FullReport() const {
   out << "  pose xi:        t = (" << xi(0) << ", " << xi(1) << ", " << xi(2) << ") m, "
       << "(alpha, beta, gamma) = (" << xi(3) * kRadToDeg << ", " << xi(4) * kRadToDeg << ", "
       << xi(5) * kRadToDeg << ") deg\n";
-  out << "  layers:         start " << start_layer << " of " << num_layers << ", iterations";
-  for (size_t i = 0; i < iterations_per_layer.size(); ++i) {
-    out << " L" << i + 1 << "=" << iterations_per_layer[i];
+  if (method == Method::NDT) {
+    out << "  grid:           one grid of " << ndt_cell_size_m << " m cells, iterations "
+        << num_iterations;
+  } else {
+    out << "  layers:         start " << start_layer << " of " << num_layers << ", iterations";
+    for (size_t i = 0; i < iterations_per_layer.size(); ++i) {
+      out << " L" << i + 1 << "=" << iterations_per_layer[i];
+    }
   }
   out << "\n  points:         " << input_points << " input, " << sampled_points << " sampled, "
       << matched_points << " matched, " << unmatched_points << " unmatched\n";

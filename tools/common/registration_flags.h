@@ -11,7 +11,20 @@
 #include "mlndt/common/enum_strings.h"
 #include "mlndt/registration/registration.h"
 
-DEFINE_string(method, "mlndt", "mlndt (layered map, Mahalanobis score) or ndt (not built yet)");
+DEFINE_string(method, "mlndt",
+              "mlndt (layered map, Mahalanobis score) | ndt (conventional single-grid NDT, "
+              "Gaussian score, Newton; --backend/--loss/--unmatched do not apply)");
+DEFINE_double(ndt_cell_size, mlndt::NdtBaselineOptions().cell_size_m,
+              "--method=ndt: cell edge [m]; 0 = the paper's layer-2 cell (V / 64)^(1/3)");
+DEFINE_double(ndt_outlier_ratio, mlndt::NdtBaselineOptions().outlier_ratio,
+              "--method=ndt: Magnusson's outlier ratio in (0, 1) (PCL: 0.55)");
+DEFINE_string(ndt_neighbors,
+              mlndt::NdtNeighborsToString(mlndt::NdtBaselineOptions().neighbors),
+              "--method=ndt: cells a point is scored in: direct1 (its own) | direct7 (+6 faces)");
+DEFINE_int32(ndt_max_iterations, mlndt::NdtBaselineOptions().max_iterations,
+             "--method=ndt: Newton iteration cap");
+DEFINE_double(ndt_max_step, mlndt::NdtBaselineOptions().max_step_norm,
+              "--method=ndt: longest Newton step ||delta xi|| (m and rad); 0 = unbounded");
 DEFINE_string(backend, "ceres", "ceres | newton | lm");
 DEFINE_string(sampling, "gbs", "gbs | random | all | voxel_centroid");
 DEFINE_double(random_fraction, 0.15, "Fraction of the input kept by --sampling=random");
@@ -36,6 +49,12 @@ DEFINE_int32(max_iterations, mlndt::DefaultRegistrationScheduleOptions().max_fin
              "Iteration cap on the last layer");
 DEFINE_double(step_tolerance, mlndt::DefaultRegistrationScheduleOptions().step_tolerance,
               "Convergence: update norm on the last layer");
+DEFINE_double(coarse_step_tolerance,
+              mlndt::DefaultRegistrationScheduleOptions().coarse_step_tolerance,
+              "A coarse layer ends early below this update norm (0 = fixed iterations)");
+DEFINE_int32(max_coarse_point_stride,
+             mlndt::DefaultRegistrationScheduleOptions().max_coarse_point_stride,
+             "Layer i of n uses every min(2^(n-i), this)-th sample (1 = all)");
 DEFINE_string(unmatched, "nearest_cell", "zero_residual | nearest_cell");
 DEFINE_string(loss, "cauchy", "none | huber | cauchy");
 DEFINE_double(loss_scale, mlndt::RegistrationOptions().loss_scale,
@@ -50,9 +69,12 @@ namespace tools {
 
 // Fills *options from the flags; false with *error naming a bad value.
 inline bool RegistrationOptionsFromFlags(RegistrationOptions* options, std::string* error) {
-  if (FLAGS_method != "mlndt") {
-    *error = "--method=" + FLAGS_method +
-             ": only 'mlndt' is built yet (conventional NDT arrives with the backends issue)";
+  if (!StringToMethod(FLAGS_method, &options->method)) {
+    *error = "--method=" + FLAGS_method + ": expected mlndt or ndt";
+    return false;
+  }
+  if (!StringToNdtNeighbors(FLAGS_ndt_neighbors, &options->ndt.neighbors)) {
+    *error = "--ndt_neighbors=" + FLAGS_ndt_neighbors + ": expected direct1 or direct7";
     return false;
   }
   if (!StringToBackendType(FLAGS_backend, &options->backend)) {
@@ -91,12 +113,18 @@ inline bool RegistrationOptionsFromFlags(RegistrationOptions* options, std::stri
   options->schedule.iterations_per_layer = FLAGS_iterations_per_layer;
   options->schedule.max_final_iterations = FLAGS_max_iterations;
   options->schedule.step_tolerance = FLAGS_step_tolerance;
+  options->schedule.coarse_step_tolerance = FLAGS_coarse_step_tolerance;
+  options->schedule.max_coarse_point_stride = FLAGS_max_coarse_point_stride;
   options->grid.num_layers = FLAGS_num_layers;
   options->grid.division_constant = FLAGS_division_constant;
   options->grid.finest_cell_size_m = FLAGS_finest_cell_size;
   options->grid.min_points_per_cell = FLAGS_min_points_per_cell;
   options->grid.regularization.min_eigenvalue_m2 = FLAGS_min_eigenvalue;
   options->grid.regularization.min_eigenvalue_ratio = FLAGS_min_eigenvalue_ratio;
+  options->ndt.cell_size_m = FLAGS_ndt_cell_size;
+  options->ndt.outlier_ratio = FLAGS_ndt_outlier_ratio;
+  options->ndt.max_iterations = FLAGS_ndt_max_iterations;
+  options->ndt.max_step_norm = FLAGS_ndt_max_step;
   options->loss_scale = FLAGS_loss_scale;
   options->num_threads = FLAGS_threads;
   return options->IsValid(error);

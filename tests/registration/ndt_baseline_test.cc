@@ -1,0 +1,292 @@
+// The conventional single-grid NDT baseline (RegistrationOptions::method =
+// NDT): summary, failures, convergence on the synthetic street scene and the
+// bundled KITTI pairs, and the paper's long-range claim against ML-NDT.
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+#include "mlndt/cloud/io.h"
+#include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/cost/ndt_gaussian_score.h"
+#include "mlndt/grid/single_grid.h"
+#include "mlndt/registration/ndt_objective.h"
+#include "mlndt/registration/registration.h"
+#include "tests/testing/synthetic_scene.h"
+#include "tests/testing/test_data.h"
+
+namespace mlndt {
+namespace {
+
+RegistrationOptions NdtOptions(double cell_size_m,
+                               NdtNeighbors neighbors = NdtBaselineOptions().neighbors) {
+  RegistrationOptions options;
+  options.method = Method::NDT;
+  options.ndt.cell_size_m = cell_size_m;
+  options.ndt.neighbors = neighbors;
+  return options;
+}
+
+// Registers a second sampling of the street scene, seen from a sensor at
+// `reference_from_input`, from the identity.
+RegistrationSummary RegisterStreet(const Isometry3d& reference_from_input,
+                                   const RegistrationOptions& options) {
+  const PointCloud reference = testing::StreetScene(60000, 0.02, 1);
+  const PointCloud input =
+      TransformCloud(reference_from_input.inverse(), testing::StreetScene(60000, 0.02, 2));
+  RegistrationSummary summary;
+  Register(options, reference, input, Isometry3d::Identity(), &summary);
+  return summary;
+}
+
+TEST(Method, StringsRoundTrip) {
+  for (Method m : {Method::MLNDT, Method::NDT}) {
+    Method parsed = m == Method::MLNDT ? Method::NDT : Method::MLNDT;
+    EXPECT_TRUE(StringToMethod(MethodToString(m), &parsed));
+    EXPECT_EQ(parsed, m);
+  }
+  Method parsed;
+  EXPECT_TRUE(StringToMethod("ndt", &parsed));
+  EXPECT_EQ(parsed, Method::NDT);
+  EXPECT_TRUE(StringToMethod("mlndt", &parsed));
+  EXPECT_EQ(parsed, Method::MLNDT);
+  EXPECT_FALSE(StringToMethod("icp", &parsed));
+}
+
+TEST(NdtBaseline, ObjectiveIsTheGaussianScore) {
+  const PointCloud reference = testing::StreetScene(20000, 0.02, 1);
+  const PointCloud input = testing::StreetScene(5000, 0.02, 2);
+  SingleGridOptions grid_options;
+  grid_options.cell_size_m = 2.0;
+  NdtLayer grid;
+  LayerInfo info;
+  std::string error;
+  ASSERT_TRUE(BuildSingleGrid(grid_options, reference, &grid, &info, &error)) << error;
+  GaussianScoreOptions score_options;
+  const NdtGaussianObjective objective(grid, input.points(), score_options);
+  const Vector6d xi = PoseVectorFromDegrees(0.1, -0.1, 0.0, 0.5, 0.0, 1.0);
+  for (HessianType h : {HessianType::NONE, HessianType::GAUSS_NEWTON, HessianType::FULL}) {
+    score_options.hessian = h;
+    const ScoreEvaluation direct = EvaluateGaussianScore(grid, input.points(), xi, score_options);
+    const ScoreEvaluation via = objective.Evaluate(xi, h);
+    EXPECT_EQ(via.score, direct.score);
+    EXPECT_EQ(via.gradient, direct.gradient);
+    EXPECT_EQ(via.hessian, direct.hessian);
+    EXPECT_EQ(via.matched, direct.matched);
+  }
+}
+
+// Small motions the Gaussian score's basin holds with 1 m cells. DIRECT1's
+// basin is narrow on this scene (about 0.1 m and 0.3 deg: a 0.15 m shift
+// along the street, where only boxes, poles and recesses constrain x, or a
+// 0.5 deg yaw, 0.35 m at the scene's ends, is not recovered); DIRECT7
+// widens it to 1 m and 4 deg.
+struct SmallTransformCase {
+  NdtNeighbors neighbors;
+  double tx, ty, tz, alpha_deg, beta_deg, gamma_deg;
+};
+
+class NdtSmallTransform : public ::testing::TestWithParam<SmallTransformCase> {};
+
+TEST_P(NdtSmallTransform, RecoversKnownTransformWithOneMetreCells) {
+  const SmallTransformCase& c = GetParam();
+  const Isometry3d truth = PoseVectorToIsometry(
+      PoseVectorFromDegrees(c.tx, c.ty, c.tz, c.alpha_deg, c.beta_deg, c.gamma_deg));
+  const RegistrationSummary s = RegisterStreet(truth, NdtOptions(1.0, c.neighbors));
+  ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
+  EXPECT_LT(TranslationErrorM(truth, s.reference_from_input), 0.02) << s.FullReport();
+  EXPECT_LT(RotationErrorRad(truth, s.reference_from_input) * kRadToDeg, 0.1) << s.FullReport();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Synthetic,
+    NdtSmallTransform,
+    ::testing::Values(SmallTransformCase{NdtNeighbors::DIRECT1, 0.05, 0.05, 0, 0, 0, 0.3},
+                      SmallTransformCase{NdtNeighbors::DIRECT1, 0.05, 0.1, 0.05, 0.2, 0.1, 0.3},
+                      SmallTransformCase{NdtNeighbors::DIRECT1, 0.03, -0.1, 0.03, 0.3, -0.2, -0.3},
+                      SmallTransformCase{NdtNeighbors::DIRECT7, 0.3, 0.2, 0, 0, 0, 2},
+                      SmallTransformCase{NdtNeighbors::DIRECT7, 0.5, -0.3, 0.05, 0.5, 0, 3}));
+
+TEST(NdtBaseline, SummaryIsComplete) {
+  const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(0.2, 0.1, 0, 0, 0, 1));
+  const RegistrationSummary s = RegisterStreet(truth, NdtOptions(2.0));
+  ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
+  EXPECT_EQ(s.method, Method::NDT);
+  EXPECT_EQ(s.BriefReport().rfind("NDT registration", 0), 0u) << s.BriefReport();
+  EXPECT_NE(s.FullReport().find("one grid of 2.0000 m cells"), std::string::npos)
+      << s.FullReport();
+  EXPECT_EQ(s.ndt_cell_size_m, 2.0);
+  EXPECT_EQ(s.num_layers, 1);
+  EXPECT_EQ(s.start_layer, 1);
+  ASSERT_EQ(s.iterations_per_layer.size(), 1u);
+  EXPECT_EQ(s.iterations_per_layer[0], s.num_iterations);
+  EXPECT_EQ(static_cast<int>(s.trace.size()), s.num_iterations);
+  ASSERT_FALSE(s.trace.empty());
+  for (size_t i = 0; i < s.trace.size(); ++i) {
+    EXPECT_EQ(s.trace[i].layer, 1);
+    EXPECT_EQ(s.trace[i].iteration, static_cast<int>(i) + 1);
+    if (i > 0) EXPECT_GE(s.trace[i].time_s, s.trace[i - 1].time_s);
+  }
+  EXPECT_LE(s.num_iterations, NdtBaselineOptions().max_iterations);
+  EXPECT_GT(s.sampled_points, 0u);
+  EXPECT_EQ(s.matched_points + s.unmatched_points, s.sampled_points);
+  EXPECT_GT(s.map_time_s, 0.0);
+  EXPECT_GT(s.solve_time_s, 0.0);
+  EXPECT_GE(s.total_time_s, s.map_time_s + s.sampling_time_s + s.solve_time_s);
+  // Gaussian scores are negative and lower is better.
+  EXPECT_LT(s.final_score, 0.0);
+  EXPECT_LT(s.final_score, s.initial_score);
+  EXPECT_EQ(s.final_score, s.trace.back().score);
+  // At a minimum the full Newton Hessian is positive definite, and the
+  // covariance is its inverse.
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(s.hessian);
+  EXPECT_GT(solver.eigenvalues().minCoeff(), 0.0);
+  EXPECT_LT((s.covariance * s.hessian - Matrix6d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT(std::sqrt(s.covariance(0, 0)), 0.05);
+}
+
+TEST(NdtBaseline, DefaultCellIsThePapersLayerTwoCell) {
+  const PointCloud reference = testing::StreetScene(60000, 0.02, 1);
+  const RegistrationSummary s = RegisterStreet(Isometry3d::Identity(), NdtOptions(0.0));
+  ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
+  EXPECT_NEAR(s.ndt_cell_size_m, PaperNdtCellSize(BoundingBox(reference).sizes()), 1e-9);
+}
+
+TEST(NdtBaseline, PrebuiltMapOverloadFails) {
+  const PointCloud reference = testing::StreetScene(20000, 0.02, 1);
+  LayeredGrid map;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(RegistrationOptions().grid, reference, &map, &error)) << error;
+  RegistrationSummary s;
+  Register(NdtOptions(1.0), map, reference, Isometry3d::Identity(), &s);
+  EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
+  EXPECT_EQ(s.method, Method::NDT);
+  EXPECT_NE(s.message.find("method NDT needs the reference cloud"), std::string::npos)
+      << s.message;
+}
+
+TEST(NdtBaseline, InvalidOptionsAndBadInputGiveFailure) {
+  const PointCloud cloud = testing::StreetScene(5000, 0.02, 1);
+  RegistrationSummary s;
+  RegistrationOptions options = NdtOptions(1.0);
+  options.ndt.outlier_ratio = 1.0;
+  Register(options, cloud, cloud, Isometry3d::Identity(), &s);
+  EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
+  EXPECT_NE(s.message.find("outlier_ratio"), std::string::npos) << s.message;
+
+  options = NdtOptions(-1.0);
+  Register(options, cloud, cloud, Isometry3d::Identity(), &s);
+  EXPECT_NE(s.message.find("cell_size_m"), std::string::npos) << s.message;
+
+  options = NdtOptions(1.0);
+  options.ndt.max_iterations = 0;
+  Register(options, cloud, cloud, Isometry3d::Identity(), &s);
+  EXPECT_NE(s.message.find("max_iterations"), std::string::npos) << s.message;
+
+  options = NdtOptions(1.0);
+  options.ndt.max_step_norm = -0.1;
+  Register(options, cloud, cloud, Isometry3d::Identity(), &s);
+  EXPECT_NE(s.message.find("max_step_norm"), std::string::npos) << s.message;
+
+  Register(NdtOptions(1.0), PointCloud(), cloud, Isometry3d::Identity(), &s);
+  EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
+  EXPECT_NE(s.message.find("reference"), std::string::npos) << s.message;
+
+  Register(NdtOptions(1.0), cloud, PointCloud(), Isometry3d::Identity(), &s);
+  EXPECT_NE(s.message.find("input cloud is empty"), std::string::npos) << s.message;
+
+  PointCloud nan_input = cloud;
+  nan_input.Add(Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0));
+  Register(NdtOptions(1.0), cloud, nan_input, Isometry3d::Identity(), &s);
+  EXPECT_NE(s.message.find("non-finite"), std::string::npos) << s.message;
+
+  // Clouds 1 km apart: no sampled point lies in an occupied cell.
+  Register(NdtOptions(1.0), cloud,
+           TransformCloud(PoseVectorToIsometry(PoseVectorFromDegrees(1000, 0, 0, 0, 0, 0)), cloud),
+           Isometry3d::Identity(), &s);
+  EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
+  EXPECT_NE(s.message.find("occupied cell"), std::string::npos) << s.message;
+}
+
+TEST(NdtBaseline, LongRangeStartFailsWhereMlNdtSucceeds) {
+  // The paper's long-range claim (Section 5.3): from the identity, 5 m and
+  // 20 deg away, ML-NDT converges; single-grid NDT with the small cells it
+  // needs for accuracy does not, and with the paper's comparison cell (one
+  // layer-2 cell, 8.5 m here) it ends ~9 cm off where ML-NDT ends ~1 mm off.
+  const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(5, 0, 0, 0, 0, 20));
+  const RegistrationSummary mlndt = RegisterStreet(truth, RegistrationOptions());
+  ASSERT_TRUE(mlndt.IsSolutionUsable()) << mlndt.message;
+  EXPECT_LT(TranslationErrorM(truth, mlndt.reference_from_input), 0.05) << mlndt.FullReport();
+  EXPECT_LT(RotationErrorRad(truth, mlndt.reference_from_input) * kRadToDeg, 0.3);
+
+  for (const RegistrationOptions& options :
+       {NdtOptions(1.0, NdtNeighbors::DIRECT1), NdtOptions(1.0, NdtNeighbors::DIRECT7),
+        NdtOptions(2.0)}) {
+    const RegistrationSummary ndt = RegisterStreet(truth, options);
+    const double error_m = TranslationErrorM(truth, ndt.reference_from_input);
+    EXPECT_TRUE(!ndt.IsSolutionUsable() || error_m > 1.0)
+        << "cell " << options.ndt.cell_size_m << " m: " << error_m << " m\n"
+        << ndt.FullReport();
+  }
+  const RegistrationSummary coarse = RegisterStreet(truth, NdtOptions(0.0));
+  EXPECT_GT(TranslationErrorM(truth, coarse.reference_from_input), 0.05) << coarse.FullReport();
+}
+
+class NdtKittiFrames : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    for (int i = 0; i < 8; ++i) {
+      PointCloud cloud;
+      std::string error;
+      ASSERT_TRUE(ReadPointCloud(
+          testing::BundledDataPath("kitti/pcd/00000" + std::to_string(i) + ".pcd"), &cloud,
+          nullptr, &error))
+          << error;
+      scans_.push_back(cloud);
+    }
+    std::string error;
+    ASSERT_TRUE(
+        ReadKittiPoses(testing::BundledDataPath("kitti/poses_velo.txt"), &poses_, &error))
+        << error;
+    ASSERT_EQ(poses_.size(), 8u);
+  }
+  // Consecutive pairs from identity within 0.2 m and 1 deg of ground truth.
+  // (The scans fit best at ~0.8x the ground-truth translation, so even a
+  // perfect result ends 0.1-0.17 m off.)
+  static int ConsecutiveSuccesses(const RegistrationOptions& options, std::string* report) {
+    int successes = 0;
+    for (int i = 0; i + 1 < 8; ++i) {
+      const Isometry3d truth = poses_[i].inverse() * poses_[i + 1];
+      RegistrationSummary s;
+      Register(options, scans_[i], scans_[i + 1], Isometry3d::Identity(), &s);
+      const double et = TranslationErrorM(truth, s.reference_from_input);
+      const double er = RotationErrorRad(truth, s.reference_from_input) * kRadToDeg;
+      successes += s.IsSolutionUsable() && et < 0.2 && er < 1.0;
+      *report += "pair " + std::to_string(i) + ": " + std::to_string(et) + " m, " +
+                 std::to_string(er) + " deg, " + s.message + "\n";
+    }
+    return successes;
+  }
+  static std::vector<PointCloud> scans_;
+  static std::vector<Isometry3d> poses_;
+};
+std::vector<PointCloud> NdtKittiFrames::scans_;
+std::vector<Isometry3d> NdtKittiFrames::poses_;
+
+TEST_F(NdtKittiFrames, ConsecutivePairsFromIdentity) {
+  // Issue requirement: >= 70 % of the 7 pairs (5). Measured: 5 of 7 with the
+  // paper's cell (~15 m; at the threshold: its coarse model ends 0.2-0.5 m
+  // off on the others), 7 of 7 with 2 m cells.
+  std::string report;
+  EXPECT_GE(ConsecutiveSuccesses(NdtOptions(0.0), &report), 5) << report;
+  report.clear();
+  EXPECT_GE(ConsecutiveSuccesses(NdtOptions(2.0), &report), 5) << report;
+}
+
+}  // namespace
+}  // namespace mlndt
