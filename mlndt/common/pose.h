@@ -38,8 +38,8 @@ Eigen::Matrix<T, 3, 3> EulerRotation(const T& alpha, const T& beta, const T& gam
 // x' = R(xi) x + t(xi) (Eq. 6) for a pose vector xi[6].
 template <typename T>
 Eigen::Matrix<T, 3, 1> TransformPoint(const T* xi, const Eigen::Vector3d& x) {
-  const Eigen::Matrix<T, 3, 3> r = EulerRotation(xi[3], xi[4], xi[5]);
-  return r * x.cast<T>() + Eigen::Matrix<T, 3, 1>(xi[0], xi[1], xi[2]);
+  return EulerRotation(xi[3], xi[4], xi[5]) * x.cast<T>() +
+         Eigen::Matrix<T, 3, 1>(xi[0], xi[1], xi[2]);
 }
 
 // Pose vector <-> rigid transform.

@@ -55,8 +55,8 @@ class MlNdtPointCost {
 
   template <typename T>
   bool operator()(const T* reference_from_input_xi, T* residual) const {
-    WhitenedCellResidual(layer_, policy_, TransformPoint(reference_from_input_xi, input_point_),
-                         residual);
+    WhitenedCellResidual(layer_, policy_,
+                         CachedTransformPoint(reference_from_input_xi, input_point_), residual);
     return true;
   }
 
