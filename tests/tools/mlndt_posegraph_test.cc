@@ -1,0 +1,195 @@
+// Runs the built mlndt_posegraph binary (tests/testing/test_data.h ToolPath)
+// on the bundled KITTI frames 0-7 and checks its outputs and exit codes.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mlndt/cloud/pose_io.h"
+#include "tests/testing/test_data.h"
+
+namespace mlndt {
+namespace {
+
+struct ToolRun {
+  int exit_code = -1;
+  std::string out;  // stdout.
+  std::string err;  // stderr.
+};
+
+// Single-quotes `text` for /bin/sh.
+std::string Quote(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) {
+    if (c == '\'') {
+      out += "'\\''";
+    } else {
+      out += c;
+    }
+  }
+  return out + "'";
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+// A fresh folder per test (ctest may run tests in parallel).
+std::string TempDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "mlndt_posegraph_test_" + name;
+  std::system(("rm -rf " + Quote(dir) + " && mkdir -p " + Quote(dir)).c_str());
+  return dir;
+}
+
+ToolRun RunPosegraph(const std::string& args, const std::string& dir) {
+  const std::string err_path = dir + "/stderr.txt";
+  const std::string command =
+      Quote(testing::ToolPath("mlndt_posegraph")) + " " + args + " 2>" + Quote(err_path);
+  ToolRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) {
+    ADD_FAILURE() << "popen failed: " << command;
+    return run;
+  }
+  char buffer[4096];
+  size_t n;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.out.append(buffer, n);
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = ReadFile(err_path);
+  return run;
+}
+
+// The number after `"key": ` in `json`; NaN when absent.
+double NumberAfter(const std::string& json, const std::string& key, size_t from = 0) {
+  const std::string pattern = "\"" + key + "\": ";
+  const size_t at = json.find(pattern, from);
+  if (at == std::string::npos) return std::nan("");
+  const char* begin = json.c_str() + at + pattern.size();
+  char* stop = nullptr;
+  const double value = std::strtod(begin, &stop);
+  return stop == begin ? std::nan("") : value;
+}
+
+int CountLines(const std::string& text) {
+  std::istringstream stream(text);
+  std::string line;
+  int lines = 0;
+  while (std::getline(stream, line)) lines += !line.empty();
+  return lines;
+}
+
+TEST(MlndtPosegraph, JointIsNotWorseThanChainedOnKittiFrames0To7) {
+  const std::string dir = TempDir("kitti");
+  const std::string json_path = dir + "/result.json";
+  const ToolRun run = RunPosegraph(
+      "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
+          " --gt_poses=" + Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
+          " --threads=2 --output_dir=" + Quote(dir) + " --output_json=" + Quote(json_path),
+      dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+
+  // Both trajectories: 8 KITTI lines that read back as poses, scan 0 = world.
+  for (const std::string name : {"trajectory_chained.txt", "trajectory_joint.txt"}) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(CountLines(ReadFile(dir + "/" + name)), 8);
+    std::vector<Eigen::Isometry3d> poses;
+    std::string error;
+    ASSERT_TRUE(ReadKittiPoses(dir + "/" + name, &poses, &error)) << error;
+    ASSERT_EQ(poses.size(), 8u);
+    EXPECT_TRUE(poses[0].isApprox(Eigen::Isometry3d::Identity(), 1e-12));
+    // The car drives ~0.86 m per frame along x.
+    EXPECT_GT(poses[7].translation().x(), 4.0);
+  }
+
+  // The same JSON on stdout and in the file, with the four metrics.
+  const std::string json = ReadFile(json_path);
+  EXPECT_EQ(json, run.out);
+  for (const std::string key : {"ate_chained_m", "ate_joint_m", "rpe_chained", "rpe_joint"}) {
+    EXPECT_NE(json.find("\"" + key + "\": "), std::string::npos) << key << " in " << json;
+  }
+  const double ate_chained = NumberAfter(json, "ate_chained_m");
+  const double ate_joint = NumberAfter(json, "ate_joint_m");
+  ASSERT_TRUE(std::isfinite(ate_chained)) << json;
+  ASSERT_TRUE(std::isfinite(ate_joint)) << json;
+  EXPECT_LE(ate_joint, ate_chained) << json;
+  // The scans fit ~0.8 x the ground-truth translation, so even a perfect
+  // registration drifts ~0.17 m per frame from it: ATE over 8 frames ~0.6 m.
+  EXPECT_LT(ate_chained, 1.5) << json;
+  const size_t rpe_joint = json.find("\"rpe_joint\": ");
+  const double rpe_translation = NumberAfter(json, "translation_m", rpe_joint);
+  EXPECT_GT(rpe_translation, 0.0) << json;
+  EXPECT_LT(rpe_translation, 0.3) << json;
+  EXPECT_LT(NumberAfter(json, "rotation_deg", rpe_joint), 1.0) << json;
+  // The joint solve lowered its own objective below its value at the
+  // chained poses (a check free of the ground truth).
+  EXPECT_LE(NumberAfter(json, "joint_final_cost"), NumberAfter(json, "joint_cost_at_chained"))
+      << json;
+  EXPECT_EQ(NumberAfter(json, "chained_failures"), 0.0) << json;
+}
+
+TEST(MlndtPosegraph, WithoutGroundTruthThereAreNoMetrics) {
+  const std::string dir = TempDir("no_gt");
+  // Three scans keep it quick (in their own folder: stderr.txt would be
+  // read as an XYZ cloud).
+  const std::string scans = dir + "/scans";
+  std::system(("mkdir -p " + Quote(scans)).c_str());
+  for (const char* name : {"000000.pcd", "000001.pcd", "000002.pcd"}) {
+    std::system(("cp " + Quote(testing::BundledDataPath(std::string("kitti/pcd/") + name)) + " " +
+                 Quote(scans) + "/")
+                    .c_str());
+  }
+  const ToolRun run = RunPosegraph("--scans=" + Quote(scans) + " --neighbors=1", dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(NumberAfter(run.out, "scans"), 3.0) << run.out;
+  EXPECT_EQ(run.out.find("ate_"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("rpe_"), std::string::npos) << run.out;
+}
+
+TEST(MlndtPosegraph, BadFlagsExitWithOne) {
+  const std::string dir = TempDir("bad_flags");
+  const std::string scans = " --scans=" + Quote(testing::BundledDataPath("kitti/pcd"));
+  // Ground truth with 2 poses for 8 scans.
+  const std::string short_gt = dir + "/short_gt.txt";
+  std::system(("head -n 2 " + Quote(testing::BundledDataPath("kitti/poses_velo.txt")) + " > " +
+               Quote(short_gt))
+                  .c_str());
+  // A folder with a single scan.
+  const std::string one_scan = dir + "/one_scan";
+  std::system(("mkdir -p " + Quote(one_scan) + " && cp " +
+               Quote(testing::BundledDataPath("kitti/pcd/000000.pcd")) + " " + Quote(one_scan))
+                  .c_str());
+  for (const std::string& args : {
+           std::string(""),                                      // No --scans.
+           scans + " --neighbors=0",                             // Not >= 1.
+           scans + " --joint_layers=3",                          // 1 or 2.
+           scans + " --joint_max_iterations=0",                  // Not >= 1.
+           scans + " --backend=nonsense",                        // Registration flag.
+           scans + " --method=ndt",                              // Not ML-NDT.
+           scans + " --loss_scale=-1",                           // Invalid option.
+           scans + " --gt_poses=" + Quote(dir + "/missing.txt"),  // Unreadable file.
+           scans + " --gt_poses=" + Quote(short_gt),             // Too few poses.
+           " --scans=" + Quote(dir + "/missing"),                // No folder.
+           " --scans=" + Quote(one_scan),                        // Fewer than 2 scans.
+       }) {
+    SCOPED_TRACE(args);
+    const ToolRun run = RunPosegraph(args, dir);
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.err.find("mlndt_posegraph"), std::string::npos) << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+  }
+}
+
+}  // namespace
+}  // namespace mlndt

@@ -1,0 +1,415 @@
+// mlndt_covariance: checks RegistrationSummary::covariance against the
+// spread of many registrations of the same real scan pairs.
+//
+//   mlndt_covariance [--datasets=kitti,koide3] [--starts=20] [--max_translation=0.5]
+//                    [--max_rotation=5] [--output_json=FILE] [registration flags]
+//
+// Every pair is registered from --starts initial guesses, each the
+// reference pose pushed off by a seeded uniform offset (within
+// +-max_translation per axis, +-max_rotation per angle), and, unless
+// --vary_sampling_seed=false, with sampling seed --seed + k for start k. Per
+// pair and per data set it reports, in the pose vector xi = (t [m], Euler
+// angles [rad]) of ML-NDT Eq. (11):
+//  - the spread of the estimates (sample covariance S around their mean),
+//    against the predicted covariance P = summary.covariance (2 H^-1 of the
+//    Gauss-Newton Hessian of the final score);
+//  - NEES_k = e_k^T P_k^-1 e_k with e_k = xi_k - mean (expected 6 (n-1)/n for
+//    consistent P) and with e_k = xi_k - xi_reference (expected 6);
+//  - the factor k that makes each consistent: k = mean NEES / expected
+//    (k P is then the consistent covariance);
+//  - the same for P scaled by the residual variance estimate
+//    sigma2 = final_score / (3 matched - 6).
+// The spread needs no ground truth; the reference poses do not agree with
+// the scans' geometry exactly (KITTI: the scans fit ~0.8 x the ground-truth
+// translation; koide3: a reference registration result), so NEES against
+// them measures that bias as much as the covariance.
+//
+// Data: --data_dir/kitti/pcd + poses_velo.txt (consecutive pairs) and
+// --data_dir/koide3 (the Velodyne pair with T_target_source.txt).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include "mlndt/cloud/io.h"
+#include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/pose.h"
+#include "tools/common/json_writer.h"
+#include "tools/common/registration_flags.h"
+#include "tools/common/tool_utils.h"
+
+namespace {
+// The repository's data/ folder, from this file's path (in-tree builds).
+std::string DefaultDataDir() {
+  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "data").string();
+}
+}  // namespace
+
+// clang-format off
+DEFINE_string(data_dir, DefaultDataDir(), "Folder with kitti/ and koide3/ (the repository's data/)");
+DEFINE_string(datasets, "kitti,koide3", "Comma-separated: kitti (7 consecutive pairs) | koide3");
+DEFINE_int32(starts, 20, "Registrations per pair, each from its own perturbed start; >= 2");
+DEFINE_double(max_translation, 0.5, "Start offsets are uniform in +-this per axis [m]");
+DEFINE_double(max_rotation, 5.0, "Start offsets are uniform in +-this per Euler angle [deg]");
+DEFINE_uint64(perturbation_seed, 7, "Seed of the start offsets");
+DEFINE_bool(vary_sampling_seed, true, "Start k samples the input with seed --seed + k");
+DEFINE_double(outlier_translation, 0.1,
+              "Runs farther than this [m] (or --outlier_rotation) from the pair's median "
+              "estimate did not reach the common optimum; they are counted and left out");
+DEFINE_double(outlier_rotation, 1.0, "See --outlier_translation [deg]");
+DEFINE_string(output_json, "", "Write the results as JSON to this file");
+DEFINE_string(output_csv, "", "One row per registration");
+// clang-format on
+
+namespace mlndt {
+namespace {
+
+int Fail(const std::string& message) {
+  std::cerr << "mlndt_covariance: " << message << std::endl;
+  return 1;
+}
+
+struct Run {
+  Vector6d xi = Vector6d::Zero();
+  Matrix6d covariance = Matrix6d::Zero();
+  double sigma2 = 1.0;  // final_score / (3 matched - 6).
+};
+
+struct PairRuns {
+  std::string dataset;
+  std::string name;
+  Vector6d reference_xi = Vector6d::Zero();
+  std::vector<Run> runs;  // Usable, non-outlier runs.
+  int failures = 0;       // Not usable (FAILURE) or singular H.
+  int outliers = 0;       // Far from the median estimate.
+};
+
+// Consistency of a set of runs (one pair, or a data set pooled).
+struct Consistency {
+  int runs = 0;
+  double nees_mean = 0.0;         // Mean NEES about the pair means.
+  double nees_mean_expected = 0.0;  // 6 (n - 1) / n, averaged over pairs.
+  double nees_reference = 0.0;    // Mean NEES about the reference pose.
+  double nees_mean_sigma2 = 0.0;  // With sigma2 P.
+  double nees_reference_sigma2 = 0.0;
+  double sigma2 = 0.0;            // Mean residual variance estimate.
+  Vector6d spread_std = Vector6d::Zero();     // sqrt diag S (pooled: RMS).
+  Vector6d predicted_std = Vector6d::Zero();  // sqrt diag mean P.
+  Vector6d bias = Vector6d::Zero();           // mean - reference (pair only).
+
+  double k_spread() const { return nees_mean / nees_mean_expected; }
+  double k_reference() const { return nees_reference / 6.0; }
+  double k_spread_sigma2() const { return nees_mean_sigma2 / nees_mean_expected; }
+  double k_reference_sigma2() const { return nees_reference_sigma2 / 6.0; }
+};
+
+double Nees(const Vector6d& error, const Matrix6d& covariance) {
+  return error.dot(covariance.ldlt().solve(error));
+}
+
+Vector6d Mean(const std::vector<Run>& runs) {
+  Vector6d mean = Vector6d::Zero();
+  for (const Run& run : runs) mean += run.xi;
+  return mean / static_cast<double>(runs.size());
+}
+
+// Sums over the pair's runs into *sum (divide by the run count later).
+void Accumulate(const PairRuns& pair, Consistency* sum) {
+  const size_t n = pair.runs.size();
+  if (n < 2) return;
+  const Vector6d mean = Mean(pair.runs);
+  Matrix6d spread = Matrix6d::Zero();
+  Matrix6d predicted = Matrix6d::Zero();
+  for (const Run& run : pair.runs) {
+    const Vector6d about_mean = run.xi - mean;
+    const Vector6d about_reference = run.xi - pair.reference_xi;
+    spread += about_mean * about_mean.transpose();
+    predicted += run.covariance;
+    sum->nees_mean += Nees(about_mean, run.covariance);
+    sum->nees_reference += Nees(about_reference, run.covariance);
+    sum->nees_mean_sigma2 += Nees(about_mean, run.sigma2 * run.covariance);
+    sum->nees_reference_sigma2 += Nees(about_reference, run.sigma2 * run.covariance);
+    sum->sigma2 += run.sigma2;
+    sum->nees_mean_expected += 6.0 * static_cast<double>(n - 1) / static_cast<double>(n);
+  }
+  spread /= static_cast<double>(n - 1);
+  predicted /= static_cast<double>(n);
+  // Squares now, square roots in Finish (RMS over pairs when pooled).
+  sum->spread_std += static_cast<double>(n) * spread.diagonal();
+  sum->predicted_std += static_cast<double>(n) * predicted.diagonal();
+  sum->bias += static_cast<double>(n) * (mean - pair.reference_xi);
+  sum->runs += static_cast<int>(n);
+}
+
+Consistency Finish(Consistency sum) {
+  if (sum.runs == 0) return sum;
+  const double n = sum.runs;
+  sum.nees_mean /= n;
+  sum.nees_mean_expected /= n;
+  sum.nees_reference /= n;
+  sum.nees_mean_sigma2 /= n;
+  sum.nees_reference_sigma2 /= n;
+  sum.sigma2 /= n;
+  sum.spread_std = (sum.spread_std / n).cwiseSqrt();
+  sum.predicted_std = (sum.predicted_std / n).cwiseSqrt();
+  sum.bias /= n;
+  return sum;
+}
+
+// Translation [m] and angles [deg] of a pose-vector quantity, for printing.
+std::vector<double> InDegrees(const Vector6d& v) {
+  return {v(0), v(1), v(2), v(3) * kRadToDeg, v(4) * kRadToDeg, v(5) * kRadToDeg};
+}
+
+std::string ConsistencyJson(const Consistency& c) {
+  return tools::JsonObject()
+      .AddNumber("runs", c.runs)
+      .AddNumber("nees_about_mean", c.nees_mean)
+      .AddNumber("nees_about_mean_expected", c.nees_mean_expected)
+      .AddNumber("k_spread", c.k_spread())
+      .AddNumber("nees_about_reference", c.nees_reference)
+      .AddNumber("k_reference", c.k_reference())
+      .AddNumber("sigma2", c.sigma2)
+      .AddNumber("k_spread_sigma2", c.k_spread_sigma2())
+      .AddNumber("k_reference_sigma2", c.k_reference_sigma2())
+      .Add("spread_std_m_deg", tools::JsonArray(InDegrees(c.spread_std)))
+      .Add("predicted_std_m_deg", tools::JsonArray(InDegrees(c.predicted_std)))
+      .Add("bias_m_deg", tools::JsonArray(InDegrees(c.bias)))
+      .str();
+}
+
+void PrintRow(const std::string& label, const Consistency& c) {
+  const std::vector<double> spread = InDegrees(c.spread_std);
+  const std::vector<double> predicted = InDegrees(c.predicted_std);
+  std::printf(
+      "%-16s %4d  NEES(mean) %9.3g (exp %4.2f) k %9.3g | NEES(ref) %9.3g k %9.3g | "
+      "sigma2 %6.3f k_s2 %8.3g / %8.3g\n",
+      label.c_str(), c.runs, c.nees_mean, c.nees_mean_expected, c.k_spread(), c.nees_reference,
+      c.k_reference(), c.sigma2, c.k_spread_sigma2(), c.k_reference_sigma2());
+  std::printf("%-16s       spread std  t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f %7.2f %7.2f\n",
+              "", spread[0] * 1e3, spread[1] * 1e3, spread[2] * 1e3, spread[3] * 1e3,
+              spread[4] * 1e3, spread[5] * 1e3);
+  std::printf("%-16s       predicted   t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f %7.2f %7.2f\n",
+              "", predicted[0] * 1e3, predicted[1] * 1e3, predicted[2] * 1e3,
+              predicted[3] * 1e3, predicted[4] * 1e3, predicted[5] * 1e3);
+}
+
+// Registers input onto reference from the perturbed starts.
+bool RunPair(const RegistrationOptions& base_options,
+             const PointCloud& reference,
+             const PointCloud& input,
+             const Isometry3d& reference_from_input,
+             std::mt19937_64* rng,
+             std::ofstream* csv,
+             PairRuns* pair,
+             std::string* error) {
+  LayeredGrid map;
+  if (!LayeredGrid::Build(base_options.grid, reference, &map, error)) return false;
+  pair->reference_xi = IsometryToPoseVector(reference_from_input);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Run> runs;
+  for (int k = 0; k < FLAGS_starts; ++k) {
+    Vector6d offset;
+    for (int a = 0; a < 3; ++a) offset(a) = FLAGS_max_translation * unit(*rng);
+    for (int a = 3; a < 6; ++a) offset(a) = FLAGS_max_rotation * kDegToRad * unit(*rng);
+    RegistrationOptions options = base_options;
+    if (FLAGS_vary_sampling_seed) options.sampling.seed = base_options.sampling.seed + k;
+    RegistrationSummary summary;
+    Register(options, map, input, PoseVectorToIsometry(offset) * reference_from_input, &summary);
+    const bool usable = summary.IsSolutionUsable() && !summary.covariance.isZero(0.0);
+    if (csv->is_open()) {
+      *csv << pair->dataset << "," << pair->name << "," << k << "," << usable;
+      for (int a = 0; a < 6; ++a) *csv << "," << summary.reference_from_input_xi(a);
+      for (int a = 0; a < 6; ++a) *csv << "," << std::sqrt(summary.covariance(a, a));
+      *csv << "," << summary.final_score << "," << summary.matched_points << "\n";
+    }
+    if (!usable) {
+      ++pair->failures;
+      continue;
+    }
+    Run run;
+    run.xi = summary.reference_from_input_xi;
+    run.covariance = summary.covariance;
+    const double dof = 3.0 * static_cast<double>(summary.matched_points) - 6.0;
+    run.sigma2 = dof > 0.0 ? summary.final_score / dof : 1.0;
+    runs.push_back(run);
+  }
+  // Leave out runs that did not reach the common optimum (median per axis).
+  Vector6d median;
+  for (int a = 0; a < 6; ++a) {
+    std::vector<double> values;
+    for (const Run& run : runs) values.push_back(run.xi(a));
+    if (values.empty()) break;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    median(a) = values[values.size() / 2];
+  }
+  for (const Run& run : runs) {
+    const Vector6d d = run.xi - median;
+    if (d.head<3>().norm() > FLAGS_outlier_translation ||
+        d.tail<3>().norm() * kRadToDeg > FLAGS_outlier_rotation) {
+      ++pair->outliers;
+    } else {
+      pair->runs.push_back(run);
+    }
+  }
+  return true;
+}
+
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+bool RunKitti(const RegistrationOptions& options,
+              std::mt19937_64* rng,
+              std::ofstream* csv,
+              std::vector<PairRuns>* pairs,
+              std::string* error) {
+  const std::string dir = FLAGS_data_dir + "/kitti";
+  std::vector<Isometry3d> poses;
+  if (!ReadKittiPoses(dir + "/poses_velo.txt", &poses, error)) return false;
+  std::vector<PointCloud> scans;
+  for (int i = 0; i < 8; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "/pcd/%06d.pcd", i);
+    scans.emplace_back();
+    if (!ReadPointCloud(dir + name, &scans.back(), nullptr, error)) return false;
+  }
+  for (size_t i = 0; i + 1 < scans.size() && i + 1 < poses.size(); ++i) {
+    PairRuns pair;
+    pair.dataset = "kitti";
+    pair.name = std::to_string(i + 1) + "->" + std::to_string(i);
+    if (!RunPair(options, scans[i], scans[i + 1], poses[i].inverse() * poses[i + 1], rng, csv,
+                 &pair, error)) {
+      return false;
+    }
+    pairs->push_back(pair);
+  }
+  return true;
+}
+
+bool RunKoide3(const RegistrationOptions& options,
+               std::mt19937_64* rng,
+               std::ofstream* csv,
+               std::vector<PairRuns>* pairs,
+               std::string* error) {
+  const std::string dir = FLAGS_data_dir + "/koide3";
+  PointCloud reference, input;
+  Isometry3d reference_from_input;
+  if (!ReadPointCloud(dir + "/251370668.pcd", &reference, nullptr, error) ||
+      !ReadPointCloud(dir + "/251371071.pcd", &input, nullptr, error) ||
+      !tools::ReadMatrixFile(dir + "/T_target_source.txt", &reference_from_input, error)) {
+    return false;
+  }
+  PairRuns pair;
+  pair.dataset = "koide3";
+  pair.name = "251371071->668";
+  if (!RunPair(options, reference, input, reference_from_input, rng, csv, &pair, error)) {
+    return false;
+  }
+  pairs->push_back(pair);
+  return true;
+}
+
+int Main() {
+  if (FLAGS_starts < 2) return Fail("--starts must be >= 2");
+  if (!(FLAGS_max_translation >= 0.0) || !(FLAGS_max_rotation >= 0.0)) {
+    return Fail("--max_translation and --max_rotation must be >= 0");
+  }
+  RegistrationOptions options;
+  std::string error;
+  if (!tools::RegistrationOptionsFromFlags(&options, &error)) return Fail(error);
+  const std::vector<std::string> datasets = SplitList(FLAGS_datasets);
+  if (datasets.empty()) return Fail("--datasets is empty");
+  std::ofstream csv;
+  if (!FLAGS_output_csv.empty()) {
+    csv.open(FLAGS_output_csv);
+    csv << "dataset,pair,start,usable,tx,ty,tz,alpha,beta,gamma,sd_tx,sd_ty,sd_tz,sd_alpha,"
+           "sd_beta,sd_gamma,final_score,matched\n";
+  }
+  std::mt19937_64 rng(FLAGS_perturbation_seed);
+  std::vector<PairRuns> pairs;
+  for (const std::string& dataset : datasets) {
+    bool ok = false;
+    if (dataset == "kitti") {
+      ok = RunKitti(options, &rng, &csv, &pairs, &error);
+    } else if (dataset == "koide3") {
+      ok = RunKoide3(options, &rng, &csv, &pairs, &error);
+    } else {
+      return Fail("--datasets: unknown '" + dataset + "' (kitti, koide3)");
+    }
+    if (!ok) return Fail(error);
+  }
+
+  tools::JsonObject json;
+  std::string pair_list = "[";
+  for (const std::string& dataset : datasets) {
+    Consistency pooled;
+    int failures = 0, outliers = 0;
+    for (const PairRuns& pair : pairs) {
+      if (pair.dataset != dataset) continue;
+      Consistency one;
+      Accumulate(pair, &one);
+      Accumulate(pair, &pooled);
+      failures += pair.failures;
+      outliers += pair.outliers;
+      const Consistency result = Finish(one);
+      PrintRow(dataset + " " + pair.name, result);
+      if (pair_list.size() > 1) pair_list += ", ";
+      pair_list += tools::JsonObject()
+                       .AddString("dataset", dataset)
+                       .AddString("pair", pair.name)
+                       .AddNumber("failures", pair.failures)
+                       .AddNumber("outliers", pair.outliers)
+                       .Add("consistency", ConsistencyJson(result))
+                       .str();
+    }
+    const Consistency result = Finish(pooled);
+    PrintRow(dataset + " (all)", result);
+    std::printf("\n");
+    json.Add(dataset, tools::JsonObject()
+                          .AddNumber("failures", failures)
+                          .AddNumber("outliers", outliers)
+                          .Add("consistency", ConsistencyJson(result))
+                          .str());
+  }
+  json.Add("pairs", pair_list + "]");
+  json.AddNumber("starts", FLAGS_starts)
+      .AddNumber("max_translation_m", FLAGS_max_translation)
+      .AddNumber("max_rotation_deg", FLAGS_max_rotation)
+      .AddBool("vary_sampling_seed", FLAGS_vary_sampling_seed);
+  if (!FLAGS_output_json.empty()) {
+    std::ofstream out(FLAGS_output_json);
+    out << json.str() << "\n";
+    if (!out.good()) return Fail(FLAGS_output_json + ": cannot write");
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace mlndt
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "Compares the registration covariance with the spread of many registrations.\n"
+      "  mlndt_covariance [--datasets=kitti,koide3] [--starts=20] [--output_json=FILE]");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  FLAGS_logtostderr = true;
+  return mlndt::Main();
+}
