@@ -14,36 +14,15 @@
 #include <string>
 #include <vector>
 
+#include "tests/testing/run_tool.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
 
-struct ToolRun {
-  int exit_code = -1;
-  std::vector<std::string> lines;  // stdout, one entry per line.
-  std::string err;                 // stderr.
-};
-
-// Single-quotes `text` for /bin/sh.
-std::string Quote(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  return out + "'";
-}
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
+using testing::ToolRun;
+const auto& Quote = testing::ShellQuote;
+const auto& ReadFile = testing::ReadWholeFile;
 
 std::vector<std::string> Split(const std::string& text, char separator) {
   std::vector<std::string> items;
@@ -61,30 +40,7 @@ std::string TempPath(const std::string& name) {
 // Runs mlndt_bench with `args` (already quoted where needed); stderr goes to
 // a file named after the current test, since ctest may run tests in parallel.
 ToolRun RunBench(const std::string& args) {
-  const std::string err_path =
-      TempPath(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-               ".stderr");
-  const std::string command =
-      Quote(testing::ToolPath("mlndt_bench")) + " " + args + " 2>" + Quote(err_path);
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    ADD_FAILURE() << "popen failed: " << command;
-    return run;
-  }
-  std::string out;
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) out.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::istringstream stream(out);
-  std::string line;
-  while (std::getline(stream, line)) {
-    if (!line.empty()) run.lines.push_back(line);
-  }
-  run.err = ReadFile(err_path);
-  return run;
+  return testing::RunTool("mlndt_bench", args);
 }
 
 // The cells of a markdown table row "| a | b |", trimmed.

@@ -13,37 +13,17 @@
 #include <string>
 #include <vector>
 
+#include "tests/testing/run_tool.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
 
+using testing::ToolRun;
+const auto& Quote = testing::ShellQuote;
+const auto& ReadFile = testing::ReadWholeFile;
+
 namespace fs = std::filesystem;
-
-struct ToolRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string Quote(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  return out + "'";
-}
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
 
 std::string TestDir(const std::string& suffix = "") {
   const std::string dir = ::testing::TempDir() + "mlndt_experiments_test_" +
@@ -54,22 +34,7 @@ std::string TestDir(const std::string& suffix = "") {
 }
 
 ToolRun RunExperiments(const std::string& args) {
-  const std::string err_path = TestDir("_stderr") + "/stderr.txt";
-  const std::string command =
-      Quote(testing::ToolPath("mlndt_experiments")) + " " + args + " 2>" + Quote(err_path);
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    ADD_FAILURE() << "popen failed: " << command;
-    return run;
-  }
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.out.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = ReadFile(err_path);
-  return run;
+  return testing::RunTool("mlndt_experiments", args);
 }
 
 bool GnuplotInstalled() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }

@@ -14,36 +14,15 @@
 #include <vector>
 
 #include "mlndt/cloud/pose_io.h"
+#include "tests/testing/run_tool.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string out;  // stdout.
-  std::string err;  // stderr.
-};
-
-// Single-quotes `text` for /bin/sh.
-std::string Quote(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  return out + "'";
-}
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
+using testing::ToolRun;
+const auto& Quote = testing::ShellQuote;
+const auto& ReadFile = testing::ReadWholeFile;
 
 // A fresh folder per test (ctest may run tests in parallel).
 std::string TempDir(const std::string& name) {
@@ -52,23 +31,8 @@ std::string TempDir(const std::string& name) {
   return dir;
 }
 
-ToolRun RunPosegraph(const std::string& args, const std::string& dir) {
-  const std::string err_path = dir + "/stderr.txt";
-  const std::string command =
-      Quote(testing::ToolPath("mlndt_posegraph")) + " " + args + " 2>" + Quote(err_path);
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) {
-    ADD_FAILURE() << "popen failed: " << command;
-    return run;
-  }
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.out.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = ReadFile(err_path);
-  return run;
+ToolRun RunPosegraph(const std::string& args, const std::string& /*dir*/) {
+  return testing::RunTool("mlndt_posegraph", args);
 }
 
 // The number after `"key": ` in `json`; NaN when absent.

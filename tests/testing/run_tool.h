@@ -1,0 +1,30 @@
+#pragma once
+
+// Runs a built tool from a test and captures its exit code, stdout and
+// stderr. stderr goes to a file named after the current test, so ctest can
+// run tests in parallel.
+
+#include <string>
+#include <vector>
+
+namespace mlndt {
+namespace testing {
+
+struct ToolRun {
+  int exit_code = -1;
+  std::string out;                 // stdout.
+  std::vector<std::string> lines;  // stdout, its non-empty lines.
+  std::string err;                 // stderr.
+};
+
+// Single-quotes `text` for /bin/sh.
+std::string ShellQuote(const std::string& text);
+
+// The whole file, or "" when it cannot be read.
+std::string ReadWholeFile(const std::string& path);
+
+// Runs the tool `name` (ToolPath) with `args`, already quoted where needed.
+ToolRun RunTool(const std::string& name, const std::string& args);
+
+}  // namespace testing
+}  // namespace mlndt
