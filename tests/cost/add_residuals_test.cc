@@ -19,30 +19,14 @@
 #include "mlndt/cost/score.h"
 #include "mlndt/grid/layered_grid.h"
 
+#include "tests/testing/eigen_near.h"
+
 namespace mlndt {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-template <typename A, typename B>
-::testing::AssertionResult EigenNear(const Eigen::MatrixBase<A>& actual,
-                                     const Eigen::MatrixBase<B>& expected,
-                                     double tolerance) {
-  if (actual.rows() != expected.rows() || actual.cols() != expected.cols()) {
-    return ::testing::AssertionFailure() << "size mismatch";
-  }
-  if (!actual.allFinite()) {
-    return ::testing::AssertionFailure() << "non-finite entries:\n" << actual;
-  }
-  const double difference = (actual - expected).cwiseAbs().maxCoeff();
-  if (difference > tolerance) {
-    return ::testing::AssertionFailure() << "max |difference| " << difference
-                                         << " > " << tolerance << "\nactual:\n"
-                                         << actual << "\nexpected:\n"
-                                         << expected;
-  }
-  return ::testing::AssertionSuccess();
-}
+using testing::EigenNear;
 
 // A seeded synthetic room: floor, ceiling and four walls of a 10 x 8 x 4 m
 // box, plus a 1 x 1 x 2 m pillar, sampled uniformly at `density` points/m^2

@@ -21,6 +21,8 @@
 #include "mlndt/sampling/point_sampler.h"
 #include "tests/testing/synthetic_scene.h"
 
+#include "tests/testing/eigen_near.h"
+
 namespace mlndt {
 namespace {
 
@@ -30,25 +32,7 @@ using Eigen::Vector3d;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-template <typename A, typename B>
-::testing::AssertionResult EigenNear(const Eigen::MatrixBase<A>& actual,
-                                     const Eigen::MatrixBase<B>& expected,
-                                     double tolerance) {
-  if (actual.rows() != expected.rows() || actual.cols() != expected.cols()) {
-    return ::testing::AssertionFailure() << "size mismatch";
-  }
-  if (!actual.allFinite()) {
-    return ::testing::AssertionFailure() << "non-finite entries:\n" << actual;
-  }
-  const double difference = (actual - expected).cwiseAbs().maxCoeff();
-  if (difference > tolerance) {
-    return ::testing::AssertionFailure() << "max |difference| " << difference << " > "
-                                         << tolerance << "\nactual:\n"
-                                         << actual << "\nexpected:\n"
-                                         << expected;
-  }
-  return ::testing::AssertionSuccess();
-}
+using testing::EigenNear;
 
 // Q diag(l) Q^T with a tilted Q: non-diagonal, eigenvalues above the floors.
 Matrix3d TiltedCovariance(const Vector3d& eigenvalues, double angle, const Vector3d& axis) {

@@ -15,30 +15,14 @@
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
 
+#include "tests/testing/eigen_near.h"
+
 namespace mlndt {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-template <typename A, typename B>
-::testing::AssertionResult EigenNear(const Eigen::MatrixBase<A>& actual,
-                                     const Eigen::MatrixBase<B>& expected,
-                                     double tolerance) {
-  if (actual.rows() != expected.rows() || actual.cols() != expected.cols()) {
-    return ::testing::AssertionFailure() << "size mismatch";
-  }
-  if (!actual.allFinite()) {
-    return ::testing::AssertionFailure() << "non-finite entries:\n" << actual;
-  }
-  const double difference = (actual - expected).cwiseAbs().maxCoeff();
-  if (difference > tolerance) {
-    return ::testing::AssertionFailure() << "max |difference| " << difference
-                                         << " > " << tolerance << "\nactual:\n"
-                                         << actual << "\nexpected:\n"
-                                         << expected;
-  }
-  return ::testing::AssertionSuccess();
-}
+using testing::EigenNear;
 
 Matrix3d ElementaryProduct(double alpha, double beta, double gamma) {
   return (Eigen::AngleAxisd(alpha, Eigen::Vector3d::UnitX()) *
