@@ -17,8 +17,13 @@
 //    ceres::EigenQuaternionManifold) and a translation, for back ends that
 //    keep their poses that way.
 //
-// Lifetime: the functors keep a reference to the NdtLayer, which must outlive
-// every ceres::Problem that uses them (like ceres::BiCubicInterpolator's Grid).
+// The layer is fixed at construction, or read through a LayerBinding at every
+// evaluation (layer_binding.h), so that one cost function per point serves
+// every layer of a registration.
+//
+// Lifetime: the functors keep a pointer to the NdtLayer (or the binding),
+// which must outlive every ceres::Problem that uses them (like
+// ceres::BiCubicInterpolator's Grid).
 
 #include <ceres/autodiff_cost_function.h>
 #include <ceres/cost_function.h>
@@ -29,6 +34,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/cell_match.h"
 #include "mlndt/cost/jet_utils.h"
+#include "mlndt/cost/layer_binding.h"
 
 namespace mlndt {
 
@@ -50,17 +56,18 @@ void WhitenedCellResidual(const NdtLayer& layer,
 
 class MlNdtPointCost {
  public:
-  MlNdtPointCost(const NdtLayer& layer, const Eigen::Vector3d& input_point, UnmatchedPolicy policy)
+  MlNdtPointCost(LayerSource layer, const Eigen::Vector3d& input_point, UnmatchedPolicy policy)
       : layer_(layer), input_point_(input_point), policy_(policy) {}
 
   template <typename T>
   bool operator()(const T* reference_from_input_xi, T* residual) const {
-    WhitenedCellResidual(layer_, policy_,
+    WhitenedCellResidual(layer_.layer(), policy_,
                          CachedTransformPoint(reference_from_input_xi, input_point_), residual);
     return true;
   }
 
-  static ceres::CostFunction* Create(const NdtLayer& layer,
+  // `layer`: an NdtLayer (fixed) or a LayerBinding (read at every evaluation).
+  static ceres::CostFunction* Create(LayerSource layer,
                                      const Eigen::Vector3d& input_point,
                                      UnmatchedPolicy policy) {
     return new ceres::AutoDiffCostFunction<MlNdtPointCost, 3, 6>(
@@ -68,14 +75,14 @@ class MlNdtPointCost {
   }
 
  private:
-  const NdtLayer& layer_;
+  const LayerSource layer_;
   const Eigen::Vector3d input_point_;
   const UnmatchedPolicy policy_;
 };
 
 class MlNdtPointCostQuaternion {
  public:
-  MlNdtPointCostQuaternion(const NdtLayer& layer,
+  MlNdtPointCostQuaternion(LayerSource layer,
                            const Eigen::Vector3d& input_point,
                            UnmatchedPolicy policy)
       : layer_(layer), input_point_(input_point), policy_(policy) {}
@@ -85,12 +92,12 @@ class MlNdtPointCostQuaternion {
   bool operator()(const T* rotation, const T* translation, T* residual) const {
     const Eigen::Map<const Eigen::Quaternion<T>> q(rotation);
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t(translation);
-    WhitenedCellResidual(layer_, policy_, Eigen::Matrix<T, 3, 1>(q * input_point_.cast<T>() + t),
-                         residual);
+    WhitenedCellResidual(layer_.layer(), policy_,
+                         Eigen::Matrix<T, 3, 1>(q * input_point_.cast<T>() + t), residual);
     return true;
   }
 
-  static ceres::CostFunction* Create(const NdtLayer& layer,
+  static ceres::CostFunction* Create(LayerSource layer,
                                      const Eigen::Vector3d& input_point,
                                      UnmatchedPolicy policy) {
     return new ceres::AutoDiffCostFunction<MlNdtPointCostQuaternion, 3, 4, 3>(
@@ -98,7 +105,7 @@ class MlNdtPointCostQuaternion {
   }
 
  private:
-  const NdtLayer& layer_;
+  const LayerSource layer_;
   const Eigen::Vector3d input_point_;
   const UnmatchedPolicy policy_;
 };

@@ -42,16 +42,10 @@ void RunLayerSchedule(const LayerScheduleOptions& options,
     stage.step_tolerance = last ? options.step_tolerance : options.coarse_step_tolerance;
     stage.first_iteration = static_cast<int>(summary->trace.size()) + 1;
     // Coarse cells are large: every stride-th sample describes them as well.
-    const int stride = std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
-    std::vector<Eigen::Vector3d> thinned;
-    if (stride > 1) {
-      for (size_t i = 0; i < input_points.size(); i += static_cast<size_t>(stride)) {
-        thinned.push_back(input_points[i]);
-      }
-    }
+    stage.point_stride = std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
     StageSummary stage_summary;
-    backend->SolveStage(reference_map.layer(layer), stride > 1 ? thinned : input_points, stage,
-                        reference_from_input_xi, &stage_summary);
+    backend->SolveStage(reference_map.layer(layer), input_points, stage, reference_from_input_xi,
+                        &stage_summary);
     summary->iterations_per_layer[static_cast<size_t>(layer - 1)] = stage_summary.iterations;
     summary->trace.insert(summary->trace.end(), stage_summary.trace.begin(),
                           stage_summary.trace.end());

@@ -1,5 +1,7 @@
 #include "mlndt/solvers/backend.h"
 
+#include <glog/logging.h>
+
 #include "mlndt/common/enum_strings.h"
 
 namespace mlndt {
@@ -23,6 +25,19 @@ ScoreOptions ScoreOptionsForStage(const StageOptions& options) {
   score.loss_scale = options.loss_scale;
   score.num_threads = options.num_threads;
   return score;
+}
+
+const std::vector<Eigen::Vector3d>& EveryNthPoint(const std::vector<Eigen::Vector3d>& points,
+                                                  int stride,
+                                                  std::vector<Eigen::Vector3d>* storage) {
+  CHECK_GE(stride, 1);
+  if (stride == 1) return points;
+  storage->clear();
+  storage->reserve(points.size() / static_cast<size_t>(stride) + 1);
+  for (size_t i = 0; i < points.size(); i += static_cast<size_t>(stride)) {
+    storage->push_back(points[i]);
+  }
+  return *storage;
 }
 
 bool StringToBackendType(std::string value, BackendType* result) {

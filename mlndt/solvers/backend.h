@@ -49,6 +49,9 @@ struct StageOptions {
   LossType loss = LossType::NONE;
   double loss_scale = 1.0;       // Mahalanobis distance where the loss bends.
   int num_threads = 1;           // Threads for evaluating the objective. >= 1.
+  // The stage uses every point_stride-th input point (coarse layers need
+  // fewer, layer_scheduler.h). >= 1.
+  int point_stride = 1;
   double start_time_s = 0.0;     // Registration start (for IterationRecord::time_s).
   int first_iteration = 1;       // Number of the stage's first iteration.
 };
@@ -64,10 +67,18 @@ struct StageSummary {
 // The per-point settings of a stage as ScoreOptions.
 ScoreOptions ScoreOptionsForStage(const StageOptions& options);
 
+// Every stride-th point of `points`: `points` itself for stride 1, otherwise
+// a copy in *storage.
+const std::vector<Eigen::Vector3d>& EveryNthPoint(const std::vector<Eigen::Vector3d>& points,
+                                                  int stride,
+                                                  std::vector<Eigen::Vector3d>* storage);
+
 class Backend {
  public:
   virtual ~Backend() = default;
-  // Improves *reference_from_input_xi over `input_points` on `layer`.
+  // Improves *reference_from_input_xi over every options.point_stride-th of
+  // `input_points` on `layer`. A registration passes the same input points to
+  // every stage of its schedule, so a backend may keep per-point state.
   virtual void SolveStage(const NdtLayer& layer,
                           const std::vector<Eigen::Vector3d>& input_points,
                           const StageOptions& options,

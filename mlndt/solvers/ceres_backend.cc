@@ -5,9 +5,41 @@
 #include <ceres/solver.h>
 
 #include "mlndt/common/timer.h"
-#include "mlndt/cost/add_residuals.h"
+#include "mlndt/cost/layer_binding.h"
+#include "mlndt/cost/mlndt_point_cost.h"
 
 namespace mlndt {
+
+// One cost function per input point, made on first use, bound to the current
+// stage's layer.
+class CeresBackend::CostPool {
+ public:
+  CostPool(const NdtLayer& layer,
+           const std::vector<Eigen::Vector3d>& points,
+           UnmatchedPolicy policy)
+      : binding_(layer), points_(points), policy_(policy), costs_(points.size()) {}
+
+  // True when the pool was made for these points and this policy.
+  bool Serves(const std::vector<Eigen::Vector3d>& points, UnmatchedPolicy policy) const {
+    return policy == policy_ && points == points_;
+  }
+
+  void Rebind(const NdtLayer& layer) { binding_.Rebind(layer); }
+
+  ceres::CostFunction* Get(size_t i) {
+    if (costs_[i] == nullptr) {
+      costs_[i].reset(MlNdtPointCost::Create(binding_, points_[i], policy_));
+    }
+    return costs_[i].get();
+  }
+
+ private:
+  LayerBinding binding_;
+  const std::vector<Eigen::Vector3d> points_;
+  const UnmatchedPolicy policy_;
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs_;
+};
+
 namespace {
 
 // Records the trace and ends the final stage on a small update norm.
@@ -58,22 +90,33 @@ bool CeresBackendOptions::IsValid(std::string* error) const {
   return true;
 }
 
+CeresBackend::CeresBackend(const CeresBackendOptions& options) : options_(options) {}
+CeresBackend::~CeresBackend() = default;
+
 void CeresBackend::SolveStage(const NdtLayer& layer,
                               const std::vector<Eigen::Vector3d>& input_points,
                               const StageOptions& options,
                               Vector6d* reference_from_input_xi,
                               StageSummary* summary) {
   *summary = StageSummary();
+  if (pool_ == nullptr || !pool_->Serves(input_points, options.unmatched_policy)) {
+    pool_ = std::make_unique<CostPool>(layer, input_points, options.unmatched_policy);
+  }
+  pool_->Rebind(layer);
+
   ceres::Problem::Options problem_options;
   // The residual blocks are built here, correctly by construction; the
   // checks cost more than the blocks on small stages.
   problem_options.disable_all_safety_checks = true;
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // The pool's.
   ceres::Problem problem(problem_options);
-  ResidualOptions residual_options;
-  residual_options.unmatched_policy = options.unmatched_policy;
-  residual_options.loss_function = CreateLoss(options.loss, options.loss_scale);
-  AddMlNdtResiduals(layer, input_points, residual_options, reference_from_input_xi->data(),
-                    &problem);
+  // One loss object for every block: the Problem frees it once (if used).
+  std::unique_ptr<ceres::LossFunction> loss(CreateLoss(options.loss, options.loss_scale));
+  const size_t stride = static_cast<size_t>(options.point_stride);
+  for (size_t i = 0; i < input_points.size(); i += stride) {
+    problem.AddResidualBlock(pool_->Get(i), loss.get(), reference_from_input_xi->data());
+  }
+  if (problem.NumResidualBlocks() > 0) loss.release();
 
   TraceCallback callback(options, reference_from_input_xi->data(), summary);
   ceres::Solver::Options solver_options;

@@ -65,9 +65,10 @@ void LevenbergMarquardtBackend::SolveStage(const NdtLayer& layer,
                                            const StageOptions& options,
                                            Vector6d* reference_from_input_xi,
                                            StageSummary* summary) {
-  MinimizeLevenbergMarquardt(
-      MlNdtObjective(layer, input_points, ScoreOptionsForStage(options)), options_, options,
-      reference_from_input_xi, summary);
+  std::vector<Eigen::Vector3d> thinned;
+  const auto& points = EveryNthPoint(input_points, options.point_stride, &thinned);
+  MinimizeLevenbergMarquardt(MlNdtObjective(layer, points, ScoreOptionsForStage(options)),
+                             options_, options, reference_from_input_xi, summary);
 }
 
 }  // namespace mlndt

@@ -155,6 +155,26 @@ TEST(MlNdtPointCost, ResidualIsWhitenedErrorAtHandComputedConfiguration) {
             1e-3);
 }
 
+TEST(MlNdtPointCost, BoundCostFollowsTheBindingsLayer) {
+  const HandLayer hand;
+  // Same grid, no occupied cell: every residual is zero there.
+  const NdtLayer empty(Vector3d::Zero(), 2.0, Eigen::Vector3i(4, 3, 2), {}, {});
+  const Vector6d xi = TestPose();
+  const Vector3d p = InputPointFor(xi, Vector3d(2.8, 3.3, 1.1));  // Inside A.
+  std::unique_ptr<ceres::CostFunction> fixed(
+      MlNdtPointCost::Create(hand.layer, p, UnmatchedPolicy::ZERO_RESIDUAL));
+  LayerBinding binding(hand.layer);
+  std::unique_ptr<ceres::CostFunction> bound(
+      MlNdtPointCost::Create(binding, p, UnmatchedPolicy::ZERO_RESIDUAL));
+  const Vector3d on_hand = EvaluateSixVector(*fixed, xi);
+  ASSERT_GT(on_hand.norm(), 0.1);
+  EXPECT_TRUE(EigenNear(EvaluateSixVector(*bound, xi), on_hand, 0.0));
+  binding.Rebind(empty);
+  EXPECT_TRUE(EigenNear(EvaluateSixVector(*bound, xi), Vector3d::Zero(), 0.0));
+  binding.Rebind(hand.layer);
+  EXPECT_TRUE(EigenNear(EvaluateSixVector(*bound, xi), on_hand, 0.0));
+}
+
 TEST(MlNdtPointCostQuaternion,
      ResidualIsWhitenedErrorAtHandComputedConfiguration) {
   const HandLayer hand;
