@@ -4,6 +4,11 @@
 //
 //   map_benchmark [--benchmark_filter=...] [--benchmark_min_time=0.2]
 //
+// The map builds run with threads = LayeredGridOptions::num_threads = 1 and
+// 2 and are timed in wall-clock time (UseRealTime). OpenMP's idle threads
+// spin-wait by default; on a loaded machine compare with
+// OMP_WAIT_POLICY=passive map_benchmark ...
+//
 // The scan is the first of these that is set / exists:
 //   1. $MLNDT_BENCH_SCAN (any format mlndt reads; an error if missing),
 //   2. data/kitti/pcd/000000.pcd below the current folder,
@@ -11,8 +16,11 @@
 //      <repo>/<build>/benchmarks/,
 //   4. $MLNDT_DATA_DIR/kitti00_frames_0000_0007/pcd/000000.pcd.
 //
-// items_per_second is input points per second.
+// items_per_second is input points per second. map_bytes is
+// LayeredGrid::MemoryBytes() and bytes_per_cell that over the occupied cells
+// of all layers.
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -89,34 +97,41 @@ void RunBuild(const LayeredGridOptions& options, benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(scan.size()));
   const LayerInfo& finest = grid.layer_info().back();
+  size_t occupied = 0;
+  for (const LayerInfo& info : grid.layer_info()) occupied += info.occupied_cells;
   state.counters["layers"] = grid.num_layers();
   state.counters["finest_cell_m"] = finest.cell_size_m;
   state.counters["finest_occupied"] = static_cast<double>(finest.occupied_cells);
+  state.counters["map_bytes"] = static_cast<double>(grid.MemoryBytes());
+  state.counters["bytes_per_cell"] =
+      static_cast<double>(grid.MemoryBytes()) / static_cast<double>(std::max<size_t>(occupied, 1));
 }
 
-// Paper sizing (q = 8) with n = state.range(0) layers.
+// Paper sizing (q = 8) with n = state.range(0) layers, state.range(1) threads.
 void BM_BuildLayeredGrid(benchmark::State& state) {
   LayeredGridOptions options;
   options.num_layers = static_cast<int>(state.range(0));
+  options.num_threads = static_cast<int>(state.range(1));
   RunBuild(options, state);
 }
 BENCHMARK(BM_BuildLayeredGrid)
-    ->ArgName("num_layers")
-    ->DenseRange(2, 6)
+    ->ArgNames({"num_layers", "threads"})
+    ->ArgsProduct({benchmark::CreateDenseRange(2, 6, 1), {1, 2}})
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
-// As many layers as a finest cell edge of state.range(0) millimetres needs.
+// As many layers as a finest cell edge of state.range(0) millimetres needs,
+// state.range(1) threads.
 void BM_BuildLayeredGridFinestCell(benchmark::State& state) {
   LayeredGridOptions options;
   options.finest_cell_size_m = static_cast<double>(state.range(0)) / 1000.0;
+  options.num_threads = static_cast<int>(state.range(1));
   RunBuild(options, state);
 }
 BENCHMARK(BM_BuildLayeredGridFinestCell)
-    ->ArgName("finest_mm")
-    ->Arg(4000)
-    ->Arg(2000)
-    ->Arg(1000)
-    ->Arg(500)
+    ->ArgNames({"finest_mm", "threads"})
+    ->ArgsProduct({{4000, 2000, 1000, 500}, {1, 2}})
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
 void BM_SamplePoints(benchmark::State& state, SamplingOptions options) {

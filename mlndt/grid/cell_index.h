@@ -36,6 +36,11 @@ class CellIndex {
     return sparse_.emplace(key, new_slot).first->second;
   }
 
+  // Heap bytes of the table: the dense vector's capacity, or the hash
+  // table's buckets plus one node (next pointer, key, slot) per entry,
+  // without the allocator's per-node overhead.
+  size_t MemoryBytes() const;
+
  private:
   std::vector<int32_t> dense_;
   std::unordered_map<int64_t, int32_t> sparse_;

@@ -45,6 +45,14 @@ struct LayeredGridOptions {
   // Covariance regularisation (ndt_cell.h). min_eigenvalue_ratio in (0, 1],
   // min_eigenvalue_m2 >= 0.
   CellRegularization regularization;
+  // Threads (OpenMP) for Build: the bounds scan, the per-point cell keys, the
+  // per-cell moments and the per-cell eigen-decomposition. >= 1. The map is
+  // bit-identical for every value: each cell still sums its points in input
+  // order, and cells keep their order of first appearance. Keep 1 on a
+  // loaded machine: OpenMP's idle threads spin-wait by default, which can
+  // make a build many times slower when the cores are busy; set
+  // OMP_WAIT_POLICY=passive in the environment to make them sleep instead.
+  int num_threads = 1;
 
   bool IsValid(std::string* error) const;
 };
@@ -80,6 +88,12 @@ class LayeredGrid {
   const Eigen::AlignedBox3d& bounds() const { return bounds_; }
   size_t num_points() const { return num_points_; }
   bool empty() const { return layers_.empty(); }
+
+  // Heap and object bytes the map holds: every layer's MemoryBytes()
+  // (cells, keys, cell index; see NdtLayer::MemoryBytes) plus this object,
+  // the unused capacity of the layer vector and the per-layer infos. An
+  // estimate of the allocation sizes, without the allocator's overhead.
+  size_t MemoryBytes() const;
 
   // Assembles a grid from finished layers (used by the map file reader).
   LayeredGrid(const LayeredGridOptions& options,

@@ -24,4 +24,9 @@ NdtLayer::NdtLayer(const Eigen::Vector3d& origin,
   }
 }
 
+size_t NdtLayer::MemoryBytes() const {
+  return sizeof(NdtLayer) + cells_.capacity() * sizeof(NdtCell) +
+         keys_.capacity() * sizeof(int64_t) + index_.MemoryBytes();
+}
+
 }  // namespace mlndt

@@ -35,6 +35,11 @@ class NdtLayer {
   const std::vector<NdtCell>& cells() const { return cells_; }  // Occupied.
   const std::vector<int64_t>& keys() const { return keys_; }
 
+  // Bytes this layer holds: sizeof(NdtLayer), the cell and key vectors'
+  // capacity, and the cell index (a dense table of 4 bytes per grid cell, or
+  // a hash table; see CellIndex::MemoryBytes).
+  size_t MemoryBytes() const;
+
   // Integer cell coordinates of `point` (may lie outside the grid). Points
   // beyond the grid's border cells are put two cells out, so that not even
   // their neighbours are inside, and so are non-finite points.

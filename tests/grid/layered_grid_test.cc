@@ -1,10 +1,14 @@
 #include "mlndt/grid/layered_grid.h"
 
+#include <cstring>
 #include <random>
 
 #include <Eigen/Eigenvalues>
 
 #include <gtest/gtest.h>
+
+#include "mlndt/cloud/io.h"
+#include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
@@ -203,6 +207,143 @@ TEST(LayeredGrid, FlatCloudStillBuilds) {
   const NdtCell& cell = grid.layer(2).cells().front();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cell.covariance);
   EXPECT_NEAR(es.eigenvalues()(0), es.eigenvalues()(2) / 100.0, 1e-9 * es.eigenvalues()(2));
+}
+
+// The bundled KITTI frame `frame` (124668 points for frame 0).
+PointCloud KittiScan(int frame) {
+  PointCloud cloud;
+  std::string error;
+  const std::string path =
+      testing::BundledDataPath("kitti/pcd/00000" + std::to_string(frame) + ".pcd");
+  EXPECT_TRUE(ReadPointCloud(path, &cloud, nullptr, &error)) << error;
+  return cloud;
+}
+
+// Same bits, not just ==: -0.0 vs 0.0 or a different NaN would fail too.
+template <typename Derived>
+bool SameBits(const Eigen::DenseBase<Derived>& a, const Eigen::DenseBase<Derived>& b) {
+  return std::memcmp(a.derived().data(), b.derived().data(), sizeof(double) * a.size()) == 0;
+}
+
+// Every layer of `a` and `b` holds the same cells, in the same order, with
+// the same bits.
+void ExpectIdenticalMaps(const LayeredGrid& a, const LayeredGrid& b) {
+  EXPECT_TRUE(SameBits(a.bounds().min(), b.bounds().min()));
+  EXPECT_TRUE(SameBits(a.bounds().max(), b.bounds().max()));
+  ASSERT_EQ(a.num_layers(), b.num_layers());
+  for (int i = 1; i <= a.num_layers(); ++i) {
+    SCOPED_TRACE("layer " + std::to_string(i));
+    const NdtLayer& la = a.layer(i);
+    const NdtLayer& lb = b.layer(i);
+    EXPECT_EQ(la.cell_size(), lb.cell_size());
+    EXPECT_EQ(la.dims(), lb.dims());
+    EXPECT_EQ(la.keys(), lb.keys());
+    const LayerInfo& ia = a.layer_info()[static_cast<size_t>(i - 1)];
+    const LayerInfo& ib = b.layer_info()[static_cast<size_t>(i - 1)];
+    EXPECT_EQ(ia.occupied_cells, ib.occupied_cells);
+    EXPECT_EQ(ia.sparse_cells, ib.sparse_cells);
+    EXPECT_EQ(ia.degenerate_cells, ib.degenerate_cells);
+    ASSERT_EQ(la.cells().size(), lb.cells().size());
+    for (size_t c = 0; c < la.cells().size(); ++c) {
+      const NdtCell& ca = la.cells()[c];
+      const NdtCell& cb = lb.cells()[c];
+      ASSERT_EQ(ca.count, cb.count) << "cell " << c;
+      ASSERT_TRUE(SameBits(ca.mean, cb.mean)) << "cell " << c;
+      ASSERT_TRUE(SameBits(ca.covariance, cb.covariance)) << "cell " << c;
+      ASSERT_TRUE(SameBits(ca.information, cb.information)) << "cell " << c;
+      ASSERT_TRUE(SameBits(ca.whitening, cb.whitening)) << "cell " << c;
+    }
+  }
+}
+
+TEST(LayeredGrid, ThreadsBuildTheSameMapOnKitti) {
+  const PointCloud scan = KittiScan(0);
+  ASSERT_EQ(scan.size(), 124668u);
+  // The registration default (2 m, nested layers aggregated from the finest),
+  // a finer map, and q = 10 (every layer binned from the points).
+  LayeredGridOptions registration;
+  registration.finest_cell_size_m = 2.0;
+  LayeredGridOptions fine = registration;
+  fine.finest_cell_size_m = 0.5;
+  LayeredGridOptions non_nested;
+  non_nested.division_constant = 10;
+  non_nested.num_layers = 4;
+  for (const LayeredGridOptions& options : {registration, fine, non_nested}) {
+    SCOPED_TRACE("finest_cell_size_m " + std::to_string(options.finest_cell_size_m) + ", q " +
+                 std::to_string(options.division_constant));
+    LayeredGrid serial;
+    std::string error;
+    ASSERT_TRUE(LayeredGrid::Build(options, scan, &serial, &error)) << error;
+    ASSERT_EQ(serial.options().num_threads, 1);
+    ASSERT_GT(serial.layer_info().back().occupied_cells, 500u);
+    for (int threads : {2, 3}) {
+      SCOPED_TRACE("threads " + std::to_string(threads));
+      LayeredGridOptions parallel_options = options;
+      parallel_options.num_threads = threads;
+      LayeredGrid parallel;
+      ASSERT_TRUE(LayeredGrid::Build(parallel_options, scan, &parallel, &error)) << error;
+      ExpectIdenticalMaps(serial, parallel);
+    }
+  }
+}
+
+TEST(LayeredGrid, MoreThreadsThanCellsBuildTheSameMap) {
+  // A few cells per layer: most threads get no cells to sum.
+  const PointCloud cloud = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(4, 4, 1), 300, 10);
+  LayeredGridOptions options;
+  options.num_layers = 2;
+  LayeredGrid serial, parallel;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(options, cloud, &serial, &error)) << error;
+  options.num_threads = 8;
+  ASSERT_TRUE(LayeredGrid::Build(options, cloud, &parallel, &error)) << error;
+  ExpectIdenticalMaps(serial, parallel);
+}
+
+TEST(LayeredGrid, ZeroThreadsIsInvalid) {
+  LayeredGridOptions options;
+  std::string error;
+  EXPECT_TRUE(options.IsValid(&error)) << error;
+  options.num_threads = 0;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("num_threads"), std::string::npos) << error;
+  const PointCloud cloud = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 9), 500, 11);
+  LayeredGrid grid;
+  EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
+  EXPECT_NE(error.find("num_threads"), std::string::npos) << error;
+  EXPECT_TRUE(grid.empty());
+}
+
+TEST(LayeredGrid, MemoryBytesCoversTheCellsAndGrowsWithThem) {
+  const PointCloud scan = KittiScan(0);
+  EXPECT_EQ(LayeredGrid().MemoryBytes(), sizeof(LayeredGrid));
+  size_t previous_cells = 0;
+  size_t previous_bytes = 0;
+  for (double finest_m : {4.0, 2.0, 1.0}) {
+    SCOPED_TRACE("finest_cell_size_m " + std::to_string(finest_m));
+    LayeredGridOptions options;
+    options.finest_cell_size_m = finest_m;
+    LayeredGrid grid;
+    std::string error;
+    ASSERT_TRUE(LayeredGrid::Build(options, scan, &grid, &error)) << error;
+    size_t cells = 0;
+    size_t layer_bytes = 0;
+    for (int i = 1; i <= grid.num_layers(); ++i) {
+      const NdtLayer& layer = grid.layer(i);
+      const size_t n = layer.cells().size();
+      cells += n;
+      layer_bytes += layer.MemoryBytes();
+      // Cells, keys and at least one index entry per cell.
+      EXPECT_GE(layer.MemoryBytes(),
+                sizeof(NdtLayer) + n * (sizeof(NdtCell) + sizeof(int64_t) + sizeof(int32_t)));
+    }
+    EXPECT_GE(grid.MemoryBytes(), cells * sizeof(NdtCell));
+    EXPECT_GT(grid.MemoryBytes(), layer_bytes);
+    EXPECT_GT(cells, previous_cells);
+    EXPECT_GT(grid.MemoryBytes(), previous_bytes);
+    previous_cells = cells;
+    previous_bytes = grid.MemoryBytes();
+  }
 }
 
 }  // namespace
