@@ -140,6 +140,9 @@ int Run() {
   std::cout << "reference: " << reference_path << " (" << reference.size() << " points)\n"
             << "input:     " << input_path << " (" << input.size() << " points)\n"
             << summary.FullReport();
+  const double peak_bytes = tools::PeakResidentBytes();
+  std::printf("  peak memory:    %.1f MB resident (the process, clouds included)\n",
+              peak_bytes / 1e6);
   if (FLAGS_trace) {
     for (const IterationRecord& r : summary.trace) {
       std::printf("  iter %2d layer %d score %12.2f step %.2e %s\n", r.iteration, r.layer,
@@ -178,6 +181,12 @@ int Run() {
                             .AddNumber("sampling", summary.sampling_time_s * 1e3)
                             .AddNumber("solve", summary.solve_time_s * 1e3)
                             .str())
+        .Add("memory", tools::JsonObject()
+                           .AddNumber("map_bytes", static_cast<double>(summary.map_bytes))
+                           .AddNumber("map_occupied_cells",
+                                      static_cast<double>(summary.map_occupied_cells))
+                           .AddNumber("peak_resident_bytes", peak_bytes)
+                           .str())
         .Add("covariance", tools::JsonArray(std::vector<double>(
                                summary.covariance.data(), summary.covariance.data() + 36)))
         .Add("trace", TraceJson(summary));

@@ -108,6 +108,11 @@ void RegisterOnMap(const RegistrationOptions& options,
   const NdtLayer& last = reference_map.layer(n);
   summary->initial_reference_from_input_xi = initial_xi;
   summary->num_layers = n;
+  summary->map_occupied_cells = 0;
+  for (const LayerInfo& info : reference_map.layer_info()) {
+    summary->map_occupied_cells += info.occupied_cells;
+  }
+  summary->map_bytes = reference_map.MemoryBytes();
   summary->start_layer = ResolveStartLayer(options.schedule, n);
   summary->initial_score = EvaluateScore(last, sampled.points(), xi, options.unmatched_policy,
                                          options.loss, options.loss_scale)
@@ -296,6 +301,12 @@ std::string RegistrationSummary::FullReport() const {
   out << std::setprecision(2) << "  time [ms]:      map " << map_time_s * 1e3 << ", sampling "
       << sampling_time_s * 1e3 << ", solve " << solve_time_s * 1e3 << ", total "
       << total_time_s * 1e3 << "\n";
+  if (map_occupied_cells > 0) {
+    out << std::setprecision(3) << "  map memory:     " << map_bytes / 1e6 << " MB, "
+        << map_occupied_cells << " occupied cells, "
+        << std::setprecision(0) << static_cast<double>(map_bytes) / map_occupied_cells
+        << " bytes per cell\n";
+  }
   out << std::setprecision(4) << "  sigma (cov):    t = (" << std::sqrt(covariance(0, 0)) << ", "
       << std::sqrt(covariance(1, 1)) << ", " << std::sqrt(covariance(2, 2)) << ") m, angles = ("
       << std::sqrt(covariance(3, 3)) * kRadToDeg << ", " << std::sqrt(covariance(4, 4)) * kRadToDeg

@@ -122,7 +122,9 @@ struct RegistrationOptions {
   NewtonOptions newton;
   LevenbergMarquardtOptions levenberg_marquardt;
   // Threads for every backend: Ceres' evaluator threads, or OpenMP threads
-  // over points in the hand-written backends. >= 1.
+  // over points in the hand-written backends. >= 1. (The map build has its
+  // own, grid.num_threads.) OpenMP threads busy-wait between parallel
+  // regions: on a loaded machine, run with OMP_WAIT_POLICY=passive.
   int num_threads = 1;
   // What a point in no occupied cell contributes (cell_match.h). Measured on
   // KITTI pairs pushed off by up to 10 m / 45 deg: NEAREST_CELL converged
@@ -164,6 +166,9 @@ struct RegistrationSummary {
   double sampling_time_s = 0.0;
   double solve_time_s = 0.0;
   double total_time_s = 0.0;     // Everything after the clouds were loaded.
+
+  size_t map_occupied_cells = 0;  // Over all layers of the reference map.
+  size_t map_bytes = 0;           // LayeredGrid::MemoryBytes() of the map.
 
   // ML-NDT: Eq. (10) on the last layer. NDT: the Gaussian score (negated
   // Eq. 4 with Magnusson's d1, d2; <= 0, lower is better).

@@ -61,7 +61,10 @@ DEFINE_double(loss_scale, mlndt::RegistrationOptions().loss_scale,
               "Mahalanobis distance where the robust loss bends");
 DEFINE_string(linear_solver, "dense_normal_cholesky", "Ceres linear solver type");
 DEFINE_string(trust_region, "levenberg_marquardt", "Ceres trust-region strategy");
-DEFINE_int32(threads, 1, "Threads: Ceres evaluator threads, or OpenMP threads (newton, lm)");
+DEFINE_int32(threads, 1,
+             "Threads: Ceres evaluator threads, or OpenMP threads (newton, lm), and OpenMP "
+             "threads for the map build; with > 1 on a loaded machine set "
+             "OMP_WAIT_POLICY=passive");
 DEFINE_uint64(seed, 1, "Sampling seed");
 
 namespace mlndt {
@@ -127,6 +130,7 @@ inline bool RegistrationOptionsFromFlags(RegistrationOptions* options, std::stri
   options->ndt.max_step_norm = FLAGS_ndt_max_step;
   options->loss_scale = FLAGS_loss_scale;
   options->num_threads = FLAGS_threads;
+  options->grid.num_threads = FLAGS_threads;
   return options->IsValid(error);
 }
 

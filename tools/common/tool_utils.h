@@ -1,7 +1,9 @@
 #pragma once
 
 // Small helpers shared by the tools: number lists from flags, 4x4 matrix
-// text files, timing.
+// text files, peak memory.
+
+#include <sys/resource.h>
 
 #include <chrono>
 #include <fstream>
@@ -53,6 +55,14 @@ inline bool ReadMatrixFile(const std::string& path, Isometry3d* transform, std::
   for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[static_cast<size_t>(i)];
   transform->matrix() = m;
   return true;
+}
+
+// The process's peak resident set size so far [bytes] (getrusage; Linux
+// reports ru_maxrss in KiB).
+inline double PeakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) * 1024.0;
 }
 
 }  // namespace tools
