@@ -2,6 +2,7 @@
 // reports speed and accuracy per configuration.
 //
 //   mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] [--samplings=gbs]
+//               [--gbs_cell_sizes=1]
 //               [--start_layers=1] [--linear_solvers=dense_normal_cholesky]
 //               [--trust_regions=levenberg_marquardt] [--threads=1] [--repetitions=5]
 //               [--compare_pcl] [--output_csv=FILE]
@@ -14,7 +15,8 @@
 //           gap in --kitti_gaps; truth V_i^-1 V_j from kitti/poses_velo.txt.
 // Every registration starts from the identity.
 //
-// The grid is backends x samplings x start layers x threads, and for the Ceres
+// The grid is backends x samplings (x GBS cell sizes for gbs) x start layers x
+// threads, and for the Ceres
 // backend also x linear solvers x trust regions. Each repetition round runs
 // every configuration once on every pair, alternating configurations pair by
 // pair and rotating their order from round to round, so that machine noise
@@ -74,6 +76,9 @@ DEFINE_string(kitti_gaps, "1", "Comma-separated frame gaps of the kitti pairs: i
 DEFINE_string(backends, "ceres,newton,lm", "Comma-separated backends: ceres, newton, lm");
 DEFINE_string(samplings, "gbs",
               "Comma-separated input sampling methods: gbs, random, all, voxel_centroid");
+DEFINE_string(gbs_cell_sizes, "1",
+              "Comma-separated GBS cell edges [m] (gbs sampling only; the paper's 1 m is the "
+              "default)");
 DEFINE_string(start_layers, std::to_string(mlndt::DefaultRegistrationScheduleOptions().start_layer),
               "Comma-separated 1-based start layers; <= 0 counts from the finest (0 = last layer)");
 DEFINE_string(linear_solvers, "dense_normal_cholesky",
@@ -177,6 +182,7 @@ struct ScanPair {
 struct Configuration {
   BackendType backend = BackendType::CERES;
   SamplingMethod sampling = SamplingMethod::GBS;
+  double gbs_cell_size_m = 1.0;
   int start_layer = 1;
   ceres::LinearSolverType linear_solver = ceres::DENSE_NORMAL_CHOLESKY;
   ceres::TrustRegionStrategyType trust_region = ceres::LEVENBERG_MARQUARDT;
@@ -186,6 +192,7 @@ struct Configuration {
     RegistrationOptions options;
     options.backend = backend;
     options.sampling.method = sampling;
+    options.sampling.gbs_cell_size_m = gbs_cell_size_m;
     options.sampling.seed = FLAGS_seed;
     options.schedule.start_layer = start_layer;
     options.ceres.linear_solver_type = linear_solver;
@@ -312,6 +319,11 @@ bool ParseConfigurations(std::vector<Configuration>* configurations, std::string
     }
     samplings.push_back(method);
   }
+  std::vector<double> gbs_cell_sizes;
+  if (!tools::ParseNumberList(FLAGS_gbs_cell_sizes, &gbs_cell_sizes) || gbs_cell_sizes.empty()) {
+    *error = "--gbs_cell_sizes: expected comma-separated numbers";
+    return false;
+  }
   std::vector<int> start_layers, threads;
   if (!ParseIntList(FLAGS_start_layers, &start_layers)) {
     *error = "--start_layers: expected comma-separated integers";
@@ -350,12 +362,22 @@ bool ParseConfigurations(std::vector<Configuration>* configurations, std::string
     trust_regions.push_back(type);
   }
 
+  // (method, GBS cell size): one entry per GBS size, one for other methods.
+  std::vector<std::pair<SamplingMethod, double>> sampling_choices;
+  for (const SamplingMethod sampling : samplings) {
+    if (sampling != SamplingMethod::GBS) {
+      sampling_choices.emplace_back(sampling, 1.0);
+      continue;
+    }
+    for (const double size : gbs_cell_sizes) sampling_choices.emplace_back(sampling, size);
+  }
+
   configurations->clear();
   for (const BackendType backend : backends) {
     const bool ceres_backend = backend == BackendType::CERES;
     const size_t num_solvers = ceres_backend ? linear_solvers.size() : 1;
     const size_t num_regions = ceres_backend ? trust_regions.size() : 1;
-    for (const SamplingMethod sampling : samplings) {
+    for (const auto& [sampling, gbs_cell_size] : sampling_choices) {
       for (const int start_layer : start_layers) {
         for (size_t s = 0; s < num_solvers; ++s) {
           for (size_t t = 0; t < num_regions; ++t) {
@@ -363,6 +385,7 @@ bool ParseConfigurations(std::vector<Configuration>* configurations, std::string
               Configuration c;
               c.backend = backend;
               c.sampling = sampling;
+              c.gbs_cell_size_m = gbs_cell_size;
               c.start_layer = start_layer;
               if (ceres_backend) {
                 c.linear_solver = linear_solvers[s];
@@ -648,6 +671,9 @@ int Run() {
         method = "mlndt";
         backend = BackendName(c.backend);
         sampling = LowerCase(SamplingMethodToString(c.sampling));
+        if (c.sampling == SamplingMethod::GBS) {
+          sampling += "_" + Format("%g", c.gbs_cell_size_m) + "m";
+        }
         start = std::to_string(c.start_layer);
         solver = ceres_backend ? LowerCase(ceres::LinearSolverTypeToString(c.linear_solver)) : "";
         region = ceres_backend

@@ -140,7 +140,8 @@ TEST(MlndtBench, UnknownBackendFails) {
 TEST(MlndtBench, RejectsBadFlagValues) {
   for (const std::string flags :
        {"--backends=foo", "--pairs=bar", "--samplings=none", "--threads=1,x", "--threads=0",
-        "--start_layers=", "--linear_solvers=cholesky", "--trust_regions=newton",
+        "--start_layers=", "--gbs_cell_sizes=", "--gbs_cell_sizes=x", "--gbs_cell_sizes=0",
+        "--linear_solvers=cholesky", "--trust_regions=newton",
         "--kitti_gaps=0", "--repetitions=0", "--pairs=koide3 --output_csv=/nonexistent/x.csv",
         "unexpected_argument"}) {
     SCOPED_TRACE(flags);
