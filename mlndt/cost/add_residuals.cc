@@ -8,7 +8,7 @@
 namespace mlndt {
 
 std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
-    const NdtLayer& reference_layer,
+    LayerSource reference_layer,
     const std::vector<Eigen::Vector3d>& input_points,
     const ResidualOptions& options,
     double* reference_from_input_xi,
@@ -27,7 +27,7 @@ std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
 }
 
 std::vector<ceres::ResidualBlockId> AddMlNdtResidualsQuaternion(
-    const NdtLayer& reference_layer,
+    LayerSource reference_layer,
     const std::vector<Eigen::Vector3d>& input_points,
     const ResidualOptions& options,
     double* reference_from_input_rotation,

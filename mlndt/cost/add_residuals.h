@@ -3,10 +3,15 @@
 // The embedding API: adds ML-NDT residuals of an input scan against one layer
 // of a reference map to a ceres::Problem the caller owns, on the caller's own
 // pose blocks. This is how ML-NDT goes into a bundle-adjustment or pose-graph
-// back end; mlndt::Register is built on it.
+// back end. (mlndt::Register's Ceres backend builds the same residuals,
+// mlndt_point_cost.h, and keeps them from one layer stage to the next.)
+//
+// The layer is an NdtLayer, fixed, or a LayerBinding (layer_binding.h): then
+// one Problem can move coarse-to-fine by rebinding, without new blocks.
 //
 // Ownership: the Problem owns the cost functions (and, under its default
-// options, the loss function). The NdtLayer must outlive the Problem.
+// options, the loss function). The NdtLayer (or the binding and every layer
+// bound while the Problem is evaluated) must outlive the Problem.
 
 #include <vector>
 
@@ -14,6 +19,7 @@
 #include <ceres/problem.h>
 
 #include "mlndt/cost/cell_match.h"
+#include "mlndt/cost/layer_binding.h"
 #include "mlndt/grid/ndt_layer.h"
 
 namespace mlndt {
@@ -31,7 +37,7 @@ struct ResidualOptions {
 // block `reference_from_input_xi` = (tx, ty, tz, alpha, beta, gamma) of
 // Eq. (11). Returns the ids of the blocks added.
 std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
-    const NdtLayer& reference_layer,
+    LayerSource reference_layer,
     const std::vector<Eigen::Vector3d>& input_points,
     const ResidualOptions& options,
     double* reference_from_input_xi,
@@ -41,7 +47,7 @@ std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
 // translation block. Sets ceres::EigenQuaternionManifold on the rotation
 // block unless the caller has already given it a manifold.
 std::vector<ceres::ResidualBlockId> AddMlNdtResidualsQuaternion(
-    const NdtLayer& reference_layer,
+    LayerSource reference_layer,
     const std::vector<Eigen::Vector3d>& input_points,
     const ResidualOptions& options,
     double* reference_from_input_rotation,

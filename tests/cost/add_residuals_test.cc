@@ -307,6 +307,34 @@ TEST(AddMlNdtResiduals, SolvingRecoversKnownTransform) {
   }
 }
 
+// The same, in one Problem whose residuals are moved from layer 3 to layer 4
+// by rebinding: same cost as fresh residuals on each layer, same result.
+TEST(AddMlNdtResiduals, BoundResidualsMoveBetweenLayersWithoutNewBlocks) {
+  const LayeredGrid& grid = RoomGrid();
+  const std::vector<Vector3d> points = InputScan(2);
+  Vector6d xi = Vector6d::Zero();
+  LayerBinding binding(grid.layer(3));
+  ceres::Problem problem;
+  AddMlNdtResiduals(binding, points, ResidualOptions(), xi.data(), &problem);
+  for (int layer = 3; layer <= 4; ++layer) {
+    binding.Rebind(grid.layer(layer));
+    Vector6d fresh_xi = xi;
+    ceres::Problem fresh;
+    AddMlNdtResiduals(grid.layer(layer), points, ResidualOptions(), fresh_xi.data(), &fresh);
+    const double cost = ProblemCost(&problem);
+    EXPECT_EQ(cost, ProblemCost(&fresh)) << "layer " << layer;
+    ceres::Solver::Summary summary;
+    ceres::Solve(TightDenseQr(), &problem, &summary);
+    ASSERT_TRUE(summary.IsSolutionUsable()) << summary.FullReport();
+    EXPECT_LT(summary.final_cost, cost);
+  }
+  EXPECT_EQ(problem.NumResidualBlocks(), static_cast<int>(points.size()));
+  const Isometry3d truth = PoseVectorToIsometry(TruePose());
+  const Isometry3d estimate = PoseVectorToIsometry(xi);
+  EXPECT_LT(TranslationErrorM(estimate, truth), 0.01) << xi.transpose();
+  EXPECT_LT(RotationErrorRad(estimate, truth), 0.1 * kDegToRad) << xi.transpose();
+}
+
 TEST(AddMlNdtResidualsQuaternion, SolvingRecoversKnownTransform) {
   const LayeredGrid& grid = RoomGrid();
   const std::vector<Vector3d> points = InputScan(2);
