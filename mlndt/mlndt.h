@@ -13,6 +13,7 @@
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/cost/add_residuals.h"
 #include "mlndt/cost/cell_match.h"
+#include "mlndt/cost/layer_binding.h"
 #include "mlndt/cost/mlndt_pair_cost.h"
 #include "mlndt/cost/mlndt_point_cost.h"
 #include "mlndt/cost/robust_loss.h"

@@ -48,18 +48,20 @@ int main(int argc, char** argv) {
   // The caller's pose blocks: quaternion (x, y, z, w) and translation.
   double rotation[4] = {0.0, 0.0, 0.0, 1.0};
   double translation[3] = {0.0, 0.0, 0.0};
-  // Coarse to fine, one Problem per layer (what mlndt::Register does).
+  // One Problem: the ML-NDT residuals read their layer through a binding,
+  // which moves them coarse to fine; the prior stays.
+  mlndt::LayerBinding layer_binding(map.layer(1));
+  mlndt::ResidualOptions residual_options;
+  residual_options.unmatched_policy = mlndt::UnmatchedPolicy::NEAREST_CELL;
+  residual_options.loss_function = new ceres::CauchyLoss(3.0);  // The Problem owns it.
+  ceres::Problem problem;
+  mlndt::AddMlNdtResidualsQuaternion(layer_binding, samples.points(), residual_options, rotation,
+                                     translation, &problem);
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<TranslationPrior, 3, 3>(
+                               new TranslationPrior(Eigen::Vector3d::Zero())),
+                           nullptr, translation);
   for (int layer = 1; layer <= map.num_layers(); ++layer) {
-    ceres::Problem problem;
-    mlndt::ResidualOptions residual_options;
-    residual_options.unmatched_policy = mlndt::UnmatchedPolicy::NEAREST_CELL;
-    residual_options.loss_function = new ceres::CauchyLoss(3.0);
-    mlndt::AddMlNdtResidualsQuaternion(map.layer(layer), samples.points(), residual_options,
-                                       rotation, translation, &problem);
-    problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<TranslationPrior, 3, 3>(
-            new TranslationPrior(Eigen::Vector3d::Zero())),
-        nullptr, translation);
+    layer_binding.Rebind(map.layer(layer));
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::DENSE_QR;
     options.max_num_iterations = layer == map.num_layers() ? 30 : 6;
