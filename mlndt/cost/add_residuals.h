@@ -10,7 +10,8 @@
 // one Problem can move coarse-to-fine by rebinding, without new blocks.
 //
 // Ownership: the Problem owns the cost functions (and, under its default
-// options, the loss function). The NdtLayer (or the binding and every layer
+// options, the loss function; with no input points nothing is added and the
+// loss stays the caller's). The NdtLayer (or the binding and every layer
 // bound while the Problem is evaluated) must outlive the Problem.
 
 #include <vector>

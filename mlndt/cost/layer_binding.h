@@ -12,11 +12,18 @@
 
 namespace mlndt {
 
+// Not copyable: functors point at the binding itself, so a copy (or a move
+// into a container) would leave them bound to the old object. Temporaries
+// are rejected at compile time for the same reason.
 class LayerBinding {
  public:
   explicit LayerBinding(const NdtLayer& layer) : layer_(&layer) {}
+  explicit LayerBinding(NdtLayer&&) = delete;
+  LayerBinding(const LayerBinding&) = delete;
+  LayerBinding& operator=(const LayerBinding&) = delete;
 
   void Rebind(const NdtLayer& layer) { layer_ = &layer; }
+  void Rebind(NdtLayer&&) = delete;
   const NdtLayer& layer() const { return *layer_; }
 
  private:
@@ -30,6 +37,7 @@ class LayerSource {
  public:
   LayerSource(const NdtLayer& layer) : layer_(&layer) {}              // NOLINT
   LayerSource(const LayerBinding& binding) : binding_(&binding) {}    // NOLINT
+  LayerSource(NdtLayer&&) = delete;  // A temporary layer would dangle.
 
   const NdtLayer& layer() const { return binding_ != nullptr ? binding_->layer() : *layer_; }
 

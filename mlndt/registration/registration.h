@@ -167,8 +167,8 @@ struct RegistrationSummary {
   double solve_time_s = 0.0;
   double total_time_s = 0.0;     // Everything after the clouds were loaded.
 
-  size_t map_occupied_cells = 0;  // Over all layers of the reference map.
-  size_t map_bytes = 0;           // LayeredGrid::MemoryBytes() of the map.
+  size_t map_occupied_cells = 0;  // Over all layers of the reference map (ML-NDT; 0 for NDT).
+  size_t map_bytes = 0;           // LayeredGrid::MemoryBytes() of the map (ML-NDT; 0 for NDT).
 
   // ML-NDT: Eq. (10) on the last layer. NDT: the Gaussian score (negated
   // Eq. 4 with Magnusson's d1, d2; <= 0, lower is better).

@@ -27,6 +27,8 @@ ScoreOptions ScoreOptionsForStage(const StageOptions& options) {
   return score;
 }
 
+namespace internal {
+
 const std::vector<Eigen::Vector3d>& EveryNthPoint(const std::vector<Eigen::Vector3d>& points,
                                                   int stride,
                                                   std::vector<Eigen::Vector3d>* storage) {
@@ -39,6 +41,8 @@ const std::vector<Eigen::Vector3d>& EveryNthPoint(const std::vector<Eigen::Vecto
   }
   return *storage;
 }
+
+}  // namespace internal
 
 bool StringToBackendType(std::string value, BackendType* result) {
   UpperCase(&value);

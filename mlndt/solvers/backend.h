@@ -67,11 +67,15 @@ struct StageSummary {
 // The per-point settings of a stage as ScoreOptions.
 ScoreOptions ScoreOptionsForStage(const StageOptions& options);
 
+namespace internal {
+
 // Every stride-th point of `points`: `points` itself for stride 1, otherwise
-// a copy in *storage.
+// a copy in *storage. For the backends.
 const std::vector<Eigen::Vector3d>& EveryNthPoint(const std::vector<Eigen::Vector3d>& points,
                                                   int stride,
                                                   std::vector<Eigen::Vector3d>* storage);
+
+}  // namespace internal
 
 class Backend {
  public:

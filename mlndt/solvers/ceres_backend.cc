@@ -1,8 +1,8 @@
 #include "mlndt/solvers/ceres_backend.h"
 
-
 #include <ceres/iteration_callback.h>
 #include <ceres/solver.h>
+#include <glog/logging.h>
 
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/layer_binding.h"
@@ -99,6 +99,7 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
                               Vector6d* reference_from_input_xi,
                               StageSummary* summary) {
   *summary = StageSummary();
+  CHECK_GE(options.point_stride, 1);
   if (pool_ == nullptr || !pool_->Serves(input_points, options.unmatched_policy)) {
     pool_ = std::make_unique<CostPool>(layer, input_points, options.unmatched_policy);
   }

@@ -66,7 +66,7 @@ void LevenbergMarquardtBackend::SolveStage(const NdtLayer& layer,
                                            Vector6d* reference_from_input_xi,
                                            StageSummary* summary) {
   std::vector<Eigen::Vector3d> thinned;
-  const auto& points = EveryNthPoint(input_points, options.point_stride, &thinned);
+  const auto& points = internal::EveryNthPoint(input_points, options.point_stride, &thinned);
   MinimizeLevenbergMarquardt(MlNdtObjective(layer, points, ScoreOptionsForStage(options)),
                              options_, options, reference_from_input_xi, summary);
 }

@@ -335,6 +335,26 @@ TEST(AddMlNdtResiduals, BoundResidualsMoveBetweenLayersWithoutNewBlocks) {
   EXPECT_LT(RotationErrorRad(estimate, truth), 0.1 * kDegToRad) << xi.transpose();
 }
 
+TEST(AddMlNdtResidualsQuaternion, BoundResidualsFollowRebind) {
+  const LayeredGrid& grid = RoomGrid();
+  const std::vector<Vector3d> points = InputScan(10);
+  Eigen::Quaterniond q(EulerRotation(0.01, -0.02, 0.03));
+  Vector3d t(0.1, -0.1, 0.05);
+  LayerBinding binding(grid.layer(2));
+  ceres::Problem bound;
+  AddMlNdtResidualsQuaternion(binding, points, ResidualOptions(), q.coeffs().data(), t.data(),
+                              &bound);
+  for (int layer = 2; layer <= 4; ++layer) {
+    binding.Rebind(grid.layer(layer));
+    ceres::Problem fixed;
+    AddMlNdtResidualsQuaternion(grid.layer(layer), points, ResidualOptions(), q.coeffs().data(),
+                                t.data(), &fixed);
+    const double cost = ProblemCost(&bound);
+    EXPECT_GT(cost, 0.0);
+    EXPECT_EQ(cost, ProblemCost(&fixed)) << "layer " << layer;
+  }
+}
+
 TEST(AddMlNdtResidualsQuaternion, SolvingRecoversKnownTransform) {
   const LayeredGrid& grid = RoomGrid();
   const std::vector<Vector3d> points = InputScan(2);
