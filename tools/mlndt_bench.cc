@@ -198,6 +198,7 @@ struct Configuration {
     options.ceres.linear_solver_type = linear_solver;
     options.ceres.trust_region_strategy_type = trust_region;
     options.num_threads = threads;
+    options.grid.num_threads = threads;  // As --threads in the other tools.
     return options;
   }
 };
