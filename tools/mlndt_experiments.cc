@@ -93,19 +93,14 @@ DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 namespace mlndt {
 namespace {
 
+using tools::Fmt;
+
 using tools::PairResult;
 using tools::SequenceTotals;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_experiments: " << message << std::endl;
   return 1;
-}
-
-std::string Fmt(double value, int precision) {
-  if (!std::isfinite(value)) return "–";
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", precision, value);
-  return text;
 }
 
 std::string Percent(size_t part, size_t whole) {

@@ -92,16 +92,11 @@ DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 namespace mlndt {
 namespace {
 
+using tools::Fmt;
+
 int Fail(const std::string& message) {
   std::cerr << "mlndt_scaling: " << message << std::endl;
   return 1;
-}
-
-std::string Fmt(double value, int precision) {
-  if (!std::isfinite(value)) return "–";
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", precision, value);
-  return text;
 }
 
 // Parses --sizes: strictly increasing positive integers.

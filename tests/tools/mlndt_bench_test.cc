@@ -10,28 +10,22 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "tests/testing/run_tool.h"
+#include "tests/testing/text_table.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
 
+using testing::Split;
+using testing::TableCells;
+using testing::ToNumber;
 using testing::ToolRun;
 const auto& Quote = testing::ShellQuote;
 const auto& ReadFile = testing::ReadWholeFile;
-
-std::vector<std::string> Split(const std::string& text, char separator) {
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, separator)) items.push_back(item);
-  if (!text.empty() && text.back() == separator) items.push_back("");
-  return items;
-}
 
 std::string TempPath(const std::string& name) {
   return ::testing::TempDir() + "mlndt_bench_test_" + name;
@@ -41,24 +35,6 @@ std::string TempPath(const std::string& name) {
 // a file named after the current test, since ctest may run tests in parallel.
 ToolRun RunBench(const std::string& args) {
   return testing::RunTool("mlndt_bench", args);
-}
-
-// The cells of a markdown table row "| a | b |", trimmed.
-std::vector<std::string> TableCells(const std::string& line) {
-  std::vector<std::string> cells;
-  for (const std::string& cell : Split(line, '|')) {
-    const size_t begin = cell.find_first_not_of(' ');
-    if (begin == std::string::npos) continue;
-    cells.push_back(cell.substr(begin, cell.find_last_not_of(' ') - begin + 1));
-  }
-  return cells;
-}
-
-double ToNumber(const std::string& text) {
-  if (text.empty()) return std::nan("");
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  return *end == '\0' ? value : std::nan("");
 }
 
 const char kCsvHeader[] =

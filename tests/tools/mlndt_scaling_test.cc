@@ -13,16 +13,19 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "tests/testing/run_tool.h"
+#include "tests/testing/text_table.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
 
+using testing::Split;
+using testing::TableCells;
+using testing::ToNumber;
 using testing::ToolRun;
 const auto& Quote = testing::ShellQuote;
 const auto& ReadFile = testing::ReadWholeFile;
@@ -35,32 +38,6 @@ constexpr double kMaxRotationErrorDeg = 0.5;
 ToolRun RunScaling(const std::string& args) { return testing::RunTool("mlndt_scaling", args); }
 
 bool GnuplotInstalled() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
-
-std::vector<std::string> Split(const std::string& text, char separator) {
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, separator)) items.push_back(item);
-  return items;
-}
-
-// The cells of a markdown table row "| a | b |", trimmed.
-std::vector<std::string> TableCells(const std::string& line) {
-  std::vector<std::string> cells;
-  for (const std::string& cell : Split(line, '|')) {
-    const size_t begin = cell.find_first_not_of(' ');
-    if (begin == std::string::npos) continue;
-    cells.push_back(cell.substr(begin, cell.find_last_not_of(' ') - begin + 1));
-  }
-  return cells;
-}
-
-double ToNumber(const std::string& text) {
-  if (text.empty()) return std::nan("");
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  return *end == '\0' ? value : std::nan("");
-}
 
 // Table rows: lines starting with "| <digit>".
 std::vector<std::vector<std::string>> TableRows(const ToolRun& run) {
@@ -121,11 +98,13 @@ TEST(MlndtScaling, SmallSizesOnTheBundledKittiFrames) {
 
   // CSV: the same rows, with full precision.
   const std::vector<std::string> lines = Split(ReadFile(dir + "/scaling.csv"), '\n');
-  ASSERT_EQ(lines.size(), 3u) << ReadFile(dir + "/scaling.csv");
+  ASSERT_EQ(lines.size(), 4u) << "header, 2 rows and a final newline expected\n"
+                              << ReadFile(dir + "/scaling.csv");
+  EXPECT_EQ(lines[3], "");
   EXPECT_EQ(lines[0],
             "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_layer_cells,"
             "num_layers,iterations,termination,translation_error_m,rotation_error_deg,ok");
-  for (size_t k = 1; k < lines.size(); ++k) {
+  for (size_t k = 1; k < 3; ++k) {
     const std::vector<std::string> f = Split(lines[k], ',');
     ASSERT_EQ(f.size(), 13u) << lines[k];
     EXPECT_EQ(f[0], rows[k - 1][0]);

@@ -6,6 +6,8 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -55,6 +57,14 @@ inline bool ReadMatrixFile(const std::string& path, Isometry3d* transform, std::
   for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[static_cast<size_t>(i)];
   transform->matrix() = m;
   return true;
+}
+
+// `value` with `precision` decimals for tables; "–" when not finite.
+inline std::string Fmt(double value, int precision) {
+  if (!std::isfinite(value)) return "–";
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", precision, value);
+  return text;
 }
 
 // The process's peak resident set size so far [bytes] (getrusage; Linux
