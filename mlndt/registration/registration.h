@@ -95,7 +95,7 @@ LayeredGridOptions DefaultRegistrationGridOptions();
 // Schedule for registration without an initial guess: start on layer 1 and
 // give every layer up to 6 iterations. The paper starts on layer 2 with 3
 // iterations a layer; on KITTI pairs pushed off by up to 10 m / 45 deg that
-// converged in 23 (layer 2) and 29 (3 iterations) of 35 starts, ours in 35.
+// converged in 22 (layer 2) and 28 (3 iterations) of 35 starts, ours in 35.
 // Coarse layers use every 8th sample at most (layer i of n every
 // min(2^(n-i), 8)-th): the same 35 of 35 and the same final poses, at about
 // half the time.
