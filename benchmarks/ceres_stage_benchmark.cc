@@ -6,17 +6,17 @@
 // evaluation, residual evaluation and linear solve (Ceres' own timers).
 // docs/performance.md quotes it. CPU time is the figure to compare.
 
-#include <memory>
-#include <string>
-#include <vector>
-
 #include <benchmark/benchmark.h>
 #include <ceres/ceres.h>
 #include <glog/logging.h>
 
-#include "mlndt/mlndt.h"
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "mlndt/cost/layer_binding.h"
 #include "mlndt/cost/mlndt_point_cost.h"
+#include "mlndt/mlndt.h"
 
 namespace mlndt {
 namespace {
@@ -35,10 +35,16 @@ const Stage& KittiStage() {
     const std::string dir = MLNDT_DATA_DIR;
     PointCloud reference, input, sampled;
     std::string error;
-    CHECK(ReadPointCloud(dir + "/kitti/pcd/000000.pcd", &reference, nullptr, &error)) << error;
-    CHECK(ReadPointCloud(dir + "/kitti/pcd/000001.pcd", &input, nullptr, &error)) << error;
-    CHECK(LayeredGrid::Build(s->options.grid, reference, &s->map, &error)) << error;
-    CHECK(SamplePoints(s->options.sampling, input, &sampled, nullptr, &error)) << error;
+    CHECK(ReadPointCloud(
+        dir + "/kitti/pcd/000000.pcd", &reference, nullptr, &error))
+        << error;
+    CHECK(
+        ReadPointCloud(dir + "/kitti/pcd/000001.pcd", &input, nullptr, &error))
+        << error;
+    CHECK(LayeredGrid::Build(s->options.grid, reference, &s->map, &error))
+        << error;
+    CHECK(SamplePoints(s->options.sampling, input, &sampled, nullptr, &error))
+        << error;
     s->samples = sampled.points();
     RegistrationSummary summary;
     Register(s->options, s->map, input, Isometry3d::Identity(), &summary);
@@ -53,7 +59,8 @@ std::vector<std::unique_ptr<ceres::CostFunction>> MakeCosts(const Stage& stage,
                                                             LayerSource layer) {
   std::vector<std::unique_ptr<ceres::CostFunction>> costs;
   for (const Eigen::Vector3d& p : stage.samples) {
-    costs.emplace_back(MlNdtPointCost::Create(layer, p, stage.options.unmatched_policy));
+    costs.emplace_back(
+        MlNdtPointCost::Create(layer, p, stage.options.unmatched_policy));
   }
   return costs;
 }
@@ -74,7 +81,8 @@ void BM_AutoDiffResidual(benchmark::State& state) {
       benchmark::DoNotOptimize(residual);
     }
   }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(costs.size()));
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<int64_t>(costs.size()));
   state.SetLabel(with_jacobian ? "with jacobian" : "value only");
 }
 
@@ -94,12 +102,15 @@ void BM_ProblemBuildAndFree(benchmark::State& state) {
     for (size_t i = 0; i < stage.samples.size(); ++i) {
       problem.AddResidualBlock(
           pooled ? pool[i].get()
-                 : MlNdtPointCost::Create(stage.layer(), stage.samples[i],
+                 : MlNdtPointCost::Create(stage.layer(),
+                                          stage.samples[i],
                                           stage.options.unmatched_policy),
-          nullptr, xi.data());
+          nullptr,
+          xi.data());
     }
   }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(stage.samples.size()));
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<int64_t>(stage.samples.size()));
   state.SetLabel(pooled ? "pooled functors" : "fresh functors");
 }
 
@@ -119,13 +130,16 @@ void BM_StageSolve(benchmark::State& state) {
     problem_options.disable_all_safety_checks = true;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(problem_options);
-    ceres::LossFunction* loss = CreateLoss(stage.options.loss, stage.options.loss_scale);
-    for (const auto& cost : pool) problem.AddResidualBlock(cost.get(), loss, xi.data());
+    ceres::LossFunction* loss =
+        CreateLoss(stage.options.loss, stage.options.loss_scale);
+    for (const auto& cost : pool)
+      problem.AddResidualBlock(cost.get(), loss, xi.data());
     ceres::Solver::Options options;
     options.linear_solver_type = stage.options.ceres.linear_solver_type;
     options.num_threads = static_cast<int>(state.range(0));
     options.max_num_iterations = 6;
-    options.function_tolerance = options.gradient_tolerance = options.parameter_tolerance = 0;
+    options.function_tolerance = options.gradient_tolerance =
+        options.parameter_tolerance = 0;
     options.logging_type = ceres::SILENT;
     ceres::Solve(options, &problem, &summary);
     jacobian_s += summary.jacobian_evaluation_time_in_seconds;
@@ -143,7 +157,10 @@ void BM_StageSolve(benchmark::State& state) {
 }
 
 BENCHMARK(BM_AutoDiffResidual)->Arg(0)->Arg(1);
-BENCHMARK(BM_ProblemBuildAndFree)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ProblemBuildAndFree)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StageSolve)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -20,6 +20,8 @@
 // LayeredGrid::MemoryBytes() and bytes_per_cell that over the occupied cells
 // of all layers.
 
+#include <benchmark/benchmark.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -27,8 +29,6 @@
 #include <string>
 #include <system_error>
 #include <vector>
-
-#include <benchmark/benchmark.h>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
@@ -49,17 +49,21 @@ PointCloud& Scan() {
 // Candidate paths in order of preference (see the file comment). With
 // MLNDT_BENCH_SCAN set, it is the only candidate.
 std::vector<std::string> ScanCandidates() {
-  if (const char* scan = std::getenv("MLNDT_BENCH_SCAN"); scan != nullptr && *scan != '\0') {
+  if (const char* scan = std::getenv("MLNDT_BENCH_SCAN");
+      scan != nullptr && *scan != '\0') {
     return {scan};
   }
   std::vector<std::string> candidates = {kBundledScan};
   std::error_code error;
-  const std::filesystem::path binary = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::filesystem::path binary =
+      std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error) {
     candidates.push_back(
-        (binary.parent_path().parent_path().parent_path() / kBundledScan).lexically_normal());
+        (binary.parent_path().parent_path().parent_path() / kBundledScan)
+            .lexically_normal());
   }
-  if (const char* dir = std::getenv("MLNDT_DATA_DIR"); dir != nullptr && *dir != '\0') {
+  if (const char* dir = std::getenv("MLNDT_DATA_DIR");
+      dir != nullptr && *dir != '\0') {
     candidates.push_back(std::string(dir) + "/" + kSharedScan);
   }
   return candidates;
@@ -70,14 +74,17 @@ bool LoadScan(std::string* path, std::string* error) {
   const std::vector<std::string> candidates = ScanCandidates();
   for (const std::string& candidate : candidates) {
     std::error_code exists_error;
-    if (candidates.size() > 1 && !std::filesystem::exists(candidate, exists_error)) continue;
+    if (candidates.size() > 1 &&
+        !std::filesystem::exists(candidate, exists_error))
+      continue;
     *path = candidate;
     return ReadPointCloud(candidate, &Scan(), nullptr, error);
   }
   *error = "no KITTI scan found; tried:";
   for (const std::string& candidate : candidates) *error += "\n  " + candidate;
   *error +=
-      "\nset MLNDT_BENCH_SCAN to a scan file, or MLNDT_DATA_DIR to the shared data folder";
+      "\nset MLNDT_BENCH_SCAN to a scan file, or MLNDT_DATA_DIR to the shared "
+      "data folder";
   return false;
 }
 
@@ -95,16 +102,20 @@ void RunBuild(const LayeredGridOptions& options, benchmark::State& state) {
     benchmark::DoNotOptimize(built);
     grid = std::move(built);
   }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(scan.size()));
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<int64_t>(scan.size()));
   const LayerInfo& finest = grid.layer_info().back();
   size_t occupied = 0;
-  for (const LayerInfo& info : grid.layer_info()) occupied += info.occupied_cells;
+  for (const LayerInfo& info : grid.layer_info())
+    occupied += info.occupied_cells;
   state.counters["layers"] = grid.num_layers();
   state.counters["finest_cell_m"] = finest.cell_size_m;
-  state.counters["finest_occupied"] = static_cast<double>(finest.occupied_cells);
+  state.counters["finest_occupied"] =
+      static_cast<double>(finest.occupied_cells);
   state.counters["map_bytes"] = static_cast<double>(grid.MemoryBytes());
   state.counters["bytes_per_cell"] =
-      static_cast<double>(grid.MemoryBytes()) / static_cast<double>(std::max<size_t>(occupied, 1));
+      static_cast<double>(grid.MemoryBytes()) /
+      static_cast<double>(std::max<size_t>(occupied, 1));
 }
 
 // Paper sizing (q = 8) with n = state.range(0) layers, state.range(1) threads.
@@ -146,10 +157,13 @@ void BM_SamplePoints(benchmark::State& state, SamplingOptions options) {
     }
     benchmark::DoNotOptimize(sampled);
   }
-  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(scan.size()));
-  state.counters["sampled_points"] = static_cast<double>(summary.sampled_points);
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<int64_t>(scan.size()));
+  state.counters["sampled_points"] =
+      static_cast<double>(summary.sampled_points);
   if (options.method != SamplingMethod::RANDOM) {
-    state.counters["occupied_cells"] = static_cast<double>(summary.occupied_cells);
+    state.counters["occupied_cells"] =
+        static_cast<double>(summary.occupied_cells);
   }
 }
 
@@ -163,9 +177,13 @@ SamplingOptions Sampling(SamplingMethod method) {
 
 BENCHMARK_CAPTURE(BM_SamplePoints, gbs_1m, Sampling(SamplingMethod::GBS))
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SamplePoints, random_15pct, Sampling(SamplingMethod::RANDOM))
+BENCHMARK_CAPTURE(BM_SamplePoints,
+                  random_15pct,
+                  Sampling(SamplingMethod::RANDOM))
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SamplePoints, voxel_centroid_0_5m, Sampling(SamplingMethod::VOXEL_CENTROID))
+BENCHMARK_CAPTURE(BM_SamplePoints,
+                  voxel_centroid_0_5m,
+                  Sampling(SamplingMethod::VOXEL_CENTROID))
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
@@ -180,7 +198,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   benchmark::AddCustomContext("scan", path);
-  benchmark::AddCustomContext("scan_points", std::to_string(mlndt::Scan().size()));
+  benchmark::AddCustomContext("scan_points",
+                              std::to_string(mlndt::Scan().size()));
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

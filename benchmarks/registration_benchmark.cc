@@ -4,10 +4,10 @@
 // --gbs_cell_size=2); --backend is overridden per benchmark. CPU time is the
 // figure to compare (the machine is shared).
 
-#include <string>
-
 #include <benchmark/benchmark.h>
 #include <glog/logging.h>
+
+#include <string>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/registration/registration.h"
@@ -24,8 +24,10 @@ Pair Load(const std::string& reference, const std::string& input) {
   Pair pair;
   std::string error;
   const std::string dir = MLNDT_DATA_DIR;
-  CHECK(ReadPointCloud(dir + "/" + reference, &pair.reference, nullptr, &error)) << error;
-  CHECK(ReadPointCloud(dir + "/" + input, &pair.input, nullptr, &error)) << error;
+  CHECK(ReadPointCloud(dir + "/" + reference, &pair.reference, nullptr, &error))
+      << error;
+  CHECK(ReadPointCloud(dir + "/" + input, &pair.input, nullptr, &error))
+      << error;
   return pair;
 }
 
@@ -46,7 +48,8 @@ void Run(benchmark::State& state, const Pair& pair) {
   options.backend = static_cast<BackendType>(state.range(0));
   RegistrationSummary summary;
   for (auto _ : state) {
-    Register(options, pair.reference, pair.input, Isometry3d::Identity(), &summary);
+    Register(
+        options, pair.reference, pair.input, Isometry3d::Identity(), &summary);
     CHECK(summary.IsSolutionUsable()) << summary.message;
   }
   state.SetLabel(BackendTypeToString(options.backend));

@@ -1,10 +1,12 @@
 // mlndt_bench: times solver choices on real scan pairs with ground truth and
 // reports speed and accuracy per configuration.
 //
-//   mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] [--samplings=gbs]
+//   mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm]
+//   [--samplings=gbs]
 //               [--gbs_cell_sizes=1]
 //               [--start_layers=1] [--linear_solvers=dense_normal_cholesky]
-//               [--trust_regions=levenberg_marquardt] [--threads=1] [--repetitions=5]
+//               [--trust_regions=levenberg_marquardt] [--threads=1]
+//               [--repetitions=5]
 //               [--compare_pcl] [--output_csv=FILE]
 //
 // Pairs (from --data_dir, default the repository's data/):
@@ -41,6 +43,10 @@
 // success rate over all runs, and the median over rounds of the per-round
 // ratio PCL time / ours.
 
+#include <ceres/types.h>
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -50,10 +56,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <ceres/types.h>
-#include <gflags/gflags.h>
-#include <glog/logging.h>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
@@ -115,14 +117,16 @@ int Fail(const std::string& message) {
 }
 
 double NowSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+  return std::chrono::duration<double>(
+             std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
 
 std::string LowerCase(std::string value) {
-  std::transform(value.begin(), value.end(), value.begin(), [](unsigned char c) {
-    return static_cast<char>(std::tolower(c));
-  });
+  std::transform(
+      value.begin(), value.end(), value.begin(), [](unsigned char c) {
+        return static_cast<char>(std::tolower(c));
+      });
   return value;
 }
 
@@ -134,7 +138,8 @@ bool SplitList(const std::string& text, std::vector<std::string>* items) {
   while (std::getline(stream, item, ',')) {
     const size_t begin = item.find_first_not_of(" \t");
     if (begin == std::string::npos) return false;
-    items->push_back(item.substr(begin, item.find_last_not_of(" \t") - begin + 1));
+    items->push_back(
+        item.substr(begin, item.find_last_not_of(" \t") - begin + 1));
   }
   return !items->empty() && text.back() != ',';
 }
@@ -211,11 +216,14 @@ struct RunResult {
   double score = std::nan("");
   double translation_error_m = 0.0;
   double rotation_error_deg = 0.0;
-  bool converged = false;  // Stopped on its convergence test, not on an iteration cap.
+  bool converged =
+      false;  // Stopped on its convergence test, not on an iteration cap.
   bool success = false;
 };
 
-RunResult Evaluate(const Isometry3d& truth, const Isometry3d& estimate, bool usable) {
+RunResult Evaluate(const Isometry3d& truth,
+                   const Isometry3d& estimate,
+                   bool usable) {
   RunResult r;
   r.translation_error_m = TranslationErrorM(truth, estimate);
   r.rotation_error_deg = RotationErrorRad(truth, estimate) * kRadToDeg;
@@ -226,8 +234,10 @@ RunResult Evaluate(const Isometry3d& truth, const Isometry3d& estimate, bool usa
 
 RunResult RunMlndt(const RegistrationOptions& options, const ScanPair& pair) {
   RegistrationSummary summary;
-  Register(options, pair.reference, pair.input, Isometry3d::Identity(), &summary);
-  RunResult r = Evaluate(pair.reference_from_input_truth, summary.reference_from_input,
+  Register(
+      options, pair.reference, pair.input, Isometry3d::Identity(), &summary);
+  RunResult r = Evaluate(pair.reference_from_input_truth,
+                         summary.reference_from_input,
                          summary.IsSolutionUsable());
   r.time_ms = summary.total_time_s * 1e3;
   r.iterations = summary.num_iterations;
@@ -244,7 +254,8 @@ PclCloud::Ptr ToPcl(const PointCloud& cloud) {
   PclCloud::Ptr out(new PclCloud);
   out->reserve(cloud.size());
   for (const Eigen::Vector3d& p : cloud.points()) {
-    out->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()),
+    out->push_back(pcl::PointXYZ(static_cast<float>(p.x()),
+                                 static_cast<float>(p.y()),
                                  static_cast<float>(p.z())));
   }
   return out;
@@ -281,7 +292,8 @@ RunResult RunPclNdt(const PclPair& pair, const Isometry3d& truth) {
   Isometry3d estimate = Isometry3d::Identity();
   estimate.matrix() = ndt.getFinalTransformation().cast<double>();
   // Re-orthonormalise the single-precision rotation.
-  estimate.linear() = Eigen::Quaterniond(estimate.linear()).normalized().toRotationMatrix();
+  estimate.linear() =
+      Eigen::Quaterniond(estimate.linear()).normalized().toRotationMatrix();
   RunResult r = Evaluate(truth, estimate, ndt.hasConverged());
   r.time_ms = (end - start) * 1e3;
   r.align_ms = (end - align_start) * 1e3;
@@ -292,7 +304,8 @@ RunResult RunPclNdt(const PclPair& pair, const Isometry3d& truth) {
 }
 #endif
 
-bool ParseConfigurations(std::vector<Configuration>* configurations, std::string* error) {
+bool ParseConfigurations(std::vector<Configuration>* configurations,
+                         std::string* error) {
   std::vector<std::string> items;
   std::vector<BackendType> backends;
   if (!SplitList(FLAGS_backends, &items)) {
@@ -309,19 +322,23 @@ bool ParseConfigurations(std::vector<Configuration>* configurations, std::string
   }
   std::vector<SamplingMethod> samplings;
   if (!SplitList(FLAGS_samplings, &items)) {
-    *error = "--samplings: expected a comma-separated list of gbs, random, all, voxel_centroid";
+    *error =
+        "--samplings: expected a comma-separated list of gbs, random, all, "
+        "voxel_centroid";
     return false;
   }
   for (const std::string& item : items) {
     SamplingMethod method;
     if (!StringToSamplingMethod(item, &method)) {
-      *error = "--samplings: '" + item + "' is not gbs, random, all or voxel_centroid";
+      *error = "--samplings: '" + item +
+               "' is not gbs, random, all or voxel_centroid";
       return false;
     }
     samplings.push_back(method);
   }
   std::vector<double> gbs_cell_sizes;
-  if (!tools::ParseNumberList(FLAGS_gbs_cell_sizes, &gbs_cell_sizes) || gbs_cell_sizes.empty()) {
+  if (!tools::ParseNumberList(FLAGS_gbs_cell_sizes, &gbs_cell_sizes) ||
+      gbs_cell_sizes.empty()) {
     *error = "--gbs_cell_sizes: expected comma-separated numbers";
     return false;
   }
@@ -336,28 +353,34 @@ bool ParseConfigurations(std::vector<Configuration>* configurations, std::string
   }
   std::vector<ceres::LinearSolverType> linear_solvers;
   if (!SplitList(FLAGS_linear_solvers, &items)) {
-    *error = "--linear_solvers: expected a comma-separated list of Ceres linear solver types";
+    *error =
+        "--linear_solvers: expected a comma-separated list of Ceres linear "
+        "solver types";
     return false;
   }
   for (std::string item : items) {
     ceres::LinearSolverType type;
     UpperCase(&item);
     if (!ceres::StringToLinearSolverType(item, &type)) {
-      *error = "--linear_solvers: '" + LowerCase(item) + "' is not a Ceres linear solver type";
+      *error = "--linear_solvers: '" + LowerCase(item) +
+               "' is not a Ceres linear solver type";
       return false;
     }
     linear_solvers.push_back(type);
   }
   std::vector<ceres::TrustRegionStrategyType> trust_regions;
   if (!SplitList(FLAGS_trust_regions, &items)) {
-    *error = "--trust_regions: expected a comma-separated list of levenberg_marquardt, dogleg";
+    *error =
+        "--trust_regions: expected a comma-separated list of "
+        "levenberg_marquardt, dogleg";
     return false;
   }
   for (std::string item : items) {
     ceres::TrustRegionStrategyType type;
     UpperCase(&item);
     if (!ceres::StringToTrustRegionStrategyType(item, &type)) {
-      *error = "--trust_regions: '" + LowerCase(item) + "' is not levenberg_marquardt or dogleg";
+      *error = "--trust_regions: '" + LowerCase(item) +
+               "' is not levenberg_marquardt or dogleg";
       return false;
     }
     trust_regions.push_back(type);
@@ -370,7 +393,8 @@ bool ParseConfigurations(std::vector<Configuration>* configurations, std::string
       sampling_choices.emplace_back(sampling, 1.0);
       continue;
     }
-    for (const double size : gbs_cell_sizes) sampling_choices.emplace_back(sampling, size);
+    for (const double size : gbs_cell_sizes)
+      sampling_choices.emplace_back(sampling, size);
   }
 
   configurations->clear();
@@ -394,8 +418,9 @@ bool ParseConfigurations(std::vector<Configuration>* configurations, std::string
               }
               c.threads = thread_count;
               if (!c.Options().IsValid(error)) {
-                *error = std::string("invalid configuration (backend ") + BackendName(backend) +
-                         ", threads " + std::to_string(thread_count) + "): " + *error;
+                *error = std::string("invalid configuration (backend ") +
+                         BackendName(backend) + ", threads " +
+                         std::to_string(thread_count) + "): " + *error;
                 return false;
               }
               configurations->push_back(c);
@@ -417,10 +442,13 @@ bool LoadPairs(const std::vector<std::string>& sets,
       ScanPair pair;
       pair.set = set;
       pair.label = "251370668<-251371071";
-      if (!ReadPointCloud(dir + "/koide3/251370668.pcd", &pair.reference, nullptr, error) ||
-          !ReadPointCloud(dir + "/koide3/251371071.pcd", &pair.input, nullptr, error) ||
+      if (!ReadPointCloud(
+              dir + "/koide3/251370668.pcd", &pair.reference, nullptr, error) ||
+          !ReadPointCloud(
+              dir + "/koide3/251371071.pcd", &pair.input, nullptr, error) ||
           !tools::ReadMatrixFile(dir + "/koide3/T_target_source.txt",
-                                 &pair.reference_from_input_truth, error)) {
+                                 &pair.reference_from_input_truth,
+                                 error)) {
         return false;
       }
       pairs->push_back(std::move(pair));
@@ -432,14 +460,18 @@ bool LoadPairs(const std::vector<std::string>& sets,
         return false;
       }
       std::vector<Isometry3d> poses;
-      if (!ReadKittiPoses(dir + "/kitti/poses_velo.txt", &poses, error)) return false;
+      if (!ReadKittiPoses(dir + "/kitti/poses_velo.txt", &poses, error))
+        return false;
       std::vector<PointCloud> scans(poses.size());
       std::vector<std::string> names(poses.size());
       for (size_t i = 0; i < poses.size(); ++i) {
         char name[32];
         std::snprintf(name, sizeof(name), "%06zu", i);
         names[i] = name;
-        if (!ReadPointCloud(dir + "/kitti/pcd/" + names[i] + ".pcd", &scans[i], nullptr, error)) {
+        if (!ReadPointCloud(dir + "/kitti/pcd/" + names[i] + ".pcd",
+                            &scans[i],
+                            nullptr,
+                            error)) {
           return false;
         }
       }
@@ -457,7 +489,8 @@ bool LoadPairs(const std::vector<std::string>& sets,
         }
       }
       if (pairs->size() == before) {
-        *error = "--kitti_gaps: no pair of the " + std::to_string(scans.size()) +
+        *error = "--kitti_gaps: no pair of the " +
+                 std::to_string(scans.size()) +
                  " KITTI scans is that far apart";
         return false;
       }
@@ -523,9 +556,11 @@ RowStats Summarise(const std::vector<std::vector<RunResult>>& results,
   s.mean_iterations = Mean(iterations);
   s.mean_score = Mean(scores);
   s.mean_translation_error_m = Mean(translation);
-  s.max_translation_error_m = *std::max_element(translation.begin(), translation.end());
+  s.max_translation_error_m =
+      *std::max_element(translation.begin(), translation.end());
   s.mean_rotation_error_deg = Mean(rotation);
-  s.max_rotation_error_deg = *std::max_element(rotation.begin(), rotation.end());
+  s.max_rotation_error_deg =
+      *std::max_element(rotation.begin(), rotation.end());
   return s;
 }
 
@@ -536,11 +571,13 @@ std::string Format(const char* format, double value) {
   return buffer;
 }
 
-// Prints rows (the first is the header) as a markdown table with padded columns.
+// Prints rows (the first is the header) as a markdown table with padded
+// columns.
 void PrintMarkdownTable(const std::vector<std::vector<std::string>>& rows) {
   std::vector<size_t> widths(rows[0].size(), 3);
   for (const auto& row : rows) {
-    for (size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
+    for (size_t c = 0; c < row.size(); ++c)
+      widths[c] = std::max(widths[c], row[c].size());
   }
   auto print_row = [&](const std::vector<std::string>& row) {
     std::string line = "|";
@@ -560,18 +597,23 @@ int Run() {
   if (FLAGS_repetitions < 1) return Fail("--repetitions must be >= 1");
 #ifndef MLNDT_WITH_PCL
   if (FLAGS_compare_pcl) {
-    return Fail("--compare_pcl: this build has no PCL; configure with -DMLNDT_WITH_PCL=ON");
+    return Fail(
+        "--compare_pcl: this build has no PCL; configure with "
+        "-DMLNDT_WITH_PCL=ON");
   }
 #endif
   std::vector<std::string> listed, sets;
-  if (!SplitList(FLAGS_pairs, &listed)) return Fail("--pairs: expected koide3, kitti or both");
+  if (!SplitList(FLAGS_pairs, &listed))
+    return Fail("--pairs: expected koide3, kitti or both");
   for (const std::string& set : listed) {
     if (set != "koide3" && set != "kitti") {
       return Fail("--pairs: '" + set + "' is not koide3 or kitti");
     }
   }
-  for (const char* set : {"koide3", "kitti"}) {  // A fixed order, no duplicates.
-    if (std::find(listed.begin(), listed.end(), set) != listed.end()) sets.push_back(set);
+  for (const char* set :
+       {"koide3", "kitti"}) {  // A fixed order, no duplicates.
+    if (std::find(listed.begin(), listed.end(), set) != listed.end())
+      sets.push_back(set);
   }
   std::vector<Configuration> configurations;
   std::string error;
@@ -613,43 +655,66 @@ int Run() {
   // results[method][round][pair]
   std::vector<std::vector<std::vector<RunResult>>> results(
       num_methods,
-      std::vector<std::vector<RunResult>>(static_cast<size_t>(FLAGS_repetitions),
-                                          std::vector<RunResult>(pairs.size())));
+      std::vector<std::vector<RunResult>>(
+          static_cast<size_t>(FLAGS_repetitions),
+          std::vector<RunResult>(pairs.size())));
   const double bench_start = NowSeconds();
-  for (size_t round = 0; round < static_cast<size_t>(FLAGS_repetitions); ++round) {
+  for (size_t round = 0; round < static_cast<size_t>(FLAGS_repetitions);
+       ++round) {
     for (size_t p = 0; p < pairs.size(); ++p) {
       for (size_t k = 0; k < num_methods; ++k) {
         const size_t method = (k + round) % num_methods;  // Rotated order.
         results[method][round][p] = run_method(method, p);
       }
     }
-    std::cerr << "mlndt_bench: round " << round + 1 << "/" << FLAGS_repetitions << " done after "
-              << Format("%.1f", NowSeconds() - bench_start) << " s" << std::endl;
+    std::cerr << "mlndt_bench: round " << round + 1 << "/" << FLAGS_repetitions
+              << " done after " << Format("%.1f", NowSeconds() - bench_start)
+              << " s" << std::endl;
   }
 
   // Report.
-  std::cout << "mlndt_bench: " << FLAGS_repetitions << " round(s); " << num_configurations
-            << " configuration(s)" << (with_pcl ? " + pcl::NDT" : "")
-            << "; time = per round, mean time_ms.total over the set's pairs: median and min-max "
+  std::cout << "mlndt_bench: " << FLAGS_repetitions << " round(s); "
+            << num_configurations << " configuration(s)"
+            << (with_pcl ? " + pcl::NDT" : "")
+            << "; time = per round, mean time_ms.total over the set's pairs: "
+               "median and min-max "
                "over rounds\n";
   for (const std::string& set : sets) {
     size_t count = 0;
     for (const ScanPair& pair : pairs) count += pair.set == set;
     std::cout << "  " << set << ": " << count << " pair(s)"
-              << (set == "kitti" ? " (gaps " + FLAGS_kitti_gaps + ")" : "") << "\n";
+              << (set == "kitti" ? " (gaps " + FLAGS_kitti_gaps + ")" : "")
+              << "\n";
   }
   std::cout << "\n";
 
-  const std::vector<std::string> header = {
-      "pairs", "method", "sampling", "start", "linear solver", "trust region", "threads",
-      "runs", "time med [ms]", "time min-max [ms]", "iters", "score", "err_t [m]",
-      "err_r [deg]", "converged", "success", "pcl/ours"};
+  const std::vector<std::string> header = {"pairs",
+                                           "method",
+                                           "sampling",
+                                           "start",
+                                           "linear solver",
+                                           "trust region",
+                                           "threads",
+                                           "runs",
+                                           "time med [ms]",
+                                           "time min-max [ms]",
+                                           "iters",
+                                           "score",
+                                           "err_t [m]",
+                                           "err_r [deg]",
+                                           "converged",
+                                           "success",
+                                           "pcl/ours"};
   std::vector<std::vector<std::string>> table = {header};
   if (csv.is_open()) {
-    csv << "pairs,method,backend,sampling,start_layer,linear_solver,trust_region,threads,runs,"
-           "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_score,"
-           "mean_translation_error_m,max_translation_error_m,mean_rotation_error_deg,"
-           "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_ms,pcl_over_ours\n";
+    csv << "pairs,method,backend,sampling,start_layer,linear_solver,trust_"
+           "region,threads,runs,"
+           "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_"
+           "score,"
+           "mean_translation_error_m,max_translation_error_m,mean_rotation_"
+           "error_deg,"
+           "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_"
+           "ms,pcl_over_ours\n";
   }
   std::vector<std::string> notes;
   for (const std::string& set : sets) {
@@ -658,13 +723,14 @@ int Run() {
       if (pairs[p].set == set) indices.push_back(p);
     }
     std::vector<RowStats> stats;
-    for (size_t m = 0; m < num_methods; ++m) stats.push_back(Summarise(results[m], indices));
+    for (size_t m = 0; m < num_methods; ++m)
+      stats.push_back(Summarise(results[m], indices));
     const RowStats* pcl = with_pcl ? &stats.back() : nullptr;
     for (size_t m = 0; m < num_methods; ++m) {
       const RowStats& s = stats[m];
       const bool is_pcl = m == num_configurations;
-      std::string method = "pcl_ndt", backend = "", start = "", solver = "", region = "",
-                  threads = "1";
+      std::string method = "pcl_ndt", backend = "", start = "", solver = "",
+                  region = "", threads = "1";
       std::string sampling = "voxel_grid_" + Format("%g", FLAGS_pcl_leaf_size);
       if (!is_pcl) {
         const Configuration& c = configurations[m];
@@ -676,15 +742,21 @@ int Run() {
           sampling += "_" + Format("%g", c.gbs_cell_size_m) + "m";
         }
         start = std::to_string(c.start_layer);
-        solver = ceres_backend ? LowerCase(ceres::LinearSolverTypeToString(c.linear_solver)) : "";
+        solver =
+            ceres_backend
+                ? LowerCase(ceres::LinearSolverTypeToString(c.linear_solver))
+                : "";
         region = ceres_backend
-                     ? LowerCase(ceres::TrustRegionStrategyTypeToString(c.trust_region))
+                     ? LowerCase(ceres::TrustRegionStrategyTypeToString(
+                           c.trust_region))
                      : "";
         threads = std::to_string(c.threads);
       }
       const double median = Median(s.round_times_ms);
-      const double min = *std::min_element(s.round_times_ms.begin(), s.round_times_ms.end());
-      const double max = *std::max_element(s.round_times_ms.begin(), s.round_times_ms.end());
+      const double min =
+          *std::min_element(s.round_times_ms.begin(), s.round_times_ms.end());
+      const double max =
+          *std::max_element(s.round_times_ms.begin(), s.round_times_ms.end());
       double ratio = std::nan("");
       if (pcl != nullptr && !is_pcl) {
         std::vector<double> ratios;
@@ -694,17 +766,28 @@ int Run() {
         ratio = Median(ratios);
       }
       const double success_rate = static_cast<double>(s.successes) / s.runs;
-      auto dash = [](const std::string& v) { return v.empty() ? std::string("-") : v; };
-      table.push_back({set, is_pcl ? method : backend, sampling, dash(start), dash(solver),
-                       dash(region), threads, std::to_string(s.runs), Format("%.1f", median),
-                       Format("%.1f", min) + "-" + Format("%.1f", max),
-                       Format("%.1f", s.mean_iterations), Format("%.1f", s.mean_score),
-                       Format("%.4f", s.mean_translation_error_m),
-                       Format("%.3f", s.mean_rotation_error_deg),
-                       std::to_string(s.converged) + "/" + std::to_string(s.runs),
-                       std::to_string(s.successes) + "/" + std::to_string(s.runs) + " (" +
-                           Format("%.0f", 100.0 * success_rate) + "%)",
-                       Format("%.2f", ratio)});
+      auto dash = [](const std::string& v) {
+        return v.empty() ? std::string("-") : v;
+      };
+      table.push_back(
+          {set,
+           is_pcl ? method : backend,
+           sampling,
+           dash(start),
+           dash(solver),
+           dash(region),
+           threads,
+           std::to_string(s.runs),
+           Format("%.1f", median),
+           Format("%.1f", min) + "-" + Format("%.1f", max),
+           Format("%.1f", s.mean_iterations),
+           Format("%.1f", s.mean_score),
+           Format("%.4f", s.mean_translation_error_m),
+           Format("%.3f", s.mean_rotation_error_deg),
+           std::to_string(s.converged) + "/" + std::to_string(s.runs),
+           std::to_string(s.successes) + "/" + std::to_string(s.runs) + " (" +
+               Format("%.0f", 100.0 * success_rate) + "%)",
+           Format("%.2f", ratio)});
       if (csv.is_open()) {
         auto number = [](double v) {
           std::ostringstream out;
@@ -735,23 +818,31 @@ int Run() {
             number(success_rate),
             number(pcl != nullptr ? Median(pcl->round_times_ms) : std::nan("")),
             number(ratio)};
-        for (size_t c = 0; c < values.size(); ++c) csv << (c ? "," : "") << values[c];
+        for (size_t c = 0; c < values.size(); ++c)
+          csv << (c ? "," : "") << values[c];
         csv << "\n";
       }
       if (is_pcl) {
-        notes.push_back(set + ": pcl_ndt align() alone (without filtering and setInputTarget): "
-                        "median " + Format("%.1f", Median(s.round_align_ms)) + " ms");
+        notes.push_back(
+            set +
+            ": pcl_ndt align() alone (without filtering and setInputTarget): "
+            "median " +
+            Format("%.1f", Median(s.round_align_ms)) + " ms");
       }
     }
   }
   PrintMarkdownTable(table);
-  std::cout << "\n- success: translation error < " << FLAGS_max_translation_error
-            << " m and rotation error < " << FLAGS_max_rotation_error << " deg\n"
-            << "- converged: stopped on the convergence test, not on the iteration cap\n"
-            << "- iters, score, err_t, err_r: means over runs; score is Eq. (10) on the last "
+  std::cout << "\n- success: translation error < "
+            << FLAGS_max_translation_error << " m and rotation error < "
+            << FLAGS_max_rotation_error << " deg\n"
+            << "- converged: stopped on the convergence test, not on the "
+               "iteration cap\n"
+            << "- iters, score, err_t, err_r: means over runs; score is Eq. "
+               "(10) on the last "
                "layer (mlndt only)\n";
   if (with_pcl) {
-    std::cout << "- pcl/ours: median over rounds of the per-round time ratio; pcl_ndt is "
+    std::cout << "- pcl/ours: median over rounds of the per-round time ratio; "
+                 "pcl_ndt is "
                  "single-threaded\n";
   }
   for (const std::string& note : notes) std::cout << "- " << note << "\n";
@@ -767,14 +858,17 @@ int Run() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
-      "Benchmarks registration configurations on real pairs with ground truth.\n"
-      "  mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] [--repetitions=5] "
+      "Benchmarks registration configurations on real pairs with ground "
+      "truth.\n"
+      "  mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] "
+      "[--repetitions=5] "
       "[--compare_pcl] [--output_csv=FILE]");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;
   if (argc > 1) {
-    std::cerr << "mlndt_bench: unexpected argument '" << argv[1] << "' (flags are --name=value)\n";
+    std::cerr << "mlndt_bench: unexpected argument '" << argv[1]
+              << "' (flags are --name=value)\n";
     return 1;
   }
   return mlndt::Run();

@@ -4,20 +4,23 @@
 //
 //   mlndt_convert --input=000000.bin --output=000000.pcd [--voxel_size=0.2]
 
-#include <iostream>
-
 #include <gflags/gflags.h>
 #include <glog/logging.h>
+
+#include <iostream>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/sampling/point_sampler.h"
 
 DEFINE_string(input, "", "Input cloud (any format mlndt reads)");
 DEFINE_string(output, "", "Output cloud (.pcd or .ply)");
-DEFINE_double(voxel_size, 0.0, "When > 0, keep one centroid per voxel of this edge [m]");
+DEFINE_double(voxel_size,
+              0.0,
+              "When > 0, keep one centroid per voxel of this edge [m]");
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage("Converts a point cloud: mlndt_convert --input=A --output=B");
+  gflags::SetUsageMessage(
+      "Converts a point cloud: mlndt_convert --input=A --output=B");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   if (FLAGS_input.empty() || FLAGS_output.empty() || argc > 1) {
@@ -35,13 +38,14 @@ int main(int argc, char** argv) {
     std::cerr << "mlndt_convert: " << error << "\n";
     return 1;
   }
-  if (FLAGS_voxel_size > 0.0) cloud = mlndt::VoxelDownsample(cloud, FLAGS_voxel_size);
+  if (FLAGS_voxel_size > 0.0)
+    cloud = mlndt::VoxelDownsample(cloud, FLAGS_voxel_size);
   if (!mlndt::WritePointCloud(FLAGS_output, cloud, &error)) {
     std::cerr << "mlndt_convert: " << error << "\n";
     return 1;
   }
   std::cout << FLAGS_input << " (" << info.points_in_file << " points, "
-            << info.dropped_non_finite << " non-finite dropped) -> " << FLAGS_output << " ("
-            << cloud.size() << " points)\n";
+            << info.dropped_non_finite << " non-finite dropped) -> "
+            << FLAGS_output << " (" << cloud.size() << " points)\n";
   return 0;
 }

@@ -1,8 +1,10 @@
 // mlndt_covariance: checks RegistrationSummary::covariance against the
 // spread of many registrations of the same real scan pairs.
 //
-//   mlndt_covariance [--datasets=kitti,koide3] [--starts=20] [--max_translation=0.5]
-//                    [--max_rotation=5] [--output_json=FILE] [registration flags]
+//   mlndt_covariance [--datasets=kitti,koide3] [--starts=20]
+//   [--max_translation=0.5]
+//                    [--max_rotation=5] [--output_json=FILE] [registration
+//                    flags]
 //
 // Every pair is registered from --starts initial guesses, each the
 // reference pose pushed off by a seeded uniform offset (within
@@ -27,6 +29,9 @@
 // Data: --data_dir/kitti/pcd + poses_velo.txt (consecutive pairs) and
 // --data_dir/koide3 (the Velodyne pair with T_target_source.txt).
 
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -38,9 +43,6 @@
 #include <string>
 #include <vector>
 
-#include <gflags/gflags.h>
-#include <glog/logging.h>
-
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
@@ -51,7 +53,8 @@
 namespace {
 // The repository's data/ folder, from this file's path (in-tree builds).
 std::string DefaultDataDir() {
-  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "data").string();
+  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "data")
+      .string();
 }
 }  // namespace
 
@@ -97,19 +100,21 @@ struct PairRuns {
 // Consistency of a set of runs (one pair, or a data set pooled).
 struct Consistency {
   int runs = 0;
-  double nees_mean = 0.0;         // Mean NEES about the pair means.
+  double nees_mean = 0.0;           // Mean NEES about the pair means.
   double nees_mean_expected = 0.0;  // 6 (n - 1) / n, averaged over pairs.
-  double nees_reference = 0.0;    // Mean NEES about the reference pose.
-  double nees_mean_sigma2 = 0.0;  // With sigma2 P.
+  double nees_reference = 0.0;      // Mean NEES about the reference pose.
+  double nees_mean_sigma2 = 0.0;    // With sigma2 P.
   double nees_reference_sigma2 = 0.0;
-  double sigma2 = 0.0;            // Mean residual variance estimate.
-  Vector6d spread_std = Vector6d::Zero();     // sqrt diag S (pooled: RMS).
+  double sigma2 = 0.0;                     // Mean residual variance estimate.
+  Vector6d spread_std = Vector6d::Zero();  // sqrt diag S (pooled: RMS).
   Vector6d predicted_std = Vector6d::Zero();  // sqrt diag mean P.
   Vector6d bias = Vector6d::Zero();           // mean - reference (pair only).
 
   double k_spread() const { return nees_mean / nees_mean_expected; }
   double k_reference() const { return nees_reference / 6.0; }
-  double k_spread_sigma2() const { return nees_mean_sigma2 / nees_mean_expected; }
+  double k_spread_sigma2() const {
+    return nees_mean_sigma2 / nees_mean_expected;
+  }
   double k_reference_sigma2() const { return nees_reference_sigma2 / 6.0; }
 };
 
@@ -138,9 +143,11 @@ void Accumulate(const PairRuns& pair, Consistency* sum) {
     sum->nees_mean += Nees(about_mean, run.covariance);
     sum->nees_reference += Nees(about_reference, run.covariance);
     sum->nees_mean_sigma2 += Nees(about_mean, run.sigma2 * run.covariance);
-    sum->nees_reference_sigma2 += Nees(about_reference, run.sigma2 * run.covariance);
+    sum->nees_reference_sigma2 +=
+        Nees(about_reference, run.sigma2 * run.covariance);
     sum->sigma2 += run.sigma2;
-    sum->nees_mean_expected += 6.0 * static_cast<double>(n - 1) / static_cast<double>(n);
+    sum->nees_mean_expected +=
+        6.0 * static_cast<double>(n - 1) / static_cast<double>(n);
   }
   spread /= static_cast<double>(n - 1);
   predicted /= static_cast<double>(n);
@@ -168,7 +175,8 @@ Consistency Finish(Consistency sum) {
 
 // Translation [m] and angles [deg] of a pose-vector quantity, for printing.
 std::vector<double> InDegrees(const Vector6d& v) {
-  return {v(0), v(1), v(2), v(3) * kRadToDeg, v(4) * kRadToDeg, v(5) * kRadToDeg};
+  return {
+      v(0), v(1), v(2), v(3) * kRadToDeg, v(4) * kRadToDeg, v(5) * kRadToDeg};
 }
 
 std::string ConsistencyJson(const Consistency& c) {
@@ -192,16 +200,39 @@ void PrintRow(const std::string& label, const Consistency& c) {
   const std::vector<double> spread = InDegrees(c.spread_std);
   const std::vector<double> predicted = InDegrees(c.predicted_std);
   std::printf(
-      "%-16s %4d  NEES(mean) %9.3g (exp %4.2f) k %9.3g | NEES(ref) %9.3g k %9.3g | "
+      "%-16s %4d  NEES(mean) %9.3g (exp %4.2f) k %9.3g | NEES(ref) %9.3g k "
+      "%9.3g | "
       "sigma2 %6.3f k_s2 %8.3g / %8.3g\n",
-      label.c_str(), c.runs, c.nees_mean, c.nees_mean_expected, c.k_spread(), c.nees_reference,
-      c.k_reference(), c.sigma2, c.k_spread_sigma2(), c.k_reference_sigma2());
-  std::printf("%-16s       spread std  t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f %7.2f %7.2f\n",
-              "", spread[0] * 1e3, spread[1] * 1e3, spread[2] * 1e3, spread[3] * 1e3,
-              spread[4] * 1e3, spread[5] * 1e3);
-  std::printf("%-16s       predicted   t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f %7.2f %7.2f\n",
-              "", predicted[0] * 1e3, predicted[1] * 1e3, predicted[2] * 1e3,
-              predicted[3] * 1e3, predicted[4] * 1e3, predicted[5] * 1e3);
+      label.c_str(),
+      c.runs,
+      c.nees_mean,
+      c.nees_mean_expected,
+      c.k_spread(),
+      c.nees_reference,
+      c.k_reference(),
+      c.sigma2,
+      c.k_spread_sigma2(),
+      c.k_reference_sigma2());
+  std::printf(
+      "%-16s       spread std  t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f "
+      "%7.2f %7.2f\n",
+      "",
+      spread[0] * 1e3,
+      spread[1] * 1e3,
+      spread[2] * 1e3,
+      spread[3] * 1e3,
+      spread[4] * 1e3,
+      spread[5] * 1e3);
+  std::printf(
+      "%-16s       predicted   t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f "
+      "%7.2f %7.2f\n",
+      "",
+      predicted[0] * 1e3,
+      predicted[1] * 1e3,
+      predicted[2] * 1e3,
+      predicted[3] * 1e3,
+      predicted[4] * 1e3,
+      predicted[5] * 1e3);
 }
 
 // Registers input onto reference from the perturbed starts.
@@ -214,24 +245,35 @@ bool RunPair(const RegistrationOptions& base_options,
              PairRuns* pair,
              std::string* error) {
   LayeredGrid map;
-  if (!LayeredGrid::Build(base_options.grid, reference, &map, error)) return false;
+  if (!LayeredGrid::Build(base_options.grid, reference, &map, error))
+    return false;
   pair->reference_xi = IsometryToPoseVector(reference_from_input);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::vector<Run> runs;
   for (int k = 0; k < FLAGS_starts; ++k) {
     Vector6d offset;
     for (int a = 0; a < 3; ++a) offset(a) = FLAGS_max_translation * unit(*rng);
-    for (int a = 3; a < 6; ++a) offset(a) = FLAGS_max_rotation * kDegToRad * unit(*rng);
+    for (int a = 3; a < 6; ++a)
+      offset(a) = FLAGS_max_rotation * kDegToRad * unit(*rng);
     RegistrationOptions options = base_options;
-    if (FLAGS_vary_sampling_seed) options.sampling.seed = base_options.sampling.seed + k;
+    if (FLAGS_vary_sampling_seed)
+      options.sampling.seed = base_options.sampling.seed + k;
     RegistrationSummary summary;
-    Register(options, map, input, PoseVectorToIsometry(offset) * reference_from_input, &summary);
-    const bool usable = summary.IsSolutionUsable() && !summary.covariance.isZero(0.0);
+    Register(options,
+             map,
+             input,
+             PoseVectorToIsometry(offset) * reference_from_input,
+             &summary);
+    const bool usable =
+        summary.IsSolutionUsable() && !summary.covariance.isZero(0.0);
     if (csv->is_open()) {
       *csv << pair->dataset << "," << pair->name << "," << k << "," << usable;
-      for (int a = 0; a < 6; ++a) *csv << "," << summary.reference_from_input_xi(a);
-      for (int a = 0; a < 6; ++a) *csv << "," << std::sqrt(summary.covariance(a, a));
-      *csv << "," << summary.final_score << "," << summary.matched_points << "\n";
+      for (int a = 0; a < 6; ++a)
+        *csv << "," << summary.reference_from_input_xi(a);
+      for (int a = 0; a < 6; ++a)
+        *csv << "," << std::sqrt(summary.covariance(a, a));
+      *csv << "," << summary.final_score << "," << summary.matched_points
+           << "\n";
     }
     if (!usable) {
       ++pair->failures;
@@ -250,7 +292,8 @@ bool RunPair(const RegistrationOptions& base_options,
     std::vector<double> values;
     for (const Run& run : runs) values.push_back(run.xi(a));
     if (values.empty()) break;
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    std::nth_element(
+        values.begin(), values.begin() + values.size() / 2, values.end());
     median(a) = values[values.size() / 2];
   }
   for (const Run& run : runs) {
@@ -288,14 +331,21 @@ bool RunKitti(const RegistrationOptions& options,
     char name[32];
     std::snprintf(name, sizeof(name), "/pcd/%06d.pcd", i);
     scans.emplace_back();
-    if (!ReadPointCloud(dir + name, &scans.back(), nullptr, error)) return false;
+    if (!ReadPointCloud(dir + name, &scans.back(), nullptr, error))
+      return false;
   }
   for (size_t i = 0; i + 1 < scans.size() && i + 1 < poses.size(); ++i) {
     PairRuns pair;
     pair.dataset = "kitti";
     pair.name = std::to_string(i + 1) + "->" + std::to_string(i);
-    if (!RunPair(options, scans[i], scans[i + 1], poses[i].inverse() * poses[i + 1], rng, csv,
-                 &pair, error)) {
+    if (!RunPair(options,
+                 scans[i],
+                 scans[i + 1],
+                 poses[i].inverse() * poses[i + 1],
+                 rng,
+                 csv,
+                 &pair,
+                 error)) {
       return false;
     }
     pairs->push_back(pair);
@@ -313,13 +363,21 @@ bool RunKoide3(const RegistrationOptions& options,
   Isometry3d reference_from_input;
   if (!ReadPointCloud(dir + "/251370668.pcd", &reference, nullptr, error) ||
       !ReadPointCloud(dir + "/251371071.pcd", &input, nullptr, error) ||
-      !tools::ReadMatrixFile(dir + "/T_target_source.txt", &reference_from_input, error)) {
+      !tools::ReadMatrixFile(
+          dir + "/T_target_source.txt", &reference_from_input, error)) {
     return false;
   }
   PairRuns pair;
   pair.dataset = "koide3";
   pair.name = "251371071->668";
-  if (!RunPair(options, reference, input, reference_from_input, rng, csv, &pair, error)) {
+  if (!RunPair(options,
+               reference,
+               input,
+               reference_from_input,
+               rng,
+               csv,
+               &pair,
+               error)) {
     return false;
   }
   pairs->push_back(pair);
@@ -333,13 +391,15 @@ int Main() {
   }
   RegistrationOptions options;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error)) return Fail(error);
+  if (!tools::RegistrationOptionsFromFlags(&options, &error))
+    return Fail(error);
   const std::vector<std::string> datasets = SplitList(FLAGS_datasets);
   if (datasets.empty()) return Fail("--datasets is empty");
   std::ofstream csv;
   if (!FLAGS_output_csv.empty()) {
     csv.open(FLAGS_output_csv);
-    csv << "dataset,pair,start,usable,tx,ty,tz,alpha,beta,gamma,sd_tx,sd_ty,sd_tz,sd_alpha,"
+    csv << "dataset,pair,start,usable,tx,ty,tz,alpha,beta,gamma,sd_tx,sd_ty,sd_"
+           "tz,sd_alpha,"
            "sd_beta,sd_gamma,final_score,matched\n";
   }
   std::mt19937_64 rng(FLAGS_perturbation_seed);
@@ -382,11 +442,12 @@ int Main() {
     const Consistency result = Finish(pooled);
     PrintRow(dataset + " (all)", result);
     std::printf("\n");
-    json.Add(dataset, tools::JsonObject()
-                          .AddNumber("failures", failures)
-                          .AddNumber("outliers", outliers)
-                          .Add("consistency", ConsistencyJson(result))
-                          .str());
+    json.Add(dataset,
+             tools::JsonObject()
+                 .AddNumber("failures", failures)
+                 .AddNumber("outliers", outliers)
+                 .Add("consistency", ConsistencyJson(result))
+                 .str());
   }
   json.Add("pairs", pair_list + "]");
   json.AddNumber("starts", FLAGS_starts)
@@ -406,8 +467,10 @@ int Main() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
-      "Compares the registration covariance with the spread of many registrations.\n"
-      "  mlndt_covariance [--datasets=kitti,koide3] [--starts=20] [--output_json=FILE]");
+      "Compares the registration covariance with the spread of many "
+      "registrations.\n"
+      "  mlndt_covariance [--datasets=kitti,koide3] [--starts=20] "
+      "[--output_json=FILE]");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;

@@ -122,8 +122,9 @@ bool FindKittiFolder(const std::string& data_dir,
                      std::string* calib,
                      std::string* error) {
   namespace fs = std::filesystem;
-  for (const std::string& candidate :
-       {data_dir + "/kitti", data_dir + "/kitti00_frames_0000_0007", data_dir}) {
+  for (const std::string& candidate : {data_dir + "/kitti",
+                                       data_dir + "/kitti00_frames_0000_0007",
+                                       data_dir}) {
     if (!fs::is_directory(candidate + "/pcd")) continue;
     *scans_dir = candidate + "/pcd";
     if (fs::exists(candidate + "/poses_velo.txt")) {
@@ -131,7 +132,8 @@ bool FindKittiFolder(const std::string& data_dir,
       calib->clear();
       return true;
     }
-    if (fs::exists(candidate + "/poses_cam0.txt") && fs::exists(candidate + "/calib.txt")) {
+    if (fs::exists(candidate + "/poses_cam0.txt") &&
+        fs::exists(candidate + "/calib.txt")) {
       *poses = candidate + "/poses_cam0.txt";
       *calib = candidate + "/calib.txt";
       return true;
@@ -139,7 +141,9 @@ bool FindKittiFolder(const std::string& data_dir,
     *error = candidate + ": no poses_velo.txt (or poses_cam0.txt + calib.txt)";
     return false;
   }
-  *error = data_dir + ": no KITTI folder (kitti/pcd, kitti00_frames_0000_0007/pcd or pcd/)";
+  *error =
+      data_dir +
+      ": no KITTI folder (kitti/pcd, kitti00_frames_0000_0007/pcd or pcd/)";
   return false;
 }
 
@@ -149,20 +153,23 @@ struct Context {
   std::vector<Isometry3d> truth;  // world_from_scan.
   RegistrationOptions base;
   std::vector<size_t> steps;
-  std::vector<double> layer_sizes;  // Cell edge of layers 1..n of scan 0's map [m].
-  std::string out;                  // Output folder, with a trailing '/'.
-  std::string data;                 // out + "plot_data/".
-  std::ostringstream report;        // REPORT.md body.
-  std::ostringstream script;        // One gnuplot script for every figure.
+  std::vector<double>
+      layer_sizes;            // Cell edge of layers 1..n of scan 0's map [m].
+  std::string out;            // Output folder, with a trailing '/'.
+  std::string data;           // out + "plot_data/".
+  std::ostringstream report;  // REPORT.md body.
+  std::ostringstream script;  // One gnuplot script for every figure.
   std::vector<std::string> pngs;
   size_t runs = 0;
 };
 
-int NumLayers(const Context& c) { return static_cast<int>(c.layer_sizes.size()); }
+int NumLayers(const Context& c) {
+  return static_cast<int>(c.layer_sizes.size());
+}
 
 std::string LayerLabel(const Context& c, int layer) {
-  return std::to_string(layer) + " (" + Fmt(c.layer_sizes[static_cast<size_t>(layer - 1)], 1) +
-         " m)";
+  return std::to_string(layer) + " (" +
+         Fmt(c.layer_sizes[static_cast<size_t>(layer - 1)], 1) + " m)";
 }
 
 // Runs RunSequence for every step and concatenates the pairs.
@@ -177,7 +184,9 @@ bool RunSteps(Context* c,
     tools::SequenceOptions o = options;
     o.step = step;
     std::vector<PairResult> results;
-    if (!tools::RunSequence(o, c->store, &c->truth, nullptr, {}, &results, error)) return false;
+    if (!tools::RunSequence(
+            o, c->store, &c->truth, nullptr, {}, &results, error))
+      return false;
     c->runs += results.size();
     all->insert(all->end(), results.begin(), results.end());
   }
@@ -186,7 +195,8 @@ bool RunSteps(Context* c,
 
 size_t PairsPerSweep(const Context& c, const std::vector<size_t>& steps) {
   size_t pairs = 0;
-  for (size_t step : steps) pairs += c.store->size() > step ? c.store->size() - step : 0;
+  for (size_t step : steps)
+    pairs += c.store->size() > step ? c.store->size() - step : 0;
   return pairs;
 }
 
@@ -208,7 +218,8 @@ struct OffsetFamily {
 Isometry3d MakeOffset(const OffsetFamily& family, double value) {
   Isometry3d offset = Isometry3d::Identity();
   if (family.rotation) {
-    offset.linear() = Eigen::AngleAxisd(value * kDegToRad, family.direction).toRotationMatrix();
+    offset.linear() = Eigen::AngleAxisd(value * kDegToRad, family.direction)
+                          .toRotationMatrix();
   } else {
     offset.translation() = value * family.direction;
   }
@@ -243,7 +254,8 @@ bool LongRange(Context* c, std::string* error) {
     return false;
   }
   if (!tools::ParseNumberList(FLAGS_long_range_ndt_cells, &ndt_cells) ||
-      std::any_of(ndt_cells.begin(), ndt_cells.end(), [](double v) { return v < 0; })) {
+      std::any_of(
+          ndt_cells.begin(), ndt_cells.end(), [](double v) { return v < 0; })) {
     *error = "bad --long_range_ndt_cells (cell sizes >= 0 [m])";
     return false;
   }
@@ -256,7 +268,8 @@ bool LongRange(Context* c, std::string* error) {
   std::vector<Variant> variants = {{"ML-NDT", c->base}};
   variants[0].options.method = Method::MLNDT;
   for (double cell : ndt_cells) {
-    Variant v{cell > 0 ? "NDT " + Fmt(cell, 1) + " m" : "NDT (layer-2 cell)", c->base};
+    Variant v{cell > 0 ? "NDT " + Fmt(cell, 1) + " m" : "NDT (layer-2 cell)",
+              c->base};
     v.options.method = Method::NDT;
     v.options.ndt.cell_size_m = cell;
     variants.push_back(v);
@@ -275,7 +288,8 @@ bool LongRange(Context* c, std::string* error) {
     // Pair -> outcome at offset 0 (shared by every family).
     std::map<size_t, std::pair<tools::PoseError, double>> zero_offset;
     for (size_t f = 0; f < families.size(); ++f) {
-      const std::vector<double>& values = families[f].rotation ? rotations : translations;
+      const std::vector<double>& values =
+          families[f].rotation ? rotations : translations;
       cells[m][f].resize(values.size());
       for (size_t v = 0; v < values.size(); ++v) {
         for (size_t i = 0; i < num_pairs; ++i) {
@@ -290,7 +304,8 @@ bool LongRange(Context* c, std::string* error) {
           } else {
             RegistrationSummary summary;
             tools::PairTimes pair_times;
-            const Isometry3d initial = MakeOffset(families[f], values[v]) * truth;
+            const Isometry3d initial =
+                MakeOffset(families[f], values[v]) * truth;
             if (!tools::RegisterPair(variants[m].options,
                                      c->store,
                                      i,
@@ -304,13 +319,16 @@ bool LongRange(Context* c, std::string* error) {
             ++c->runs;
             usable = summary.IsSolutionUsable();
             e = tools::ComputePoseError(truth, summary.reference_from_input);
-            if (!usable) e.translation_m = e.rotation_rad = std::numeric_limits<double>::infinity();
+            if (!usable)
+              e.translation_m = e.rotation_rad =
+                  std::numeric_limits<double>::infinity();
             ms = pair_times.total_ms - pair_times.map_ms;
             if (values[v] == 0.0) zero_offset[i] = {e, ms};
           }
           OffsetCell& cell = cells[m][f][v];
-          const bool strict = e.translation_m < FLAGS_success_translation &&
-                              e.rotation_rad * kRadToDeg < FLAGS_success_rotation;
+          const bool strict =
+              e.translation_m < FLAGS_success_translation &&
+              e.rotation_rad * kRadToDeg < FLAGS_success_rotation;
           cell.strict += strict;
           cell.loose += e.translation_m < tools::kSuccessTranslationM;
           cell.errors_cm.push_back(e.translation_m * 100.0);
@@ -333,17 +351,25 @@ bool LongRange(Context* c, std::string* error) {
 
   std::ostringstream& r = c->report;
   r << "## 1. Long-range convergence (Section 5.1)\n\n"
-    << "Every consecutive pair (" << num_pairs << " pairs) is registered from the ground truth "
-    << "pushed off by the offset (applied in the reference frame: a translation, or a rotation "
+    << "Every consecutive pair (" << num_pairs
+    << " pairs) is registered from the ground truth "
+    << "pushed off by the offset (applied in the reference frame: a "
+       "translation, or a rotation "
        "about the reference scanner). Each cell gives: success rate within "
-    << Fmt(FLAGS_success_translation * 100, 0) << " cm and " << Fmt(FLAGS_success_rotation, 1)
-    << " deg of the ground truth · success rate within 50 cm (the paper's rule) · median "
-       "final translation error. NDT is `--method=ndt` with the same sampling; \"layer-2 cell\" "
+    << Fmt(FLAGS_success_translation * 100, 0) << " cm and "
+    << Fmt(FLAGS_success_rotation, 1)
+    << " deg of the ground truth · success rate within 50 cm (the paper's "
+       "rule) · median "
+       "final translation error. NDT is `--method=ndt` with the same sampling; "
+       "\"layer-2 cell\" "
        "is the paper's comparison cell, (V/64)^(1/3) of the reference box (≈ "
-    << (c->layer_sizes.size() >= 2 ? Fmt(c->layer_sizes[1], 1) : std::string("?"))
-    << " m here), the finer cell is what single-grid NDT users run outdoors.\n\n";
+    << (c->layer_sizes.size() >= 2 ? Fmt(c->layer_sizes[1], 1)
+                                   : std::string("?"))
+    << " m here), the finer cell is what single-grid NDT users run "
+       "outdoors.\n\n";
   const auto reach = [&](size_t m, size_t f, bool strict) {
-    const std::vector<double>& values = families[f].rotation ? rotations : translations;
+    const std::vector<double>& values =
+        families[f].rotation ? rotations : translations;
     double reached = -1.0;
     for (size_t v = 0; v < values.size(); ++v) {
       const size_t n = strict ? cells[m][f][v].strict : cells[m][f][v].loose;
@@ -371,17 +397,20 @@ bool LongRange(Context* c, std::string* error) {
       for (size_t f : fs) {
         for (size_t m = 0; m < variants.size(); ++m) {
           const OffsetCell& cell = cells[m][f][v];
-          r << " " << Percent(cell.strict, num_pairs) << " · " << Percent(cell.loose, num_pairs)
-            << " · " << MedianText(cell.errors_cm) << " |";
+          r << " " << Percent(cell.strict, num_pairs) << " · "
+            << Percent(cell.loose, num_pairs) << " · "
+            << MedianText(cell.errors_cm) << " |";
         }
       }
       r << "\n";
     }
     r << "\n";
     // Data + figure: strict (left) and 50 cm (right) success rates.
-    const std::string name = rotation ? "long_range_rotation" : "long_range_translation";
+    const std::string name =
+        rotation ? "long_range_rotation" : "long_range_translation";
     std::ofstream dat(c->data + name + ".dat");
-    dat << "# offset, then per family and variant: strict_percent loose_percent\n";
+    dat << "# offset, then per family and variant: strict_percent "
+           "loose_percent\n";
     for (size_t v = 0; v < values.size(); ++v) {
       dat << values[v];
       for (size_t f : fs) {
@@ -392,34 +421,40 @@ bool LongRange(Context* c, std::string* error) {
       }
       dat << "\n";
     }
-    c->script << "set output " << tools::GnuplotQuote(c->out + name + ".png") << "\n"
-              << "set multiplot layout 1,2 title 'Success rate against the initial "
-              << (rotation ? "rotation" : "translation") << " offset (" << num_pairs
-              << " KITTI pairs)'\n"
-              << "set xlabel 'offset [" << (rotation ? "deg" : "m") << "]'\n"
-              << "set ylabel 'success [%]'\nset yrange [-5:105]\nset key outside bottom center "
-                 "horizontal maxrows 3\n";
+    c->script
+        << "set output " << tools::GnuplotQuote(c->out + name + ".png") << "\n"
+        << "set multiplot layout 1,2 title 'Success rate against the initial "
+        << (rotation ? "rotation" : "translation") << " offset (" << num_pairs
+        << " KITTI pairs)'\n"
+        << "set xlabel 'offset [" << (rotation ? "deg" : "m") << "]'\n"
+        << "set ylabel 'success [%]'\nset yrange [-5:105]\nset key outside "
+           "bottom center "
+           "horizontal maxrows 3\n";
     for (int loose = 0; loose < 2; ++loose) {
       c->script << "set title '"
-                << (loose ? std::string("within 50 cm")
-                          : "within " + Fmt(FLAGS_success_translation * 100, 0) + " cm and " +
-                                Fmt(FLAGS_success_rotation, 1) + " deg")
+                << (loose
+                        ? std::string("within 50 cm")
+                        : "within " + Fmt(FLAGS_success_translation * 100, 0) +
+                              " cm and " + Fmt(FLAGS_success_rotation, 1) +
+                              " deg")
                 << "'\nplot ";
       int column = 2 + loose;
       bool first = true;
       for (size_t f : fs) {
         for (size_t m = 0; m < variants.size(); ++m) {
-          c->script << (first ? "" : ", ") << tools::GnuplotQuote(c->data + name + ".dat")
+          c->script << (first ? "" : ", ")
+                    << tools::GnuplotQuote(c->data + name + ".dat")
                     << " using 1:" << column << " with linespoints lw 2"
-                    << (f == fs[0] ? "" : " dt 2") << " title '" << variants[m].name << ", "
-                    << families[f].name << "'";
+                    << (f == fs[0] ? "" : " dt 2") << " title '"
+                    << variants[m].name << ", " << families[f].name << "'";
           column += 2;
           first = false;
         }
       }
       c->script << "\n";
     }
-    c->script << "unset multiplot\nset autoscale y\nset key outside right top\n";
+    c->script
+        << "unset multiplot\nset autoscale y\nset key outside right top\n";
     c->pngs.push_back(name + ".png");
     r << "![" << name << "](" << name << ".png)\n\n";
   }
@@ -431,21 +466,25 @@ bool LongRange(Context* c, std::string* error) {
     };
     return one(true) + " · " + one(false);
   };
-  r << "Reach: the largest offset up to which every tested offset succeeded in at least "
+  r << "Reach: the largest offset up to which every tested offset succeeded in "
+       "at least "
     << Fmt(FLAGS_reach_rate, 0) << " % of the pairs (strict · 50 cm rule):\n\n"
     << "| | paper's claim (Section 5.1, Kvarntorp mine, no initialisation) |";
-  for (const Variant& variant : variants) r << " ours, " << variant.name << " |";
+  for (const Variant& variant : variants)
+    r << " ours, " << variant.name << " |";
   r << "\n|---|---|";
   for (size_t m = 0; m < variants.size(); ++m) r << "---|";
   r << "\n";
-  const char* claims[] = {"NDT about ±10 units, ML-NDT up to 25 units",
-                          "(same claim)",
-                          "NDT about 5 deg, ML-NDT up to 15 deg (\"in some cases 45 deg\")",
-                          "(same claim)"};
+  const char* claims[] = {
+      "NDT about ±10 units, ML-NDT up to 25 units",
+      "(same claim)",
+      "NDT about 5 deg, ML-NDT up to 15 deg (\"in some cases 45 deg\")",
+      "(same claim)"};
   for (size_t f = 0; f < families.size(); ++f) {
-    r << "| " << (families[f].rotation ? "rotation " : "translation ") << families[f].name << " | "
-      << claims[f] << " |";
-    for (size_t m = 0; m < variants.size(); ++m) r << " " << reach_text(m, f) << " |";
+    r << "| " << (families[f].rotation ? "rotation " : "translation ")
+      << families[f].name << " | " << claims[f] << " |";
+    for (size_t m = 0; m < variants.size(); ++m)
+      r << " " << reach_text(m, f) << " |";
     r << "\n";
   }
   r << "\nMean registration time per run:";
@@ -458,8 +497,8 @@ bool LongRange(Context* c, std::string* error) {
         count += num_pairs;
       }
     }
-    r << (m ? "," : "") << " " << variants[m].name << " " << Fmt(ms / std::max<size_t>(count, 1), 0)
-      << " ms";
+    r << (m ? "," : "") << " " << variants[m].name << " "
+      << Fmt(ms / std::max<size_t>(count, 1), 0) << " ms";
   }
   r << ".\n\n";
   return true;
@@ -470,12 +509,15 @@ bool LongRange(Context* c, std::string* error) {
 bool Optimizers(Context* c, std::string* error) {
   const size_t i = static_cast<size_t>(FLAGS_optimizer_pair);
   if (FLAGS_optimizer_pair < 0 || i + 1 >= c->store->size()) {
-    *error = "--optimizer_pair=" + std::to_string(FLAGS_optimizer_pair) + ": no such pair";
+    *error = "--optimizer_pair=" + std::to_string(FLAGS_optimizer_pair) +
+             ": no such pair";
     return false;
   }
   std::vector<double> o;
   if (!tools::ParseNumberList(FLAGS_optimizer_offset, &o) || o.size() != 6) {
-    *error = "--optimizer_offset needs 6 numbers tx,ty,tz [m],alpha,beta,gamma [deg]";
+    *error =
+        "--optimizer_offset needs 6 numbers tx,ty,tz [m],alpha,beta,gamma "
+        "[deg]";
     return false;
   }
   const Isometry3d truth = c->truth[i].inverse() * c->truth[i + 1];
@@ -487,7 +529,9 @@ bool Optimizers(Context* c, std::string* error) {
       {"identity (Z = 0)", "identity", Isometry3d::Identity()},
       {"ground truth + (" + FLAGS_optimizer_offset + ")",
        "offset",
-       PoseVectorToIsometry(PoseVectorFromDegrees(o[0], o[1], o[2], o[3], o[4], o[5])) * truth}};
+       PoseVectorToIsometry(
+           PoseVectorFromDegrees(o[0], o[1], o[2], o[3], o[4], o[5])) *
+           truth}};
   struct Optimizer {
     std::string name;
     Method method;
@@ -500,67 +544,90 @@ bool Optimizers(Context* c, std::string* error) {
       {"NDT (Newton)", Method::NDT, BackendType::NEWTON}};
   std::ostringstream& r = c->report;
   r << "## 2. Optimisers: score against iteration (Figs. 11 and 13)\n\n"
-    << "Pair " << i << " → " << i + 1 << ", registered with each optimiser from two starts. "
-    << "The figures show the score per sampled point of every iteration (on that iteration's "
-       "layer: ML-NDT's score jumps when it moves to a finer layer; NDT's Gaussian score is "
+    << "Pair " << i << " → " << i + 1
+    << ", registered with each optimiser from two starts. "
+    << "The figures show the score per sampled point of every iteration (on "
+       "that iteration's "
+       "layer: ML-NDT's score jumps when it moves to a finer layer; NDT's "
+       "Gaussian score is "
        "negative) and the translation error against the ground truth.\n\n"
-    << "| start | optimiser | iterations | time [ms] | final error [cm] | final error [deg] | "
+    << "| start | optimiser | iterations | time [ms] | final error [cm] | "
+       "final error [deg] | "
        "termination |\n|---|---|---|---|---|---|---|\n";
   tools::Progress progress("optimizers", starts.size() * variants.size());
   size_t done = 0;
   for (const Start& start : starts) {
     const std::string dat_path = c->data + "optimizers_" + start.key + ".dat";
     std::ofstream dat(dat_path);
-    dat << "# blocks per optimiser: iteration layer score_per_point translation_error_cm\n";
+    dat << "# blocks per optimiser: iteration layer score_per_point "
+           "translation_error_cm\n";
     for (const Optimizer& variant : variants) {
       RegistrationOptions options = c->base;
       options.method = variant.method;
       options.backend = variant.backend;
       RegistrationSummary summary;
       tools::PairTimes times;
-      if (!tools::RegisterPair(
-              options, c->store, i, i + 1, start.initial, &summary, &times, error)) {
+      if (!tools::RegisterPair(options,
+                               c->store,
+                               i,
+                               i + 1,
+                               start.initial,
+                               &summary,
+                               &times,
+                               error)) {
         return false;
       }
       ++c->runs;
-      const tools::PoseError e = tools::ComputePoseError(truth, summary.reference_from_input);
-      const double points = std::max<double>(1.0, static_cast<double>(summary.sampled_points));
-      dat << "0 0 nan " << tools::Num(TranslationErrorM(truth, start.initial) * 100.0) << "\n";
+      const tools::PoseError e =
+          tools::ComputePoseError(truth, summary.reference_from_input);
+      const double points =
+          std::max<double>(1.0, static_cast<double>(summary.sampled_points));
+      dat << "0 0 nan "
+          << tools::Num(TranslationErrorM(truth, start.initial) * 100.0)
+          << "\n";
       for (const IterationRecord& it : summary.trace) {
-        dat << it.iteration << " " << it.layer << " " << tools::Num(it.score / points) << " "
-            << tools::Num(
-                   TranslationErrorM(truth, PoseVectorToIsometry(it.reference_from_input_xi)) *
-                   100.0)
+        dat << it.iteration << " " << it.layer << " "
+            << tools::Num(it.score / points) << " "
+            << tools::Num(TranslationErrorM(truth,
+                                            PoseVectorToIsometry(
+                                                it.reference_from_input_xi)) *
+                          100.0)
             << "\n";
       }
       dat << "\n\n";
-      r << "| " << start.name << " | " << variant.name << " | " << summary.num_iterations << " | "
-        << Fmt(times.total_ms - times.map_ms, 0) << " | " << Fmt(e.translation_m * 100, 1) << " | "
+      r << "| " << start.name << " | " << variant.name << " | "
+        << summary.num_iterations << " | "
+        << Fmt(times.total_ms - times.map_ms, 0) << " | "
+        << Fmt(e.translation_m * 100, 1) << " | "
         << Fmt(e.rotation_rad * kRadToDeg, 2) << " | "
         << TerminationTypeToString(summary.termination_type) << " |\n";
       progress.Update(++done, start.key + " " + variant.name);
     }
     const std::string name = "optimizers_" + start.key;
-    c->script << "set output " << tools::GnuplotQuote(c->out + name + ".png") << "\n"
+    c->script << "set output " << tools::GnuplotQuote(c->out + name + ".png")
+              << "\n"
               << "set multiplot layout 2,1\n"
               << "set title 'Pair " << i << "-" << i + 1 << " from "
               << (start.key == "identity" ? "the identity" : "an offset start")
               << ": score per sampled point (each on its own layer)'\n"
               << "set xlabel 'iteration'\nset ylabel 'ML-NDT score / point'\n"
-              << "set y2label 'NDT score / point'\nset y2tics\nset ytics nomirror\nplot ";
+              << "set y2label 'NDT score / point'\nset y2tics\nset ytics "
+                 "nomirror\nplot ";
     for (size_t k = 0; k < variants.size(); ++k) {
       const bool ndt = variants[k].method == Method::NDT;
-      c->script << (k ? ", " : "") << tools::GnuplotQuote(dat_path) << " index " << k
-                << " using 1:3 axes x1" << (ndt ? "y2" : "y1") << " with linespoints title '"
-                << variants[k].name << (ndt ? " (right axis)" : "") << "'";
+      c->script << (k ? ", " : "") << tools::GnuplotQuote(dat_path) << " index "
+                << k << " using 1:3 axes x1" << (ndt ? "y2" : "y1")
+                << " with linespoints title '" << variants[k].name
+                << (ndt ? " (right axis)" : "") << "'";
     }
     c->script << "\nunset y2tics\nunset y2label\nset ytics mirror\n"
               << "set title 'Translation error against iteration'\n"
               << "set ylabel 'error [cm]'\nset logscale y\nplot ";
     for (size_t k = 0; k < variants.size(); ++k) {
-      c->script << (k ? ", " : "") << tools::GnuplotQuote(dat_path) << " index " << k
-                << " using 1:($4 > 0.01 ? $4 : 0.01) with linespoints title '" << variants[k].name
-                << "'";
+      c->script << (k ? ", " : "") << tools::GnuplotQuote(dat_path) << " index "
+                << k
+                << " using 1:($4 > 0.01 ? $4 : 0.01) with linespoints title '"
+                << variants[k].name << "'";
     }
     c->script << "\nunset logscale y\nunset multiplot\n";
     c->pngs.push_back(name + ".png");
@@ -568,8 +635,10 @@ bool Optimizers(Context* c, std::string* error) {
   progress.Finish();
   r << "\n![optimizers_identity](optimizers_identity.png)\n\n"
     << "![optimizers_offset](optimizers_offset.png)\n\n"
-    << "The paper (Fig. 13): \"ML-NDT with Newton and LM provides very similar result but LM is "
-       "a little faster, and Newton is more stable after convergence\"; conventional NDT needs "
+    << "The paper (Fig. 13): \"ML-NDT with Newton and LM provides very similar "
+       "result but LM is "
+       "a little faster, and Newton is more stable after convergence\"; "
+       "conventional NDT needs "
        "about 25 iterations (Fig. 11).\n\n";
   return true;
 }
@@ -579,7 +648,8 @@ bool Optimizers(Context* c, std::string* error) {
 struct PaperErrors {
   const char* name;
   double success_percent;
-  double values[6][3];  // tx, ty, tz [cm], alpha, beta, gamma [deg]: mean, std, max.
+  double values[6][3];  // tx, ty, tz [cm], alpha, beta, gamma [deg]: mean, std,
+                        // max.
 };
 
 // Extracted from the paper's text (Hannover 1, first 100 scans, odometry
@@ -625,14 +695,16 @@ bool Sampling(Context* c, std::string* error) {
     Method method;
     SamplingMethod sampling;
   };
-  const std::vector<Config> configs = {{"ML-NDT, GBS", Method::MLNDT, SamplingMethod::GBS},
-                                       {"ML-NDT, random", Method::MLNDT, SamplingMethod::RANDOM},
-                                       {"NDT, GBS", Method::NDT, SamplingMethod::GBS},
-                                       {"NDT, random", Method::NDT, SamplingMethod::RANDOM}};
+  const std::vector<Config> configs = {
+      {"ML-NDT, GBS", Method::MLNDT, SamplingMethod::GBS},
+      {"ML-NDT, random", Method::MLNDT, SamplingMethod::RANDOM},
+      {"NDT, GBS", Method::NDT, SamplingMethod::GBS},
+      {"NDT, random", Method::NDT, SamplingMethod::RANDOM}};
   const int seeds = std::max(1, FLAGS_random_seeds);
   size_t total = 0;
   for (const Config& config : configs) {
-    total += (config.sampling == SamplingMethod::RANDOM ? seeds : 1) * PairsPerSweep(*c, c->steps);
+    total += (config.sampling == SamplingMethod::RANDOM ? seeds : 1) *
+             PairsPerSweep(*c, c->steps);
   }
   tools::Progress progress("sampling", total);
   size_t done = 0;
@@ -659,7 +731,8 @@ bool Sampling(Context* c, std::string* error) {
     totals.push_back(tools::ComputeTotals(all));
     first_runs.push_back(first);
     double points = 0;
-    for (const PairResult& p : all) points += static_cast<double>(p.sampled_points);
+    for (const PairResult& p : all)
+      points += static_cast<double>(p.sampled_points);
     mean_points.push_back(points / std::max<size_t>(all.size(), 1));
   }
   progress.Finish();
@@ -670,8 +743,8 @@ bool Sampling(Context* c, std::string* error) {
   std::vector<PairResult> prediction;
   const std::vector<PairResult>& gbs = first_runs[0];
   for (size_t p = 1; p < gbs.size(); ++p) {
-    const bool same_step =
-        gbs[p].input - gbs[p].reference == gbs[p - 1].input - gbs[p - 1].reference;
+    const bool same_step = gbs[p].input - gbs[p].reference ==
+                           gbs[p - 1].input - gbs[p - 1].reference;
     if (!same_step || gbs[p].reference != gbs[p - 1].reference + 1) continue;
     PairResult q = gbs[p];
     q.error = tools::ComputePoseError(q.truth, gbs[p - 1].estimate);
@@ -685,64 +758,89 @@ bool Sampling(Context* c, std::string* error) {
   const std::string steps = StepsText(c->steps);
   r << "## 3. Accuracy and sampling strategies (Tables 2–8)\n\n"
     << "Every pair of steps " << steps << " (" << PairsPerSweep(*c, c->steps)
-    << " pairs) from Z_i = 0 (no odometry; the paper started from odometry). Random sampling "
+    << " pairs) from Z_i = 0 (no odometry; the paper started from odometry). "
+       "Random sampling "
        "keeps "
-    << Fmt(c->base.sampling.random_fraction * 100, 0) << " % of the input (the paper: 10–20 %) "
-    << "and is run with seeds 1.." << seeds << " (statistics pool the seeds); GBS uses "
+    << Fmt(c->base.sampling.random_fraction * 100, 0)
+    << " % of the input (the paper: 10–20 %) "
+    << "and is run with seeds 1.." << seeds
+    << " (statistics pool the seeds); GBS uses "
     << Fmt(c->base.sampling.gbs_cell_size_m, 1)
-    << " m cells and up to 5 points a cell (Section 4.3). Errors are |component| of the error "
-       "transform truth⁻¹·estimate, as mean / std / max over all pairs (the paper's Tables 6–7 "
-       "leave failed registrations out; ours keep them). Success: translation error < 50 cm "
+    << " m cells and up to 5 points a cell (Section 4.3). Errors are "
+       "|component| of the error "
+       "transform truth⁻¹·estimate, as mean / std / max over all pairs (the "
+       "paper's Tables 6–7 "
+       "leave failed registrations out; ours keep them). Success: translation "
+       "error < 50 cm "
        "(the paper's rule); strict: < 20 cm and < 1 deg.\n\n"
-    << "| configuration | runs | success | strict | tx [cm] | ty [cm] | tz [cm] | α [deg] | "
+    << "| configuration | runs | success | strict | tx [cm] | ty [cm] | tz "
+       "[cm] | α [deg] | "
        "β [deg] | γ [deg] | time [ms] | iterations | points |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   const auto triple = [](const tools::Stats& s, int precision) {
-    return Fmt(s.mean, precision) + " / " + Fmt(s.std, precision) + " / " + Fmt(s.max, precision);
+    return Fmt(s.mean, precision) + " / " + Fmt(s.std, precision) + " / " +
+           Fmt(s.max, precision);
   };
   for (size_t k = 0; k < configs.size(); ++k) {
     const SequenceTotals& t = totals[k];
-    r << "| " << configs[k].name << " | " << t.pairs << " | " << Fmt(t.success_rate_percent, 0)
-      << " % | " << Fmt(t.strict_success_rate_percent, 0) << " % |";
-    for (int e = 0; e < 6; ++e) r << " " << triple(t.errors[e], e < 3 ? 1 : 2) << " |";
-    r << " " << Fmt(t.registration_time_ms.mean, 0) << " ± " << Fmt(t.registration_time_ms.std, 0)
-      << " | " << Fmt(t.iterations.mean, 1) << " | " << Fmt(mean_points[k], 0) << " |\n";
+    r << "| " << configs[k].name << " | " << t.pairs << " | "
+      << Fmt(t.success_rate_percent, 0) << " % | "
+      << Fmt(t.strict_success_rate_percent, 0) << " % |";
+    for (int e = 0; e < 6; ++e)
+      r << " " << triple(t.errors[e], e < 3 ? 1 : 2) << " |";
+    r << " " << Fmt(t.registration_time_ms.mean, 0) << " ± "
+      << Fmt(t.registration_time_ms.std, 0) << " | "
+      << Fmt(t.iterations.mean, 1) << " | " << Fmt(mean_points[k], 0) << " |\n";
   }
   if (!prediction.empty()) {
     const SequenceTotals& t = prediction_totals;
     r << "| constant-velocity guess (Table 2 analogue) | " << t.pairs << " | "
-      << Fmt(t.success_rate_percent, 0) << " % | " << Fmt(t.strict_success_rate_percent, 0)
-      << " % |";
-    for (int e = 0; e < 6; ++e) r << " " << triple(t.errors[e], e < 3 ? 1 : 2) << " |";
+      << Fmt(t.success_rate_percent, 0) << " % | "
+      << Fmt(t.strict_success_rate_percent, 0) << " % |";
+    for (int e = 0; e < 6; ++e)
+      r << " " << triple(t.errors[e], e < 3 ? 1 : 2) << " |";
     r << " – | – | – |\n";
   }
   for (const PaperErrors& p : kPaperTables) {
-    r << "| " << p.name << " | 100 | " << Fmt(p.success_percent, 0) << " % | – |";
+    r << "| " << p.name << " | 100 | " << Fmt(p.success_percent, 0)
+      << " % | – |";
     for (int e = 0; e < 6; ++e) {
       const int precision = e < 3 ? 2 : 2;
-      r << " " << Fmt(p.values[e][0], precision) << " / " << Fmt(p.values[e][1], precision) << " / "
+      r << " " << Fmt(p.values[e][0], precision) << " / "
+        << Fmt(p.values[e][1], precision) << " / "
         << Fmt(p.values[e][2], precision) << " |";
     }
     r << " – | – | – |\n";
   }
-  r << "\nThe constant-velocity row is the error of the guess itself (the previous pair's "
-       "ML-NDT estimate), the analogue of the paper's Table 2 (odometry against ground truth: "
-       "tx 77.52 / 22.91 / 178.61 cm; the other rows of that table did not survive the text "
+  r << "\nThe constant-velocity row is the error of the guess itself (the "
+       "previous pair's "
+       "ML-NDT estimate), the analogue of the paper's Table 2 (odometry "
+       "against ground truth: "
+       "tx 77.52 / 22.91 / 178.61 cm; the other rows of that table did not "
+       "survive the text "
        "extraction cleanly). "
-    << "The paper's rows are from its text (Hannover 1, 100 scans, odometry start, MATLAB); "
-       "their means are signed. Which of the two random-sampling tables is ML-NDT was inferred "
-       "from the text (\"the norm of translational error of the ML-NDT based method is almost "
-       "two times better\"). The paper's Table 5: NDT 39.81 ± 9.39 s and 25 iterations, ML-NDT "
+    << "The paper's rows are from its text (Hannover 1, 100 scans, odometry "
+       "start, MATLAB); "
+       "their means are signed. Which of the two random-sampling tables is "
+       "ML-NDT was inferred "
+       "from the text (\"the norm of translational error of the ML-NDT based "
+       "method is almost "
+       "two times better\"). The paper's Table 5: NDT 39.81 ± 9.39 s and 25 "
+       "iterations, ML-NDT "
        "9.43 ± 3.90 s and 12.77 iterations.\n\n"
-    << "Table 8 (success rate, translation error < 50 cm; mean translation error norm):\n\n"
-    << "| | random sampling | grid-based sampling (GBS) | paper random | paper GBS |\n"
+    << "Table 8 (success rate, translation error < 50 cm; mean translation "
+       "error norm):\n\n"
+    << "| | random sampling | grid-based sampling (GBS) | paper random | paper "
+       "GBS |\n"
     << "|---|---|---|---|---|\n"
     << "| NDT | " << Fmt(totals[3].success_rate_percent, 0) << " %, "
-    << Fmt(totals[3].errors[6].mean, 1) << " cm | " << Fmt(totals[2].success_rate_percent, 0)
-    << " %, " << Fmt(totals[2].errors[6].mean, 1) << " cm | 64 % | 90 % |\n"
+    << Fmt(totals[3].errors[6].mean, 1) << " cm | "
+    << Fmt(totals[2].success_rate_percent, 0) << " %, "
+    << Fmt(totals[2].errors[6].mean, 1) << " cm | 64 % | 90 % |\n"
     << "| ML-NDT | " << Fmt(totals[1].success_rate_percent, 0) << " %, "
-    << Fmt(totals[1].errors[6].mean, 1) << " cm | " << Fmt(totals[0].success_rate_percent, 0)
-    << " %, " << Fmt(totals[0].errors[6].mean, 1) << " cm | 94 % | 98 % |\n\n";
+    << Fmt(totals[1].errors[6].mean, 1) << " cm | "
+    << Fmt(totals[0].success_rate_percent, 0) << " %, "
+    << Fmt(totals[0].errors[6].mean, 1) << " cm | 94 % | 98 % |\n\n";
 
   // Figure: translation error per pair (seed 1), like Fig. 17.
   std::ofstream dat(c->data + "sampling.dat");
@@ -750,20 +848,24 @@ bool Sampling(Context* c, std::string* error) {
   for (const Config& config : configs) dat << " '" << config.name << "'";
   dat << "\n";
   for (size_t p = 0; p < first_runs[0].size(); ++p) {
-    dat << p << " " << first_runs[0][p].reference << "-" << first_runs[0][p].input;
+    dat << p << " " << first_runs[0][p].reference << "-"
+        << first_runs[0][p].input;
     for (size_t k = 0; k < configs.size(); ++k) {
       dat << " " << tools::Num(first_runs[k][p].error.translation_m * 100.0);
     }
     dat << "\n";
   }
-  c->script << "set output " << tools::GnuplotQuote(c->out + "sampling.png") << "\n"
+  c->script << "set output " << tools::GnuplotQuote(c->out + "sampling.png")
+            << "\n"
             << "set title 'Translation error per pair (random: seed 1)'\n"
-            << "set xlabel 'pair (reference-input)'\nset ylabel 'error [cm]'\nset logscale y\n"
+            << "set xlabel 'pair (reference-input)'\nset ylabel 'error "
+               "[cm]'\nset logscale y\n"
             << "set xtics rotate by -45\nplot ";
   for (size_t k = 0; k < configs.size(); ++k) {
-    c->script << (k ? ", " : "") << tools::GnuplotQuote(c->data + "sampling.dat")
-              << " using 1:" << k + 3 << (k == 0 ? ":xtic(2)" : "") << " with linespoints title '"
-              << configs[k].name << "'";
+    c->script << (k ? ", " : "")
+              << tools::GnuplotQuote(c->data + "sampling.dat")
+              << " using 1:" << k + 3 << (k == 0 ? ":xtic(2)" : "")
+              << " with linespoints title '" << configs[k].name << "'";
   }
   c->script << "\nunset logscale y\nset xtics norotate\nset xtics autofreq\n";
   c->pngs.push_back("sampling.png");
@@ -788,12 +890,14 @@ const PaperTable9Row kPaperTable9[] = {
 
 bool Table9(Context* c, std::string* error) {
   std::vector<double> fractions, step_values;
-  if (!tools::ParseNumberList(FLAGS_fractions, &fractions) || fractions.empty()) {
+  if (!tools::ParseNumberList(FLAGS_fractions, &fractions) ||
+      fractions.empty()) {
     *error = "bad --fractions";
     return false;
   }
   std::vector<size_t> steps;
-  if (!tools::ParseNumberList(FLAGS_table9_steps, &step_values) || step_values.empty()) {
+  if (!tools::ParseNumberList(FLAGS_table9_steps, &step_values) ||
+      step_values.empty()) {
     *error = "bad --table9_steps";
     return false;
   }
@@ -820,35 +924,51 @@ bool Table9(Context* c, std::string* error) {
     options.init.fraction = 1.0;
     std::vector<PairResult> results;
     if (!RunSteps(c, steps, options, &results, error)) return false;
-    for (const PairResult& p : results) optimum[{p.reference, p.input}] = p.estimate;
+    for (const PairResult& p : results)
+      optimum[{p.reference, p.input}] = p.estimate;
     done += results.size();
     progress.Update(done, "optimum from the ground truth");
   }
   std::ostringstream& r = c->report;
   r << "## 4. Start layer × initialisation (Table 9)\n\n"
     << "Every pair of steps " << StepsText(steps) << " (" << pairs
-    << " pairs), started from Z_i = c·Z_gt (the ground-truth motion with translation and "
-       "rotation angle scaled by c) on each start layer s (cell size in brackets; the run works "
+    << " pairs), started from Z_i = c·Z_gt (the ground-truth motion with "
+       "translation and "
+       "rotation angle scaled by c) on each start layer s (cell size in "
+       "brackets; the run works "
        "on layers s..n with "
     << c->base.schedule.iterations_per_layer
-    << " iterations on each layer but the last; the paper used 3). Two fail rates:\n\n"
-    << "- **diverged**: the result is more than " << Fmt(FLAGS_success_translation * 100, 0)
-    << " cm or " << Fmt(FLAGS_success_rotation, 1)
-    << " deg from the pair's optimum (ML-NDT with the base options started from the ground "
-       "truth), or the registration failed. This measures convergence and is free of the data's "
+    << " iterations on each layer but the last; the paper used 3). Two fail "
+       "rates:\n\n"
+    << "- **diverged**: the result is more than "
+    << Fmt(FLAGS_success_translation * 100, 0) << " cm or "
+    << Fmt(FLAGS_success_rotation, 1)
+    << " deg from the pair's optimum (ML-NDT with the base options started "
+       "from the ground "
+       "truth), or the registration failed. This measures convergence and is "
+       "free of the data's "
        "0.8 × scale.\n"
-    << "- **GT ≥ 50 cm**: the paper's rule against the ground truth. Because of the scale "
-       "caveat the optimum itself is about 0.17 m per frame of motion from the ground truth, so "
+    << "- **GT ≥ 50 cm**: the paper's rule against the ground truth. Because "
+       "of the scale "
+       "caveat the optimum itself is about 0.17 m per frame of motion from the "
+       "ground truth, so "
        "pairs far apart fail this rule wherever the run starts.\n\n"
-    << "Error: mean translation error against the ground truth of the runs that did not "
-       "diverge. Time: registration only (maps are built once per scan and reused). The paper's "
-       "map had n = 4 layers and it started on layers 2, 3 and 4 (Hannover 1, odometry-based "
-       "Z_gt); its values are put next to our three finest start layers (n-2, n-1, n).\n\n"
-    << "| c = Z_i/Z_gt | start layer | diverged | GT ≥ 50 cm | time [ms] | iterations | "
-       "error [cm] | paper: layers | paper fail | paper time [s] | paper err. [cm] |\n"
+    << "Error: mean translation error against the ground truth of the runs "
+       "that did not "
+       "diverge. Time: registration only (maps are built once per scan and "
+       "reused). The paper's "
+       "map had n = 4 layers and it started on layers 2, 3 and 4 (Hannover 1, "
+       "odometry-based "
+       "Z_gt); its values are put next to our three finest start layers (n-2, "
+       "n-1, n).\n\n"
+    << "| c = Z_i/Z_gt | start layer | diverged | GT ≥ 50 cm | time [ms] | "
+       "iterations | "
+       "error [cm] | paper: layers | paper fail | paper time [s] | paper err. "
+       "[cm] |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::ofstream dat(c->data + "table9.dat");
-  dat << "# blocks per fraction: start_layer diverged_percent time_ms error_cm gt_fail_percent\n";
+  dat << "# blocks per fraction: start_layer diverged_percent time_ms error_cm "
+         "gt_fail_percent\n";
   for (double fraction : fractions) {
     for (int layer = 1; layer <= n; ++layer) {
       tools::SequenceOptions options;
@@ -859,25 +979,32 @@ bool Table9(Context* c, std::string* error) {
       std::vector<PairResult> results;
       if (!RunSteps(c, steps, options, &results, error)) return false;
       done += results.size();
-      progress.Update(done, "c=" + Fmt(fraction, 1) + " start layer " + std::to_string(layer));
+      progress.Update(
+          done,
+          "c=" + Fmt(fraction, 1) + " start layer " + std::to_string(layer));
       const SequenceTotals t = tools::ComputeTotals(results);
       size_t diverged = 0;
       std::vector<double> converged_errors;
       for (const PairResult& p : results) {
         const Isometry3d& best = optimum.at({p.reference, p.input});
-        const bool off = p.termination == TerminationType::FAILURE ||
-                         TranslationErrorM(best, p.estimate) >= FLAGS_success_translation ||
-                         RotationErrorRad(best, p.estimate) * kRadToDeg >= FLAGS_success_rotation;
+        const bool off =
+            p.termination == TerminationType::FAILURE ||
+            TranslationErrorM(best, p.estimate) >= FLAGS_success_translation ||
+            RotationErrorRad(best, p.estimate) * kRadToDeg >=
+                FLAGS_success_rotation;
         diverged += off;
         if (!off) converged_errors.push_back(p.error.translation_m * 100.0);
       }
-      const double diverged_percent = 100.0 * diverged / std::max<size_t>(results.size(), 1);
+      const double diverged_percent =
+          100.0 * diverged / std::max<size_t>(results.size(), 1);
       const double gt_fail = 100.0 - t.success_rate_percent;
       const double mean_error = tools::ComputeStats(converged_errors).mean;
       r << "| " << Fmt(fraction, 1) << " | " << LayerLabel(*c, layer) << " | "
         << Fmt(diverged_percent, 0) << " % | " << Fmt(gt_fail, 0) << " % | "
-        << Fmt(t.registration_time_ms.mean, 0) << " | " << Fmt(t.iterations.mean, 1) << " | "
-        << (converged_errors.empty() ? std::string("–") : Fmt(mean_error, 1)) << " |";
+        << Fmt(t.registration_time_ms.mean, 0) << " | "
+        << Fmt(t.iterations.mean, 1) << " | "
+        << (converged_errors.empty() ? std::string("–") : Fmt(mean_error, 1))
+        << " |";
       const int paper_index = layer - (n - 2);  // 0, 1, 2 for n-2, n-1, n.
       const PaperTable9Row* paper = nullptr;
       for (const PaperTable9Row& row : kPaperTable9) {
@@ -885,31 +1012,43 @@ bool Table9(Context* c, std::string* error) {
       }
       if (paper != nullptr && paper_index >= 0 && paper_index <= 2) {
         const double* v = paper->values[paper_index];
-        r << " " << (paper_index == 2 ? std::string("4") : std::to_string(paper_index + 2) + "–4")
-          << " | " << Fmt(v[0], 0) << " % | " << Fmt(v[1], 2) << " | " << Fmt(v[2], 2) << " |\n";
+        r << " "
+          << (paper_index == 2 ? std::string("4")
+                               : std::to_string(paper_index + 2) + "–4")
+          << " | " << Fmt(v[0], 0) << " % | " << Fmt(v[1], 2) << " | "
+          << Fmt(v[2], 2) << " |\n";
       } else {
         r << " | | | |\n";
       }
-      dat << layer << " " << diverged_percent << " " << t.registration_time_ms.mean << " "
-          << tools::Num(mean_error) << " " << gt_fail << "\n";
+      dat << layer << " " << diverged_percent << " "
+          << t.registration_time_ms.mean << " " << tools::Num(mean_error) << " "
+          << gt_fail << "\n";
     }
     dat << "\n\n";
   }
   progress.Finish();
-  c->script << "set output " << tools::GnuplotQuote(c->out + "table9.png") << "\n"
-            << "set multiplot layout 1,2 title 'Start layer x initialisation Z_i = c Z_{gt} ("
+  c->script << "set output " << tools::GnuplotQuote(c->out + "table9.png")
+            << "\n"
+            << "set multiplot layout 1,2 title 'Start layer x initialisation "
+               "Z_i = c Z_{gt} ("
             << pairs << " pairs)'\nset xlabel 'start layer'\nset xtics 1\n"
-            << "set title 'Diverged (away from the pair optimum)'\nset ylabel 'runs [%]'\n"
+            << "set title 'Diverged (away from the pair optimum)'\nset ylabel "
+               "'runs [%]'\n"
             << "set yrange [-5:105]\nset key inside top right\nplot ";
   for (size_t k = 0; k < fractions.size(); ++k) {
-    c->script << (k ? ", " : "") << tools::GnuplotQuote(c->data + "table9.dat") << " index " << k
-              << " using 1:2 with linespoints lw 2 title 'c = " << Fmt(fractions[k], 1) << "'";
+    c->script << (k ? ", " : "") << tools::GnuplotQuote(c->data + "table9.dat")
+              << " index " << k
+              << " using 1:2 with linespoints lw 2 title 'c = "
+              << Fmt(fractions[k], 1) << "'";
   }
-  c->script << "\nset autoscale y\nset title 'Mean registration time'\nset ylabel 'time [ms]'\n"
+  c->script << "\nset autoscale y\nset title 'Mean registration time'\nset "
+               "ylabel 'time [ms]'\n"
             << "set yrange [0:*]\nplot ";
   for (size_t k = 0; k < fractions.size(); ++k) {
-    c->script << (k ? ", " : "") << tools::GnuplotQuote(c->data + "table9.dat") << " index " << k
-              << " using 1:3 with linespoints lw 2 title 'c = " << Fmt(fractions[k], 1) << "'";
+    c->script << (k ? ", " : "") << tools::GnuplotQuote(c->data + "table9.dat")
+              << " index " << k
+              << " using 1:3 with linespoints lw 2 title 'c = "
+              << Fmt(fractions[k], 1) << "'";
   }
   c->script << "\nunset multiplot\nset autoscale y\nset xtics autofreq\n"
                "set key outside right top\n";
@@ -934,19 +1073,28 @@ bool Adaptive(Context* c, std::string* error) {
     inits.push_back(spec);
   }
   const int n = NumLayers(*c);
-  tools::Progress progress("adaptive", inits.size() * (n + 1) * PairsPerSweep(*c, c->steps));
+  tools::Progress progress(
+      "adaptive", inits.size() * (n + 1) * PairsPerSweep(*c, c->steps));
   size_t done = 0;
   std::ostringstream& r = c->report;
   r << "## 5. Adaptive start layer (end of Section 5.3)\n\n"
-    << "The paper proposes starting on the last layer and moving to a coarser start layer when "
-       "the fail rate grows, a failure being an estimate more than 1 m or 15 deg from the "
-       "odometry guess. Ours (tools/common/sequence_runner.h): the running fail rate over the "
-       "pairs so far; above 5 % start one layer coarser than the last, above 20 % two coarser. "
-       "The guess is the --init policy: constant_velocity (the previous estimate, the odometry "
-       "stand-in) and zero (no odometry: every true motion above 1 m then counts as a failure, "
-       "so the rule drives the start layer coarser by design). Success: < 50 cm; strict: < 20 cm "
+    << "The paper proposes starting on the last layer and moving to a coarser "
+       "start layer when "
+       "the fail rate grows, a failure being an estimate more than 1 m or 15 "
+       "deg from the "
+       "odometry guess. Ours (tools/common/sequence_runner.h): the running "
+       "fail rate over the "
+       "pairs so far; above 5 % start one layer coarser than the last, above "
+       "20 % two coarser. "
+       "The guess is the --init policy: constant_velocity (the previous "
+       "estimate, the odometry "
+       "stand-in) and zero (no odometry: every true motion above 1 m then "
+       "counts as a failure, "
+       "so the rule drives the start layer coarser by design). Success: < 50 "
+       "cm; strict: < 20 cm "
        "and < 1 deg.\n\n"
-    << "| init | step | start layer | pairs | success | strict | guess-check failures | "
+    << "| init | step | start layer | pairs | success | strict | guess-check "
+       "failures | "
        "start layers used | time [ms] | iterations | err. norm [cm] |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const tools::InitSpec& init : inits) {
@@ -961,35 +1109,43 @@ bool Adaptive(Context* c, std::string* error) {
         options.adaptive.enabled = adaptive;
         if (!adaptive) options.registration.schedule.start_layer = config + 1;
         std::vector<PairResult> results;
-        if (!tools::RunSequence(options, c->store, &c->truth, nullptr, {}, &results, error)) {
+        if (!tools::RunSequence(
+                options, c->store, &c->truth, nullptr, {}, &results, error)) {
           return false;
         }
         c->runs += results.size();
         done += results.size();
-        const std::string label = adaptive ? "adaptive" : LayerLabel(*c, config + 1);
-        progress.Update(
-            done, tools::InitSpecToString(init) + " step " + std::to_string(step) + " " + label);
+        const std::string label =
+            adaptive ? "adaptive" : LayerLabel(*c, config + 1);
+        progress.Update(done,
+                        tools::InitSpecToString(init) + " step " +
+                            std::to_string(step) + " " + label);
         const SequenceTotals t = tools::ComputeTotals(results);
         std::string used;
         for (const PairResult& p : results)
           used += (used.empty() ? "" : ",") + std::to_string(p.start_layer);
         r << "| " << tools::InitSpecToString(init) << " | " << step << " | "
           << (adaptive ? "**adaptive**" : label) << " | " << t.pairs << " | "
-          << Fmt(t.success_rate_percent, 0) << " % | " << Fmt(t.strict_success_rate_percent, 0)
-          << " % | " << t.guess_check_failures << " | " << (adaptive ? used : "") << " | "
-          << Fmt(t.registration_time_ms.mean, 0) << " | " << Fmt(t.iterations.mean, 1) << " | "
-          << Fmt(t.errors[6].mean, 1) << " |\n";
+          << Fmt(t.success_rate_percent, 0) << " % | "
+          << Fmt(t.strict_success_rate_percent, 0) << " % | "
+          << t.guess_check_failures << " | " << (adaptive ? used : "") << " | "
+          << Fmt(t.registration_time_ms.mean, 0) << " | "
+          << Fmt(t.iterations.mean, 1) << " | " << Fmt(t.errors[6].mean, 1)
+          << " |\n";
       }
     }
   }
   progress.Finish();
-  r << "\n\"start layers used\" lists the adaptive run's start layer pair by pair.\n\n";
+  r << "\n\"start layers used\" lists the adaptive run's start layer pair by "
+       "pair.\n\n";
   return true;
 }
 
 int Run() {
   if (FLAGS_output_dir.empty()) {
-    return Fail("Usage: mlndt_experiments --output_dir=OUT [--data_dir=DIR] [--experiments=...]");
+    return Fail(
+        "Usage: mlndt_experiments --output_dir=OUT [--data_dir=DIR] "
+        "[--experiments=...]");
   }
   std::vector<std::string> selected;
   {
@@ -1012,33 +1168,42 @@ int Run() {
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&c.base, &error)) return Fail(error);
   std::vector<double> steps;
-  if (!tools::ParseNumberList(FLAGS_steps, &steps) || steps.empty()) return Fail("bad --steps");
+  if (!tools::ParseNumberList(FLAGS_steps, &steps) || steps.empty())
+    return Fail("bad --steps");
   for (double s : steps) {
-    if (s < 1 || s != std::floor(s)) return Fail("--steps: positive integers expected");
+    if (s < 1 || s != std::floor(s))
+      return Fail("--steps: positive integers expected");
     c.steps.push_back(static_cast<size_t>(s));
   }
   if (FLAGS_max_scans < 0) return Fail("--max_scans must be >= 0");
 
   std::string scans_dir, poses_path, calib_path;
-  if (!FindKittiFolder(FLAGS_data_dir, &scans_dir, &poses_path, &calib_path, &error)) {
+  if (!FindKittiFolder(
+          FLAGS_data_dir, &scans_dir, &poses_path, &calib_path, &error)) {
     return Fail(error);
   }
   std::vector<std::string> paths;
-  if (!tools::ListScanFiles(scans_dir, {poses_path, calib_path}, &paths, &error)) {
+  if (!tools::ListScanFiles(
+          scans_dir, {poses_path, calib_path}, &paths, &error)) {
     return Fail(error);
   }
-  if (FLAGS_max_scans > 0 && paths.size() > static_cast<size_t>(FLAGS_max_scans)) {
+  if (FLAGS_max_scans > 0 &&
+      paths.size() > static_cast<size_t>(FLAGS_max_scans)) {
     paths.resize(static_cast<size_t>(FLAGS_max_scans));
   }
-  if (paths.size() < 2) return Fail(scans_dir + ": at least two scans are needed");
-  if (!tools::ReadSequencePoses(poses_path, calib_path, &c.truth, &error)) return Fail(error);
+  if (paths.size() < 2)
+    return Fail(scans_dir + ": at least two scans are needed");
+  if (!tools::ReadSequencePoses(poses_path, calib_path, &c.truth, &error))
+    return Fail(error);
   if (c.truth.size() < paths.size()) {
     return Fail(poses_path + ": fewer poses than scans");
   }
-  const bool gnuplot_ok = !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
+  const bool gnuplot_ok =
+      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {
     std::cerr << "mlndt_experiments: gnuplot ('" << FLAGS_gnuplot
-              << "') not found: figures will be skipped (install gnuplot-nox, e.g. with "
+              << "') not found: figures will be skipped (install gnuplot-nox, "
+                 "e.g. with "
                  "scripts/install_deps.sh, or pass --plots=false)\n";
   }
   c.out = FLAGS_output_dir + "/";
@@ -1052,7 +1217,8 @@ int Run() {
   double build_s = 0.0;
   const LayeredGrid* map = store.Map(0, c.base.grid, &build_s, &error);
   if (map == nullptr) return Fail(error);
-  for (const LayerInfo& info : map->layer_info()) c.layer_sizes.push_back(info.cell_size_m);
+  for (const LayerInfo& info : map->layer_info())
+    c.layer_sizes.push_back(info.cell_size_m);
 
   const double start = NowSeconds();
   c.script << tools::GnuplotPngHeader(1000, 620);
@@ -1067,70 +1233,92 @@ int Run() {
                               {"adaptive", Adaptive}};
   for (const Step& step : experiments) {
     if (!wanted(step.name)) continue;
-    if (!step.run(&c, &error)) return Fail(std::string(step.name) + ": " + error);
+    if (!step.run(&c, &error))
+      return Fail(std::string(step.name) + ": " + error);
   }
   const double elapsed = NowSeconds() - start;
 
   // REPORT.md: header, then the experiments' sections.
   std::ostringstream header;
   const RegistrationOptions& b = c.base;
-  header << "# ML-NDT experiments: Section 5 of Ulaş & Temeltaş (2013) on KITTI\n\n"
+  header << "# ML-NDT experiments: Section 5 of Ulaş & Temeltaş (2013) on "
+            "KITTI\n\n"
          << "Command:\n\n```\n"
          << CommandLine() << "\n```\n\n"
-         << "- Data: `" << scans_dir << "`, " << paths.size() << " scans, ground truth `"
-         << poses_path << "`" << (calib_path.empty() ? "" : " converted with `" + calib_path + "`")
+         << "- Data: `" << scans_dir << "`, " << paths.size()
+         << " scans, ground truth `" << poses_path << "`"
+         << (calib_path.empty() ? "" : " converted with `" + calib_path + "`")
          << ".\n"
-         << "- Base options: method " << MethodToString(b.method) << ", backend "
-         << BackendTypeToString(b.backend) << ", sampling "
-         << SamplingMethodToString(b.sampling.method) << ", loss " << LossTypeToString(b.loss)
-         << " (scale " << Fmt(b.loss_scale, 1) << "), unmatched points "
+         << "- Base options: method " << MethodToString(b.method)
+         << ", backend " << BackendTypeToString(b.backend) << ", sampling "
+         << SamplingMethodToString(b.sampling.method) << ", loss "
+         << LossTypeToString(b.loss) << " (scale " << Fmt(b.loss_scale, 1)
+         << "), unmatched points "
          << UnmatchedPolicyToString(b.unmatched_policy) << ", start layer "
          << b.schedule.start_layer << ", " << b.schedule.iterations_per_layer
-         << " iterations per coarse layer, up to " << b.schedule.max_final_iterations
-         << " on the last, threads " << b.num_threads << ".\n"
+         << " iterations per coarse layer, up to "
+         << b.schedule.max_final_iterations << " on the last, threads "
+         << b.num_threads << ".\n"
          << "- ML-NDT map of scan 0: q = " << b.grid.division_constant
          << ", n = " << c.layer_sizes.size() << " layers, cell edges";
   for (size_t k = 0; k < c.layer_sizes.size(); ++k) {
     header << (k ? "," : "") << " " << Fmt(c.layer_sizes[k], 2);
   }
-  header << " m (the paper: n = 4).\n"
-         << "- Conventional NDT (`--method=ndt`): one grid, cell "
-         << (b.ndt.cell_size_m > 0 ? Fmt(b.ndt.cell_size_m, 2) + " m"
-                                   : std::string("(V/64)^(1/3) (the paper's layer-2 cell)"))
-         << ", outlier ratio " << Fmt(b.ndt.outlier_ratio, 2) << ", "
-         << NdtNeighborsToString(b.ndt.neighbors) << ", Newton, up to " << b.ndt.max_iterations
-         << " iterations.\n"
-         << "- " << c.runs << " registrations in " << Fmt(elapsed, 0) << " s.\n\n"
-         << "**Ground-truth caveat** (measured on KITTI 00 frames 0–7, the bundled and shared "
-            "set). On these scans the geometry fits about 0.8 times the "
-            "ground-truth translation (an independent nearest-neighbour check puts the best "
-            "alignment of frames 0 → 3 at 0.8 × GT), so even a perfect matcher ends about "
-            "0.17 m per frame of motion from the ground truth: step-1 pairs pass 20 cm, step-2 "
-            "pairs (≈ 1.7 m of motion) end ≈ 0.3 m off and fail the strict 20 cm rule while "
-            "passing the paper's 50 cm rule. Translation errors here are therefore dominated by "
-            "this bias, not by the matcher; rotation errors are not affected.\n\n";
+  header
+      << " m (the paper: n = 4).\n"
+      << "- Conventional NDT (`--method=ndt`): one grid, cell "
+      << (b.ndt.cell_size_m > 0
+              ? Fmt(b.ndt.cell_size_m, 2) + " m"
+              : std::string("(V/64)^(1/3) (the paper's layer-2 cell)"))
+      << ", outlier ratio " << Fmt(b.ndt.outlier_ratio, 2) << ", "
+      << NdtNeighborsToString(b.ndt.neighbors) << ", Newton, up to "
+      << b.ndt.max_iterations << " iterations.\n"
+      << "- " << c.runs << " registrations in " << Fmt(elapsed, 0) << " s.\n\n"
+      << "**Ground-truth caveat** (measured on KITTI 00 frames 0–7, the "
+         "bundled and shared "
+         "set). On these scans the geometry fits about 0.8 times the "
+         "ground-truth translation (an independent nearest-neighbour check "
+         "puts the best "
+         "alignment of frames 0 → 3 at 0.8 × GT), so even a perfect matcher "
+         "ends about "
+         "0.17 m per frame of motion from the ground truth: step-1 pairs pass "
+         "20 cm, step-2 "
+         "pairs (≈ 1.7 m of motion) end ≈ 0.3 m off and fail the strict 20 cm "
+         "rule while "
+         "passing the paper's 50 cm rule. Translation errors here are "
+         "therefore dominated by "
+         "this bias, not by the matcher; rotation errors are not affected.\n\n";
   {
     std::ofstream md(c.out + "REPORT.md");
     md << header.str() << c.report.str()
        << "## Notes\n\n"
-          "- Times are wall-clock on this machine, single-threaded, with C++ (the paper's are "
+          "- Times are wall-clock on this machine, single-threaded, with C++ "
+          "(the paper's are "
           "MATLAB seconds); compare ratios, not absolute values.\n"
-          "- ML-NDT registration times exclude building the map (built once per scan and "
-          "reused, Section 4.3); NDT times exclude building its grid too (it is rebuilt per run).\n"
-          "- Figures are drawn with gnuplot from the data in plot_data/ (script: "
+          "- ML-NDT registration times exclude building the map (built once "
+          "per scan and "
+          "reused, Section 4.3); NDT times exclude building its grid too (it "
+          "is rebuilt per run).\n"
+          "- Figures are drawn with gnuplot from the data in plot_data/ "
+          "(script: "
           "plot_data/experiments.gp).\n";
     if (!md) return Fail(c.out + "REPORT.md: cannot write");
   }
   if (FLAGS_plots) {
     if (!gnuplot_ok) {
       return Fail("figures skipped: gnuplot ('" + FLAGS_gnuplot +
-                  "') not found; REPORT.md is written. Install gnuplot-nox or pass --plots=false");
+                  "') not found; REPORT.md is written. Install gnuplot-nox or "
+                  "pass --plots=false");
     }
-    if (!tools::RunGnuplot(FLAGS_gnuplot, c.data + "experiments.gp", c.script.str(), &error)) {
+    if (!tools::RunGnuplot(
+            FLAGS_gnuplot, c.data + "experiments.gp", c.script.str(), &error)) {
       return Fail(error);
     }
   }
-  std::printf("%zu registrations in %.0f s\nreport: %sREPORT.md\n", c.runs, elapsed, c.out.c_str());
+  std::printf("%zu registrations in %.0f s\nreport: %sREPORT.md\n",
+              c.runs,
+              elapsed,
+              c.out.c_str());
   if (FLAGS_plots) {
     std::printf("figures:");
     for (const std::string& png : c.pngs) std::printf(" %s", png.c_str());
@@ -1144,12 +1332,16 @@ int Run() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
-      "Reproduces the experiments of the ML-NDT paper's Section 5 and writes REPORT.md.\n"
-      "  mlndt_experiments --output_dir=OUT [--data_dir=DIR] [--experiments=...]");
+      "Reproduces the experiments of the ML-NDT paper's Section 5 and writes "
+      "REPORT.md.\n"
+      "  mlndt_experiments --output_dir=OUT [--data_dir=DIR] "
+      "[--experiments=...]");
   // This tool's defaults: the paper's Newton optimiser, and quiet logging
   // (failed registrations are expected in the long-range runs).
-  gflags::SetCommandLineOptionWithMode("backend", "newton", gflags::SET_FLAGS_DEFAULT);
-  gflags::SetCommandLineOptionWithMode("minloglevel", "3", gflags::SET_FLAGS_DEFAULT);
+  gflags::SetCommandLineOptionWithMode(
+      "backend", "newton", gflags::SET_FLAGS_DEFAULT);
+  gflags::SetCommandLineOptionWithMode(
+      "minloglevel", "3", gflags::SET_FLAGS_DEFAULT);
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;

@@ -6,17 +6,18 @@
 // --min_height so that ground rings, which move with the sensor, don't count).
 // A consistent ground truth has its minimum at s = 1.
 //
-//   mlndt_gt_check --reference=000000.pcd --input=000003.pcd --gt_poses=poses.txt
+//   mlndt_gt_check --reference=000000.pcd --input=000003.pcd
+//   --gt_poses=poses.txt
 //                  --reference_index=0 --input_index=3
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <unordered_map>
 #include <vector>
-
-#include <gflags/gflags.h>
-#include <glog/logging.h>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
@@ -29,15 +30,20 @@ DEFINE_string(gt_poses, "", "KITTI poses in the scans' frame");
 DEFINE_int32(reference_index, 0, "Line of the reference scan's pose");
 DEFINE_int32(input_index, 1, "Line of the input scan's pose");
 DEFINE_double(min_range, 5.0, "Input points nearer than this [m] are ignored");
-DEFINE_double(max_range, 40.0, "Input points farther than this [m] are ignored");
-DEFINE_double(min_height, -1.2, "Points below this z [m, sensor frame] are ignored");
+DEFINE_double(max_range,
+              40.0,
+              "Input points farther than this [m] are ignored");
+DEFINE_double(min_height,
+              -1.2,
+              "Points below this z [m, sensor frame] are ignored");
 
 namespace mlndt {
 namespace {
 
 struct KeyHash {
   size_t operator()(const Eigen::Vector3i& k) const {
-    return static_cast<size_t>(k.x()) * 73856093u ^ static_cast<size_t>(k.y()) * 19349663u ^
+    return static_cast<size_t>(k.x()) * 73856093u ^
+           static_cast<size_t>(k.y()) * 19349663u ^
            static_cast<size_t>(k.z()) * 83492791u;
   }
 };
@@ -61,14 +67,17 @@ int Run() {
     return 1;
   }
   const int n = static_cast<int>(poses.size());
-  if (FLAGS_reference_index < 0 || FLAGS_reference_index >= n || FLAGS_input_index < 0 ||
-      FLAGS_input_index >= n) {
-    std::cerr << "mlndt_gt_check: pose index out of range (" << n << " poses)\n";
+  if (FLAGS_reference_index < 0 || FLAGS_reference_index >= n ||
+      FLAGS_input_index < 0 || FLAGS_input_index >= n) {
+    std::cerr << "mlndt_gt_check: pose index out of range (" << n
+              << " poses)\n";
     return 1;
   }
-  const Isometry3d truth = poses[static_cast<size_t>(FLAGS_reference_index)].inverse() *
-                           poses[static_cast<size_t>(FLAGS_input_index)];
-  std::unordered_map<Eigen::Vector3i, std::vector<Eigen::Vector3d>, KeyHash> voxels;
+  const Isometry3d truth =
+      poses[static_cast<size_t>(FLAGS_reference_index)].inverse() *
+      poses[static_cast<size_t>(FLAGS_input_index)];
+  std::unordered_map<Eigen::Vector3i, std::vector<Eigen::Vector3d>, KeyHash>
+      voxels;
   for (const Eigen::Vector3d& p : reference.points()) {
     if (p.z() >= FLAGS_min_height) voxels[Key(p)].push_back(p);
   }
@@ -80,7 +89,9 @@ int Run() {
     int count = 0;
     for (const Eigen::Vector3d& q : input.points()) {
       const double range = q.norm();
-      if (range < FLAGS_min_range || range > FLAGS_max_range || q.z() < FLAGS_min_height) continue;
+      if (range < FLAGS_min_range || range > FLAGS_max_range ||
+          q.z() < FLAGS_min_height)
+        continue;
       const Eigen::Vector3d p = moved * q;
       const Eigen::Vector3i key = Key(p);
       double best = kVoxel * kVoxel;
@@ -89,7 +100,8 @@ int Run() {
           for (int dz = -1; dz <= 1; ++dz) {
             const auto it = voxels.find(key + Eigen::Vector3i(dx, dy, dz));
             if (it == voxels.end()) continue;
-            for (const Eigen::Vector3d& r : it->second) best = std::min(best, (r - p).squaredNorm());
+            for (const Eigen::Vector3d& r : it->second)
+              best = std::min(best, (r - p).squaredNorm());
           }
         }
       }
@@ -98,8 +110,11 @@ int Run() {
         ++count;
       }
     }
-    std::printf("%5.2f  %14.3f  %10.4f  %6d\n", s, moved.translation().norm(),
-                count ? sum / count : NAN, count);
+    std::printf("%5.2f  %14.3f  %10.4f  %6d\n",
+                s,
+                moved.translation().norm(),
+                count ? sum / count : NAN,
+                count);
   }
   return 0;
 }
@@ -108,7 +123,8 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage("Checks a ground-truth relative pose against the scans' geometry.");
+  gflags::SetUsageMessage(
+      "Checks a ground-truth relative pose against the scans' geometry.");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   return mlndt::Run();

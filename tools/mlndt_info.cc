@@ -15,27 +15,36 @@
 // A file that cannot be read, or whose map cannot be built, is reported on
 // stderr; the tool goes on with the other files and exits with 1 at the end.
 
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <gflags/gflags.h>
-#include <glog/logging.h>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
 #include "tools/common/json_writer.h"
 
-DEFINE_bool(layers, false, "Also build the layered NDT map and report its layers");
-DEFINE_int32(num_layers, mlndt::LayeredGridOptions().num_layers,
-             "--layers: number of layers n (the paper's 4); ignored with --finest_cell_size");
-DEFINE_int32(division_constant, mlndt::LayeredGridOptions().division_constant,
+DEFINE_bool(layers,
+            false,
+            "Also build the layered NDT map and report its layers");
+DEFINE_int32(num_layers,
+             mlndt::LayeredGridOptions().num_layers,
+             "--layers: number of layers n (the paper's 4); ignored with "
+             "--finest_cell_size");
+DEFINE_int32(division_constant,
+             mlndt::LayeredGridOptions().division_constant,
              "--layers: division constant q (layer i has about q^i cells)");
-DEFINE_double(finest_cell_size, mlndt::LayeredGridOptions().finest_cell_size_m,
-              "--layers: when > 0, use the fewest layers whose finest cell edge is <= this [m] "
+DEFINE_double(finest_cell_size,
+              mlndt::LayeredGridOptions().finest_cell_size_m,
+              "--layers: when > 0, use the fewest layers whose finest cell "
+              "edge is <= this [m] "
               "instead of --num_layers; 0 = paper sizing");
-DEFINE_int32(min_points_per_cell, mlndt::LayeredGridOptions().min_points_per_cell,
-             "--layers: a cell keeps a distribution when it holds at least this many points");
+DEFINE_int32(min_points_per_cell,
+             mlndt::LayeredGridOptions().min_points_per_cell,
+             "--layers: a cell keeps a distribution when it holds at least "
+             "this many points");
 
 namespace mlndt {
 namespace {
@@ -52,13 +61,14 @@ bool IsDefault(const char* flag) {
 
 // Map options from the flags; false with *error for contradictory flags.
 bool GridOptionsFromFlags(LayeredGridOptions* options, std::string* error) {
-  const bool grid_flags_given = !IsDefault("num_layers") || !IsDefault("division_constant") ||
-                                !IsDefault("finest_cell_size") ||
-                                !IsDefault("min_points_per_cell");
+  const bool grid_flags_given =
+      !IsDefault("num_layers") || !IsDefault("division_constant") ||
+      !IsDefault("finest_cell_size") || !IsDefault("min_points_per_cell");
   if (!FLAGS_layers) {
     if (grid_flags_given) {
       *error =
-          "--num_layers, --division_constant, --finest_cell_size and --min_points_per_cell "
+          "--num_layers, --division_constant, --finest_cell_size and "
+          "--min_points_per_cell "
           "need --layers";
       return false;
     }
@@ -91,10 +101,13 @@ std::string LayersJson(const LayeredGrid& grid) {
     tools::JsonObject layer;
     layer.AddNumber("layer", info.layer)
         .AddNumber("cell_size_m", info.cell_size_m)
-        .Add("dims", tools::JsonArray(std::vector<int>{info.dims.x(), info.dims.y(), info.dims.z()}))
+        .Add("dims",
+             tools::JsonArray(
+                 std::vector<int>{info.dims.x(), info.dims.y(), info.dims.z()}))
         .AddNumber("occupied_cells", static_cast<double>(info.occupied_cells))
         .AddNumber("sparse_cells", static_cast<double>(info.sparse_cells))
-        .AddNumber("degenerate_cells", static_cast<double>(info.degenerate_cells));
+        .AddNumber("degenerate_cells",
+                   static_cast<double>(info.degenerate_cells));
     out += (first ? "" : ", ") + layer.str();
     first = false;
   }
@@ -103,13 +116,15 @@ std::string LayersJson(const LayeredGrid& grid) {
 
 // Prints the JSON line of one file. Returns false (after reporting on stderr)
 // when the file cannot be read or its map cannot be built.
-bool DescribeFile(const std::string& path, const LayeredGridOptions& grid_options) {
+bool DescribeFile(const std::string& path,
+                  const LayeredGridOptions& grid_options) {
   PointCloud cloud;
   ReadCloudInfo info;
   std::string error;
   if (!ReadPointCloud(path, &cloud, &info, &error)) {
     // ReadPointCloud's messages start with the path; make sure it is named.
-    PrintError(error.find(path) == std::string::npos ? path + ": " + error : error);
+    PrintError(error.find(path) == std::string::npos ? path + ": " + error
+                                                     : error);
     return false;
   }
 
@@ -118,7 +133,8 @@ bool DescribeFile(const std::string& path, const LayeredGridOptions& grid_option
   json.AddString("file", path)
       .AddString("format", CloudFormatToString(info.format))
       .AddNumber("points", static_cast<double>(cloud.size()))
-      .AddNumber("dropped_non_finite", static_cast<double>(info.dropped_non_finite))
+      .AddNumber("dropped_non_finite",
+                 static_cast<double>(info.dropped_non_finite))
       // An empty cloud has no bounding box.
       .Add("min", cloud.empty() ? "null" : PointJson(box.min()))
       .Add("max", cloud.empty() ? "null" : PointJson(box.max()));
@@ -157,14 +173,17 @@ int Run(const std::vector<std::string>& files) {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
-      "Prints one JSON line per point-cloud file: format, point count, bounding box and, with "
+      "Prints one JSON line per point-cloud file: format, point count, "
+      "bounding box and, with "
       "--layers, the layers of its ML-NDT map.\n"
-      "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]] FILE...");
+      "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]] "
+      "FILE...");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;
   if (argc < 2) {
-    std::cerr << "mlndt_info: no input files\n" << gflags::ProgramUsage() << "\n";
+    std::cerr << "mlndt_info: no input files\n"
+              << gflags::ProgramUsage() << "\n";
     return 1;
   }
   return mlndt::Run(std::vector<std::string>(argv + 1, argv + argc));

@@ -2,7 +2,8 @@
 // and reports accuracy and timing per pair and in total.
 //
 //   mlndt_pairs --scans=DIR --gt_poses=poses.txt [--gaps=1,2,3,5]
-//               [--perturbations="5,0,0,0,0,0;0,0,0,0,0,30"] [--output_csv=FILE]
+//               [--perturbations="5,0,0,0,0,0;0,0,0,0,0,30"]
+//               [--output_csv=FILE]
 //
 // Scan j is registered onto scan i = j - gap. Poses are KITTI 12-number lines
 // in the scans' own (sensor) frame, one per scan in file-name order. The
@@ -11,15 +12,15 @@
 // pushed off by it in the reference frame. Success: translation error below
 // --max_translation_error and rotation error below --max_rotation_error.
 
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
-
-#include <gflags/gflags.h>
-#include <glog/logging.h>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
@@ -28,10 +29,14 @@
 #include "tools/common/tool_utils.h"
 
 DEFINE_string(scans, "", "Folder of scans (sorted by file name)");
-DEFINE_string(gt_poses, "", "KITTI-format poses of the scans, in the scans' frame");
+DEFINE_string(gt_poses,
+              "",
+              "KITTI-format poses of the scans, in the scans' frame");
 DEFINE_string(gaps, "1", "Comma-separated frame gaps: scan i+gap onto scan i");
-DEFINE_string(perturbations, "",
-              "';'-separated tx,ty,tz,alpha,beta,gamma offsets [m, deg] from the ground truth; "
+DEFINE_string(perturbations,
+              "",
+              "';'-separated tx,ty,tz,alpha,beta,gamma offsets [m, deg] from "
+              "the ground truth; "
               "empty = start from the identity");
 DEFINE_double(max_translation_error, 0.2, "Success threshold [m]");
 DEFINE_double(max_rotation_error, 1.0, "Success threshold [deg]");
@@ -52,17 +57,21 @@ double Median(std::vector<double> v) {
 }
 
 int Run() {
-  if (FLAGS_scans.empty() || FLAGS_gt_poses.empty()) return Fail("--scans and --gt_poses are required");
+  if (FLAGS_scans.empty() || FLAGS_gt_poses.empty())
+    return Fail("--scans and --gt_poses are required");
   RegistrationOptions options;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error)) return Fail(error);
+  if (!tools::RegistrationOptionsFromFlags(&options, &error))
+    return Fail(error);
 
   std::vector<std::string> paths;
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(FLAGS_scans, ec)) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(FLAGS_scans, ec)) {
     CloudFormat format;
     std::string ignored;
-    if (entry.is_regular_file() && CloudFormatFromPath(entry.path().string(), &format, &ignored)) {
+    if (entry.is_regular_file() &&
+        CloudFormatFromPath(entry.path().string(), &format, &ignored)) {
       paths.push_back(entry.path().string());
     }
   }
@@ -71,11 +80,12 @@ int Run() {
   std::vector<Isometry3d> poses;
   if (!ReadKittiPoses(FLAGS_gt_poses, &poses, &error)) return Fail(error);
   if (poses.size() < paths.size()) {
-    return Fail(FLAGS_gt_poses + " has " + std::to_string(poses.size()) + " poses for " +
-                std::to_string(paths.size()) + " scans");
+    return Fail(FLAGS_gt_poses + " has " + std::to_string(poses.size()) +
+                " poses for " + std::to_string(paths.size()) + " scans");
   }
   std::vector<double> gaps;
-  if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty()) return Fail("bad --gaps");
+  if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty())
+    return Fail("bad --gaps");
   std::vector<Vector6d> perturbations;
   std::stringstream list(FLAGS_perturbations);
   std::string item;
@@ -84,29 +94,40 @@ int Run() {
     if (!tools::ParseNumberList(item, &v) || v.size() != 6) {
       return Fail("bad --perturbations item '" + item + "': 6 numbers needed");
     }
-    perturbations.push_back(PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]));
+    perturbations.push_back(
+        PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]));
   }
 
   std::vector<PointCloud> scans(paths.size());
   for (size_t i = 0; i < paths.size(); ++i) {
-    if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error)) return Fail(error);
-
+    if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
+      return Fail(error);
   }
   std::ofstream csv;
   if (!FLAGS_output_csv.empty()) {
     csv.open(FLAGS_output_csv);
-    csv << "reference,input,gap,perturbation,translation_error_m,rotation_error_deg,success,"
+    csv << "reference,input,gap,perturbation,translation_error_m,rotation_"
+           "error_deg,success,"
            "termination,iterations,time_ms\n";
   }
-  std::printf("%-4s %-4s %-3s %-24s %10s %10s %4s %5s %8s\n", "ref", "in", "gap", "init",
-              "err_t[m]", "err_r[deg]", "ok", "iters", "time[ms]");
+  std::printf("%-4s %-4s %-3s %-24s %10s %10s %4s %5s %8s\n",
+              "ref",
+              "in",
+              "gap",
+              "init",
+              "err_t[m]",
+              "err_r[deg]",
+              "ok",
+              "iters",
+              "time[ms]");
   int total = 0, successes = 0;
   std::vector<double> times;
   for (double gap_value : gaps) {
     const size_t gap = static_cast<size_t>(gap_value);
     for (size_t i = 0; i + gap < scans.size(); ++i) {
       const size_t j = i + gap;
-      const Isometry3d truth = poses[i].inverse() * poses[j];  // reference_from_input.
+      const Isometry3d truth =
+          poses[i].inverse() * poses[j];  // reference_from_input.
       const size_t runs = std::max<size_t>(1, perturbations.size());
       for (size_t k = 0; k < runs; ++k) {
         Isometry3d initial = Isometry3d::Identity();
@@ -115,32 +136,48 @@ int Run() {
           initial = PoseVectorToIsometry(perturbations[k]) * truth;
           std::ostringstream l;
           const Vector6d& p = perturbations[k];
-          l << "gt+(" << p(0) << "," << p(1) << "," << p(2) << "," << p(3) * kRadToDeg << ","
-            << p(4) * kRadToDeg << "," << p(5) * kRadToDeg << ")";
+          l << "gt+(" << p(0) << "," << p(1) << "," << p(2) << ","
+            << p(3) * kRadToDeg << "," << p(4) * kRadToDeg << ","
+            << p(5) * kRadToDeg << ")";
           label = l.str();
         }
         RegistrationSummary summary;
         Register(options, scans[i], scans[j], initial, &summary);
-        const double et = TranslationErrorM(truth, summary.reference_from_input);
-        const double er = RotationErrorRad(truth, summary.reference_from_input) * kRadToDeg;
-        const bool ok = summary.IsSolutionUsable() && et < FLAGS_max_translation_error &&
+        const double et =
+            TranslationErrorM(truth, summary.reference_from_input);
+        const double er =
+            RotationErrorRad(truth, summary.reference_from_input) * kRadToDeg;
+        const bool ok = summary.IsSolutionUsable() &&
+                        et < FLAGS_max_translation_error &&
                         er < FLAGS_max_rotation_error;
         ++total;
         successes += ok;
         times.push_back(summary.total_time_s * 1e3);
-        std::printf("%-4zu %-4zu %-3zu %-24s %10.4f %10.4f %4s %5d %8.1f\n", i, j, gap,
-                    label.c_str(), et, er, ok ? "yes" : "NO", summary.num_iterations,
+        std::printf("%-4zu %-4zu %-3zu %-24s %10.4f %10.4f %4s %5d %8.1f\n",
+                    i,
+                    j,
+                    gap,
+                    label.c_str(),
+                    et,
+                    er,
+                    ok ? "yes" : "NO",
+                    summary.num_iterations,
                     summary.total_time_s * 1e3);
         if (csv.is_open()) {
-          csv << i << "," << j << "," << gap << ",\"" << label << "\"," << et << "," << er << ","
-              << ok << "," << TerminationTypeToString(summary.termination_type) << ","
-              << summary.num_iterations << "," << summary.total_time_s * 1e3 << "\n";
+          csv << i << "," << j << "," << gap << ",\"" << label << "\"," << et
+              << "," << er << "," << ok << ","
+              << TerminationTypeToString(summary.termination_type) << ","
+              << summary.num_iterations << "," << summary.total_time_s * 1e3
+              << "\n";
         }
       }
     }
   }
-  std::printf("success: %d / %d (%.1f %%), median time %.1f ms\n", successes, total,
-              100.0 * successes / std::max(1, total), Median(times));
+  std::printf("success: %d / %d (%.1f %%), median time %.1f ms\n",
+              successes,
+              total,
+              100.0 * successes / std::max(1, total),
+              Median(times));
   return 0;
 }
 
@@ -148,7 +185,8 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage("Registers scan pairs with ground truth and reports success rates.");
+  gflags::SetUsageMessage(
+      "Registers scan pairs with ground truth and reports success rates.");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;

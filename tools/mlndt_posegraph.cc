@@ -3,7 +3,8 @@
 // pair residuals (the embedding API, mlndt/cost/add_pair_residuals.h).
 //
 //   mlndt_posegraph --scans=DIR [--gt_poses=poses.txt] [--neighbors=2]
-//                   [--output_dir=DIR] [--output_json=FILE] [registration flags]
+//                   [--output_dir=DIR] [--output_json=FILE] [registration
+//                   flags]
 //
 // (a) Chained: scan i+1 is registered onto scan i with mlndt::Register, the
 //     previous relative estimate as the initial guess; world_from_scan poses
@@ -27,6 +28,10 @@
 //   rpe_{chained,joint}: mean over consecutive scans of the relative pose
 //       error gt_{k,k+1}^-1 est_{k,k+1}: {"translation_m", "rotation_deg"}.
 
+#include <ceres/ceres.h>
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -34,10 +39,6 @@
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <ceres/ceres.h>
-#include <gflags/gflags.h>
-#include <glog/logging.h>
 
 #include "mlndt/cloud/cloud_format.h"
 #include "mlndt/cloud/io.h"
@@ -86,19 +87,24 @@ struct PoseBlocks {
   }
   Isometry3d ToIsometry() const {
     Isometry3d out = Isometry3d::Identity();
-    out.linear() = Eigen::Map<const Eigen::Quaterniond>(rotation).normalized().toRotationMatrix();
+    out.linear() = Eigen::Map<const Eigen::Quaterniond>(rotation)
+                       .normalized()
+                       .toRotationMatrix();
     out.translation() = Eigen::Map<const Vector3d>(translation);
     return out;
   }
 };
 
 // Cloud files of a folder, sorted by name.
-bool ListScans(const std::string& folder, std::vector<std::string>* paths, std::string* error) {
+bool ListScans(const std::string& folder,
+               std::vector<std::string>* paths,
+               std::string* error) {
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
     CloudFormat format;
     std::string ignored;
-    if (entry.is_regular_file() && CloudFormatFromPath(entry.path().string(), &format, &ignored)) {
+    if (entry.is_regular_file() &&
+        CloudFormatFromPath(entry.path().string(), &format, &ignored)) {
       paths->push_back(entry.path().string());
     }
   }
@@ -126,12 +132,13 @@ void ChooseLinearSolver(ceres::Solver::Options* options) {
 }
 
 struct JointResult {
-  int residual_blocks = 0;  // Of the last stage.
-  int directed_pairs = 0;   // (map of i, points of j) terms.
-  int iterations = 0;       // Over all stages.
+  int residual_blocks = 0;    // Of the last stage.
+  int directed_pairs = 0;     // (map of i, points of j) terms.
+  int iterations = 0;         // Over all stages.
   double initial_cost = 0.0;  // First stage, at the chained poses.
   double final_cost = 0.0;    // Last stage.
-  double chained_cost_last_stage = 0.0;  // Last stage's objective at the chained poses.
+  double chained_cost_last_stage =
+      0.0;  // Last stage's objective at the chained poses.
   std::string termination;
   std::string linear_solver;
 };
@@ -155,9 +162,14 @@ int AddEdges(const std::vector<LayeredGrid>& maps,
     const int layer = std::max(1, map.num_layers() - layer_offset);
     PoseBlocks& pose_i = (*poses)[map_scan];
     PoseBlocks& pose_j = (*poses)[point_scan];
-    AddMlNdtPairResiduals(map.layer(layer), samples[point_scan].points(), residual_options,
-                          pose_i.rotation, pose_i.translation, pose_j.rotation,
-                          pose_j.translation, problem);
+    AddMlNdtPairResiduals(map.layer(layer),
+                          samples[point_scan].points(),
+                          residual_options,
+                          pose_i.rotation,
+                          pose_i.translation,
+                          pose_j.rotation,
+                          pose_j.translation,
+                          problem);
     ++directed_pairs;
   };
   for (int i = 0; i < n; ++i) {
@@ -166,19 +178,22 @@ int AddEdges(const std::vector<LayeredGrid>& maps,
       if (!FLAGS_joint_one_way) add(j, i);
     }
   }
-  if (residual_options.loss_function != nullptr && problem->NumResidualBlocks() == 0) {
+  if (residual_options.loss_function != nullptr &&
+      problem->NumResidualBlocks() == 0) {
     delete residual_options.loss_function;
   }
   return directed_pairs;
 }
 
 // Sum of the stage's cost at the given poses (the Problem's own objective).
-double CostAt(ceres::Problem* problem, std::vector<PoseBlocks>* poses,
+double CostAt(ceres::Problem* problem,
+              std::vector<PoseBlocks>* poses,
               const std::vector<PoseBlocks>& at) {
   const std::vector<PoseBlocks> saved = *poses;
   *poses = at;
   double cost = 0.0;
-  problem->Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
+  problem->Evaluate(
+      ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr);
   *poses = saved;
   return cost;
 }
@@ -191,7 +206,8 @@ JointResult SolveJointly(const std::vector<LayeredGrid>& maps,
   const std::vector<PoseBlocks> chained = *poses;
   for (int offset = FLAGS_joint_layers - 1; offset >= 0; --offset) {
     ceres::Problem problem;
-    result.directed_pairs = AddEdges(maps, samples, options, offset, poses, &problem);
+    result.directed_pairs =
+        AddEdges(maps, samples, options, offset, poses, &problem);
     problem.SetParameterBlockConstant((*poses)[0].rotation);
     problem.SetParameterBlockConstant((*poses)[0].translation);
     ceres::Solver::Options solver_options;
@@ -200,14 +216,19 @@ JointResult SolveJointly(const std::vector<LayeredGrid>& maps,
     solver_options.num_threads = options.num_threads;
     ceres::Solver::Summary summary;
     ceres::Solve(solver_options, &problem, &summary);
-    LOG(INFO) << "joint stage, layer n-" << offset << ": " << summary.BriefReport();
-    if (offset == FLAGS_joint_layers - 1) result.initial_cost = summary.initial_cost;
+    LOG(INFO) << "joint stage, layer n-" << offset << ": "
+              << summary.BriefReport();
+    if (offset == FLAGS_joint_layers - 1)
+      result.initial_cost = summary.initial_cost;
     result.final_cost = summary.final_cost;
     result.iterations += static_cast<int>(summary.iterations.size()) - 1;
     result.residual_blocks = problem.NumResidualBlocks();
-    result.termination = ceres::TerminationTypeToString(summary.termination_type);
-    result.linear_solver = ceres::LinearSolverTypeToString(summary.linear_solver_type_used);
-    if (offset == 0) result.chained_cost_last_stage = CostAt(&problem, poses, chained);
+    result.termination =
+        ceres::TerminationTypeToString(summary.termination_type);
+    result.linear_solver =
+        ceres::LinearSolverTypeToString(summary.linear_solver_type_used);
+    if (offset == 0)
+      result.chained_cost_last_stage = CostAt(&problem, poses, chained);
   }
   return result;
 }
@@ -218,21 +239,28 @@ struct Metrics {
   double rpe_rotation_deg = 0.0;
 };
 
-Metrics Evaluate(const std::vector<Isometry3d>& estimate, const std::vector<Isometry3d>& truth) {
+Metrics Evaluate(const std::vector<Isometry3d>& estimate,
+                 const std::vector<Isometry3d>& truth) {
   Metrics metrics;
   const Isometry3d align = truth[0] * estimate[0].inverse();
   double sum_squares = 0.0;
   for (size_t k = 0; k < estimate.size(); ++k) {
-    sum_squares += (truth[k].translation() - (align * estimate[k]).translation()).squaredNorm();
+    sum_squares +=
+        (truth[k].translation() - (align * estimate[k]).translation())
+            .squaredNorm();
   }
   metrics.ate_m = std::sqrt(sum_squares / static_cast<double>(estimate.size()));
   for (size_t k = 0; k + 1 < estimate.size(); ++k) {
-    const Isometry3d relative_estimate = estimate[k].inverse() * estimate[k + 1];
+    const Isometry3d relative_estimate =
+        estimate[k].inverse() * estimate[k + 1];
     const Isometry3d relative_truth = truth[k].inverse() * truth[k + 1];
-    metrics.rpe_translation_m += TranslationErrorM(relative_truth, relative_estimate);
-    metrics.rpe_rotation_deg += RotationErrorRad(relative_truth, relative_estimate) * kRadToDeg;
+    metrics.rpe_translation_m +=
+        TranslationErrorM(relative_truth, relative_estimate);
+    metrics.rpe_rotation_deg +=
+        RotationErrorRad(relative_truth, relative_estimate) * kRadToDeg;
   }
-  const double steps = static_cast<double>(std::max<size_t>(1, estimate.size() - 1));
+  const double steps =
+      static_cast<double>(std::max<size_t>(1, estimate.size() - 1));
   metrics.rpe_translation_m /= steps;
   metrics.rpe_rotation_deg /= steps;
   return metrics;
@@ -248,13 +276,17 @@ std::string RpeJson(const Metrics& metrics) {
 int Run() {
   if (FLAGS_scans.empty()) return Fail("--scans is required");
   if (FLAGS_neighbors < 1) return Fail("--neighbors must be >= 1");
-  if (FLAGS_joint_layers < 1 || FLAGS_joint_layers > 2) return Fail("--joint_layers: 1 or 2");
-  if (FLAGS_joint_max_iterations < 1) return Fail("--joint_max_iterations must be >= 1");
+  if (FLAGS_joint_layers < 1 || FLAGS_joint_layers > 2)
+    return Fail("--joint_layers: 1 or 2");
+  if (FLAGS_joint_max_iterations < 1)
+    return Fail("--joint_max_iterations must be >= 1");
   RegistrationOptions options;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error)) return Fail(error);
+  if (!tools::RegistrationOptionsFromFlags(&options, &error))
+    return Fail(error);
   if (options.method != Method::MLNDT) {
-    return Fail("--method=" + FLAGS_method + ": the joint problem is built from ML-NDT residuals");
+    return Fail("--method=" + FLAGS_method +
+                ": the joint problem is built from ML-NDT residuals");
   }
 
   std::vector<std::string> paths;
@@ -264,8 +296,8 @@ int Run() {
   if (!FLAGS_gt_poses.empty()) {
     if (!ReadKittiPoses(FLAGS_gt_poses, &truth, &error)) return Fail(error);
     if (truth.size() < paths.size()) {
-      return Fail(FLAGS_gt_poses + " has " + std::to_string(truth.size()) + " poses for " +
-                  std::to_string(paths.size()) + " scans");
+      return Fail(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
+                  " poses for " + std::to_string(paths.size()) + " scans");
     }
     truth.resize(paths.size());
   }
@@ -276,11 +308,13 @@ int Run() {
   std::vector<PointCloud> scans(n), samples(n);
   std::vector<LayeredGrid> maps(n);
   for (size_t i = 0; i < n; ++i) {
-    if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error)) return Fail(error);
+    if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
+      return Fail(error);
     if (!LayeredGrid::Build(options.grid, scans[i], &maps[i], &error)) {
       return Fail(paths[i] + ": map: " + error);
     }
-    if (!SamplePoints(options.sampling, scans[i], &samples[i], nullptr, &error)) {
+    if (!SamplePoints(
+            options.sampling, scans[i], &samples[i], nullptr, &error)) {
       return Fail(paths[i] + ": sampling: " + error);
     }
   }
@@ -297,18 +331,21 @@ int Run() {
       relative = summary.reference_from_input;
     } else {
       ++chained_failures;
-      LOG(WARNING) << "scan " << i + 1 << " onto " << i << ": " << summary.message
-                   << "; keeping the previous relative pose";
+      LOG(WARNING) << "scan " << i + 1 << " onto " << i << ": "
+                   << summary.message << "; keeping the previous relative pose";
     }
     chained[i + 1] = chained[i] * relative;
-    LOG(INFO) << "scan " << i + 1 << " onto " << i << ": " << summary.BriefReport();
+    LOG(INFO) << "scan " << i + 1 << " onto " << i << ": "
+              << summary.BriefReport();
   }
   const double chained_done = NowSeconds();
 
   // (b) Joint refinement from the chained poses.
   std::vector<PoseBlocks> blocks;
-  for (const Isometry3d& pose : chained) blocks.push_back(PoseBlocks::From(pose));
-  const JointResult joint_result = SolveJointly(maps, samples, options, &blocks);
+  for (const Isometry3d& pose : chained)
+    blocks.push_back(PoseBlocks::From(pose));
+  const JointResult joint_result =
+      SolveJointly(maps, samples, options, &blocks);
   std::vector<Isometry3d> joint;
   for (const PoseBlocks& b : blocks) joint.push_back(b.ToIsometry());
   const double joint_done = NowSeconds();
@@ -366,7 +403,8 @@ int Run() {
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "Chained ML-NDT odometry and a joint refinement of all scan poses.\n"
-      "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] [--output_dir=DIR]");
+      "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
+      "[--output_dir=DIR]");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   FLAGS_logtostderr = true;

@@ -3,7 +3,8 @@
 // time ∝ N^slope per stage.
 //
 //   mlndt_scaling [--scans=DIR --poses=FILE] [--sizes=10000,30000,...]
-//                 [--repetitions=3] [--output_dir=OUT] [any mlndt_align registration flag]
+//                 [--repetitions=3] [--output_dir=OUT] [any mlndt_align
+//                 registration flag]
 //
 // Data: every scan in --scans (sorted by file name) is moved into the first
 // scan's frame with its ground-truth pose (P_0^-1 P_i, KITTI lines
@@ -100,22 +101,27 @@ int Fail(const std::string& message) {
 }
 
 // Parses --sizes: strictly increasing positive integers.
-bool ParseSizes(const std::string& text, std::vector<size_t>* sizes, std::string* error) {
+bool ParseSizes(const std::string& text,
+                std::vector<size_t>* sizes,
+                std::string* error) {
   std::vector<double> values;
   if (!tools::ParseNumberList(text, &values) || values.empty()) {
-    *error = "--sizes=" + text + ": expected comma-separated positive integers, e.g. 10000,30000";
+    *error = "--sizes=" + text +
+             ": expected comma-separated positive integers, e.g. 10000,30000";
     return false;
   }
   sizes->clear();
   for (double v : values) {
     if (!(v >= 1) || v != std::floor(v) || v > 1e12) {
-      *error = "--sizes=" + text + ": '" + tools::Num(v) + "' is not a positive integer";
+      *error = "--sizes=" + text + ": '" + tools::Num(v) +
+               "' is not a positive integer";
       return false;
     }
     const size_t n = static_cast<size_t>(v);
     if (!sizes->empty() && n <= sizes->back()) {
-      *error = "--sizes=" + text + ": sizes must be strictly increasing (" + std::to_string(n) +
-               " after " + std::to_string(sizes->back()) + ")";
+      *error = "--sizes=" + text + ": sizes must be strictly increasing (" +
+               std::to_string(n) + " after " + std::to_string(sizes->back()) +
+               ")";
       return false;
     }
     sizes->push_back(n);
@@ -125,14 +131,21 @@ bool ParseSizes(const std::string& text, std::vector<size_t>* sizes, std::string
 
 // Reads every scan, moves it into the first scan's frame with the ground
 // truth and appends it to *merged.
-bool LoadMergedCloud(PointCloud* merged, size_t* num_scans, std::string* error) {
+bool LoadMergedCloud(PointCloud* merged,
+                     size_t* num_scans,
+                     std::string* error) {
   std::vector<std::string> paths;
-  if (!tools::ListScanFiles(FLAGS_scans, {FLAGS_poses, FLAGS_calib}, &paths, error)) return false;
+  if (!tools::ListScanFiles(
+          FLAGS_scans, {FLAGS_poses, FLAGS_calib}, &paths, error))
+    return false;
   std::vector<Isometry3d> world_from_scan;
-  if (!tools::ReadSequencePoses(FLAGS_poses, FLAGS_calib, &world_from_scan, error)) return false;
+  if (!tools::ReadSequencePoses(
+          FLAGS_poses, FLAGS_calib, &world_from_scan, error))
+    return false;
   if (world_from_scan.size() < paths.size()) {
-    *error = FLAGS_poses + " has " + std::to_string(world_from_scan.size()) + " poses for " +
-             std::to_string(paths.size()) + " scans in " + FLAGS_scans;
+    *error = FLAGS_poses + " has " + std::to_string(world_from_scan.size()) +
+             " poses for " + std::to_string(paths.size()) + " scans in " +
+             FLAGS_scans;
     return false;
   }
   tools::ScanStore store(paths);
@@ -142,7 +155,8 @@ bool LoadMergedCloud(PointCloud* merged, size_t* num_scans, std::string* error) 
     if (cloud == nullptr) return false;
     const Isometry3d first_from_scan = first_from_world * world_from_scan[i];
     merged->Reserve(merged->size() + cloud->size());
-    for (const Eigen::Vector3d& p : cloud->points()) merged->Add(first_from_scan * p);
+    for (const Eigen::Vector3d& p : cloud->points())
+      merged->Add(first_from_scan * p);
     store.ReleaseBefore(i + 1);
   }
   *num_scans = paths.size();
@@ -152,8 +166,8 @@ bool LoadMergedCloud(PointCloud* merged, size_t* num_scans, std::string* error) 
 // A uniform draw in [0, bound) without modulo bias, written out so that the
 // same seed gives the same subsets on every standard library.
 uint64_t UniformBelow(uint64_t bound, std::mt19937_64* rng) {
-  const uint64_t limit =
-      std::numeric_limits<uint64_t>::max() - std::numeric_limits<uint64_t>::max() % bound;
+  const uint64_t limit = std::numeric_limits<uint64_t>::max() -
+                         std::numeric_limits<uint64_t>::max() % bound;
   uint64_t draw;
   do {
     draw = (*rng)();
@@ -207,8 +221,8 @@ bool MeasureSize(const RegistrationOptions& options,
   // Two independent subsets: seeds differ per size and per role.
   const uint64_t seed = FLAGS_seed * 0x9E3779B97F4A7C15ull + n;
   const PointCloud reference = RandomSubset(merged, n, seed * 2);
-  const PointCloud input =
-      TransformCloud(reference_from_input.inverse(), RandomSubset(merged, n, seed * 2 + 1));
+  const PointCloud input = TransformCloud(
+      reference_from_input.inverse(), RandomSubset(merged, n, seed * 2 + 1));
 
   if (options.method == Method::MLNDT) {
     // Untimed, for the cell count (and a warm-up of the allocator).
@@ -243,7 +257,8 @@ bool MeasureSize(const RegistrationOptions& options,
   result->translation_error_m =
       TranslationErrorM(reference_from_input, summary.reference_from_input);
   result->rotation_error_deg =
-      RotationErrorRad(reference_from_input, summary.reference_from_input) * kRadToDeg;
+      RotationErrorRad(reference_from_input, summary.reference_from_input) *
+      kRadToDeg;
   result->ok = summary.IsSolutionUsable() &&
                result->translation_error_m <= FLAGS_max_translation_error &&
                result->rotation_error_deg <= FLAGS_max_rotation_error;
@@ -273,12 +288,13 @@ double LogLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
 // The quantities whose slopes are reported, by name, one value per size.
 std::vector<std::pair<std::string, std::vector<double>>> Series(
     const std::vector<SizeResult>& results) {
-  std::vector<std::pair<std::string, std::vector<double>>> series = {{"map", {}},
-                                                                     {"sampling", {}},
-                                                                     {"solve", {}},
-                                                                     {"total", {}},
-                                                                     {"sampled points", {}},
-                                                                     {"finest-layer cells", {}}};
+  std::vector<std::pair<std::string, std::vector<double>>> series = {
+      {"map", {}},
+      {"sampling", {}},
+      {"solve", {}},
+      {"total", {}},
+      {"sampled points", {}},
+      {"finest-layer cells", {}}};
   for (const SizeResult& r : results) {
     series[0].second.push_back(r.map_ms);
     series[1].second.push_back(r.sampling_ms);
@@ -290,16 +306,21 @@ std::vector<std::pair<std::string, std::vector<double>>> Series(
   return series;
 }
 
-bool WriteCsv(const std::string& path, const std::vector<SizeResult>& results, std::string* error) {
+bool WriteCsv(const std::string& path,
+              const std::vector<SizeResult>& results,
+              std::string* error) {
   using tools::Num;
   std::ofstream out(path);
-  out << "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_layer_cells,"
-         "num_layers,iterations,termination,translation_error_m,rotation_error_deg,ok\n";
+  out << "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_"
+         "layer_cells,"
+         "num_layers,iterations,termination,translation_error_m,rotation_error_"
+         "deg,ok\n";
   for (const SizeResult& r : results) {
-    out << r.points << "," << Num(r.map_ms) << "," << Num(r.sampling_ms) << "," << Num(r.solve_ms)
-        << "," << Num(r.total_ms) << "," << r.sampled_points << "," << r.finest_cells << ","
-        << r.num_layers << "," << r.iterations << "," << TerminationTypeToString(r.termination)
-        << "," << Num(r.translation_error_m) << "," << Num(r.rotation_error_deg) << ","
+    out << r.points << "," << Num(r.map_ms) << "," << Num(r.sampling_ms) << ","
+        << Num(r.solve_ms) << "," << Num(r.total_ms) << "," << r.sampled_points
+        << "," << r.finest_cells << "," << r.num_layers << "," << r.iterations
+        << "," << TerminationTypeToString(r.termination) << ","
+        << Num(r.translation_error_m) << "," << Num(r.rotation_error_deg) << ","
         << (r.ok ? 1 : 0) << "\n";
   }
   if (!out) {
@@ -320,31 +341,38 @@ bool WritePlot(const std::string& dir,
   const double per_point_ms =
       results.front().total_ms / static_cast<double>(results.front().points);
   std::ostringstream script;
-  script << tools::GnuplotPngHeader(900, 600) << "set output "
-         << tools::GnuplotQuote(dir + "/scaling.png") << "\n"
-         << "set title 'Registration time against cloud size (median of " << FLAGS_repetitions
-         << " runs; " << MethodToString(options.method) << ", "
-         << BackendTypeToString(options.backend) << ", "
-         << SamplingMethodToString(options.sampling.method) << " sampling)'\n"
-         << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-         << "set xlabel 'points N (reference = input size)'\nset ylabel 'time [ms]'\n"
-         << "set key inside top left\nset datafile separator ','\n"
-         << "set xrange [" << tools::Num(results.front().points / 1.5) << ":"
-         << tools::Num(results.back().points * 1.5) << "]\n"
-         << "linear(x) = " << tools::Num(per_point_ms) << " * x\n"
-         << "plot " << csv
-         << " skip 1 using 1:2 with linespoints lw 2 pt 7 title 'map build (slope "
-         << Fmt(slopes[0], 2) << ")', \\\n"
-         << "     '' skip 1 using 1:3 with linespoints lw 2 pt 5 title 'sampling (slope "
-         << Fmt(slopes[1], 2) << ")', \\\n"
-         << "     '' skip 1 using 1:4 with linespoints lw 2 pt 9 title 'solve (slope "
-         << Fmt(slopes[2], 2) << ")', \\\n"
-         << "     '' skip 1 using 1:5 with linespoints lw 2 pt 11 title 'total (slope "
-         << Fmt(slopes[3], 2) << ")', \\\n"
-         << "     [" << tools::Num(static_cast<double>(results.front().points)) << ":"
-         << tools::Num(static_cast<double>(results.back().points))
-         << "] linear(x) with lines dashtype 2 lc rgb 'gray40' lw 1.5 title 'slope 1 (∝ N)'\n";
-  return tools::RunGnuplot(FLAGS_gnuplot, dir + "/scaling.gp", script.str(), error);
+  script
+      << tools::GnuplotPngHeader(900, 600) << "set output "
+      << tools::GnuplotQuote(dir + "/scaling.png") << "\n"
+      << "set title 'Registration time against cloud size (median of "
+      << FLAGS_repetitions << " runs; " << MethodToString(options.method)
+      << ", " << BackendTypeToString(options.backend) << ", "
+      << SamplingMethodToString(options.sampling.method) << " sampling)'\n"
+      << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+      << "set xlabel 'points N (reference = input size)'\nset ylabel 'time "
+         "[ms]'\n"
+      << "set key inside top left\nset datafile separator ','\n"
+      << "set xrange [" << tools::Num(results.front().points / 1.5) << ":"
+      << tools::Num(results.back().points * 1.5) << "]\n"
+      << "linear(x) = " << tools::Num(per_point_ms) << " * x\n"
+      << "plot " << csv
+      << " skip 1 using 1:2 with linespoints lw 2 pt 7 title 'map build (slope "
+      << Fmt(slopes[0], 2) << ")', \\\n"
+      << "     '' skip 1 using 1:3 with linespoints lw 2 pt 5 title 'sampling "
+         "(slope "
+      << Fmt(slopes[1], 2) << ")', \\\n"
+      << "     '' skip 1 using 1:4 with linespoints lw 2 pt 9 title 'solve "
+         "(slope "
+      << Fmt(slopes[2], 2) << ")', \\\n"
+      << "     '' skip 1 using 1:5 with linespoints lw 2 pt 11 title 'total "
+         "(slope "
+      << Fmt(slopes[3], 2) << ")', \\\n"
+      << "     [" << tools::Num(static_cast<double>(results.front().points))
+      << ":" << tools::Num(static_cast<double>(results.back().points))
+      << "] linear(x) with lines dashtype 2 lc rgb 'gray40' lw 1.5 title "
+         "'slope 1 (∝ N)'\n";
+  return tools::RunGnuplot(
+      FLAGS_gnuplot, dir + "/scaling.gp", script.str(), error);
 }
 
 int Run() {
@@ -352,7 +380,8 @@ int Run() {
   std::string error;
   if (!ParseSizes(FLAGS_sizes, &sizes, &error)) return Fail(error);
   if (FLAGS_repetitions < 1) {
-    return Fail("--repetitions=" + std::to_string(FLAGS_repetitions) + ": must be >= 1");
+    return Fail("--repetitions=" + std::to_string(FLAGS_repetitions) +
+                ": must be >= 1");
   }
   if (!(FLAGS_max_translation_error > 0) || !(FLAGS_max_rotation_error > 0)) {
     return Fail("--max_translation_error and --max_rotation_error must be > 0");
@@ -360,47 +389,59 @@ int Run() {
   std::vector<double> motion;
   if (!tools::ParseNumberList(FLAGS_motion, &motion) || motion.size() != 6) {
     return Fail("--motion=" + FLAGS_motion +
-                ": expected 6 comma-separated numbers tx,ty,tz [m],alpha,beta,gamma [deg]");
+                ": expected 6 comma-separated numbers tx,ty,tz "
+                "[m],alpha,beta,gamma [deg]");
   }
-  const Isometry3d reference_from_input = PoseVectorToIsometry(
-      PoseVectorFromDegrees(motion[0], motion[1], motion[2], motion[3], motion[4], motion[5]));
+  const Isometry3d reference_from_input =
+      PoseVectorToIsometry(PoseVectorFromDegrees(
+          motion[0], motion[1], motion[2], motion[3], motion[4], motion[5]));
   RegistrationOptions options;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error)) return Fail(error);
+  if (!tools::RegistrationOptionsFromFlags(&options, &error))
+    return Fail(error);
   if (!FLAGS_output_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(FLAGS_output_dir, ec);
     if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
   }
-  const bool gnuplot_ok = FLAGS_output_dir.empty() || tools::GnuplotAvailable(FLAGS_gnuplot);
+  const bool gnuplot_ok =
+      FLAGS_output_dir.empty() || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {
-    std::cerr << "mlndt_scaling: gnuplot ('" << FLAGS_gnuplot
-              << "') not found: scaling.png will be skipped (install gnuplot-nox)\n";
+    std::cerr
+        << "mlndt_scaling: gnuplot ('" << FLAGS_gnuplot
+        << "') not found: scaling.png will be skipped (install gnuplot-nox)\n";
   }
 
   PointCloud merged;
   size_t num_scans = 0;
   if (!LoadMergedCloud(&merged, &num_scans, &error)) return Fail(error);
   if (sizes.back() > merged.size()) {
-    return Fail("--sizes: " + std::to_string(sizes.back()) + " points requested, but the " +
-                std::to_string(num_scans) + " scans of " + FLAGS_scans + " merge into only " +
+    return Fail("--sizes: " + std::to_string(sizes.back()) +
+                " points requested, but the " + std::to_string(num_scans) +
+                " scans of " + FLAGS_scans + " merge into only " +
                 std::to_string(merged.size()) + " points");
   }
 
   tools::Progress progress("mlndt_scaling", sizes.size());
   std::vector<SizeResult> results(sizes.size());
   for (size_t k = 0; k < sizes.size(); ++k) {
-    if (!MeasureSize(options, merged, sizes[k], reference_from_input, &results[k], &error)) {
+    if (!MeasureSize(options,
+                     merged,
+                     sizes[k],
+                     reference_from_input,
+                     &results[k],
+                     &error)) {
       progress.Finish();
       return Fail(error);
     }
-    progress.Update(
-        k + 1,
-        "N = " + std::to_string(sizes[k]) + ", total " + Fmt(results[k].total_ms, 1) + " ms");
+    progress.Update(k + 1,
+                    "N = " + std::to_string(sizes[k]) + ", total " +
+                        Fmt(results[k].total_ms, 1) + " ms");
   }
   progress.Finish();
 
   std::printf(
-      "merged cloud: %zu points from %zu scans (%s); %s, backend %s, sampling %s, "
+      "merged cloud: %zu points from %zu scans (%s); %s, backend %s, sampling "
+      "%s, "
       "threads %d; motion %s; median of %d runs\n\n",
       merged.size(),
       num_scans,
@@ -412,7 +453,8 @@ int Run() {
       FLAGS_motion.c_str(),
       FLAGS_repetitions);
   std::printf(
-      "| points | map ms | sampling ms | solve ms | total ms | sampled | finest-layer "
+      "| points | map ms | sampling ms | solve ms | total ms | sampled | "
+      "finest-layer "
       "cells | layers | iterations | t error cm | r error deg | solve |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
   bool all_ok = true;
@@ -430,18 +472,22 @@ int Run() {
         r.iterations,
         Fmt(r.translation_error_m * 100.0, 2).c_str(),
         Fmt(r.rotation_error_deg, 3).c_str(),
-        r.ok ? "ok" : (r.termination == TerminationType::FAILURE ? "FAILED" : "LARGE ERROR"));
+        r.ok ? "ok"
+             : (r.termination == TerminationType::FAILURE ? "FAILED"
+                                                          : "LARGE ERROR"));
     all_ok = all_ok && r.ok;
   }
-  std::printf("\nlog-log slope over N = %zu..%zu (time ∝ N^slope; 1 = linear):\n",
-              sizes.front(),
-              sizes.back());
+  std::printf(
+      "\nlog-log slope over N = %zu..%zu (time ∝ N^slope; 1 = linear):\n",
+      sizes.front(),
+      sizes.back());
   std::vector<double> x;
   for (size_t n : sizes) x.push_back(static_cast<double>(n));
   std::vector<double> slopes;
   for (const auto& [name, values] : Series(results)) {
     slopes.push_back(LogLogSlope(x, values));
-    std::printf("  %-19s %s\n", (name + ":").c_str(), Fmt(slopes.back(), 2).c_str());
+    std::printf(
+        "  %-19s %s\n", (name + ":").c_str(), Fmt(slopes.back(), 2).c_str());
   }
   // The solve's cost per residual: its time against the sampled points.
   std::vector<double> sampled, solve_ms;
@@ -470,10 +516,13 @@ int Run() {
       std::cerr << "mlndt_scaling: N = " << r.points << ": "
                 << (r.termination == TerminationType::FAILURE
                         ? "registration FAILED: " + r.message
-                        : "recovered motion off by " + Fmt(r.translation_error_m * 100.0, 2) +
-                              " cm, " + Fmt(r.rotation_error_deg, 3) + " deg (tolerance " +
-                              Fmt(FLAGS_max_translation_error * 100.0, 1) + " cm, " +
-                              Fmt(FLAGS_max_rotation_error, 2) + " deg)")
+                        : "recovered motion off by " +
+                              Fmt(r.translation_error_m * 100.0, 2) + " cm, " +
+                              Fmt(r.rotation_error_deg, 3) +
+                              " deg (tolerance " +
+                              Fmt(FLAGS_max_translation_error * 100.0, 1) +
+                              " cm, " + Fmt(FLAGS_max_rotation_error, 2) +
+                              " deg)")
                 << std::endl;
     }
     return Fail(
@@ -488,9 +537,11 @@ int Run() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
-      "Times map build, sampling and solve of a registration against the cloud size on real "
+      "Times map build, sampling and solve of a registration against the cloud "
+      "size on real "
       "scans.\n"
-      "  mlndt_scaling [--sizes=10000,30000,100000,300000,990000] [--repetitions=3] "
+      "  mlndt_scaling [--sizes=10000,30000,100000,300000,990000] "
+      "[--repetitions=3] "
       "[--output_dir=OUT]");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);

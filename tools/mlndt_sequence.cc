@@ -2,8 +2,10 @@
 // scan i), chains the estimates into a trajectory and, with ground truth,
 // reports per-pair errors and totals in the layout of the paper's Tables 2-4.
 //
-//   mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=poses.txt [--calib=calib.txt]]
-//                  [--step=1] [--init=zero|gt_fraction:c|constant_velocity|poses:FILE]
+//   mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=poses.txt
+//   [--calib=calib.txt]]
+//                  [--step=1]
+//                  [--init=zero|gt_fraction:c|constant_velocity|poses:FILE]
 //                  [--adaptive_start_layer] [any mlndt_align registration flag]
 //
 // Scans are the point-cloud files in DIR (by extension), sorted by file
@@ -87,18 +89,22 @@ int Fail(const std::string& message) {
   return 1;
 }
 
-bool AdaptiveOptionsFromFlags(tools::AdaptiveStartLayerOptions* adaptive, std::string* error) {
+bool AdaptiveOptionsFromFlags(tools::AdaptiveStartLayerOptions* adaptive,
+                              std::string* error) {
   adaptive->enabled = FLAGS_adaptive_start_layer;
   adaptive->max_translation_m = FLAGS_adaptive_max_translation;
   adaptive->max_rotation_deg = FLAGS_adaptive_max_rotation;
   if (!(adaptive->max_translation_m > 0) || !(adaptive->max_rotation_deg > 0)) {
-    *error = "--adaptive_max_translation and --adaptive_max_rotation must be > 0";
+    *error =
+        "--adaptive_max_translation and --adaptive_max_rotation must be > 0";
     return false;
   }
   std::vector<double> rates;
   if (!tools::ParseNumberList(FLAGS_adaptive_fail_rates, &rates) ||
       !std::is_sorted(rates.begin(), rates.end()) ||
-      std::any_of(rates.begin(), rates.end(), [](double r) { return r < 0 || r > 1; })) {
+      std::any_of(rates.begin(), rates.end(), [](double r) {
+        return r < 0 || r > 1;
+      })) {
     *error = "--adaptive_fail_rates=" + FLAGS_adaptive_fail_rates +
              ": expected ascending numbers in [0, 1], e.g. 0.05,0.2";
     return false;
@@ -117,7 +123,9 @@ std::string CommandLine() {
 
 int Run() {
   if (FLAGS_scans.empty() || FLAGS_output_dir.empty()) {
-    return Fail("Usage: mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] ...");
+    return Fail(
+        "Usage: mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
+        "...");
   }
   if (FLAGS_step < 1) return Fail("--step must be >= 1");
   if (FLAGS_max_scans < 0) return Fail("--max_scans must be >= 0");
@@ -125,24 +133,35 @@ int Run() {
   options.step = static_cast<size_t>(FLAGS_step);
   options.release_used_scans = true;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options.registration, &error)) return Fail(error);
-  if (!tools::ParseInitSpec(FLAGS_init, &options.init, &error)) return Fail(error);
+  if (!tools::RegistrationOptionsFromFlags(&options.registration, &error))
+    return Fail(error);
+  if (!tools::ParseInitSpec(FLAGS_init, &options.init, &error))
+    return Fail(error);
   if (!AdaptiveOptionsFromFlags(&options.adaptive, &error)) return Fail(error);
-  if (options.adaptive.enabled && options.registration.method != Method::MLNDT) {
-    return Fail("--adaptive_start_layer needs --method=mlndt (NDT has one layer)");
+  if (options.adaptive.enabled &&
+      options.registration.method != Method::MLNDT) {
+    return Fail(
+        "--adaptive_start_layer needs --method=mlndt (NDT has one layer)");
   }
-  if (FLAGS_trace_plot_pairs < 0) return Fail("--trace_plot_pairs must be >= 0");
+  if (FLAGS_trace_plot_pairs < 0)
+    return Fail("--trace_plot_pairs must be >= 0");
   if (!FLAGS_calib.empty() && FLAGS_gt_poses.empty() &&
       options.init.mode != tools::InitMode::POSES) {
-    return Fail("--calib converts pose files; give --gt_poses or --init=poses:FILE with it");
+    return Fail(
+        "--calib converts pose files; give --gt_poses or --init=poses:FILE "
+        "with it");
   }
 
   std::vector<std::string> paths;
   if (!tools::ListScanFiles(
-          FLAGS_scans, {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path}, &paths, &error)) {
+          FLAGS_scans,
+          {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path},
+          &paths,
+          &error)) {
     return Fail(error);
   }
-  if (FLAGS_max_scans > 0 && paths.size() > static_cast<size_t>(FLAGS_max_scans)) {
+  if (FLAGS_max_scans > 0 &&
+      paths.size() > static_cast<size_t>(FLAGS_max_scans)) {
     paths.resize(static_cast<size_t>(FLAGS_max_scans));
   }
   if (paths.size() <= options.step) {
@@ -155,28 +174,32 @@ int Run() {
     return Fail(error);
   }
   if (!truth.empty() && truth.size() < paths.size()) {
-    return Fail(FLAGS_gt_poses + " has " + std::to_string(truth.size()) + " poses for " +
-                std::to_string(paths.size()) + " scans");
+    return Fail(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
+                " poses for " + std::to_string(paths.size()) + " scans");
   }
   if (options.init.mode == tools::InitMode::GT_FRACTION && truth.empty()) {
     return Fail("--init=gt_fraction:c needs --gt_poses");
   }
   if (options.init.mode == tools::InitMode::POSES) {
-    if (!tools::ReadSequencePoses(options.init.poses_path, FLAGS_calib, &odometry, &error)) {
+    if (!tools::ReadSequencePoses(
+            options.init.poses_path, FLAGS_calib, &odometry, &error)) {
       return Fail(error);
     }
     if (odometry.size() < paths.size()) {
-      return Fail(options.init.poses_path + " has " + std::to_string(odometry.size()) +
-                  " poses for " + std::to_string(paths.size()) + " scans");
+      return Fail(options.init.poses_path + " has " +
+                  std::to_string(odometry.size()) + " poses for " +
+                  std::to_string(paths.size()) + " scans");
     }
   }
   std::error_code ec;
   std::filesystem::create_directories(FLAGS_output_dir, ec);
   if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
-  const bool gnuplot_ok = !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
+  const bool gnuplot_ok =
+      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {
     std::cerr << "mlndt_sequence: gnuplot ('" << FLAGS_gnuplot
-              << "') not found: plots will be skipped (install gnuplot-nox, e.g. with "
+              << "') not found: plots will be skipped (install gnuplot-nox, "
+                 "e.g. with "
                  "scripts/install_deps.sh, or pass --plots=false)\n";
   }
 
@@ -216,8 +239,10 @@ int Run() {
   progress.Finish();
 
   const std::string out = FLAGS_output_dir + "/";
-  if (!tools::WritePairsCsv(out + "pairs.csv", store, results, &error)) return Fail(error);
-  if (!tools::WriteTraceCsv(out + "trace.csv", results, &error)) return Fail(error);
+  if (!tools::WritePairsCsv(out + "pairs.csv", store, results, &error))
+    return Fail(error);
+  if (!tools::WriteTraceCsv(out + "trace.csv", results, &error))
+    return Fail(error);
   tools::JsonObject header;
   header.AddString("tool", "mlndt_sequence")
       .AddString("command", CommandLine())
@@ -227,7 +252,8 @@ int Run() {
       .AddString("init", tools::InitSpecToString(options.init))
       .AddString("method", MethodToString(options.registration.method))
       .AddString("backend", BackendTypeToString(options.registration.backend))
-      .AddString("sampling", SamplingMethodToString(options.registration.sampling.method))
+      .AddString("sampling",
+                 SamplingMethodToString(options.registration.sampling.method))
       .AddBool("adaptive_start_layer", options.adaptive.enabled);
   if (options.adaptive.enabled) {
     header.Add(
@@ -235,7 +261,8 @@ int Run() {
         tools::JsonObject()
             .AddNumber("max_translation_m", options.adaptive.max_translation_m)
             .AddNumber("max_rotation_deg", options.adaptive.max_rotation_deg)
-            .Add("fail_rate_thresholds", tools::JsonArray(options.adaptive.fail_rate_thresholds))
+            .Add("fail_rate_thresholds",
+                 tools::JsonArray(options.adaptive.fail_rate_thresholds))
             .str());
   } else {
     header.AddNumber("start_layer_flag", FLAGS_start_layer);
@@ -245,13 +272,15 @@ int Run() {
     json << tools::SummaryJson(header, results) << "\n";
     if (!json) return Fail(out + "summary.json: cannot write");
   }
-  if (!WriteKittiPoses(
-          out + "trajectory.txt", tools::ChainTrajectory(results, options.step, false), &error)) {
+  if (!WriteKittiPoses(out + "trajectory.txt",
+                       tools::ChainTrajectory(results, options.step, false),
+                       &error)) {
     return Fail(error);
   }
   if (!truth.empty() &&
-      !WriteKittiPoses(
-          out + "gt_trajectory.txt", tools::ChainTrajectory(results, options.step, true), &error)) {
+      !WriteKittiPoses(out + "gt_trajectory.txt",
+                       tools::ChainTrajectory(results, options.step, true),
+                       &error)) {
     return Fail(error);
   }
 
@@ -263,23 +292,27 @@ int Run() {
               MethodToString(options.registration.method));
   if (t.has_truth) {
     std::printf(
-        "success (< 50 cm): %zu/%zu = %.1f %%, strict (< 20 cm, < 1 deg): %zu/%zu = %.1f %%\n",
+        "success (< 50 cm): %zu/%zu = %.1f %%, strict (< 20 cm, < 1 deg): "
+        "%zu/%zu = %.1f %%\n",
         t.successes,
         t.pairs,
         t.success_rate_percent,
         t.strict_successes,
         t.pairs,
         t.strict_success_rate_percent);
-    std::printf("error |mean| (std, max): t %.2f cm (%.2f, %.2f), r %.3f deg (%.3f, %.3f)\n",
-                t.errors[6].mean,
-                t.errors[6].std,
-                t.errors[6].max,
-                t.errors[7].mean,
-                t.errors[7].std,
-                t.errors[7].max);
+    std::printf(
+        "error |mean| (std, max): t %.2f cm (%.2f, %.2f), r %.3f deg (%.3f, "
+        "%.3f)\n",
+        t.errors[6].mean,
+        t.errors[6].std,
+        t.errors[6].max,
+        t.errors[7].mean,
+        t.errors[7].std,
+        t.errors[7].max);
   }
   std::printf(
-      "time per pair [ms]: mean %.1f, median %.1f, p95 %.1f, max %.1f (map mean %.1f); "
+      "time per pair [ms]: mean %.1f, median %.1f, p95 %.1f, max %.1f (map "
+      "mean %.1f); "
       "iterations mean %.1f\n",
       t.time_ms.mean,
       t.time_ms.median,
@@ -292,7 +325,8 @@ int Run() {
   if (FLAGS_plots) {
     if (!gnuplot_ok) {
       return Fail("plots skipped: gnuplot ('" + FLAGS_gnuplot +
-                  "') not found; the other outputs are written. Install gnuplot-nox or pass "
+                  "') not found; the other outputs are written. Install "
+                  "gnuplot-nox or pass "
                   "--plots=false");
     }
     std::vector<std::string> pngs;
@@ -306,7 +340,8 @@ int Run() {
       return Fail(error);
     }
     std::printf("plots: ");
-    for (size_t k = 0; k < pngs.size(); ++k) std::printf("%s%s", k ? ", " : "", pngs[k].c_str());
+    for (size_t k = 0; k < pngs.size(); ++k)
+      std::printf("%s%s", k ? ", " : "", pngs[k].c_str());
     std::printf("\n");
   }
   return 0;
@@ -317,8 +352,10 @@ int Run() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
-      "Registers a scan sequence pair by pair and evaluates it against ground truth.\n"
-      "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] [--step=1] "
+      "Registers a scan sequence pair by pair and evaluates it against ground "
+      "truth.\n"
+      "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
+      "[--step=1] "
       "[--init=zero]");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);

@@ -4,9 +4,9 @@
 //
 //   mlndt_consumer reference.pcd input.pcd
 
-#include <iostream>
-
 #include <ceres/ceres.h>
+
+#include <iostream>
 
 #include "mlndt/mlndt.h"
 
@@ -15,7 +15,8 @@ struct TranslationPrior {
   explicit TranslationPrior(const Eigen::Vector3d& prior) : prior_(prior) {}
   template <typename T>
   bool operator()(const T* translation, T* residual) const {
-    for (int i = 0; i < 3; ++i) residual[i] = T(0.1) * (translation[i] - T(prior_(i)));
+    for (int i = 0; i < 3; ++i)
+      residual[i] = T(0.1) * (translation[i] - T(prior_(i)));
     return true;
   }
   Eigen::Vector3d prior_;
@@ -34,13 +35,14 @@ int main(int argc, char** argv) {
     return 1;
   }
   mlndt::LayeredGrid map;
-  if (!mlndt::LayeredGrid::Build(mlndt::DefaultRegistrationGridOptions(), reference, &map,
-                                 &error)) {
+  if (!mlndt::LayeredGrid::Build(
+          mlndt::DefaultRegistrationGridOptions(), reference, &map, &error)) {
     std::cerr << error << "\n";
     return 1;
   }
   mlndt::PointCloud samples;
-  if (!mlndt::SamplePoints(mlndt::SamplingOptions(), input, &samples, nullptr, &error)) {
+  if (!mlndt::SamplePoints(
+          mlndt::SamplingOptions(), input, &samples, nullptr, &error)) {
     std::cerr << error << "\n";
     return 1;
   }
@@ -53,13 +55,20 @@ int main(int argc, char** argv) {
   mlndt::LayerBinding layer_binding(map.layer(1));
   mlndt::ResidualOptions residual_options;
   residual_options.unmatched_policy = mlndt::UnmatchedPolicy::NEAREST_CELL;
-  residual_options.loss_function = new ceres::CauchyLoss(3.0);  // The Problem owns it.
+  residual_options.loss_function =
+      new ceres::CauchyLoss(3.0);  // The Problem owns it.
   ceres::Problem problem;
-  mlndt::AddMlNdtResidualsQuaternion(layer_binding, samples.points(), residual_options, rotation,
-                                     translation, &problem);
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<TranslationPrior, 3, 3>(
-                               new TranslationPrior(Eigen::Vector3d::Zero())),
-                           nullptr, translation);
+  mlndt::AddMlNdtResidualsQuaternion(layer_binding,
+                                     samples.points(),
+                                     residual_options,
+                                     rotation,
+                                     translation,
+                                     &problem);
+  problem.AddResidualBlock(
+      new ceres::AutoDiffCostFunction<TranslationPrior, 3, 3>(
+          new TranslationPrior(Eigen::Vector3d::Zero())),
+      nullptr,
+      translation);
   for (int layer = 1; layer <= map.num_layers(); ++layer) {
     layer_binding.Rebind(map.layer(layer));
     ceres::Solver::Options options;
@@ -69,7 +78,7 @@ int main(int argc, char** argv) {
     ceres::Solve(options, &problem, &summary);
     std::cout << "layer " << layer << ": " << summary.BriefReport() << "\n";
   }
-  std::cout << "translation [m]: " << translation[0] << " " << translation[1] << " "
-            << translation[2] << "\n";
+  std::cout << "translation [m]: " << translation[0] << " " << translation[1]
+            << " " << translation[2] << "\n";
   return 0;
 }

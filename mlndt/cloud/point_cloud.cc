@@ -13,10 +13,11 @@ Eigen::AlignedBox3d BoundingBox(const PointCloud& cloud) {
 size_t RemoveNonFinite(PointCloud* cloud) {
   std::vector<Eigen::Vector3d>* points = cloud->mutable_points();
   const size_t before = points->size();
-  points->erase(std::remove_if(points->begin(),
-                               points->end(),
-                               [](const Eigen::Vector3d& p) { return !p.allFinite(); }),
-                points->end());
+  points->erase(
+      std::remove_if(points->begin(),
+                     points->end(),
+                     [](const Eigen::Vector3d& p) { return !p.allFinite(); }),
+      points->end());
   return before - points->size();
 }
 
@@ -30,7 +31,8 @@ PointCloud TransformCloud(const Eigen::Isometry3d& target_from_source,
                           const PointCloud& cloud) {
   std::vector<Eigen::Vector3d> out;
   out.reserve(cloud.size());
-  for (const Eigen::Vector3d& p : cloud.points()) out.push_back(target_from_source * p);
+  for (const Eigen::Vector3d& p : cloud.points())
+    out.push_back(target_from_source * p);
   return PointCloud(std::move(out));
 }
 

@@ -2,11 +2,10 @@
 
 // A point cloud: finite 3D points in metres, in one frame.
 
-#include <cstddef>
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cstddef>
+#include <vector>
 
 namespace mlndt {
 

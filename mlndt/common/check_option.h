@@ -7,15 +7,15 @@
 #include <sstream>
 #include <string>
 
-#define MLNDT_OPTION_OP(x, op, y)                                   \
-  do {                                                              \
-    if (!((x)op(y))) {                                              \
-      std::ostringstream mlndt_option_message;                      \
-      mlndt_option_message << "invalid option: " #x " = " << (x)     \
-                           << "; it must be " #op " " << (y);       \
-      *error = mlndt_option_message.str();                          \
-      return false;                                                 \
-    }                                                               \
+#define MLNDT_OPTION_OP(x, op, y)                                \
+  do {                                                           \
+    if (!((x)op(y))) {                                           \
+      std::ostringstream mlndt_option_message;                   \
+      mlndt_option_message << "invalid option: " #x " = " << (x) \
+                           << "; it must be " #op " " << (y);    \
+      *error = mlndt_option_message.str();                       \
+      return false;                                              \
+    }                                                            \
   } while (false)
 
 #define MLNDT_OPTION_GE(x, y) MLNDT_OPTION_OP(x, >=, y)

@@ -1,6 +1,5 @@
 #include "mlndt/common/pose.h"
 
-
 namespace mlndt {
 
 Isometry3d PoseVectorToIsometry(const Vector6d& xi) {
@@ -15,7 +14,8 @@ Vector6d IsometryToPoseVector(const Isometry3d& transform) {
   Vector6d xi;
   xi.head<3>() = transform.translation();
   // From Eq. (7): r02 = sin(beta), r12 = -sin(alpha) cos(beta),
-  // r22 = cos(alpha) cos(beta), r01 = -cos(beta) sin(gamma), r00 = cos(beta) cos(gamma).
+  // r22 = cos(alpha) cos(beta), r01 = -cos(beta) sin(gamma), r00 = cos(beta)
+  // cos(gamma).
   const double cos_beta = std::hypot(r(0, 0), r(0, 1));
   xi(4) = std::atan2(r(0, 2), cos_beta);
   if (cos_beta > 1e-9) {
@@ -30,10 +30,15 @@ Vector6d IsometryToPoseVector(const Isometry3d& transform) {
   return xi;
 }
 
-Vector6d PoseVectorFromDegrees(double tx, double ty, double tz,
-                               double alpha_deg, double beta_deg, double gamma_deg) {
+Vector6d PoseVectorFromDegrees(double tx,
+                               double ty,
+                               double tz,
+                               double alpha_deg,
+                               double beta_deg,
+                               double gamma_deg) {
   Vector6d xi;
-  xi << tx, ty, tz, alpha_deg * kDegToRad, beta_deg * kDegToRad, gamma_deg * kDegToRad;
+  xi << tx, ty, tz, alpha_deg * kDegToRad, beta_deg * kDegToRad,
+      gamma_deg * kDegToRad;
   return xi;
 }
 

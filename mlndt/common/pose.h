@@ -5,10 +5,9 @@
 // Angles in radians, translations in metres. A pose vector always maps input
 // points into the reference frame; name it so: `reference_from_input_xi`.
 
-#include <cmath>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "mlndt/common/types.h"
 
@@ -16,7 +15,9 @@ namespace mlndt {
 
 // R = Rx(alpha) Ry(beta) Rz(gamma) (Eq. 7), for any scalar type (Ceres Jets).
 template <typename T>
-Eigen::Matrix<T, 3, 3> EulerRotation(const T& alpha, const T& beta, const T& gamma) {
+Eigen::Matrix<T, 3, 3> EulerRotation(const T& alpha,
+                                     const T& beta,
+                                     const T& gamma) {
   using std::cos;
   using std::sin;
   const T ca = cos(alpha), sa = sin(alpha);
@@ -49,8 +50,12 @@ Isometry3d PoseVectorToIsometry(const Vector6d& xi);
 Vector6d IsometryToPoseVector(const Isometry3d& transform);
 
 // Builds a pose vector from translation [m] and angles [deg] (tool flags).
-Vector6d PoseVectorFromDegrees(double tx, double ty, double tz,
-                               double alpha_deg, double beta_deg, double gamma_deg);
+Vector6d PoseVectorFromDegrees(double tx,
+                               double ty,
+                               double tz,
+                               double alpha_deg,
+                               double beta_deg,
+                               double gamma_deg);
 
 // Rotation angle [rad] of the relative rotation between two transforms, and
 // the translation difference [m]: the error measures used in all reports.

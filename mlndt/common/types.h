@@ -2,11 +2,10 @@
 
 // Basic types shared by every module of mlndt.
 
-#include <string>
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <string>
+#include <vector>
 
 namespace mlndt {
 

@@ -37,7 +37,8 @@ std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(
   ids.reserve(input_points_of_scan_j.size());
   for (const Eigen::Vector3d& point : input_points_of_scan_j) {
     ids.push_back(problem->AddResidualBlock(
-        MlNdtPairCost::Create(reference_layer_of_scan_i, point, options.unmatched_policy),
+        MlNdtPairCost::Create(
+            reference_layer_of_scan_i, point, options.unmatched_policy),
         options.loss_function,
         world_from_scan_i_rotation,
         world_from_scan_i_translation,

@@ -10,10 +10,10 @@
 // Ownership: the Problem owns the cost functions (and, under its default
 // options, the loss function). The NdtLayer must outlive the Problem.
 
-#include <vector>
+#include <ceres/problem.h>
 
 #include <Eigen/Core>
-#include <ceres/problem.h>
+#include <vector>
 
 #include "mlndt/cost/add_residuals.h"
 #include "mlndt/grid/ndt_layer.h"

@@ -19,7 +19,8 @@ std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
   ids.reserve(input_points.size());
   for (const Eigen::Vector3d& point : input_points) {
     ids.push_back(problem->AddResidualBlock(
-        MlNdtPointCost::Create(reference_layer, point, options.unmatched_policy),
+        MlNdtPointCost::Create(
+            reference_layer, point, options.unmatched_policy),
         options.loss_function,
         reference_from_input_xi));
   }
@@ -40,13 +41,16 @@ std::vector<ceres::ResidualBlockId> AddMlNdtResidualsQuaternion(
   ids.reserve(input_points.size());
   for (const Eigen::Vector3d& point : input_points) {
     ids.push_back(problem->AddResidualBlock(
-        MlNdtPointCostQuaternion::Create(reference_layer, point, options.unmatched_policy),
+        MlNdtPointCostQuaternion::Create(
+            reference_layer, point, options.unmatched_policy),
         options.loss_function,
         reference_from_input_rotation,
         reference_from_input_translation));
   }
-  if (!input_points.empty() && problem->GetManifold(reference_from_input_rotation) == nullptr) {
-    problem->SetManifold(reference_from_input_rotation, new ceres::EigenQuaternionManifold);
+  if (!input_points.empty() &&
+      problem->GetManifold(reference_from_input_rotation) == nullptr) {
+    problem->SetManifold(reference_from_input_rotation,
+                         new ceres::EigenQuaternionManifold);
   }
   return ids;
 }

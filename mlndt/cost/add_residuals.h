@@ -14,10 +14,10 @@
 // loss stays the caller's). The NdtLayer (or the binding and every layer
 // bound while the Problem is evaluated) must outlive the Problem.
 
-#include <vector>
-
 #include <ceres/loss_function.h>
 #include <ceres/problem.h>
+
+#include <vector>
 
 #include "mlndt/cost/cell_match.h"
 #include "mlndt/cost/layer_binding.h"

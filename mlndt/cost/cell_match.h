@@ -10,9 +10,8 @@
 //    e^T C^-1 e. Points just past a cell border keep pulling towards the
 //    surface; points with no occupied neighbour still contribute zero.
 
-#include <string>
-
 #include <Eigen/Core>
+#include <string>
 
 #include "mlndt/grid/ndt_layer.h"
 

@@ -6,10 +6,10 @@
 // derivatives flow only through the point itself (the pattern of the JetT
 // overloads in ceres/cubic_interpolation.h).
 
-#include <cstring>
-
 #include <ceres/jet.h>
+
 #include <Eigen/Core>
+#include <cstring>
 
 #include "mlndt/common/pose.h"
 
@@ -25,7 +25,9 @@ double ScalarPart(const ceres::Jet<T, N>& value) {
 // True when a and b hold the same bits (a Jet's derivative part included;
 // Jet's operator== compares the scalar part only, and memcmp of a whole Jet
 // would read its alignment padding).
-inline bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
+inline bool SameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof(a)) == 0;
+}
 
 template <typename T, int N>
 bool SameBits(const ceres::Jet<T, N>& a, const ceres::Jet<T, N>& b) {
@@ -46,8 +48,8 @@ const Eigen::Matrix<T, 3, 3>& CachedEulerRotation(const T* angles) {
   thread_local T cached[3];
   thread_local bool valid = false;
   thread_local Eigen::Matrix<T, 3, 3> rotation;
-  if (!valid || !SameBits(cached[0], angles[0]) || !SameBits(cached[1], angles[1]) ||
-      !SameBits(cached[2], angles[2])) {
+  if (!valid || !SameBits(cached[0], angles[0]) ||
+      !SameBits(cached[1], angles[1]) || !SameBits(cached[2], angles[2])) {
     for (int i = 0; i < 3; ++i) cached[i] = angles[i];
     rotation = EulerRotation(angles[0], angles[1], angles[2]);
     valid = true;
@@ -57,8 +59,10 @@ const Eigen::Matrix<T, 3, 3>& CachedEulerRotation(const T* angles) {
 
 // x' = R(xi) x + t(xi) (Eq. 6) with the memoised rotation.
 template <typename T>
-Eigen::Matrix<T, 3, 1> CachedTransformPoint(const T* xi, const Eigen::Vector3d& x) {
-  return CachedEulerRotation(xi + 3) * x.cast<T>() + Eigen::Matrix<T, 3, 1>(xi[0], xi[1], xi[2]);
+Eigen::Matrix<T, 3, 1> CachedTransformPoint(const T* xi,
+                                            const Eigen::Vector3d& x) {
+  return CachedEulerRotation(xi + 3) * x.cast<T>() +
+         Eigen::Matrix<T, 3, 1>(xi[0], xi[1], xi[2]);
 }
 
 }  // namespace mlndt

@@ -35,11 +35,13 @@ class LayerBinding {
 // read naturally.
 class LayerSource {
  public:
-  LayerSource(const NdtLayer& layer) : layer_(&layer) {}              // NOLINT
-  LayerSource(const LayerBinding& binding) : binding_(&binding) {}    // NOLINT
+  LayerSource(const NdtLayer& layer) : layer_(&layer) {}            // NOLINT
+  LayerSource(const LayerBinding& binding) : binding_(&binding) {}  // NOLINT
   LayerSource(NdtLayer&&) = delete;  // A temporary layer would dangle.
 
-  const NdtLayer& layer() const { return binding_ != nullptr ? binding_->layer() : *layer_; }
+  const NdtLayer& layer() const {
+    return binding_ != nullptr ? binding_->layer() : *layer_;
+  }
 
  private:
   const NdtLayer* layer_ = nullptr;

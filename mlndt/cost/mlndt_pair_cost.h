@@ -37,7 +37,9 @@ class MlNdtPairCost {
  public:
   // `layer`: a layer of scan i's map; `input_point`: a point of scan j, in
   // scan j's frame [m].
-  MlNdtPairCost(const NdtLayer& layer, const Eigen::Vector3d& input_point, UnmatchedPolicy policy)
+  MlNdtPairCost(const NdtLayer& layer,
+                const Eigen::Vector3d& input_point,
+                UnmatchedPolicy policy)
       : layer_(layer), input_point_(input_point), policy_(policy) {}
 
   // world_from_scan_i and world_from_scan_j: quaternions (x, y, z, w, unit

@@ -12,7 +12,8 @@
 // occupied cell contributes.
 //
 // Two parameterisations of the same residual:
-//  - MlNdtPointCost: the paper's 6-vector xi = (tx, ty, tz, alpha, beta, gamma).
+//  - MlNdtPointCost: the paper's 6-vector xi = (tx, ty, tz, alpha, beta,
+//  gamma).
 //  - MlNdtPointCostQuaternion: an Eigen quaternion (x, y, z, w; use
 //    ceres::EigenQuaternionManifold) and a translation, for back ends that
 //    keep their poses that way.
@@ -44,7 +45,8 @@ void WhitenedCellResidual(const NdtLayer& layer,
                           UnmatchedPolicy policy,
                           const Eigen::Matrix<T, 3, 1>& x,
                           T* residual) {
-  const Eigen::Vector3d value(ScalarPart(x(0)), ScalarPart(x(1)), ScalarPart(x(2)));
+  const Eigen::Vector3d value(
+      ScalarPart(x(0)), ScalarPart(x(1)), ScalarPart(x(2)));
   const NdtCell* cell = MatchCell(layer, value, policy);
   Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
   if (cell == nullptr) {
@@ -56,13 +58,18 @@ void WhitenedCellResidual(const NdtLayer& layer,
 
 class MlNdtPointCost {
  public:
-  MlNdtPointCost(LayerSource layer, const Eigen::Vector3d& input_point, UnmatchedPolicy policy)
+  MlNdtPointCost(LayerSource layer,
+                 const Eigen::Vector3d& input_point,
+                 UnmatchedPolicy policy)
       : layer_(layer), input_point_(input_point), policy_(policy) {}
 
   template <typename T>
   bool operator()(const T* reference_from_input_xi, T* residual) const {
-    WhitenedCellResidual(layer_.layer(), policy_,
-                         CachedTransformPoint(reference_from_input_xi, input_point_), residual);
+    WhitenedCellResidual(
+        layer_.layer(),
+        policy_,
+        CachedTransformPoint(reference_from_input_xi, input_point_),
+        residual);
     return true;
   }
 
@@ -92,8 +99,10 @@ class MlNdtPointCostQuaternion {
   bool operator()(const T* rotation, const T* translation, T* residual) const {
     const Eigen::Map<const Eigen::Quaternion<T>> q(rotation);
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t(translation);
-    WhitenedCellResidual(layer_.layer(), policy_,
-                         Eigen::Matrix<T, 3, 1>(q * input_point_.cast<T>() + t), residual);
+    WhitenedCellResidual(layer_.layer(),
+                         policy_,
+                         Eigen::Matrix<T, 3, 1>(q * input_point_.cast<T>() + t),
+                         residual);
     return true;
   }
 

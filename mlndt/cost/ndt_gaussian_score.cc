@@ -1,9 +1,9 @@
 #include "mlndt/cost/ndt_gaussian_score.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <omp.h>
 
 #include "mlndt/common/check_option.h"
 #include "mlndt/common/enum_strings.h"
@@ -13,10 +13,13 @@ namespace mlndt {
 namespace {
 
 // The face neighbours of DIRECT7, after the cell itself.
-const Eigen::Vector3i kDirect7Offsets[7] = {
-    Eigen::Vector3i(0, 0, 0),  Eigen::Vector3i(1, 0, 0),  Eigen::Vector3i(-1, 0, 0),
-    Eigen::Vector3i(0, 1, 0),  Eigen::Vector3i(0, -1, 0), Eigen::Vector3i(0, 0, 1),
-    Eigen::Vector3i(0, 0, -1)};
+const Eigen::Vector3i kDirect7Offsets[7] = {Eigen::Vector3i(0, 0, 0),
+                                            Eigen::Vector3i(1, 0, 0),
+                                            Eigen::Vector3i(-1, 0, 0),
+                                            Eigen::Vector3i(0, 1, 0),
+                                            Eigen::Vector3i(0, -1, 0),
+                                            Eigen::Vector3i(0, 0, 1),
+                                            Eigen::Vector3i(0, 0, -1)};
 
 // Adds one point-cell term of the score, gradient and Hessian (header).
 void AddTerm(const NdtCell& cell,
@@ -31,18 +34,23 @@ void AddTerm(const NdtCell& cell,
   const double q = e.dot(information_e);
   const double exponential = std::exp(-0.5 * p.d2 * q);
   if (!std::isfinite(exponential)) return;
-  sum->score += p.d1 * exponential;  // Eq. (4) as Magnusson's Eq. (6.9), negated.
+  sum->score +=
+      p.d1 * exponential;  // Eq. (4) as Magnusson's Eq. (6.9), negated.
   if (hessian == HessianType::NONE) return;
   const double w = -p.d1 * p.d2 * exponential;  // >= 0.
   const Eigen::Matrix<double, 3, 6> jacobian = transform.Jacobian(input_point);
-  const Vector6d jt_information_e = jacobian.transpose() * information_e;  // J^T C^-1 e.
+  const Vector6d jt_information_e =
+      jacobian.transpose() * information_e;  // J^T C^-1 e.
   // Eq. (6.12).
   sum->gradient.noalias() += w * jt_information_e;
   // Eq. (6.13): J^T C^-1 J, then the rank-one and transform second-order terms.
-  sum->hessian.noalias() += w * (jacobian.transpose() * cell.information * jacobian);
+  sum->hessian.noalias() +=
+      w * (jacobian.transpose() * cell.information * jacobian);
   if (hessian == HessianType::FULL) {
-    sum->hessian.noalias() -= (w * p.d2) * (jt_information_e * jt_information_e.transpose());
-    sum->hessian += w * transform.WeightedSecondDerivative(input_point, information_e);
+    sum->hessian.noalias() -=
+        (w * p.d2) * (jt_information_e * jt_information_e.transpose());
+    sum->hessian +=
+        w * transform.WeightedSecondDerivative(input_point, information_e);
   }
 }
 
@@ -108,10 +116,11 @@ bool GaussianScoreOptions::IsValid(std::string* error) const {
   return true;
 }
 
-ScoreEvaluation EvaluateGaussianScore(const NdtLayer& layer,
-                                      const std::vector<Eigen::Vector3d>& input_points,
-                                      const Vector6d& reference_from_input_xi,
-                                      const GaussianScoreOptions& options) {
+ScoreEvaluation EvaluateGaussianScore(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const Vector6d& reference_from_input_xi,
+    const GaussianScoreOptions& options) {
   const TransformDerivatives transform(reference_from_input_xi);
   const GaussianScoreParameters parameters =
       ComputeGaussianScoreParameters(options.outlier_ratio, layer.cell_size());
@@ -120,9 +129,17 @@ ScoreEvaluation EvaluateGaussianScore(const NdtLayer& layer,
   const size_t n = input_points.size();
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
   for (int t = 0; t < threads; ++t) {
-    const size_t begin = n * static_cast<size_t>(t) / static_cast<size_t>(threads);
-    const size_t end = n * static_cast<size_t>(t + 1) / static_cast<size_t>(threads);
-    Accumulate(layer, input_points, begin, end, transform, parameters, options,
+    const size_t begin =
+        n * static_cast<size_t>(t) / static_cast<size_t>(threads);
+    const size_t end =
+        n * static_cast<size_t>(t + 1) / static_cast<size_t>(threads);
+    Accumulate(layer,
+               input_points,
+               begin,
+               end,
+               transform,
+               parameters,
+               options,
                &partial[static_cast<size_t>(t)]);
   }
   ScoreEvaluation total = partial[0];

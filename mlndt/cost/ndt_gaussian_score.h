@@ -23,7 +23,8 @@
 // H_E = d2 x' / d xi2 (transform_derivatives.h), per term (Magnusson
 // Eqs. 6.12, 6.13, negated):
 //   g += w J^T C^-1 e
-//   H += w (J^T C^-1 J - d2 (J^T C^-1 e)(J^T C^-1 e)^T + sum_i (C^-1 e)_i H_E,i)
+//   H += w (J^T C^-1 J - d2 (J^T C^-1 e)(J^T C^-1 e)^T + sum_i (C^-1 e)_i
+//   H_E,i)
 //
 // HessianType::FULL is this Newton Hessian (indefinite away from the
 // minimum; the Newton minimiser lifts it). GAUSS_NEWTON keeps only the
@@ -34,10 +35,9 @@
 // holding x' only; DIRECT7 sums over that cell and its 6 face neighbours.
 // Points with no occupied cell among them contribute nothing ("unmatched").
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "mlndt/common/types.h"
 #include "mlndt/cost/score.h"
@@ -61,7 +61,8 @@ struct GaussianScoreParameters {
 };
 
 // The constants for outlier ratio r in (0, 1) and cell edge k > 0 [m].
-GaussianScoreParameters ComputeGaussianScoreParameters(double outlier_ratio, double cell_size_m);
+GaussianScoreParameters ComputeGaussianScoreParameters(double outlier_ratio,
+                                                       double cell_size_m);
 
 struct GaussianScoreOptions {
   // r: the share of the uniform outlier part, in (0, 1) (PCL: 0.55).
@@ -78,9 +79,10 @@ struct GaussianScoreOptions {
 // The score above for `input_points` moved by xi onto `layer`; d1, d2 from
 // options.outlier_ratio and layer.cell_size(). ScoreEvaluation::matched
 // counts points with at least one contributing cell.
-ScoreEvaluation EvaluateGaussianScore(const NdtLayer& layer,
-                                      const std::vector<Eigen::Vector3d>& input_points,
-                                      const Vector6d& reference_from_input_xi,
-                                      const GaussianScoreOptions& options);
+ScoreEvaluation EvaluateGaussianScore(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const Vector6d& reference_from_input_xi,
+    const GaussianScoreOptions& options);
 
 }  // namespace mlndt

@@ -38,7 +38,8 @@ ceres::LossFunction* CreateLoss(LossType type, double scale) {
   return nullptr;
 }
 
-void EvaluateLoss(LossType type, double scale, double s, double* rho, double* rho_prime) {
+void EvaluateLoss(
+    LossType type, double scale, double s, double* rho, double* rho_prime) {
   const double b = scale * scale;
   switch (type) {
     case LossType::NONE:

@@ -4,9 +4,9 @@
 // paper's plain sum. The scale is a Mahalanobis distance: HUBER and CAUCHY
 // down-weight points whose sqrt(s) exceeds it.
 
-#include <string>
-
 #include <ceres/loss_function.h>
+
+#include <string>
 
 namespace mlndt {
 
@@ -24,6 +24,7 @@ ceres::LossFunction* CreateLoss(LossType type, double scale);
 
 // rho(s) and rho'(s) of the loss, for the hand-written backends and reports.
 // s is the squared residual norm.
-void EvaluateLoss(LossType type, double scale, double s, double* rho, double* rho_prime);
+void EvaluateLoss(
+    LossType type, double scale, double s, double* rho, double* rho_prime);
 
 }  // namespace mlndt

@@ -1,8 +1,8 @@
 #include "mlndt/cost/score.h"
 
-#include <algorithm>
-
 #include <omp.h>
+
+#include <algorithm>
 
 #include "mlndt/cost/transform_derivatives.h"
 
@@ -28,11 +28,15 @@ void Accumulate(const NdtLayer& layer,
     const Eigen::Vector3d e = x - cell->mean;
     const Eigen::Vector3d information_e = cell->information * e;  // C^-1 e.
     double rho = 0.0, rho_prime = 1.0;
-    EvaluateLoss(options.loss, options.loss_scale, e.dot(information_e), &rho, &rho_prime);
+    EvaluateLoss(options.loss,
+                 options.loss_scale,
+                 e.dot(information_e),
+                 &rho,
+                 &rho_prime);
     sum->score += rho;
     if (options.hessian == HessianType::NONE) continue;
-    // J = [I | A] with A = d x' / d angles, so J^T C^-1 e = [C^-1 e; A^T C^-1 e]
-    // and J^T C^-1 J = [C^-1, C^-1 A; A^T C^-1, A^T C^-1 A].
+    // J = [I | A] with A = d x' / d angles, so J^T C^-1 e = [C^-1 e; A^T C^-1
+    // e] and J^T C^-1 J = [C^-1, C^-1 A; A^T C^-1, A^T C^-1 A].
     const double w = 2.0 * rho_prime;
     const Matrix3d a = transform.AngleJacobian(p);
     const Matrix3d information_a = cell->information * a;
@@ -40,9 +44,11 @@ void Accumulate(const NdtLayer& layer,
     sum->gradient.tail<3>().noalias() += w * (a.transpose() * information_e);
     sum->hessian.topLeftCorner<3, 3>() += w * cell->information;
     sum->hessian.topRightCorner<3, 3>() += w * information_a;
-    sum->hessian.bottomRightCorner<3, 3>().noalias() += w * (a.transpose() * information_a);
+    sum->hessian.bottomRightCorner<3, 3>().noalias() +=
+        w * (a.transpose() * information_a);
     if (options.hessian == HessianType::FULL) {
-      sum->hessian += (2.0 * rho_prime) * transform.WeightedSecondDerivative(p, information_e);
+      sum->hessian += (2.0 * rho_prime) *
+                      transform.WeightedSecondDerivative(p, information_e);
     }
   }
 }
@@ -59,13 +65,21 @@ ScoreEvaluation EvaluateScore(const NdtLayer& layer,
   const size_t n = input_points.size();
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
   for (int t = 0; t < threads; ++t) {
-    const size_t begin = n * static_cast<size_t>(t) / static_cast<size_t>(threads);
-    const size_t end = n * static_cast<size_t>(t + 1) / static_cast<size_t>(threads);
-    Accumulate(layer, input_points, begin, end, transform, options,
+    const size_t begin =
+        n * static_cast<size_t>(t) / static_cast<size_t>(threads);
+    const size_t end =
+        n * static_cast<size_t>(t + 1) / static_cast<size_t>(threads);
+    Accumulate(layer,
+               input_points,
+               begin,
+               end,
+               transform,
+               options,
                &partial[static_cast<size_t>(t)]);
   }
   for (ScoreEvaluation& p : partial) {  // The lower-left block by symmetry.
-    p.hessian.bottomLeftCorner<3, 3>() = p.hessian.topRightCorner<3, 3>().transpose();
+    p.hessian.bottomLeftCorner<3, 3>() =
+        p.hessian.topRightCorner<3, 3>().transpose();
   }
   ScoreEvaluation total = partial[0];
   for (size_t t = 1; t < partial.size(); ++t) {

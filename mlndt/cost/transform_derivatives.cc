@@ -7,7 +7,8 @@ namespace {
 
 // Elementary rotation about `axis` (0 = x, 1 = y, 2 = z) by `angle`, and its
 // first and second derivatives with respect to the angle.
-void Elementary(int axis, double angle, Matrix3d* r, Matrix3d* d1, Matrix3d* d2) {
+void Elementary(
+    int axis, double angle, Matrix3d* r, Matrix3d* d1, Matrix3d* d2) {
   const double c = std::cos(angle), s = std::sin(angle);
   const int i = (axis + 1) % 3, j = (axis + 2) % 3;  // The rotated plane.
   r->setIdentity();
@@ -29,11 +30,16 @@ void Elementary(int axis, double angle, Matrix3d* r, Matrix3d* d1, Matrix3d* d2)
 
 }  // namespace
 
-TransformDerivatives::TransformDerivatives(const Vector6d& xi) : translation_(xi.head<3>()) {
+TransformDerivatives::TransformDerivatives(const Vector6d& xi)
+    : translation_(xi.head<3>()) {
   // factors[axis][order]: the elementary rotation (order 0) and derivatives.
   Matrix3d factors[3][3];
   for (int axis = 0; axis < 3; ++axis) {
-    Elementary(axis, xi(3 + axis), &factors[axis][0], &factors[axis][1], &factors[axis][2]);
+    Elementary(axis,
+               xi(3 + axis),
+               &factors[axis][0],
+               &factors[axis][1],
+               &factors[axis][2]);
   }
   // R with each factor differentiated `order[axis]` times.
   const auto product = [&factors](int ox, int oy, int oz) -> Matrix3d {
@@ -54,15 +60,16 @@ TransformDerivatives::TransformDerivatives(const Vector6d& xi) : translation_(xi
   }
 }
 
-Eigen::Matrix<double, 3, 6> TransformDerivatives::Jacobian(const Eigen::Vector3d& x) const {
+Eigen::Matrix<double, 3, 6> TransformDerivatives::Jacobian(
+    const Eigen::Vector3d& x) const {
   Eigen::Matrix<double, 3, 6> jacobian;
   jacobian.leftCols<3>().setIdentity();
   jacobian.rightCols<3>() = AngleJacobian(x);
   return jacobian;
 }
 
-Matrix6d TransformDerivatives::WeightedSecondDerivative(const Eigen::Vector3d& x,
-                                                        const Eigen::Vector3d& w) const {
+Matrix6d TransformDerivatives::WeightedSecondDerivative(
+    const Eigen::Vector3d& x, const Eigen::Vector3d& w) const {
   Matrix6d h = Matrix6d::Zero();
   for (int k = 0; k < 3; ++k) {
     for (int l = k; l < 3; ++l) {

@@ -29,7 +29,9 @@ class TransformDerivatives {
   const Eigen::Vector3d& translation() const { return translation_; }
 
   // x' = R x + t.
-  Eigen::Vector3d Transform(const Eigen::Vector3d& x) const { return rotation_ * x + translation_; }
+  Eigen::Vector3d Transform(const Eigen::Vector3d& x) const {
+    return rotation_ * x + translation_;
+  }
 
   // d x' / d xi (3 x 6) = [I | AngleJacobian(x)].
   Eigen::Matrix<double, 3, 6> Jacobian(const Eigen::Vector3d& x) const;
@@ -43,7 +45,8 @@ class TransformDerivatives {
   // sum_i w_i d2 x'_i / d xi d xi for a weight vector w (3), as a 6 x 6
   // matrix: the second-order term of Eq. (14) with w = C^-1 e. Only the
   // angle block is non-zero.
-  Matrix6d WeightedSecondDerivative(const Eigen::Vector3d& x, const Eigen::Vector3d& w) const;
+  Matrix6d WeightedSecondDerivative(const Eigen::Vector3d& x,
+                                    const Eigen::Vector3d& w) const;
 
  private:
   Matrix3d rotation_;

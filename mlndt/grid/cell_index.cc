@@ -13,8 +13,8 @@ size_t CellIndex::MemoryBytes() const {
   // A libstdc++ node holds the next pointer and the (key, slot) pair; int64
   // keys do not cache their hash.
   const size_t node_bytes = sizeof(void*) + sizeof(Map::value_type);
-  return dense_.capacity() * sizeof(int32_t) + sparse_.bucket_count() * sizeof(void*) +
-         sparse_.size() * node_bytes;
+  return dense_.capacity() * sizeof(int32_t) +
+         sparse_.bucket_count() * sizeof(void*) + sparse_.size() * node_bytes;
 }
 
 }  // namespace mlndt

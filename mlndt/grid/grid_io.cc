@@ -51,14 +51,18 @@ class Reader {
   size_t offset_ = 0;
 };
 
-bool Fail(const std::string& path, const std::string& problem, std::string* error) {
+bool Fail(const std::string& path,
+          const std::string& problem,
+          std::string* error) {
   *error = path + ": " + problem;
   return false;
 }
 
 }  // namespace
 
-bool SaveLayeredGrid(const std::string& path, const LayeredGrid& grid, std::string* error) {
+bool SaveLayeredGrid(const std::string& path,
+                     const LayeredGrid& grid,
+                     std::string* error) {
   Writer w;
   w.bytes()->append(kMagic, sizeof(kMagic));
   w.Put(kVersion);
@@ -93,7 +97,8 @@ bool SaveLayeredGrid(const std::string& path, const LayeredGrid& grid, std::stri
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) return Fail(path, "cannot open for writing", error);
-    out.write(w.bytes()->data(), static_cast<std::streamsize>(w.bytes()->size()));
+    out.write(w.bytes()->data(),
+              static_cast<std::streamsize>(w.bytes()->size()));
     if (!out) {
       std::remove(temporary.c_str());
       return Fail(path, "write failed", error);
@@ -106,11 +111,17 @@ bool SaveLayeredGrid(const std::string& path, const LayeredGrid& grid, std::stri
   return true;
 }
 
-bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* error) {
+bool LoadLayeredGrid(const std::string& path,
+                     LayeredGrid* grid,
+                     std::string* error) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Fail(path, "cannot open the map file (missing or unreadable)", error);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
+  if (!in)
+    return Fail(
+        path, "cannot open the map file (missing or unreadable)", error);
+  const std::string bytes((std::istreambuf_iterator<char>(in)),
+                          std::istreambuf_iterator<char>());
+  if (bytes.size() < sizeof(kMagic) ||
+      std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
     return Fail(path, "not an mlndt map file (bad magic)", error);
   }
   if (bytes.size() < sizeof(kMagic) + sizeof(uint32_t) + sizeof(uint64_t)) {
@@ -126,11 +137,14 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
   uint32_t version = 0;
   r.Get(&version);
   if (version != kVersion) {
-    return Fail(path, "unsupported map version " + std::to_string(version) + " (this build reads " +
-                          std::to_string(kVersion) + ")", error);
+    return Fail(path,
+                "unsupported map version " + std::to_string(version) +
+                    " (this build reads " + std::to_string(kVersion) + ")",
+                error);
   }
   if (Fnv1a(body) != stored_checksum) {
-    return Fail(path, "checksum mismatch: the map file is corrupt or truncated", error);
+    return Fail(
+        path, "checksum mismatch: the map file is corrupt or truncated", error);
   }
   LayeredGridOptions options;
   int32_t q = 0, n = 0, min_points = 0;
@@ -139,7 +153,7 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
   uint64_t num_points = 0;
   bool ok = r.Get(&q) && r.Get(&n) && r.Get(&min_points) &&
             r.Get(&regularization.min_eigenvalue_ratio) &&
-            r.Get(&regularization.min_eigenvalue_m2) ;
+            r.Get(&regularization.min_eigenvalue_m2);
   for (int a = 0; a < 3; ++a) ok = ok && r.Get(&lo(a));
   for (int a = 0; a < 3; ++a) ok = ok && r.Get(&hi(a));
   ok = ok && r.Get(&num_points);
@@ -163,9 +177,10 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
     ok = ok && r.Get(&cell_size);
     for (int a = 0; a < 3; ++a) ok = ok && r.Get(&dims(a));
     ok = ok && r.Get(&num_cells);
-    constexpr size_t kCellBytes = sizeof(int64_t) + sizeof(int32_t) + 9 * sizeof(double);
-    if (!ok || !origin.allFinite() || !(cell_size > 0) || (dims.array() < 1).any() ||
-        (dims.array() > 1000000).any() ||
+    constexpr size_t kCellBytes =
+        sizeof(int64_t) + sizeof(int32_t) + 9 * sizeof(double);
+    if (!ok || !origin.allFinite() || !(cell_size > 0) ||
+        (dims.array() < 1).any() || (dims.array() > 1000000).any() ||
         num_cells > r.remaining() / kCellBytes) {
       return Fail(path, "bad header of layer " + std::to_string(i), error);
     }
@@ -188,9 +203,13 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
       }
       NdtCell cell;
       if (!ok || key < 0 || key >= grid_cells ||
-          seen.FindOrInsert(key, static_cast<int32_t>(c)) != static_cast<int32_t>(c) ||
+          seen.FindOrInsert(key, static_cast<int32_t>(c)) !=
+              static_cast<int32_t>(c) ||
           !MakeNdtCell(count, mean, covariance, regularization, &cell)) {
-        return Fail(path, "bad cell " + std::to_string(c) + " in layer " + std::to_string(i), error);
+        return Fail(
+            path,
+            "bad cell " + std::to_string(c) + " in layer " + std::to_string(i),
+            error);
       }
       cells.push_back(cell);
       keys.push_back(key);
@@ -201,10 +220,15 @@ bool LoadLayeredGrid(const std::string& path, LayeredGrid* grid, std::string* er
     layer_info.dims = dims;
     layer_info.occupied_cells = cells.size();
     info.push_back(layer_info);
-    layers.emplace_back(origin, cell_size, dims, std::move(cells), std::move(keys));
+    layers.emplace_back(
+        origin, cell_size, dims, std::move(cells), std::move(keys));
   }
-  if (r.remaining() != 0) return Fail(path, "trailing bytes after the last layer", error);
-  *grid = LayeredGrid(options, Eigen::AlignedBox3d(lo, hi), num_points, std::move(layers),
+  if (r.remaining() != 0)
+    return Fail(path, "trailing bytes after the last layer", error);
+  *grid = LayeredGrid(options,
+                      Eigen::AlignedBox3d(lo, hi),
+                      num_points,
+                      std::move(layers),
                       std::move(info));
   return true;
 }

@@ -43,9 +43,12 @@ struct RawLayer {
 struct LayerGeometry {
   double cell_size = 0.0;
   Eigen::Vector3i dims = Eigen::Vector3i::Zero();
-  int64_t num_grid_cells() const { return int64_t{dims.x()} * dims.y() * dims.z(); }
+  int64_t num_grid_cells() const {
+    return int64_t{dims.x()} * dims.y() * dims.z();
+  }
   int64_t Key(const Eigen::Vector3i& ijk) const {
-    return ijk.x() + int64_t{dims.x()} * (ijk.y() + int64_t{dims.y()} * ijk.z());
+    return ijk.x() +
+           int64_t{dims.x()} * (ijk.y() + int64_t{dims.y()} * ijk.z());
   }
 };
 
@@ -64,7 +67,8 @@ bool ScanBounds(const std::vector<Eigen::Vector3d>& points,
   const int64_t n = static_cast<int64_t>(points.size());
   std::vector<Eigen::AlignedBox3d> boxes(static_cast<size_t>(threads));
   std::vector<char> finite(static_cast<size_t>(threads), 1);
-#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+#pragma omp parallel for num_threads(threads) \
+    schedule(static, 1) if (threads > 1)
   for (int c = 0; c < threads; ++c) {
     Eigen::AlignedBox3d box;  // Constructed empty.
     bool chunk_finite = true;
@@ -81,7 +85,8 @@ bool ScanBounds(const std::vector<Eigen::Vector3d>& points,
     if (!finite[static_cast<size_t>(c)]) return false;
     box.extend(boxes[static_cast<size_t>(c)]);
   }
-  *bounds = Eigen::AlignedBox3d(box.min().array() + 0.0, box.max().array() + 0.0);
+  *bounds =
+      Eigen::AlignedBox3d(box.min().array() + 0.0, box.max().array() + 0.0);
   return true;
 }
 
@@ -109,7 +114,8 @@ void AccumulateMoments(const std::vector<Eigen::Vector3d>& points,
     }
     points_before += cell_points[static_cast<size_t>(s)];
   }
-#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+#pragma omp parallel for num_threads(threads) \
+    schedule(static, 1) if (threads > 1)
   for (int r = 0; r < threads; ++r) {
     const int32_t lo = first_slot[static_cast<size_t>(r)];
     const int32_t hi = first_slot[static_cast<size_t>(r) + 1];
@@ -117,7 +123,8 @@ void AccumulateMoments(const std::vector<Eigen::Vector3d>& points,
     for (int64_t i = 0; i < n; ++i) {
       const int32_t slot = point_slots[static_cast<size_t>(i)];
       if (slot >= lo && slot < hi) {
-        (*moments)[static_cast<size_t>(slot)].Add(points[static_cast<size_t>(i)] - centre);
+        (*moments)[static_cast<size_t>(slot)].Add(
+            points[static_cast<size_t>(i)] - centre);
       }
     }
   }
@@ -140,7 +147,9 @@ RawLayer BinPoints(const std::vector<Eigen::Vector3d>& points,
     // Points lie inside the box (p >= origin, so truncation is floor);
     // min() keeps rounding at the max face inside.
     const Eigen::Vector3i ijk =
-        ((points[static_cast<size_t>(i)] - origin) * inverse_size).cast<int>().cwiseMin(max_ijk);
+        ((points[static_cast<size_t>(i)] - origin) * inverse_size)
+            .cast<int>()
+            .cwiseMin(max_ijk);
     point_keys[static_cast<size_t>(i)] = geometry.Key(ijk);
   }
 
@@ -166,7 +175,8 @@ RawLayer BinPoints(const std::vector<Eigen::Vector3d>& points,
     ++cell_points[static_cast<size_t>(last_slot)];
   }
   raw.moments.resize(raw.keys.size());
-  AccumulateMoments(points, centre, point_slots, cell_points, threads, &raw.moments);
+  AccumulateMoments(
+      points, centre, point_slots, cell_points, threads, &raw.moments);
   return raw;
 }
 
@@ -212,8 +222,8 @@ NdtLayer FinishLayer(const RawLayer& raw,
   std::vector<NdtCell> candidates(static_cast<size_t>(num_raw));
   std::vector<CellOutcome> outcomes(static_cast<size_t>(num_raw));
   const int threads = options.num_threads;
-#pragma omp parallel for num_threads(threads) schedule(static) \
-    if (threads > 1 && num_raw >= kMinCellsToParallelise)
+#pragma omp parallel for num_threads(threads) \
+    schedule(static) if (threads > 1 && num_raw >= kMinCellsToParallelise)
   for (int64_t i = 0; i < num_raw; ++i) {
     const Moments& m = raw.moments[static_cast<size_t>(i)];
     CellOutcome& outcome = outcomes[static_cast<size_t>(i)];
@@ -224,7 +234,8 @@ NdtLayer FinishLayer(const RawLayer& raw,
     const double n = static_cast<double>(m.count);
     const Eigen::Vector3d mean = m.sum / n;
     const Eigen::Matrix3d outer = m.outer.selfadjointView<Eigen::Upper>();
-    const Eigen::Matrix3d covariance = (outer - n * mean * mean.transpose()) / (n - 1.0);
+    const Eigen::Matrix3d covariance =
+        (outer - n * mean * mean.transpose()) / (n - 1.0);
     outcome = MakeNdtCell(static_cast<int32_t>(m.count),
                           mean + centre,
                           covariance,
@@ -235,7 +246,8 @@ NdtLayer FinishLayer(const RawLayer& raw,
   }
   std::vector<NdtCell> cells;
   std::vector<int64_t> keys;
-  const int64_t num_kept = std::count(outcomes.begin(), outcomes.end(), CellOutcome::KEPT);
+  const int64_t num_kept =
+      std::count(outcomes.begin(), outcomes.end(), CellOutcome::KEPT);
   cells.reserve(static_cast<size_t>(num_kept));
   keys.reserve(static_cast<size_t>(num_kept));
   for (int64_t i = 0; i < num_raw; ++i) {
@@ -255,12 +267,17 @@ NdtLayer FinishLayer(const RawLayer& raw,
   info->cell_size_m = geometry.cell_size;
   info->dims = geometry.dims;
   info->occupied_cells = cells.size();
-  return NdtLayer(origin, geometry.cell_size, geometry.dims, std::move(cells), std::move(keys));
+  return NdtLayer(origin,
+                  geometry.cell_size,
+                  geometry.dims,
+                  std::move(cells),
+                  std::move(keys));
 }
 
 // The layers' integer cube root of q, or 0 when q is not a perfect cube.
 int NestingRatio(int q) {
-  const int r = static_cast<int>(std::lround(std::cbrt(static_cast<double>(q))));
+  const int r =
+      static_cast<int>(std::lround(std::cbrt(static_cast<double>(q))));
   return r * r * r == q ? r : 0;
 }
 
@@ -271,7 +288,8 @@ Eigen::Vector3d EffectiveExtent(const Eigen::Vector3d& extent) {
 int NumLayers(const LayeredGridOptions& options, double volume) {
   if (options.finest_cell_size_m <= 0.0) return options.num_layers;
   const double f = options.finest_cell_size_m;
-  const double n = std::log(volume / (f * f * f)) / std::log(options.division_constant);
+  const double n =
+      std::log(volume / (f * f * f)) / std::log(options.division_constant);
   return std::max(1, static_cast<int>(std::ceil(n - 1e-9)));
 }
 
@@ -330,8 +348,9 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
   const int n = NumLayers(options, volume);
   if (n > options.max_num_layers) {
     std::ostringstream message;
-    message << "finest_cell_size_m = " << options.finest_cell_size_m << " needs " << n
-            << " layers over this cloud; max_num_layers is " << options.max_num_layers;
+    message << "finest_cell_size_m = " << options.finest_cell_size_m
+            << " needs " << n << " layers over this cloud; max_num_layers is "
+            << options.max_num_layers;
     *error = message.str();
     return false;
   }
@@ -343,10 +362,12 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
   const double finest = std::cbrt(volume / std::pow(q, n));
   for (int i = n; i >= 1; --i) {
     LayerGeometry& g = geometry[static_cast<size_t>(i - 1)];
-    g.cell_size = ratio > 0 ? finest * std::pow(ratio, n - i) : std::cbrt(volume / std::pow(q, i));
+    g.cell_size = ratio > 0 ? finest * std::pow(ratio, n - i)
+                            : std::cbrt(volume / std::pow(q, i));
     const Eigen::Vector3d cells = (extent / g.cell_size).array().floor() + 1.0;
     if (cells.maxCoeff() > 1e6 || cells.prod() > 4e18) {
-      *error = "layer " + std::to_string(i) + " would have too many cells (cell size " +
+      *error = "layer " + std::to_string(i) +
+               " would have too many cells (cell size " +
                std::to_string(g.cell_size) + " m)";
       return false;
     }
@@ -364,14 +385,17 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
   for (int i = n; i >= 1; --i) {
     const size_t l = static_cast<size_t>(i - 1);
     if (i == n || ratio == 0) {
-      raw = BinPoints(reference.points(), origin, centre, geometry[l], options.num_threads);
+      raw = BinPoints(
+          reference.points(), origin, centre, geometry[l], options.num_threads);
     } else {
       raw = Aggregate(raw, geometry[l + 1], geometry[l], ratio);
     }
     info[l].layer = i;
-    layers[l] = FinishLayer(raw, origin, centre, geometry[l], options, &info[l]);
+    layers[l] =
+        FinishLayer(raw, origin, centre, geometry[l], options, &info[l]);
   }
-  *grid = LayeredGrid(options, bounds, reference.size(), std::move(layers), std::move(info));
+  *grid = LayeredGrid(
+      options, bounds, reference.size(), std::move(layers), std::move(info));
   return true;
 }
 

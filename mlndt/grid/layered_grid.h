@@ -59,11 +59,11 @@ struct LayeredGridOptions {
 
 // Per-layer facts, for reports.
 struct LayerInfo {
-  int layer = 0;              // 1-based layer index i.
-  double cell_size_m = 0.0;   // k_i.
+  int layer = 0;             // 1-based layer index i.
+  double cell_size_m = 0.0;  // k_i.
   Eigen::Vector3i dims = Eigen::Vector3i::Zero();
-  size_t occupied_cells = 0;  // Cells holding >= min_points_per_cell points.
-  size_t sparse_cells = 0;    // Cells with points but too few of them.
+  size_t occupied_cells = 0;    // Cells holding >= min_points_per_cell points.
+  size_t sparse_cells = 0;      // Cells with points but too few of them.
   size_t degenerate_cells = 0;  // Enough points, but no usable covariance.
 };
 
@@ -81,7 +81,9 @@ class LayeredGrid {
 
   int num_layers() const { return static_cast<int>(layers_.size()); }
   // Layer i, 1-based as in the paper: layer(1) is the coarsest.
-  const NdtLayer& layer(int i) const { return layers_.at(static_cast<size_t>(i - 1)); }
+  const NdtLayer& layer(int i) const {
+    return layers_.at(static_cast<size_t>(i - 1));
+  }
   const std::vector<LayerInfo>& layer_info() const { return info_; }
   const LayeredGridOptions& options() const { return options_; }
   // The reference scan's bounding box.

@@ -1,8 +1,7 @@
 #include "mlndt/grid/ndt_cell.h"
 
-#include <algorithm>
-
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 
 namespace mlndt {
 
@@ -19,16 +18,19 @@ bool MakeNdtCell(int32_t count,
   const double largest = eigenvalues(2);
   if (!(largest > 0.0)) return false;
   // Section 4.1: l_j = max(l_j, l3 / 100), and the absolute floor.
-  const double floor_value = std::max(largest * regularization.min_eigenvalue_ratio,
-                                     regularization.min_eigenvalue_m2);
+  const double floor_value =
+      std::max(largest * regularization.min_eigenvalue_ratio,
+               regularization.min_eigenvalue_m2);
   eigenvalues = eigenvalues.cwiseMax(floor_value);
   if (!(eigenvalues(0) > 0.0)) return false;
   const Eigen::Matrix3d& V = solver.eigenvectors();
   cell->count = count;
   cell->mean = mean;
   cell->covariance = V * eigenvalues.asDiagonal() * V.transpose();
-  cell->information = V * eigenvalues.cwiseInverse().asDiagonal() * V.transpose();
-  cell->whitening = eigenvalues.cwiseInverse().cwiseSqrt().asDiagonal() * V.transpose();
+  cell->information =
+      V * eigenvalues.cwiseInverse().asDiagonal() * V.transpose();
+  cell->whitening =
+      eigenvalues.cwiseInverse().cwiseSqrt().asDiagonal() * V.transpose();
   return true;
 }
 

@@ -16,18 +16,18 @@
 // W^T W = C^-1, so that ||W e||^2 = e^T C^-1 e: W e is the residual a
 // least-squares solver (Ceres, Levenberg-Marquardt) works with.
 
-#include <cstdint>
-
 #include <Eigen/Core>
+#include <cstdint>
 
 namespace mlndt {
 
 struct NdtCell {
-  int32_t count = 0;                                       // N, points in the cell.
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();          // mu, Eq. (2) [m].
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();    // Regularised C [m^2].
-  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();   // C^-1 [1/m^2].
-  Eigen::Matrix3d whitening = Eigen::Matrix3d::Zero();     // W, W^T W = C^-1 [1/m].
+  int32_t count = 0;                               // N, points in the cell.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();  // mu, Eq. (2) [m].
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // Regularised C [m^2].
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();  // C^-1 [1/m^2].
+  Eigen::Matrix3d whitening =
+      Eigen::Matrix3d::Zero();  // W, W^T W = C^-1 [1/m].
 };
 
 // How a cell covariance is regularised (eigenvalues l1 <= l2 <= l3).

@@ -18,8 +18,10 @@ NdtLayer::NdtLayer(const Eigen::Vector3d& origin,
       index_(num_grid_cells()) {
   CHECK_EQ(cells_.size(), keys_.size());
   for (size_t i = 0; i < keys_.size(); ++i) {
-    CHECK(keys_[i] >= 0 && keys_[i] < num_grid_cells()) << "cell key out of range";
-    CHECK_EQ(index_.FindOrInsert(keys_[i], static_cast<int32_t>(i)), static_cast<int32_t>(i))
+    CHECK(keys_[i] >= 0 && keys_[i] < num_grid_cells())
+        << "cell key out of range";
+    CHECK_EQ(index_.FindOrInsert(keys_[i], static_cast<int32_t>(i)),
+             static_cast<int32_t>(i))
         << "duplicate cell key " << keys_[i];
   }
 }

@@ -4,11 +4,10 @@
 // `cell_size` [m] over the reference scan's bounding box, keeping the cells
 // that hold enough points (ML-NDT Section 4, Table 1, "generative process").
 
+#include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "mlndt/common/fast_floor.h"
 #include "mlndt/grid/cell_index.h"
@@ -73,7 +72,8 @@ class NdtLayer {
   }
 
   int64_t LinearKey(const Eigen::Vector3i& ijk) const {
-    return ijk.x() + int64_t{dims_.x()} * (ijk.y() + int64_t{dims_.y()} * ijk.z());
+    return ijk.x() +
+           int64_t{dims_.x()} * (ijk.y() + int64_t{dims_.y()} * ijk.z());
   }
 
  private:

@@ -1,9 +1,9 @@
 #include "mlndt/grid/single_grid.h"
 
+#include <glog/logging.h>
+
 #include <cmath>
 #include <vector>
-
-#include <glog/logging.h>
 
 #include "mlndt/common/check_option.h"
 #include "mlndt/grid/cell_index.h"
@@ -62,12 +62,13 @@ bool BuildSingleGrid(const SingleGridOptions& options,
     *error = "all reference points coincide: the bounding box has no volume";
     return false;
   }
-  const double cell_size =
-      options.cell_size_m > 0.0 ? options.cell_size_m : PaperNdtCellSize(extent);
+  const double cell_size = options.cell_size_m > 0.0 ? options.cell_size_m
+                                                     : PaperNdtCellSize(extent);
   // floor(extent / k) + 1 cells per axis, as the layers of the ML-NDT map.
   const Eigen::Vector3d cells = (extent / cell_size).array().floor() + 1.0;
   if (!(cell_size > 0.0) || cells.maxCoeff() > 1e6 || cells.prod() > 4e18) {
-    *error = "cell size " + std::to_string(cell_size) + " m gives too many cells over a " +
+    *error = "cell size " + std::to_string(cell_size) +
+             " m gives too many cells over a " +
              std::to_string(extent.maxCoeff()) + " m box";
     return false;
   }
@@ -83,10 +84,16 @@ bool BuildSingleGrid(const SingleGridOptions& options,
   const double inverse_size = 1.0 / cell_size;
   for (const Eigen::Vector3d& p : reference.points()) {
     // Points lie inside the box; min() keeps rounding at the max face inside.
-    const Eigen::Vector3i ijk =
-        ((p - origin) * inverse_size).array().floor().cast<int>().max(0).min(dims.array() - 1);
-    const int64_t key = ijk.x() + int64_t{dims.x()} * (ijk.y() + int64_t{dims.y()} * ijk.z());
-    const int32_t slot = index.FindOrInsert(key, static_cast<int32_t>(raw_keys.size()));
+    const Eigen::Vector3i ijk = ((p - origin) * inverse_size)
+                                    .array()
+                                    .floor()
+                                    .cast<int>()
+                                    .max(0)
+                                    .min(dims.array() - 1);
+    const int64_t key =
+        ijk.x() + int64_t{dims.x()} * (ijk.y() + int64_t{dims.y()} * ijk.z());
+    const int32_t slot =
+        index.FindOrInsert(key, static_cast<int32_t>(raw_keys.size()));
     if (slot == static_cast<int32_t>(raw_keys.size())) {
       raw_keys.push_back(key);
       moments.emplace_back();
@@ -113,10 +120,14 @@ bool BuildSingleGrid(const SingleGridOptions& options,
     }
     const double n = static_cast<double>(m.count);
     const Eigen::Vector3d mean = m.sum / n;
-    const Eigen::Matrix3d covariance = (m.outer - n * mean * mean.transpose()) / (n - 1.0);
+    const Eigen::Matrix3d covariance =
+        (m.outer - n * mean * mean.transpose()) / (n - 1.0);
     NdtCell cell;
-    if (!MakeNdtCell(static_cast<int32_t>(m.count), mean + centre, covariance,
-                     options.regularization, &cell)) {
+    if (!MakeNdtCell(static_cast<int32_t>(m.count),
+                     mean + centre,
+                     covariance,
+                     options.regularization,
+                     &cell)) {
       ++layer_info.degenerate_cells;
       continue;
     }

@@ -13,9 +13,8 @@
 // the layer-2 edge of LayerCellSizes with q = 8 over the same box. PCL users
 // typically run 1-2 m cells outdoors (cell_size_m).
 
-#include <string>
-
 #include <Eigen/Core>
+#include <string>
 
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/grid/layered_grid.h"

@@ -25,7 +25,8 @@ class NdtGaussianObjective : public Objective {
                            HessianType hessian) const override {
     GaussianScoreOptions options = options_;
     options.hessian = hessian;
-    return EvaluateGaussianScore(grid_, input_points_, reference_from_input_xi, options);
+    return EvaluateGaussianScore(
+        grid_, input_points_, reference_from_input_xi, options);
   }
 
  private:

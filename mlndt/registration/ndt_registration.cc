@@ -1,10 +1,10 @@
 #include "mlndt/registration/ndt_registration.h"
 
-#include <algorithm>
+#include <glog/logging.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
-#include <glog/logging.h>
+#include <algorithm>
 
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
@@ -46,10 +46,12 @@ class StepBoundedObjective : public Objective {
   StepBoundedObjective(const Objective& objective, double max_step_norm)
       : objective_(objective), max_step_norm_(max_step_norm) {}
 
-  ScoreEvaluation Evaluate(const Vector6d& xi, HessianType hessian) const override {
+  ScoreEvaluation Evaluate(const Vector6d& xi,
+                           HessianType hessian) const override {
     ScoreEvaluation evaluation = objective_.Evaluate(xi, hessian);
     if (hessian == HessianType::FULL && max_step_norm_ > 0.0) {
-      evaluation.hessian.diagonal().array() += Shift(evaluation.hessian, evaluation.gradient);
+      evaluation.hessian.diagonal().array() +=
+          Shift(evaluation.hessian, evaluation.gradient);
     }
     return evaluation;
   }
@@ -108,12 +110,14 @@ bool RegisterOnNdtGrid(const RegistrationOptions& options,
                        std::string* error) {
   CHECK(summary != nullptr);
   CHECK(error != nullptr);
-  const NdtGaussianObjective objective(grid, sampled_points, ScoreOptionsFor(options));
+  const NdtGaussianObjective objective(
+      grid, sampled_points, ScoreOptionsFor(options));
   summary->ndt_cell_size_m = grid.cell_size();
   summary->initial_reference_from_input_xi = initial_xi;
   summary->num_layers = 1;
   summary->start_layer = 1;
-  summary->initial_score = objective.Evaluate(initial_xi, HessianType::NONE).score;
+  summary->initial_score =
+      objective.Evaluate(initial_xi, HessianType::NONE).score;
 
   StageOptions stage;
   stage.layer = 1;

@@ -6,10 +6,9 @@
 // over the sampled input points with MinimizeNewton. Input checks, sampling,
 // logging and the matched-fraction check stay in registration.cc.
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"

@@ -4,8 +4,9 @@
 //
 //   RegistrationOptions options;
 //   RegistrationSummary summary;
-//   Register(options, reference_map, input, initial_reference_from_input, &summary);
-//   if (summary.IsSolutionUsable()) use(summary.reference_from_input);
+//   Register(options, reference_map, input, initial_reference_from_input,
+//   &summary); if (summary.IsSolutionUsable())
+//   use(summary.reference_from_input);
 //
 // It samples the input scan (Section 4.3), runs the layer schedule
 // (Table 1) with the chosen backend, and reports the pose, a per-iteration
@@ -18,10 +19,10 @@
 // the paper compares against (Section 3, Eq. 4; options.ndt), minimised by
 // the Newton backend.
 
+#include <ceres/types.h>
+
 #include <string>
 #include <vector>
-
-#include <ceres/types.h>
 
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"
@@ -148,7 +149,8 @@ struct RegistrationSummary {
   Method method = Method::MLNDT;  // The algorithm that ran.
 
   Vector6d initial_reference_from_input_xi = Vector6d::Zero();
-  Vector6d reference_from_input_xi = Vector6d::Zero();  // (t [m], angles [rad]).
+  Vector6d reference_from_input_xi =
+      Vector6d::Zero();  // (t [m], angles [rad]).
   Isometry3d reference_from_input = Isometry3d::Identity();
 
   std::vector<IterationRecord> trace;
@@ -159,16 +161,19 @@ struct RegistrationSummary {
 
   size_t input_points = 0;    // Finite input points.
   size_t sampled_points = 0;  // Points that became residuals.
-  size_t matched_points = 0;  // Sampled points in a cell at the solution (last layer).
+  size_t matched_points =
+      0;  // Sampled points in a cell at the solution (last layer).
   size_t unmatched_points = 0;
 
-  double map_time_s = 0.0;       // Building the reference map (0 if given).
+  double map_time_s = 0.0;  // Building the reference map (0 if given).
   double sampling_time_s = 0.0;
   double solve_time_s = 0.0;
-  double total_time_s = 0.0;     // Everything after the clouds were loaded.
+  double total_time_s = 0.0;  // Everything after the clouds were loaded.
 
-  size_t map_occupied_cells = 0;  // Over all layers of the reference map (ML-NDT; 0 for NDT).
-  size_t map_bytes = 0;           // LayeredGrid::MemoryBytes() of the map (ML-NDT; 0 for NDT).
+  size_t map_occupied_cells =
+      0;  // Over all layers of the reference map (ML-NDT; 0 for NDT).
+  size_t map_bytes =
+      0;  // LayeredGrid::MemoryBytes() of the map (ML-NDT; 0 for NDT).
 
   // ML-NDT: Eq. (10) on the last layer. NDT: the Gaussian score (negated
   // Eq. 4 with Magnusson's d1, d2; <= 0, lower is better).
@@ -187,7 +192,9 @@ struct RegistrationSummary {
 
   std::string BriefReport() const;
   std::string FullReport() const;
-  bool IsSolutionUsable() const { return termination_type != TerminationType::FAILURE; }
+  bool IsSolutionUsable() const {
+    return termination_type != TerminationType::FAILURE;
+  }
 };
 
 // Registers `input` against a map built beforehand. Method::NDT needs the

@@ -1,8 +1,8 @@
 #include "mlndt/schedule/layer_scheduler.h"
 
-#include <algorithm>
-
 #include <glog/logging.h>
+
+#include <algorithm>
 
 #include "mlndt/common/check_option.h"
 
@@ -18,7 +18,8 @@ bool LayerScheduleOptions::IsValid(std::string* error) const {
 }
 
 int ResolveStartLayer(const LayerScheduleOptions& options, int num_layers) {
-  const int s = options.start_layer > 0 ? options.start_layer : num_layers + options.start_layer;
+  const int s = options.start_layer > 0 ? options.start_layer
+                                        : num_layers + options.start_layer;
   return std::clamp(s, 1, num_layers);
 }
 
@@ -38,28 +39,38 @@ void RunLayerSchedule(const LayerScheduleOptions& options,
     const bool last = layer == n;
     StageOptions stage = stage_options;
     stage.layer = layer;
-    stage.max_iterations = last ? options.max_final_iterations : options.iterations_per_layer;
-    stage.step_tolerance = last ? options.step_tolerance : options.coarse_step_tolerance;
+    stage.max_iterations =
+        last ? options.max_final_iterations : options.iterations_per_layer;
+    stage.step_tolerance =
+        last ? options.step_tolerance : options.coarse_step_tolerance;
     stage.first_iteration = static_cast<int>(summary->trace.size()) + 1;
     // Coarse cells are large: every stride-th sample describes them as well.
-    stage.point_stride = std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
+    stage.point_stride =
+        std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
     StageSummary stage_summary;
-    backend->SolveStage(reference_map.layer(layer), input_points, stage, reference_from_input_xi,
+    backend->SolveStage(reference_map.layer(layer),
+                        input_points,
+                        stage,
+                        reference_from_input_xi,
                         &stage_summary);
-    summary->iterations_per_layer[static_cast<size_t>(layer - 1)] = stage_summary.iterations;
-    summary->trace.insert(summary->trace.end(), stage_summary.trace.begin(),
+    summary->iterations_per_layer[static_cast<size_t>(layer - 1)] =
+        stage_summary.iterations;
+    summary->trace.insert(summary->trace.end(),
+                          stage_summary.trace.begin(),
                           stage_summary.trace.end());
     if (stage_summary.termination_type == TerminationType::FAILURE) {
       summary->termination_type = TerminationType::FAILURE;
-      summary->message = "layer " + std::to_string(layer) + ": " + stage_summary.message;
+      summary->message =
+          "layer " + std::to_string(layer) + ": " + stage_summary.message;
       return;
     }
     if (last) {
       summary->termination_type = stage_summary.termination_type;
-      summary->message = stage_summary.termination_type == TerminationType::CONVERGENCE
-                             ? "converged on layer " + std::to_string(layer)
-                             : "iteration cap reached on layer " + std::to_string(layer) + " (" +
-                                   stage_summary.message + ")";
+      summary->message =
+          stage_summary.termination_type == TerminationType::CONVERGENCE
+              ? "converged on layer " + std::to_string(layer)
+              : "iteration cap reached on layer " + std::to_string(layer) +
+                    " (" + stage_summary.message + ")";
     }
   }
 }

@@ -19,8 +19,9 @@ struct LayerScheduleOptions {
   // layer: 0 is the last layer n, -1 is n - 1, and so on, which keeps the
   // meaning when n is derived from a finest cell size. Clamped to layer 1.
   int start_layer = 2;
-  int iterations_per_layer = 3;  // Iterations on every layer but the last. >= 1.
-  int max_final_iterations = 30; // Cap on the last layer's iterations. >= 1.
+  int iterations_per_layer =
+      3;  // Iterations on every layer but the last. >= 1.
+  int max_final_iterations = 30;  // Cap on the last layer's iterations. >= 1.
   // The last layer converges when a successful step has ||delta xi|| below
   // this (metres and radians). > 0.
   double step_tolerance = 1e-4;

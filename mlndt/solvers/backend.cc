@@ -29,9 +29,10 @@ ScoreOptions ScoreOptionsForStage(const StageOptions& options) {
 
 namespace internal {
 
-const std::vector<Eigen::Vector3d>& EveryNthPoint(const std::vector<Eigen::Vector3d>& points,
-                                                  int stride,
-                                                  std::vector<Eigen::Vector3d>* storage) {
+const std::vector<Eigen::Vector3d>& EveryNthPoint(
+    const std::vector<Eigen::Vector3d>& points,
+    int stride,
+    std::vector<Eigen::Vector3d>* storage) {
   CHECK_GE(stride, 1);
   if (stride == 1) return points;
   storage->clear();

@@ -29,31 +29,32 @@ bool StringToBackendType(std::string value, BackendType* type);
 
 // One iteration of the trace.
 struct IterationRecord {
-  int layer = 0;               // 1-based layer the iteration ran on.
-  int iteration = 0;           // Count over the whole registration, from 1.
-  double score = 0.0;          // Objective after the iteration (its layer).
-  double step_norm = 0.0;      // ||delta xi|| of the step tried.
+  int layer = 0;           // 1-based layer the iteration ran on.
+  int iteration = 0;       // Count over the whole registration, from 1.
+  double score = 0.0;      // Objective after the iteration (its layer).
+  double step_norm = 0.0;  // ||delta xi|| of the step tried.
   bool step_is_successful = false;
   Vector6d reference_from_input_xi = Vector6d::Zero();
-  double time_s = 0.0;         // Wall time since the registration started.
+  double time_s = 0.0;  // Wall time since the registration started.
 };
 
 struct StageOptions {
-  int layer = 1;                 // 1-based, for the trace.
-  int max_iterations = 3;        // Iterations in this stage. >= 1.
+  int layer = 1;           // 1-based, for the trace.
+  int max_iterations = 3;  // Iterations in this stage. >= 1.
   // > 0: the stage ends with CONVERGENCE once a successful step has
   // ||delta xi|| < step_tolerance (metres and radians mixed, as the paper's
   // update norm). 0: the stage runs max_iterations.
   double step_tolerance = 0.0;
   UnmatchedPolicy unmatched_policy = UnmatchedPolicy::ZERO_RESIDUAL;
   LossType loss = LossType::NONE;
-  double loss_scale = 1.0;       // Mahalanobis distance where the loss bends.
-  int num_threads = 1;           // Threads for evaluating the objective. >= 1.
+  double loss_scale = 1.0;  // Mahalanobis distance where the loss bends.
+  int num_threads = 1;      // Threads for evaluating the objective. >= 1.
   // The stage uses every point_stride-th input point (coarse layers need
   // fewer, layer_scheduler.h). >= 1.
   int point_stride = 1;
-  double start_time_s = 0.0;     // Registration start (for IterationRecord::time_s).
-  int first_iteration = 1;       // Number of the stage's first iteration.
+  double start_time_s =
+      0.0;                  // Registration start (for IterationRecord::time_s).
+  int first_iteration = 1;  // Number of the stage's first iteration.
 };
 
 struct StageSummary {
@@ -71,9 +72,10 @@ namespace internal {
 
 // Every stride-th point of `points`: `points` itself for stride 1, otherwise
 // a copy in *storage. For the backends.
-const std::vector<Eigen::Vector3d>& EveryNthPoint(const std::vector<Eigen::Vector3d>& points,
-                                                  int stride,
-                                                  std::vector<Eigen::Vector3d>* storage);
+const std::vector<Eigen::Vector3d>& EveryNthPoint(
+    const std::vector<Eigen::Vector3d>& points,
+    int stride,
+    std::vector<Eigen::Vector3d>* storage);
 
 }  // namespace internal
 

@@ -17,10 +17,14 @@ class CeresBackend::CostPool {
   CostPool(const NdtLayer& layer,
            const std::vector<Eigen::Vector3d>& points,
            UnmatchedPolicy policy)
-      : binding_(layer), points_(points), policy_(policy), costs_(points.size()) {}
+      : binding_(layer),
+        points_(points),
+        policy_(policy),
+        costs_(points.size()) {}
 
   // True when the pool was made for these points and this policy.
-  bool Serves(const std::vector<Eigen::Vector3d>& points, UnmatchedPolicy policy) const {
+  bool Serves(const std::vector<Eigen::Vector3d>& points,
+              UnmatchedPolicy policy) const {
     return policy == policy_ && points == points_;
   }
 
@@ -45,14 +49,18 @@ namespace {
 // Records the trace and ends the final stage on a small update norm.
 class TraceCallback : public ceres::IterationCallback {
  public:
-  TraceCallback(const StageOptions& options, const double* xi, StageSummary* summary)
+  TraceCallback(const StageOptions& options,
+                const double* xi,
+                StageSummary* summary)
       : options_(options), xi_(xi), summary_(summary) {}
 
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+  ceres::CallbackReturnType operator()(
+      const ceres::IterationSummary& s) override {
     if (s.iteration == 0) return ceres::SOLVER_CONTINUE;  // Initial evaluation.
     IterationRecord record;
     record.layer = options_.layer;
-    record.iteration = options_.first_iteration + static_cast<int>(summary_->trace.size());
+    record.iteration =
+        options_.first_iteration + static_cast<int>(summary_->trace.size());
     record.score = 2.0 * s.cost;  // Ceres minimises 1/2 sum ||r||^2.
     record.step_norm = s.step_norm;
     record.step_is_successful = s.step_is_successful;
@@ -90,7 +98,8 @@ bool CeresBackendOptions::IsValid(std::string* error) const {
   return true;
 }
 
-CeresBackend::CeresBackend(const CeresBackendOptions& options) : options_(options) {}
+CeresBackend::CeresBackend(const CeresBackendOptions& options)
+    : options_(options) {}
 CeresBackend::~CeresBackend() = default;
 
 void CeresBackend::SolveStage(const NdtLayer& layer,
@@ -100,8 +109,10 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
                               StageSummary* summary) {
   *summary = StageSummary();
   CHECK_GE(options.point_stride, 1);
-  if (pool_ == nullptr || !pool_->Serves(input_points, options.unmatched_policy)) {
-    pool_ = std::make_unique<CostPool>(layer, input_points, options.unmatched_policy);
+  if (pool_ == nullptr ||
+      !pool_->Serves(input_points, options.unmatched_policy)) {
+    pool_ = std::make_unique<CostPool>(
+        layer, input_points, options.unmatched_policy);
   }
   pool_->Rebind(layer);
 
@@ -109,20 +120,24 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   // The residual blocks are built here, correctly by construction; the
   // checks cost more than the blocks on small stages.
   problem_options.disable_all_safety_checks = true;
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // The pool's.
+  problem_options.cost_function_ownership =
+      ceres::DO_NOT_TAKE_OWNERSHIP;  // The pool's.
   ceres::Problem problem(problem_options);
   // One loss object for every block: the Problem frees it once (if used).
-  std::unique_ptr<ceres::LossFunction> loss(CreateLoss(options.loss, options.loss_scale));
+  std::unique_ptr<ceres::LossFunction> loss(
+      CreateLoss(options.loss, options.loss_scale));
   const size_t stride = static_cast<size_t>(options.point_stride);
   for (size_t i = 0; i < input_points.size(); i += stride) {
-    problem.AddResidualBlock(pool_->Get(i), loss.get(), reference_from_input_xi->data());
+    problem.AddResidualBlock(
+        pool_->Get(i), loss.get(), reference_from_input_xi->data());
   }
   if (problem.NumResidualBlocks() > 0) loss.release();
 
   TraceCallback callback(options, reference_from_input_xi->data(), summary);
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = options_.linear_solver_type;
-  solver_options.trust_region_strategy_type = options_.trust_region_strategy_type;
+  solver_options.trust_region_strategy_type =
+      options_.trust_region_strategy_type;
   solver_options.num_threads = options.num_threads;
   solver_options.max_num_iterations = options.max_iterations;
   solver_options.minimizer_progress_to_stdout = false;
@@ -141,7 +156,8 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   summary->message = ceres_summary.message;
   if (ceres_summary.termination_type == ceres::FAILURE) {
     summary->termination_type = TerminationType::FAILURE;
-  } else if (callback.converged() || ceres_summary.termination_type == ceres::CONVERGENCE) {
+  } else if (callback.converged() ||
+             ceres_summary.termination_type == ceres::CONVERGENCE) {
     summary->termination_type = TerminationType::CONVERGENCE;
   } else {
     summary->termination_type = TerminationType::NO_CONVERGENCE;

@@ -13,10 +13,10 @@
 // So an instance holds state: one per registration, not shared between
 // threads; it keeps its functors until destroyed.
 
+#include <ceres/types.h>
+
 #include <memory>
 #include <string>
-
-#include <ceres/types.h>
 
 #include "mlndt/solvers/backend.h"
 
@@ -25,7 +25,8 @@ namespace mlndt {
 struct CeresBackendOptions {
   // 6 parameters: dense normal equations are the cheapest adequate solver.
   ceres::LinearSolverType linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
-  ceres::TrustRegionStrategyType trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  ceres::TrustRegionStrategyType trust_region_strategy_type =
+      ceres::LEVENBERG_MARQUARDT;
 
   bool IsValid(std::string* error) const;
 };

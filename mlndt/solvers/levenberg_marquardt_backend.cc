@@ -24,7 +24,8 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
   summary->termination_type = TerminationType::NO_CONVERGENCE;
   summary->message = "iteration cap reached";
   // The Gauss-Newton Hessian is 2 J^T J and the gradient 2 J^T r, so
-  // (H + 2 lambda I) delta = -g is the paper's (J^T J + lambda I) delta = -J^T r.
+  // (H + 2 lambda I) delta = -g is the paper's (J^T J + lambda I) delta = -J^T
+  // r.
   ScoreEvaluation current = objective.Evaluate(*xi, HessianType::GAUSS_NEWTON);
   summary->final_score = current.score;
   if (current.matched == 0) {
@@ -32,9 +33,11 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
     summary->message = "no input point lies in an occupied cell";
     return;
   }
-  double lambda = lm_options.initial_lambda_factor * current.hessian.diagonal().mean() / 2.0;
+  double lambda = lm_options.initial_lambda_factor *
+                  current.hessian.diagonal().mean() / 2.0;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    const Matrix6d damped = current.hessian + 2.0 * lambda * Matrix6d::Identity();
+    const Matrix6d damped =
+        current.hessian + 2.0 * lambda * Matrix6d::Identity();
     const Vector6d step = -damped.ldlt().solve(current.gradient);
     if (!step.allFinite()) {
       summary->termination_type = TerminationType::FAILURE;
@@ -42,8 +45,10 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
       return;
     }
     const Vector6d candidate_xi = *xi + step;
-    const ScoreEvaluation candidate = objective.Evaluate(candidate_xi, HessianType::GAUSS_NEWTON);
-    const bool successful = candidate.matched > 0 && candidate.score < current.score;
+    const ScoreEvaluation candidate =
+        objective.Evaluate(candidate_xi, HessianType::GAUSS_NEWTON);
+    const bool successful =
+        candidate.matched > 0 && candidate.score < current.score;
     if (successful) {
       *xi = candidate_xi;
       current = candidate;
@@ -60,15 +65,21 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
   }
 }
 
-void LevenbergMarquardtBackend::SolveStage(const NdtLayer& layer,
-                                           const std::vector<Eigen::Vector3d>& input_points,
-                                           const StageOptions& options,
-                                           Vector6d* reference_from_input_xi,
-                                           StageSummary* summary) {
+void LevenbergMarquardtBackend::SolveStage(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const StageOptions& options,
+    Vector6d* reference_from_input_xi,
+    StageSummary* summary) {
   std::vector<Eigen::Vector3d> thinned;
-  const auto& points = internal::EveryNthPoint(input_points, options.point_stride, &thinned);
-  MinimizeLevenbergMarquardt(MlNdtObjective(layer, points, ScoreOptionsForStage(options)),
-                             options_, options, reference_from_input_xi, summary);
+  const auto& points =
+      internal::EveryNthPoint(input_points, options.point_stride, &thinned);
+  MinimizeLevenbergMarquardt(
+      MlNdtObjective(layer, points, ScoreOptionsForStage(options)),
+      options_,
+      options,
+      reference_from_input_xi,
+      summary);
 }
 
 }  // namespace mlndt

@@ -1,10 +1,9 @@
 #include "mlndt/solvers/newton_backend.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
 
 #include "mlndt/common/check_option.h"
 #include "mlndt/solvers/trace_recorder.h"
@@ -15,8 +14,10 @@ namespace {
 // H + gamma I with gamma chosen so that the smallest eigenvalue is at least
 // `ratio` times the largest (Section 4.1, "safely positive definite").
 Matrix6d SafelyPositiveDefinite(const Matrix6d& h, double ratio) {
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(h, Eigen::EigenvaluesOnly);
-  const double largest = std::max(std::abs(solver.eigenvalues().maxCoeff()), 1e-12);
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(h,
+                                                       Eigen::EigenvaluesOnly);
+  const double largest =
+      std::max(std::abs(solver.eigenvalues().maxCoeff()), 1e-12);
   const double smallest = solver.eigenvalues().minCoeff();
   const double gamma = std::max(0.0, ratio * largest - smallest);
   return h + gamma * Matrix6d::Identity();
@@ -48,8 +49,8 @@ void MinimizeNewton(const Objective& objective,
       return;
     }
     // Eq. (15): xi <- xi - H^-1 g.
-    const Matrix6d h =
-        SafelyPositiveDefinite(current.hessian, newton_options.min_eigenvalue_ratio);
+    const Matrix6d h = SafelyPositiveDefinite(
+        current.hessian, newton_options.min_eigenvalue_ratio);
     const Vector6d step = -h.ldlt().solve(current.gradient);
     if (!step.allFinite()) {
       summary->termination_type = TerminationType::FAILURE;
@@ -62,9 +63,11 @@ void MinimizeNewton(const Objective& objective,
     bool successful = true;
     if (newton_options.line_search) {
       successful = false;
-      for (int k = 0; k < newton_options.max_line_search_steps; ++k, scale *= 0.5) {
+      for (int k = 0; k < newton_options.max_line_search_steps;
+           ++k, scale *= 0.5) {
         candidate = *xi + scale * step;
-        candidate_score = objective.Evaluate(candidate, HessianType::NONE).score;
+        candidate_score =
+            objective.Evaluate(candidate, HessianType::NONE).score;
         if (candidate_score < current.score) {
           successful = true;
           break;
@@ -76,7 +79,8 @@ void MinimizeNewton(const Objective& objective,
       summary->final_score = candidate_score;
     }
     const double step_norm = scale * step.norm();
-    const bool converged = trace.Record(summary->final_score, step_norm, successful, *xi);
+    const bool converged =
+        trace.Record(summary->final_score, step_norm, successful, *xi);
     if (converged) {
       summary->termination_type = TerminationType::CONVERGENCE;
       summary->message = "update norm below tolerance";
@@ -97,9 +101,13 @@ void NewtonBackend::SolveStage(const NdtLayer& layer,
                                Vector6d* reference_from_input_xi,
                                StageSummary* summary) {
   std::vector<Eigen::Vector3d> thinned;
-  const auto& points = internal::EveryNthPoint(input_points, options.point_stride, &thinned);
-  MinimizeNewton(MlNdtObjective(layer, points, ScoreOptionsForStage(options)), options_, options,
-                 reference_from_input_xi, summary);
+  const auto& points =
+      internal::EveryNthPoint(input_points, options.point_stride, &thinned);
+  MinimizeNewton(MlNdtObjective(layer, points, ScoreOptionsForStage(options)),
+                 options_,
+                 options,
+                 reference_from_input_xi,
+                 summary);
 }
 
 }  // namespace mlndt

@@ -34,7 +34,8 @@ class MlNdtObjective : public Objective {
                            HessianType hessian) const override {
     ScoreOptions options = options_;
     options.hessian = hessian;
-    return EvaluateScore(layer_, input_points_, reference_from_input_xi, options);
+    return EvaluateScore(
+        layer_, input_points_, reference_from_input_xi, options);
   }
 
  private:

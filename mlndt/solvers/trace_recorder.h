@@ -14,10 +14,14 @@ class TraceRecorder {
       : options_(options), summary_(summary) {}
 
   // Records one iteration; returns true when it converged the stage.
-  bool Record(double score, double step_norm, bool successful, const Vector6d& xi) {
+  bool Record(double score,
+              double step_norm,
+              bool successful,
+              const Vector6d& xi) {
     IterationRecord record;
     record.layer = options_.layer;
-    record.iteration = options_.first_iteration + static_cast<int>(summary_->trace.size());
+    record.iteration =
+        options_.first_iteration + static_cast<int>(summary_->trace.size());
     record.score = score;
     record.step_norm = step_norm;
     record.step_is_successful = successful;
@@ -25,7 +29,8 @@ class TraceRecorder {
     record.time_s = NowSeconds() - options_.start_time_s;
     summary_->trace.push_back(record);
     summary_->iterations = static_cast<int>(summary_->trace.size());
-    return options_.step_tolerance > 0.0 && successful && step_norm < options_.step_tolerance;
+    return options_.step_tolerance > 0.0 && successful &&
+           step_norm < options_.step_tolerance;
   }
 
  private:

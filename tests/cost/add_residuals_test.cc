@@ -18,7 +18,6 @@
 #include "mlndt/cost/robust_loss.h"
 #include "mlndt/cost/score.h"
 #include "mlndt/grid/layered_grid.h"
-
 #include "tests/testing/eigen_near.h"
 
 namespace mlndt {
@@ -320,7 +319,8 @@ TEST(AddMlNdtResiduals, BoundResidualsMoveBetweenLayersWithoutNewBlocks) {
     binding.Rebind(grid.layer(layer));
     Vector6d fresh_xi = xi;
     ceres::Problem fresh;
-    AddMlNdtResiduals(grid.layer(layer), points, ResidualOptions(), fresh_xi.data(), &fresh);
+    AddMlNdtResiduals(
+        grid.layer(layer), points, ResidualOptions(), fresh_xi.data(), &fresh);
     const double cost = ProblemCost(&problem);
     EXPECT_EQ(cost, ProblemCost(&fresh)) << "layer " << layer;
     ceres::Solver::Summary summary;
@@ -332,7 +332,8 @@ TEST(AddMlNdtResiduals, BoundResidualsMoveBetweenLayersWithoutNewBlocks) {
   const Isometry3d truth = PoseVectorToIsometry(TruePose());
   const Isometry3d estimate = PoseVectorToIsometry(xi);
   EXPECT_LT(TranslationErrorM(estimate, truth), 0.01) << xi.transpose();
-  EXPECT_LT(RotationErrorRad(estimate, truth), 0.1 * kDegToRad) << xi.transpose();
+  EXPECT_LT(RotationErrorRad(estimate, truth), 0.1 * kDegToRad)
+      << xi.transpose();
 }
 
 TEST(AddMlNdtResidualsQuaternion, BoundResidualsFollowRebind) {
@@ -342,13 +343,17 @@ TEST(AddMlNdtResidualsQuaternion, BoundResidualsFollowRebind) {
   Vector3d t(0.1, -0.1, 0.05);
   LayerBinding binding(grid.layer(2));
   ceres::Problem bound;
-  AddMlNdtResidualsQuaternion(binding, points, ResidualOptions(), q.coeffs().data(), t.data(),
-                              &bound);
+  AddMlNdtResidualsQuaternion(
+      binding, points, ResidualOptions(), q.coeffs().data(), t.data(), &bound);
   for (int layer = 2; layer <= 4; ++layer) {
     binding.Rebind(grid.layer(layer));
     ceres::Problem fixed;
-    AddMlNdtResidualsQuaternion(grid.layer(layer), points, ResidualOptions(), q.coeffs().data(),
-                                t.data(), &fixed);
+    AddMlNdtResidualsQuaternion(grid.layer(layer),
+                                points,
+                                ResidualOptions(),
+                                q.coeffs().data(),
+                                t.data(),
+                                &fixed);
     const double cost = ProblemCost(&bound);
     EXPECT_GT(cost, 0.0);
     EXPECT_EQ(cost, ProblemCost(&fixed)) << "layer " << layer;

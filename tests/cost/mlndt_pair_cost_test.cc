@@ -19,9 +19,8 @@
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
 #include "mlndt/sampling/point_sampler.h"
-#include "tests/testing/synthetic_scene.h"
-
 #include "tests/testing/eigen_near.h"
+#include "tests/testing/synthetic_scene.h"
 
 namespace mlndt {
 namespace {
@@ -35,8 +34,11 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 using testing::EigenNear;
 
 // Q diag(l) Q^T with a tilted Q: non-diagonal, eigenvalues above the floors.
-Matrix3d TiltedCovariance(const Vector3d& eigenvalues, double angle, const Vector3d& axis) {
-  const Matrix3d q = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+Matrix3d TiltedCovariance(const Vector3d& eigenvalues,
+                          double angle,
+                          const Vector3d& axis) {
+  const Matrix3d q =
+      Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
   return q * eigenvalues.asDiagonal() * q.transpose();
 }
 
@@ -51,11 +53,18 @@ struct HandLayer {
   NdtLayer layer;
 
   HandLayer() {
-    const auto key = [](int i, int j, int k) -> int64_t { return i + 4 * (j + 3 * k); };
+    const auto key = [](int i, int j, int k) -> int64_t {
+      return i + 4 * (j + 3 * k);
+    };
     std::vector<NdtCell> cells(2);
-    EXPECT_TRUE(MakeNdtCell(20, mean_a, cov_a, CellRegularization(), &cells[0]));
-    EXPECT_TRUE(MakeNdtCell(20, mean_b, cov_b, CellRegularization(), &cells[1]));
-    layer = NdtLayer(Vector3d::Zero(), 2.0, Eigen::Vector3i(4, 3, 2), cells,
+    EXPECT_TRUE(
+        MakeNdtCell(20, mean_a, cov_a, CellRegularization(), &cells[0]));
+    EXPECT_TRUE(
+        MakeNdtCell(20, mean_b, cov_b, CellRegularization(), &cells[1]));
+    layer = NdtLayer(Vector3d::Zero(),
+                     2.0,
+                     Eigen::Vector3i(4, 3, 2),
+                     cells,
                      {key(1, 1, 0), key(3, 1, 1)});
   }
   const NdtCell& a() const { return *layer.CellAt({1, 1, 0}); }
@@ -74,7 +83,8 @@ struct Pose {
     return out;
   }
   static Pose From(const Eigen::Isometry3d& transform) {
-    return {Quaterniond(transform.linear()).normalized(), transform.translation()};
+    return {Quaterniond(transform.linear()).normalized(),
+            transform.translation()};
   }
 };
 
@@ -82,19 +92,31 @@ Quaterniond RotationFromAngleAxis(double angle, const Vector3d& axis) {
   return Quaterniond(Eigen::AngleAxisd(angle, axis.normalized()));
 }
 
-Pose PoseI() { return {RotationFromAngleAxis(0.6, {0.3, -0.5, 1.0}), Vector3d(12.0, -4.0, 1.5)}; }
-Pose PoseJ() { return {RotationFromAngleAxis(0.7, {0.2, -0.4, 1.0}), Vector3d(13.1, -3.2, 1.4)}; }
+Pose PoseI() {
+  return {RotationFromAngleAxis(0.6, {0.3, -0.5, 1.0}),
+          Vector3d(12.0, -4.0, 1.5)};
+}
+Pose PoseJ() {
+  return {RotationFromAngleAxis(0.7, {0.2, -0.4, 1.0}),
+          Vector3d(13.1, -3.2, 1.4)};
+}
 
 // The point of scan j that the poses map to `in_scan_i` (scan i's frame).
-Vector3d InputPointFor(const Pose& pose_i, const Pose& pose_j, const Vector3d& in_scan_i) {
+Vector3d InputPointFor(const Pose& pose_i,
+                       const Pose& pose_j,
+                       const Vector3d& in_scan_i) {
   return (pose_j.Isometry().inverse() * pose_i.Isometry()) * in_scan_i;
 }
 
 // Residual of a pair cost, pre-filled with NaN so unwritten entries show.
-Vector3d EvaluatePair(const ceres::CostFunction& cost, const Pose& pose_i, const Pose& pose_j) {
+Vector3d EvaluatePair(const ceres::CostFunction& cost,
+                      const Pose& pose_i,
+                      const Pose& pose_j) {
   Vector3d residual = Vector3d::Constant(kNaN);
-  const double* parameters[] = {pose_i.rotation.coeffs().data(), pose_i.translation.data(),
-                                pose_j.rotation.coeffs().data(), pose_j.translation.data()};
+  const double* parameters[] = {pose_i.rotation.coeffs().data(),
+                                pose_i.translation.data(),
+                                pose_j.rotation.coeffs().data(),
+                                pose_j.translation.data()};
   EXPECT_TRUE(cost.Evaluate(parameters, residual.data(), nullptr));
   return residual;
 }
@@ -115,13 +137,16 @@ TEST(MlNdtPairCost, ResidualIsWhitenedErrorAtHandComputedConfiguration) {
         std::make_tuple(Vector3d(6.5, 2.4, 3.6), &hand.b(), hand.cov_b)}) {
     const Vector3d p = InputPointFor(pose_i, pose_j, target);
     // The chain p -> world -> scan i, written out with rotation matrices.
-    const Vector3d world = pose_j.rotation.toRotationMatrix() * p + pose_j.translation;
-    const Vector3d x = pose_i.rotation.toRotationMatrix().transpose() * (world - pose_i.translation);
+    const Vector3d world =
+        pose_j.rotation.toRotationMatrix() * p + pose_j.translation;
+    const Vector3d x = pose_i.rotation.toRotationMatrix().transpose() *
+                       (world - pose_i.translation);
     ASSERT_TRUE(EigenNear(x, target, 1e-12));
     std::unique_ptr<ceres::CostFunction> cost(
         MlNdtPairCost::Create(hand.layer, p, UnmatchedPolicy::ZERO_RESIDUAL));
     ASSERT_EQ(cost->num_residuals(), 3);
-    ASSERT_EQ(cost->parameter_block_sizes(), std::vector<int32_t>({4, 3, 4, 3}));
+    ASSERT_EQ(cost->parameter_block_sizes(),
+              std::vector<int32_t>({4, 3, 4, 3}));
     const Vector3d residual = EvaluatePair(*cost, pose_i, pose_j);
     const Vector3d e = target - cell->mean;
     EXPECT_TRUE(EigenNear(residual, cell->whitening * e, 1e-11));
@@ -135,31 +160,37 @@ TEST(MlNdtPairCost, GradientCheckerAgreesWithQuaternionManifolds) {
   const Pose pose_i = PoseI();
   const Pose pose_j = PoseJ();
   ceres::EigenQuaternionManifold quaternion_manifold;
-  const std::vector<const ceres::Manifold*> manifolds = {&quaternion_manifold, nullptr,
-                                                         &quaternion_manifold, nullptr};
+  const std::vector<const ceres::Manifold*> manifolds = {
+      &quaternion_manifold, nullptr, &quaternion_manifold, nullptr};
   // Well inside A and B, and in the empty cell next to A (NEAREST_CELL).
   for (const auto& [target, policy] :
        {std::make_pair(Vector3d(2.8, 3.3, 1.1), UnmatchedPolicy::ZERO_RESIDUAL),
         std::make_pair(Vector3d(6.5, 2.4, 3.6), UnmatchedPolicy::ZERO_RESIDUAL),
-        std::make_pair(Vector3d(4.6, 3.0, 1.0), UnmatchedPolicy::NEAREST_CELL)}) {
+        std::make_pair(Vector3d(4.6, 3.0, 1.0),
+                       UnmatchedPolicy::NEAREST_CELL)}) {
     SCOPED_TRACE(UnmatchedPolicyToString(policy));
     const Vector3d p = InputPointFor(pose_i, pose_j, target);
-    std::unique_ptr<ceres::CostFunction> cost(MlNdtPairCost::Create(hand.layer, p, policy));
+    std::unique_ptr<ceres::CostFunction> cost(
+        MlNdtPairCost::Create(hand.layer, p, policy));
     ceres::GradientChecker checker(cost.get(), &manifolds, SmallStepOptions());
     ceres::GradientChecker::ProbeResults results;
-    const double* parameters[] = {pose_i.rotation.coeffs().data(), pose_i.translation.data(),
-                                  pose_j.rotation.coeffs().data(), pose_j.translation.data()};
+    const double* parameters[] = {pose_i.rotation.coeffs().data(),
+                                  pose_i.translation.data(),
+                                  pose_j.rotation.coeffs().data(),
+                                  pose_j.translation.data()};
     EXPECT_TRUE(checker.Probe(parameters, 1e-7, &results)) << results.error_log;
     ASSERT_EQ(results.local_jacobians.size(), 4u);
     for (int block = 0; block < 4; ++block) {
       // Tangent spaces are 3-dimensional; no block compares zeros.
       EXPECT_EQ(results.local_jacobians[block].cols(), 3);
-      EXPECT_GT(results.local_jacobians[block].norm(), 1.0) << "block " << block;
+      EXPECT_GT(results.local_jacobians[block].norm(), 1.0)
+          << "block " << block;
     }
     // d r / d t_j = W R_i^T, d r / d t_i = -W R_i^T.
     const NdtCell* cell = MatchCell(hand.layer, target, policy);
     ASSERT_NE(cell, nullptr);
-    const Matrix3d w_rt = cell->whitening * pose_i.rotation.toRotationMatrix().transpose();
+    const Matrix3d w_rt =
+        cell->whitening * pose_i.rotation.toRotationMatrix().transpose();
     EXPECT_TRUE(EigenNear(results.jacobians[3], w_rt, 1e-10));
     EXPECT_TRUE(EigenNear(results.jacobians[1], Matrix3d(-w_rt), 1e-10));
   }
@@ -171,11 +202,14 @@ TEST(MlNdtPairCost, EqualsSinglePoseResidualWhenPoseIIsIdentity) {
   const Pose pose_j = PoseJ();
   for (const UnmatchedPolicy policy :
        {UnmatchedPolicy::ZERO_RESIDUAL, UnmatchedPolicy::NEAREST_CELL}) {
-    for (const Vector3d& target : {Vector3d(2.8, 3.3, 1.1), Vector3d(6.5, 2.4, 3.6),
-                                   Vector3d(4.6, 3.0, 1.0), Vector3d(-20.0, 3.0, 1.0)}) {
+    for (const Vector3d& target : {Vector3d(2.8, 3.3, 1.1),
+                                   Vector3d(6.5, 2.4, 3.6),
+                                   Vector3d(4.6, 3.0, 1.0),
+                                   Vector3d(-20.0, 3.0, 1.0)}) {
       SCOPED_TRACE(UnmatchedPolicyToString(policy));
       const Vector3d p = InputPointFor(identity, pose_j, target);
-      std::unique_ptr<ceres::CostFunction> pair(MlNdtPairCost::Create(hand.layer, p, policy));
+      std::unique_ptr<ceres::CostFunction> pair(
+          MlNdtPairCost::Create(hand.layer, p, policy));
       std::unique_ptr<ceres::CostFunction> single(
           MlNdtPointCostQuaternion::Create(hand.layer, p, policy));
       Vector3d expected = Vector3d::Constant(kNaN);
@@ -184,7 +218,8 @@ TEST(MlNdtPairCost, EqualsSinglePoseResidualWhenPoseIIsIdentity) {
       Eigen::Matrix<double, 3, 4, Eigen::RowMajor> single_dq, pair_dq;
       Eigen::Matrix<double, 3, 3, Eigen::RowMajor> single_dt, pair_dt;
       double* single_jacobians[] = {single_dq.data(), single_dt.data()};
-      ASSERT_TRUE(single->Evaluate(single_parameters, expected.data(), single_jacobians));
+      ASSERT_TRUE(single->Evaluate(
+          single_parameters, expected.data(), single_jacobians));
 
       Vector3d residual = Vector3d::Constant(kNaN);
       Eigen::Matrix<double, 3, 4, Eigen::RowMajor> dq_i;
@@ -193,8 +228,10 @@ TEST(MlNdtPairCost, EqualsSinglePoseResidualWhenPoseIIsIdentity) {
                                          identity.translation.data(),
                                          pose_j.rotation.coeffs().data(),
                                          pose_j.translation.data()};
-      double* pair_jacobians[] = {dq_i.data(), dt_i.data(), pair_dq.data(), pair_dt.data()};
-      ASSERT_TRUE(pair->Evaluate(pair_parameters, residual.data(), pair_jacobians));
+      double* pair_jacobians[] = {
+          dq_i.data(), dt_i.data(), pair_dq.data(), pair_dt.data()};
+      ASSERT_TRUE(
+          pair->Evaluate(pair_parameters, residual.data(), pair_jacobians));
       EXPECT_TRUE(EigenNear(residual, expected, 1e-12)) << target.transpose();
       // Pose j's derivatives are those of the single-pose functor.
       EXPECT_TRUE(EigenNear(pair_dq, single_dq, 1e-12));
@@ -208,16 +245,19 @@ TEST(MlNdtPairCost, InvariantToACommonWorldTransform) {
   const Pose pose_i = PoseI();
   const Pose pose_j = PoseJ();
   Eigen::Isometry3d world2_from_world = Eigen::Isometry3d::Identity();
-  world2_from_world.linear() = RotationFromAngleAxis(2.1, {-0.7, 0.4, 0.2}).toRotationMatrix();
+  world2_from_world.linear() =
+      RotationFromAngleAxis(2.1, {-0.7, 0.4, 0.2}).toRotationMatrix();
   world2_from_world.translation() = Vector3d(-150.0, 320.0, -12.0);
   const Pose moved_i = Pose::From(world2_from_world * pose_i.Isometry());
   const Pose moved_j = Pose::From(world2_from_world * pose_j.Isometry());
   for (const UnmatchedPolicy policy :
        {UnmatchedPolicy::ZERO_RESIDUAL, UnmatchedPolicy::NEAREST_CELL}) {
-    for (const Vector3d& target :
-         {Vector3d(2.8, 3.3, 1.1), Vector3d(6.5, 2.4, 3.6), Vector3d(4.6, 3.0, 1.0)}) {
+    for (const Vector3d& target : {Vector3d(2.8, 3.3, 1.1),
+                                   Vector3d(6.5, 2.4, 3.6),
+                                   Vector3d(4.6, 3.0, 1.0)}) {
       const Vector3d p = InputPointFor(pose_i, pose_j, target);
-      std::unique_ptr<ceres::CostFunction> cost(MlNdtPairCost::Create(hand.layer, p, policy));
+      std::unique_ptr<ceres::CostFunction> cost(
+          MlNdtPairCost::Create(hand.layer, p, policy));
       const Vector3d before = EvaluatePair(*cost, pose_i, pose_j);
       const Vector3d after = EvaluatePair(*cost, moved_i, moved_j);
       // Non-zero except for the empty cell under ZERO_RESIDUAL.
@@ -225,15 +265,19 @@ TEST(MlNdtPairCost, InvariantToACommonWorldTransform) {
       if (policy == UnmatchedPolicy::NEAREST_CELL || !in_empty_cell) {
         EXPECT_GT(before.norm(), 0.1) << UnmatchedPolicyToString(policy);
       }
-      EXPECT_TRUE(EigenNear(after, before, 1e-9)) << UnmatchedPolicyToString(policy);
+      EXPECT_TRUE(EigenNear(after, before, 1e-9))
+          << UnmatchedPolicyToString(policy);
     }
   }
   // Moving only one of the two poses changes the residual.
   const Vector3d p = InputPointFor(pose_i, pose_j, Vector3d(2.8, 3.3, 1.1));
   std::unique_ptr<ceres::CostFunction> cost(
       MlNdtPairCost::Create(hand.layer, p, UnmatchedPolicy::ZERO_RESIDUAL));
-  const Pose shifted_j{pose_j.rotation, pose_j.translation + Vector3d(0.2, 0.0, 0.0)};
-  EXPECT_GT((EvaluatePair(*cost, pose_i, shifted_j) - EvaluatePair(*cost, pose_i, pose_j)).norm(),
+  const Pose shifted_j{pose_j.rotation,
+                       pose_j.translation + Vector3d(0.2, 0.0, 0.0)};
+  EXPECT_GT((EvaluatePair(*cost, pose_i, shifted_j) -
+             EvaluatePair(*cost, pose_i, pose_j))
+                .norm(),
             0.01);
 }
 
@@ -241,13 +285,19 @@ TEST(AddMlNdtPairResiduals, AddsOneBlockPerPointAndSetsQuaternionManifolds) {
   const HandLayer hand;
   Pose pose_i = PoseI();
   Pose pose_j = PoseJ();
-  const std::vector<Vector3d> points = {Vector3d(1.0, 0.0, 0.0), Vector3d(0.0, 2.0, 0.5),
+  const std::vector<Vector3d> points = {Vector3d(1.0, 0.0, 0.0),
+                                        Vector3d(0.0, 2.0, 0.5),
                                         Vector3d(0.5, 0.5, 0.5)};
   ceres::Problem problem;
-  const std::vector<ceres::ResidualBlockId> ids = AddMlNdtPairResiduals(
-      hand.layer, points, ResidualOptions(), pose_i.rotation.coeffs().data(),
-      pose_i.translation.data(), pose_j.rotation.coeffs().data(), pose_j.translation.data(),
-      &problem);
+  const std::vector<ceres::ResidualBlockId> ids =
+      AddMlNdtPairResiduals(hand.layer,
+                            points,
+                            ResidualOptions(),
+                            pose_i.rotation.coeffs().data(),
+                            pose_i.translation.data(),
+                            pose_j.rotation.coeffs().data(),
+                            pose_j.translation.data(),
+                            &problem);
   EXPECT_EQ(ids.size(), points.size());
   EXPECT_EQ(problem.NumResidualBlocks(), 3);
   EXPECT_EQ(problem.NumParameterBlocks(), 4);
@@ -258,7 +308,8 @@ TEST(AddMlNdtPairResiduals, AddsOneBlockPerPointAndSetsQuaternionManifolds) {
                 problem.GetManifold(pose_j.rotation.coeffs().data())),
             nullptr);
   EXPECT_EQ(problem.GetManifold(pose_i.translation.data()), nullptr);
-  EXPECT_EQ(problem.ParameterBlockTangentSize(pose_j.rotation.coeffs().data()), 3);
+  EXPECT_EQ(problem.ParameterBlockTangentSize(pose_j.rotation.coeffs().data()),
+            3);
 }
 
 TEST(AddMlNdtPairResiduals, KeepsTheCallersManifold) {
@@ -266,11 +317,17 @@ TEST(AddMlNdtPairResiduals, KeepsTheCallersManifold) {
   Pose pose_i = PoseI();
   Pose pose_j = PoseJ();
   ceres::Problem problem;
-  problem.AddParameterBlock(pose_i.rotation.coeffs().data(), 4, new ceres::QuaternionManifold);
+  problem.AddParameterBlock(
+      pose_i.rotation.coeffs().data(), 4, new ceres::QuaternionManifold);
   auto* callers = problem.GetManifold(pose_i.rotation.coeffs().data());
-  AddMlNdtPairResiduals(hand.layer, {Vector3d(1.0, 0.0, 0.0)}, ResidualOptions(),
-                        pose_i.rotation.coeffs().data(), pose_i.translation.data(),
-                        pose_j.rotation.coeffs().data(), pose_j.translation.data(), &problem);
+  AddMlNdtPairResiduals(hand.layer,
+                        {Vector3d(1.0, 0.0, 0.0)},
+                        ResidualOptions(),
+                        pose_i.rotation.coeffs().data(),
+                        pose_i.translation.data(),
+                        pose_j.rotation.coeffs().data(),
+                        pose_j.translation.data(),
+                        &problem);
   EXPECT_EQ(problem.GetManifold(pose_i.rotation.coeffs().data()), callers);
 }
 
@@ -279,19 +336,23 @@ TEST(AddMlNdtPairResiduals, KeepsTheCallersManifold) {
 // pose; scan 1 starts pushed off and must return to its true pose.
 TEST(AddMlNdtPairResiduals, JointSolveRecoversTheRelativePose) {
   Eigen::Isometry3d world_from_scan0 = Eigen::Isometry3d::Identity();
-  world_from_scan0.linear() = RotationFromAngleAxis(0.4, {0.0, 0.0, 1.0}).toRotationMatrix();
+  world_from_scan0.linear() =
+      RotationFromAngleAxis(0.4, {0.0, 0.0, 1.0}).toRotationMatrix();
   world_from_scan0.translation() = Vector3d(100.0, -50.0, 2.0);
   Eigen::Isometry3d scan0_from_scan1 = Eigen::Isometry3d::Identity();
-  scan0_from_scan1.linear() = RotationFromAngleAxis(0.05, {0.1, 0.0, 1.0}).toRotationMatrix();
+  scan0_from_scan1.linear() =
+      RotationFromAngleAxis(0.05, {0.1, 0.0, 1.0}).toRotationMatrix();
   scan0_from_scan1.translation() = Vector3d(1.5, 0.3, 0.05);
-  const Eigen::Isometry3d world_from_scan1 = world_from_scan0 * scan0_from_scan1;
+  const Eigen::Isometry3d world_from_scan1 =
+      world_from_scan0 * scan0_from_scan1;
 
   // Both scans sample the street in its own frame; scan 1's points are moved
   // into scan 1's frame.
   const PointCloud scene0 = testing::StreetScene(60000, 0.02, 11);
   const PointCloud scene1 = testing::StreetScene(60000, 0.02, 12);
   std::vector<Vector3d> scan1_points;
-  for (const Vector3d& p : scene1.points()) scan1_points.push_back(scan0_from_scan1.inverse() * p);
+  for (const Vector3d& p : scene1.points())
+    scan1_points.push_back(scan0_from_scan1.inverse() * p);
   PointCloud scan1(scan1_points);
   LayeredGridOptions grid_options;
   grid_options.finest_cell_size_m = 2.0;
@@ -299,11 +360,13 @@ TEST(AddMlNdtPairResiduals, JointSolveRecoversTheRelativePose) {
   std::string error;
   ASSERT_TRUE(LayeredGrid::Build(grid_options, scene0, &map0, &error)) << error;
   PointCloud samples;
-  ASSERT_TRUE(SamplePoints(SamplingOptions(), scan1, &samples, nullptr, &error)) << error;
+  ASSERT_TRUE(SamplePoints(SamplingOptions(), scan1, &samples, nullptr, &error))
+      << error;
 
   Pose pose0 = Pose::From(world_from_scan0);
   Eigen::Isometry3d push = Eigen::Isometry3d::Identity();
-  push.linear() = RotationFromAngleAxis(0.03, {0.0, 0.2, 1.0}).toRotationMatrix();
+  push.linear() =
+      RotationFromAngleAxis(0.03, {0.0, 0.2, 1.0}).toRotationMatrix();
   push.translation() = Vector3d(0.4, -0.3, 0.1);
   Pose pose1 = Pose::From(world_from_scan1 * push);
   for (int layer = map0.num_layers() - 1; layer <= map0.num_layers(); ++layer) {
@@ -311,9 +374,14 @@ TEST(AddMlNdtPairResiduals, JointSolveRecoversTheRelativePose) {
     ResidualOptions residual_options;
     residual_options.unmatched_policy = UnmatchedPolicy::NEAREST_CELL;
     residual_options.loss_function = new ceres::CauchyLoss(3.0);
-    AddMlNdtPairResiduals(map0.layer(layer), samples.points(), residual_options,
-                          pose0.rotation.coeffs().data(), pose0.translation.data(),
-                          pose1.rotation.coeffs().data(), pose1.translation.data(), &problem);
+    AddMlNdtPairResiduals(map0.layer(layer),
+                          samples.points(),
+                          residual_options,
+                          pose0.rotation.coeffs().data(),
+                          pose0.translation.data(),
+                          pose1.rotation.coeffs().data(),
+                          pose1.translation.data(),
+                          &problem);
     problem.SetParameterBlockConstant(pose0.rotation.coeffs().data());
     problem.SetParameterBlockConstant(pose0.translation.data());
     ceres::Solver::Options options;
@@ -324,10 +392,14 @@ TEST(AddMlNdtPairResiduals, JointSolveRecoversTheRelativePose) {
     ASSERT_TRUE(summary.IsSolutionUsable()) << summary.BriefReport();
   }
   // Pose 0 did not move; pose 1 is back at its true pose.
-  EXPECT_TRUE(EigenNear(pose0.translation, world_from_scan0.translation(), 0.0));
+  EXPECT_TRUE(
+      EigenNear(pose0.translation, world_from_scan0.translation(), 0.0));
   const Eigen::Isometry3d estimate = pose1.Isometry();
-  EXPECT_LT((estimate.translation() - world_from_scan1.translation()).norm(), 0.03);
-  EXPECT_LT(Eigen::AngleAxisd(estimate.linear().transpose() * world_from_scan1.linear()).angle(),
+  EXPECT_LT((estimate.translation() - world_from_scan1.translation()).norm(),
+            0.03);
+  EXPECT_LT(Eigen::AngleAxisd(estimate.linear().transpose() *
+                              world_from_scan1.linear())
+                .angle(),
             0.002);
 }
 

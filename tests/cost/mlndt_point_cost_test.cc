@@ -14,7 +14,6 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
-
 #include "tests/testing/eigen_near.h"
 
 namespace mlndt {
@@ -464,12 +463,14 @@ namespace {
 
 TEST(CachedEulerRotation, MatchesEulerRotationForChangingJets) {
   using Jet = ceres::Jet<double, 6>;
-  const double values[][3] = {{0.1, -0.2, 0.3}, {0.1, -0.2, 0.3}, {0.4, 0.0, -1.0}, {0.1, -0.2, 0.3}};
+  const double values[][3] = {
+      {0.1, -0.2, 0.3}, {0.1, -0.2, 0.3}, {0.4, 0.0, -1.0}, {0.1, -0.2, 0.3}};
   for (int seed_offset = 0; seed_offset < 2; ++seed_offset) {
     for (const auto& v : values) {
       Jet angles[3];
       for (int i = 0; i < 3; ++i) angles[i] = Jet(v[i], (i + seed_offset) % 6);
-      const Eigen::Matrix<Jet, 3, 3> expected = EulerRotation(angles[0], angles[1], angles[2]);
+      const Eigen::Matrix<Jet, 3, 3> expected =
+          EulerRotation(angles[0], angles[1], angles[2]);
       const Eigen::Matrix<Jet, 3, 3>& cached = CachedEulerRotation(angles);
       for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) {
@@ -480,7 +481,8 @@ TEST(CachedEulerRotation, MatchesEulerRotationForChangingJets) {
     }
   }
   const double plain[3] = {0.7, 0.1, -0.3};
-  EXPECT_EQ(CachedEulerRotation(plain), EulerRotation(plain[0], plain[1], plain[2]));
+  EXPECT_EQ(CachedEulerRotation(plain),
+            EulerRotation(plain[0], plain[1], plain[2]));
 }
 
 }  // namespace

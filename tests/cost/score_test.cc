@@ -13,7 +13,6 @@
 #include "mlndt/cost/robust_loss.h"
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
-
 #include "tests/testing/eigen_near.h"
 
 namespace mlndt {

@@ -31,14 +31,17 @@ TEST(CellIndex, MemoryBytes) {
   EXPECT_EQ(CellIndex().MemoryBytes() % sizeof(void*), 0u);
   // The dense table: 4 bytes a grid cell, whatever it holds.
   CellIndex dense(1000);
-  EXPECT_EQ(dense.MemoryBytes(), 1000 * sizeof(int32_t) + CellIndex().MemoryBytes());
+  EXPECT_EQ(dense.MemoryBytes(),
+            1000 * sizeof(int32_t) + CellIndex().MemoryBytes());
   dense.FindOrInsert(5, 0);
-  EXPECT_EQ(dense.MemoryBytes(), 1000 * sizeof(int32_t) + CellIndex().MemoryBytes());
+  EXPECT_EQ(dense.MemoryBytes(),
+            1000 * sizeof(int32_t) + CellIndex().MemoryBytes());
   // The hash table grows with its entries: at least a node each.
   CellIndex sparse(CellIndex::kMaxDenseCells + 1);
   const size_t empty = sparse.MemoryBytes();
   for (int32_t i = 0; i < 1000; ++i) sparse.FindOrInsert(int64_t{i} * 1000, i);
-  EXPECT_GE(sparse.MemoryBytes(), empty + 1000 * (sizeof(int64_t) + sizeof(int32_t)));
+  EXPECT_GE(sparse.MemoryBytes(),
+            empty + 1000 * (sizeof(int64_t) + sizeof(int32_t)));
 }
 
 }  // namespace

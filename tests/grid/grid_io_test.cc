@@ -1,10 +1,10 @@
 #include "mlndt/grid/grid_io.h"
 
-#include <fstream>
-#include <random>
-
 #include <glog/logging.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
 
 namespace mlndt {
 namespace {
@@ -13,16 +13,19 @@ LayeredGrid MakeGrid() {
   std::mt19937 rng(11);
   std::normal_distribution<double> n(0.0, 5.0);
   PointCloud cloud;
-  for (int i = 0; i < 20000; ++i) cloud.Add(Eigen::Vector3d(n(rng), n(rng), 0.3 * n(rng)));
+  for (int i = 0; i < 20000; ++i)
+    cloud.Add(Eigen::Vector3d(n(rng), n(rng), 0.3 * n(rng)));
   LayeredGrid grid;
   std::string error;
-  CHECK(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error)) << error;
+  CHECK(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+      << error;
   return grid;
 }
 
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return std::string((std::istreambuf_iterator<char>(in)),
+                     std::istreambuf_iterator<char>());
 }
 
 void WriteAll(const std::string& path, const std::string& bytes) {
@@ -45,7 +48,8 @@ TEST(GridIo, RoundTripKeepsEveryCell) {
     ASSERT_EQ(a.cells().size(), b.cells().size());
     for (size_t c = 0; c < a.cells().size(); ++c) {
       EXPECT_EQ(a.cells()[c].mean, b.cells()[c].mean);
-      EXPECT_TRUE(a.cells()[c].whitening.isApprox(b.cells()[c].whitening, 1e-9));
+      EXPECT_TRUE(
+          a.cells()[c].whitening.isApprox(b.cells()[c].whitening, 1e-9));
     }
     const Eigen::Vector3d probe(1.0, -2.0, 0.1);
     EXPECT_EQ(a.Lookup(probe) == nullptr, b.Lookup(probe) == nullptr);

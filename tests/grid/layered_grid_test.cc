@@ -1,11 +1,10 @@
 #include "mlndt/grid/layered_grid.h"
 
-#include <cstring>
-#include <random>
+#include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-
-#include <gtest/gtest.h>
+#include <cstring>
+#include <random>
 
 #include "mlndt/cloud/io.h"
 #include "tests/testing/test_data.h"
@@ -14,7 +13,10 @@ namespace mlndt {
 namespace {
 
 // Points spread over a box, seeded.
-PointCloud BoxCloud(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int n, int seed) {
+PointCloud BoxCloud(const Eigen::Vector3d& min,
+                    const Eigen::Vector3d& max,
+                    int n,
+                    int seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   PointCloud cloud;
@@ -30,11 +32,12 @@ PointCloud BoxCloud(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int 
 
 TEST(LayeredGrid, PaperWorkedExampleLayerTwo) {
   // Section 4: 100 x 100 x 20 m, q = 8, layer 2 -> 14.62 m cells, 7 x 7 x 2.
-  const PointCloud cloud =
-      BoxCloud(Eigen::Vector3d(-50, -50, 0), Eigen::Vector3d(50, 50, 20), 20000, 1);
+  const PointCloud cloud = BoxCloud(
+      Eigen::Vector3d(-50, -50, 0), Eigen::Vector3d(50, 50, 20), 20000, 1);
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+      << error;
   ASSERT_EQ(grid.num_layers(), 4);
   EXPECT_NEAR(grid.layer(2).cell_size(), 14.62, 0.005);
   EXPECT_EQ(grid.layer(2).dims(), Eigen::Vector3i(7, 7, 2));
@@ -46,13 +49,15 @@ TEST(LayeredGrid, CellSizesHalveForQEight) {
   const std::vector<double> sizes =
       LayerCellSizes(LayeredGridOptions(), Eigen::Vector3d(100, 100, 20));
   ASSERT_EQ(sizes.size(), 4u);
-  for (size_t i = 1; i < sizes.size(); ++i) EXPECT_NEAR(sizes[i - 1] / sizes[i], 2.0, 1e-12);
+  for (size_t i = 1; i < sizes.size(); ++i)
+    EXPECT_NEAR(sizes[i - 1] / sizes[i], 2.0, 1e-12);
 }
 
 TEST(LayeredGrid, FinestCellSizeDerivesLayerCount) {
   LayeredGridOptions options;
   options.finest_cell_size_m = 1.0;
-  const std::vector<double> sizes = LayerCellSizes(options, Eigen::Vector3d(160, 160, 20));
+  const std::vector<double> sizes =
+      LayerCellSizes(options, Eigen::Vector3d(160, 160, 20));
   ASSERT_FALSE(sizes.empty());
   EXPECT_LE(sizes.back(), 1.0);
   EXPECT_GT(sizes.back(), 0.5);  // Smallest n that reaches 1 m, not more.
@@ -64,7 +69,8 @@ TEST(LayeredGrid, MomentsMatchDirectComputation) {
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(40, 30, 10), 30000, 2);
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+      << error;
   for (int layer = 1; layer <= grid.num_layers(); ++layer) {
     const NdtLayer& l = grid.layer(layer);
     // Direct: collect points of the cell containing a probe point.
@@ -76,7 +82,8 @@ TEST(LayeredGrid, MomentsMatchDirectComputation) {
     }
     const NdtCell* cell = l.Lookup(probe);
     ASSERT_NE(cell, nullptr) << "layer " << layer;
-    ASSERT_EQ(cell->count, static_cast<int>(inside.size())) << "layer " << layer;
+    ASSERT_EQ(cell->count, static_cast<int>(inside.size()))
+        << "layer " << layer;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (const auto& p : inside) mean += p;
     mean /= inside.size();
@@ -100,7 +107,8 @@ TEST(LayeredGrid, NonCubicDivisionConstantBinsEveryLayer) {
   ASSERT_TRUE(LayeredGrid::Build(options, cloud, &grid, &error)) << error;
   const double volume = 40.0 * 40.0 * 10.0;
   for (int i = 1; i <= 3; ++i) {
-    EXPECT_NEAR(grid.layer(i).cell_size(), std::cbrt(volume / std::pow(10.0, i)), 1e-9);
+    EXPECT_NEAR(
+        grid.layer(i).cell_size(), std::cbrt(volume / std::pow(10.0, i)), 1e-9);
     size_t total = 0;
     for (const NdtCell& c : grid.layer(i).cells()) total += c.count;
     EXPECT_LE(total, cloud.size());
@@ -109,11 +117,12 @@ TEST(LayeredGrid, NonCubicDivisionConstantBinsEveryLayer) {
 }
 
 TEST(LayeredGrid, LookupIsConsistentWithCellBounds) {
-  const PointCloud cloud =
-      BoxCloud(Eigen::Vector3d(-10, -10, -2), Eigen::Vector3d(10, 10, 2), 20000, 4);
+  const PointCloud cloud = BoxCloud(
+      Eigen::Vector3d(-10, -10, -2), Eigen::Vector3d(10, 10, 2), 20000, 4);
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+      << error;
   const NdtLayer& layer = grid.layer(3);
   for (const auto& p : cloud.points()) {
     const NdtCell* cell = layer.Lookup(p);
@@ -133,8 +142,11 @@ TEST(LayeredGrid, FarFromOriginMatchesCentred) {
   for (const auto& p : cloud.points()) moved.push_back(p + offset);
   LayeredGrid near, far;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &near, &error)) << error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), PointCloud(moved), &far, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &near, &error))
+      << error;
+  ASSERT_TRUE(
+      LayeredGrid::Build(LayeredGridOptions(), PointCloud(moved), &far, &error))
+      << error;
   for (int i = 1; i <= near.num_layers(); ++i) {
     ASSERT_EQ(near.layer(i).cells().size(), far.layer(i).cells().size());
     for (size_t c = 0; c < near.layer(i).cells().size(); ++c) {
@@ -142,7 +154,8 @@ TEST(LayeredGrid, FarFromOriginMatchesCentred) {
       const NdtCell& b = far.layer(i).cells()[c];
       EXPECT_EQ(a.count, b.count);
       EXPECT_LT((a.mean + offset - b.mean).norm(), 1e-6);
-      EXPECT_LT((a.covariance - b.covariance).norm(), 1e-6 * a.covariance.norm());
+      EXPECT_LT((a.covariance - b.covariance).norm(),
+                1e-6 * a.covariance.norm());
     }
   }
 }
@@ -164,11 +177,14 @@ TEST(LayeredGrid, MinPointsPerCellIsRespected) {
 TEST(LayeredGrid, RejectsBadInput) {
   LayeredGrid grid;
   std::string error;
-  EXPECT_FALSE(LayeredGrid::Build(LayeredGridOptions(), PointCloud(), &grid, &error));
+  EXPECT_FALSE(
+      LayeredGrid::Build(LayeredGridOptions(), PointCloud(), &grid, &error));
   EXPECT_NE(error.find("empty"), std::string::npos);
-  PointCloud with_nan = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1), 100, 7);
+  PointCloud with_nan =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1), 100, 7);
   with_nan.Add(Eigen::Vector3d(std::nan(""), 0, 0));
-  EXPECT_FALSE(LayeredGrid::Build(LayeredGridOptions(), with_nan, &grid, &error));
+  EXPECT_FALSE(
+      LayeredGrid::Build(LayeredGridOptions(), with_nan, &grid, &error));
   EXPECT_NE(error.find("non-finite"), std::string::npos);
   PointCloud same(std::vector<Eigen::Vector3d>(10, Eigen::Vector3d(1, 2, 3)));
   EXPECT_FALSE(LayeredGrid::Build(LayeredGridOptions(), same, &grid, &error));
@@ -177,7 +193,8 @@ TEST(LayeredGrid, RejectsBadInput) {
 }
 
 TEST(LayeredGrid, InvalidOptionsNameTheField) {
-  const PointCloud cloud = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 9), 500, 8);
+  const PointCloud cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 9), 500, 8);
   LayeredGrid grid;
   std::string error;
   LayeredGridOptions options;
@@ -198,31 +215,38 @@ TEST(LayeredGrid, FlatCloudStillBuilds) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(0.0, 20.0);
   PointCloud plane;
-  for (int i = 0; i < 5000; ++i) plane.Add(Eigen::Vector3d(u(rng), u(rng), 0.0));
+  for (int i = 0; i < 5000; ++i)
+    plane.Add(Eigen::Vector3d(u(rng), u(rng), 0.0));
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), plane, &grid, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), plane, &grid, &error))
+      << error;
   ASSERT_FALSE(grid.layer(2).cells().empty());
   // A planar cell is regularised: smallest eigenvalue = largest / 100.
   const NdtCell& cell = grid.layer(2).cells().front();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cell.covariance);
-  EXPECT_NEAR(es.eigenvalues()(0), es.eigenvalues()(2) / 100.0, 1e-9 * es.eigenvalues()(2));
+  EXPECT_NEAR(es.eigenvalues()(0),
+              es.eigenvalues()(2) / 100.0,
+              1e-9 * es.eigenvalues()(2));
 }
 
 // The bundled KITTI frame `frame` (124668 points for frame 0).
 PointCloud KittiScan(int frame) {
   PointCloud cloud;
   std::string error;
-  const std::string path =
-      testing::BundledDataPath("kitti/pcd/00000" + std::to_string(frame) + ".pcd");
+  const std::string path = testing::BundledDataPath(
+      "kitti/pcd/00000" + std::to_string(frame) + ".pcd");
   EXPECT_TRUE(ReadPointCloud(path, &cloud, nullptr, &error)) << error;
   return cloud;
 }
 
 // Same bits, not just ==: -0.0 vs 0.0 or a different NaN would fail too.
 template <typename Derived>
-bool SameBits(const Eigen::DenseBase<Derived>& a, const Eigen::DenseBase<Derived>& b) {
-  return std::memcmp(a.derived().data(), b.derived().data(), sizeof(double) * a.size()) == 0;
+bool SameBits(const Eigen::DenseBase<Derived>& a,
+              const Eigen::DenseBase<Derived>& b) {
+  return std::memcmp(a.derived().data(),
+                     b.derived().data(),
+                     sizeof(double) * a.size()) == 0;
 }
 
 // Every layer of `a` and `b` holds the same cells, in the same order, with
@@ -269,7 +293,8 @@ TEST(LayeredGrid, ThreadsBuildTheSameMapOnKitti) {
   non_nested.division_constant = 10;
   non_nested.num_layers = 4;
   for (const LayeredGridOptions& options : {registration, fine, non_nested}) {
-    SCOPED_TRACE("finest_cell_size_m " + std::to_string(options.finest_cell_size_m) + ", q " +
+    SCOPED_TRACE("finest_cell_size_m " +
+                 std::to_string(options.finest_cell_size_m) + ", q " +
                  std::to_string(options.division_constant));
     LayeredGrid serial;
     std::string error;
@@ -281,7 +306,8 @@ TEST(LayeredGrid, ThreadsBuildTheSameMapOnKitti) {
       LayeredGridOptions parallel_options = options;
       parallel_options.num_threads = threads;
       LayeredGrid parallel;
-      ASSERT_TRUE(LayeredGrid::Build(parallel_options, scan, &parallel, &error)) << error;
+      ASSERT_TRUE(LayeredGrid::Build(parallel_options, scan, &parallel, &error))
+          << error;
       ExpectIdenticalMaps(serial, parallel);
     }
   }
@@ -289,7 +315,8 @@ TEST(LayeredGrid, ThreadsBuildTheSameMapOnKitti) {
 
 TEST(LayeredGrid, MoreThreadsThanCellsBuildTheSameMap) {
   // A few cells per layer: most threads get no cells to sum.
-  const PointCloud cloud = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(4, 4, 1), 300, 10);
+  const PointCloud cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(4, 4, 1), 300, 10);
   LayeredGridOptions options;
   options.num_layers = 2;
   LayeredGrid serial, parallel;
@@ -307,7 +334,8 @@ TEST(LayeredGrid, ZeroThreadsIsInvalid) {
   options.num_threads = 0;
   EXPECT_FALSE(options.IsValid(&error));
   EXPECT_NE(error.find("num_threads"), std::string::npos) << error;
-  const PointCloud cloud = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 9), 500, 11);
+  const PointCloud cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 9), 500, 11);
   LayeredGrid grid;
   EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
   EXPECT_NE(error.find("num_threads"), std::string::npos) << error;
@@ -335,7 +363,8 @@ TEST(LayeredGrid, MemoryBytesCoversTheCellsAndGrowsWithThem) {
       layer_bytes += layer.MemoryBytes();
       // Cells, keys and at least one index entry per cell.
       EXPECT_GE(layer.MemoryBytes(),
-                sizeof(NdtLayer) + n * (sizeof(NdtCell) + sizeof(int64_t) + sizeof(int32_t)));
+                sizeof(NdtLayer) +
+                    n * (sizeof(NdtCell) + sizeof(int64_t) + sizeof(int32_t)));
     }
     EXPECT_GE(grid.MemoryBytes(), cells * sizeof(NdtCell));
     EXPECT_GT(grid.MemoryBytes(), layer_bytes);

@@ -1,10 +1,10 @@
 #include "mlndt/grid/single_grid.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <random>
-
-#include <gtest/gtest.h>
 
 #include "mlndt/grid/layered_grid.h"
 
@@ -12,7 +12,10 @@ namespace mlndt {
 namespace {
 
 // Points spread over a box, seeded, plus both corners.
-PointCloud BoxCloud(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int n, int seed) {
+PointCloud BoxCloud(const Eigen::Vector3d& min,
+                    const Eigen::Vector3d& max,
+                    int n,
+                    int seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   PointCloud cloud;
@@ -29,17 +32,21 @@ PointCloud BoxCloud(const Eigen::Vector3d& min, const Eigen::Vector3d& max, int 
 TEST(SingleGrid, DefaultCellIsThePapersLayerTwoCell) {
   // Section 4's example box, 100 x 100 x 20 m: layer 2 of q = 8 has 14.62 m
   // cells in a 7 x 7 x 2 grid; (V / 64)^(1/3) is the same edge.
-  const PointCloud cloud =
-      BoxCloud(Eigen::Vector3d(-50, -50, 0), Eigen::Vector3d(50, 50, 20), 20000, 1);
-  EXPECT_NEAR(PaperNdtCellSize(Eigen::Vector3d(100, 100, 20)), std::cbrt(200000.0 / 64.0), 1e-9);
+  const PointCloud cloud = BoxCloud(
+      Eigen::Vector3d(-50, -50, 0), Eigen::Vector3d(50, 50, 20), 20000, 1);
+  EXPECT_NEAR(PaperNdtCellSize(Eigen::Vector3d(100, 100, 20)),
+              std::cbrt(200000.0 / 64.0),
+              1e-9);
   NdtLayer grid;
   LayerInfo info;
   std::string error;
-  ASSERT_TRUE(BuildSingleGrid(SingleGridOptions(), cloud, &grid, &info, &error)) << error;
+  ASSERT_TRUE(BuildSingleGrid(SingleGridOptions(), cloud, &grid, &info, &error))
+      << error;
   EXPECT_NEAR(grid.cell_size(), 14.62, 0.005);
   EXPECT_EQ(grid.dims(), Eigen::Vector3i(7, 7, 2));
   LayeredGrid map;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &map, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &map, &error))
+      << error;
   EXPECT_NEAR(grid.cell_size(), map.layer(2).cell_size(), 1e-9);
   EXPECT_EQ(grid.dims(), map.layer(2).dims());
   EXPECT_EQ(grid.cells().size(), map.layer(2).cells().size());
@@ -48,8 +55,8 @@ TEST(SingleGrid, DefaultCellIsThePapersLayerTwoCell) {
 }
 
 TEST(SingleGrid, GivenCellSizeAndDims) {
-  const PointCloud cloud =
-      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10.5, 6.0, 3.2), 20000, 2);
+  const PointCloud cloud = BoxCloud(
+      Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10.5, 6.0, 3.2), 20000, 2);
   SingleGridOptions options;
   options.cell_size_m = 1.0;
   NdtLayer grid;
@@ -77,14 +84,16 @@ TEST(SingleGrid, CellsMatchDirectComputation) {
   // Cell (1, 2, 0): points with x in [2, 4), y in [4, 6), z in [0, 2).
   std::vector<Eigen::Vector3d> inside;
   for (const Eigen::Vector3d& p : cloud.points()) {
-    if (p.x() >= 2 && p.x() < 4 && p.y() >= 4 && p.y() < 6 && p.z() < 2) inside.push_back(p);
+    if (p.x() >= 2 && p.x() < 4 && p.y() >= 4 && p.y() < 6 && p.z() < 2)
+      inside.push_back(p);
   }
   ASSERT_GE(inside.size(), 5u);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& p : inside) mean += p;
   mean /= static_cast<double>(inside.size());
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3d& p : inside) covariance += (p - mean) * (p - mean).transpose();
+  for (const Eigen::Vector3d& p : inside)
+    covariance += (p - mean) * (p - mean).transpose();
   covariance /= static_cast<double>(inside.size() - 1);  // Eq. (3), unbiased.
   const NdtCell* cell = grid.CellAt(Eigen::Vector3i(1, 2, 0));
   ASSERT_NE(cell, nullptr);
@@ -92,12 +101,16 @@ TEST(SingleGrid, CellsMatchDirectComputation) {
   EXPECT_LT((cell->mean - mean).norm(), 1e-9);
   // A box-filling cell is well conditioned: no eigenvalue is raised.
   EXPECT_LT((cell->covariance - covariance).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_LT((cell->information * cell->covariance - Eigen::Matrix3d::Identity()).norm(), 1e-9);
+  EXPECT_LT((cell->information * cell->covariance - Eigen::Matrix3d::Identity())
+                .norm(),
+            1e-9);
 }
 
 TEST(SingleGrid, SparseCellsAreCounted) {
-  PointCloud cloud = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1.9, 1.9, 1.9), 100, 4);
-  for (int i = 0; i < 3; ++i) cloud.Add(Eigen::Vector3d(5.5 + 0.1 * i, 0.5, 0.5 + 0.2 * i));
+  PointCloud cloud = BoxCloud(
+      Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1.9, 1.9, 1.9), 100, 4);
+  for (int i = 0; i < 3; ++i)
+    cloud.Add(Eigen::Vector3d(5.5 + 0.1 * i, 0.5, 0.5 + 0.2 * i));
   SingleGridOptions options;
   options.cell_size_m = 2.0;
   options.min_points_per_cell = 5;
@@ -116,20 +129,26 @@ TEST(SingleGrid, BadInputFailsWithAMessage) {
   NdtLayer grid;
   LayerInfo info;
   std::string error;
-  EXPECT_FALSE(BuildSingleGrid(SingleGridOptions(), PointCloud(), &grid, &info, &error));
+  EXPECT_FALSE(
+      BuildSingleGrid(SingleGridOptions(), PointCloud(), &grid, &info, &error));
   EXPECT_NE(error.find("empty"), std::string::npos) << error;
 
-  PointCloud nan_cloud = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1), 10, 5);
-  nan_cloud.Add(Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0));
-  EXPECT_FALSE(BuildSingleGrid(SingleGridOptions(), nan_cloud, &grid, &info, &error));
+  PointCloud nan_cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1), 10, 5);
+  nan_cloud.Add(
+      Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0));
+  EXPECT_FALSE(
+      BuildSingleGrid(SingleGridOptions(), nan_cloud, &grid, &info, &error));
   EXPECT_NE(error.find("non-finite"), std::string::npos) << error;
 
   PointCloud same;
   for (int i = 0; i < 10; ++i) same.Add(Eigen::Vector3d(1, 2, 3));
-  EXPECT_FALSE(BuildSingleGrid(SingleGridOptions(), same, &grid, &info, &error));
+  EXPECT_FALSE(
+      BuildSingleGrid(SingleGridOptions(), same, &grid, &info, &error));
   EXPECT_NE(error.find("coincide"), std::string::npos) << error;
 
-  const PointCloud big = BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1e4, 1e4, 1e4), 10, 6);
+  const PointCloud big =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1e4, 1e4, 1e4), 10, 6);
   SingleGridOptions tiny;
   tiny.cell_size_m = 1e-3;
   EXPECT_FALSE(BuildSingleGrid(tiny, big, &grid, &info, &error));

@@ -2,13 +2,13 @@
 // NDT): summary, failures, convergence on the synthetic street scene and the
 // bundled KITTI pairs, and the paper's long-range claim against ML-NDT.
 
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
-
-#include <Eigen/Eigenvalues>
-#include <gtest/gtest.h>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
@@ -23,8 +23,9 @@
 namespace mlndt {
 namespace {
 
-RegistrationOptions NdtOptions(double cell_size_m,
-                               NdtNeighbors neighbors = NdtBaselineOptions().neighbors) {
+RegistrationOptions NdtOptions(
+    double cell_size_m,
+    NdtNeighbors neighbors = NdtBaselineOptions().neighbors) {
   RegistrationOptions options;
   options.method = Method::NDT;
   options.ndt.cell_size_m = cell_size_m;
@@ -37,8 +38,8 @@ RegistrationOptions NdtOptions(double cell_size_m,
 RegistrationSummary RegisterStreet(const Isometry3d& reference_from_input,
                                    const RegistrationOptions& options) {
   const PointCloud reference = testing::StreetScene(60000, 0.02, 1);
-  const PointCloud input =
-      TransformCloud(reference_from_input.inverse(), testing::StreetScene(60000, 0.02, 2));
+  const PointCloud input = TransformCloud(reference_from_input.inverse(),
+                                          testing::StreetScene(60000, 0.02, 2));
   RegistrationSummary summary;
   Register(options, reference, input, Isometry3d::Identity(), &summary);
   return summary;
@@ -66,13 +67,16 @@ TEST(NdtBaseline, ObjectiveIsTheGaussianScore) {
   NdtLayer grid;
   LayerInfo info;
   std::string error;
-  ASSERT_TRUE(BuildSingleGrid(grid_options, reference, &grid, &info, &error)) << error;
+  ASSERT_TRUE(BuildSingleGrid(grid_options, reference, &grid, &info, &error))
+      << error;
   GaussianScoreOptions score_options;
   const NdtGaussianObjective objective(grid, input.points(), score_options);
   const Vector6d xi = PoseVectorFromDegrees(0.1, -0.1, 0.0, 0.5, 0.0, 1.0);
-  for (HessianType h : {HessianType::NONE, HessianType::GAUSS_NEWTON, HessianType::FULL}) {
+  for (HessianType h :
+       {HessianType::NONE, HessianType::GAUSS_NEWTON, HessianType::FULL}) {
     score_options.hessian = h;
-    const ScoreEvaluation direct = EvaluateGaussianScore(grid, input.points(), xi, score_options);
+    const ScoreEvaluation direct =
+        EvaluateGaussianScore(grid, input.points(), xi, score_options);
     const ScoreEvaluation via = objective.Evaluate(xi, h);
     EXPECT_EQ(via.score, direct.score);
     EXPECT_EQ(via.gradient, direct.gradient);
@@ -91,34 +95,44 @@ struct SmallTransformCase {
   double tx, ty, tz, alpha_deg, beta_deg, gamma_deg;
 };
 
-class NdtSmallTransform : public ::testing::TestWithParam<SmallTransformCase> {};
+class NdtSmallTransform : public ::testing::TestWithParam<SmallTransformCase> {
+};
 
 TEST_P(NdtSmallTransform, RecoversKnownTransformWithOneMetreCells) {
   const SmallTransformCase& c = GetParam();
-  const Isometry3d truth = PoseVectorToIsometry(
-      PoseVectorFromDegrees(c.tx, c.ty, c.tz, c.alpha_deg, c.beta_deg, c.gamma_deg));
-  const RegistrationSummary s = RegisterStreet(truth, NdtOptions(1.0, c.neighbors));
+  const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(
+      c.tx, c.ty, c.tz, c.alpha_deg, c.beta_deg, c.gamma_deg));
+  const RegistrationSummary s =
+      RegisterStreet(truth, NdtOptions(1.0, c.neighbors));
   ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
-  EXPECT_LT(TranslationErrorM(truth, s.reference_from_input), 0.02) << s.FullReport();
-  EXPECT_LT(RotationErrorRad(truth, s.reference_from_input) * kRadToDeg, 0.1) << s.FullReport();
+  EXPECT_LT(TranslationErrorM(truth, s.reference_from_input), 0.02)
+      << s.FullReport();
+  EXPECT_LT(RotationErrorRad(truth, s.reference_from_input) * kRadToDeg, 0.1)
+      << s.FullReport();
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Synthetic,
     NdtSmallTransform,
-    ::testing::Values(SmallTransformCase{NdtNeighbors::DIRECT1, 0.05, 0.05, 0, 0, 0, 0.3},
-                      SmallTransformCase{NdtNeighbors::DIRECT1, 0.05, 0.1, 0.05, 0.2, 0.1, 0.3},
-                      SmallTransformCase{NdtNeighbors::DIRECT1, 0.03, -0.1, 0.03, 0.3, -0.2, -0.3},
-                      SmallTransformCase{NdtNeighbors::DIRECT7, 0.3, 0.2, 0, 0, 0, 2},
-                      SmallTransformCase{NdtNeighbors::DIRECT7, 0.5, -0.3, 0.05, 0.5, 0, 3}));
+    ::testing::Values(
+        SmallTransformCase{NdtNeighbors::DIRECT1, 0.05, 0.05, 0, 0, 0, 0.3},
+        SmallTransformCase{
+            NdtNeighbors::DIRECT1, 0.05, 0.1, 0.05, 0.2, 0.1, 0.3},
+        SmallTransformCase{
+            NdtNeighbors::DIRECT1, 0.03, -0.1, 0.03, 0.3, -0.2, -0.3},
+        SmallTransformCase{NdtNeighbors::DIRECT7, 0.3, 0.2, 0, 0, 0, 2},
+        SmallTransformCase{NdtNeighbors::DIRECT7, 0.5, -0.3, 0.05, 0.5, 0, 3}));
 
 TEST(NdtBaseline, SummaryIsComplete) {
-  const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(0.2, 0.1, 0, 0, 0, 1));
+  const Isometry3d truth =
+      PoseVectorToIsometry(PoseVectorFromDegrees(0.2, 0.1, 0, 0, 0, 1));
   const RegistrationSummary s = RegisterStreet(truth, NdtOptions(2.0));
   ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
   EXPECT_EQ(s.method, Method::NDT);
-  EXPECT_EQ(s.BriefReport().rfind("NDT registration", 0), 0u) << s.BriefReport();
-  EXPECT_NE(s.FullReport().find("one grid of 2.0000 m cells"), std::string::npos)
+  EXPECT_EQ(s.BriefReport().rfind("NDT registration", 0), 0u)
+      << s.BriefReport();
+  EXPECT_NE(s.FullReport().find("one grid of 2.0000 m cells"),
+            std::string::npos)
       << s.FullReport();
   EXPECT_EQ(s.ndt_cell_size_m, 2.0);
   EXPECT_EQ(s.num_layers, 1);
@@ -146,27 +160,35 @@ TEST(NdtBaseline, SummaryIsComplete) {
   // covariance is its inverse.
   const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(s.hessian);
   EXPECT_GT(solver.eigenvalues().minCoeff(), 0.0);
-  EXPECT_LT((s.covariance * s.hessian - Matrix6d::Identity()).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT(
+      (s.covariance * s.hessian - Matrix6d::Identity()).cwiseAbs().maxCoeff(),
+      1e-6);
   EXPECT_LT(std::sqrt(s.covariance(0, 0)), 0.05);
 }
 
 TEST(NdtBaseline, DefaultCellIsThePapersLayerTwoCell) {
   const PointCloud reference = testing::StreetScene(60000, 0.02, 1);
-  const RegistrationSummary s = RegisterStreet(Isometry3d::Identity(), NdtOptions(0.0));
+  const RegistrationSummary s =
+      RegisterStreet(Isometry3d::Identity(), NdtOptions(0.0));
   ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
-  EXPECT_NEAR(s.ndt_cell_size_m, PaperNdtCellSize(BoundingBox(reference).sizes()), 1e-9);
+  EXPECT_NEAR(s.ndt_cell_size_m,
+              PaperNdtCellSize(BoundingBox(reference).sizes()),
+              1e-9);
 }
 
 TEST(NdtBaseline, PrebuiltMapOverloadFails) {
   const PointCloud reference = testing::StreetScene(20000, 0.02, 1);
   LayeredGrid map;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(RegistrationOptions().grid, reference, &map, &error)) << error;
+  ASSERT_TRUE(
+      LayeredGrid::Build(RegistrationOptions().grid, reference, &map, &error))
+      << error;
   RegistrationSummary s;
   Register(NdtOptions(1.0), map, reference, Isometry3d::Identity(), &s);
   EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
   EXPECT_EQ(s.method, Method::NDT);
-  EXPECT_NE(s.message.find("method NDT needs the reference cloud"), std::string::npos)
+  EXPECT_NE(s.message.find("method NDT needs the reference cloud"),
+            std::string::npos)
       << s.message;
 }
 
@@ -198,17 +220,23 @@ TEST(NdtBaseline, InvalidOptionsAndBadInputGiveFailure) {
   EXPECT_NE(s.message.find("reference"), std::string::npos) << s.message;
 
   Register(NdtOptions(1.0), cloud, PointCloud(), Isometry3d::Identity(), &s);
-  EXPECT_NE(s.message.find("input cloud is empty"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("input cloud is empty"), std::string::npos)
+      << s.message;
 
   PointCloud nan_input = cloud;
-  nan_input.Add(Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0));
+  nan_input.Add(
+      Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0));
   Register(NdtOptions(1.0), cloud, nan_input, Isometry3d::Identity(), &s);
   EXPECT_NE(s.message.find("non-finite"), std::string::npos) << s.message;
 
   // Clouds 1 km apart: no sampled point lies in an occupied cell.
-  Register(NdtOptions(1.0), cloud,
-           TransformCloud(PoseVectorToIsometry(PoseVectorFromDegrees(1000, 0, 0, 0, 0, 0)), cloud),
-           Isometry3d::Identity(), &s);
+  Register(NdtOptions(1.0),
+           cloud,
+           TransformCloud(
+               PoseVectorToIsometry(PoseVectorFromDegrees(1000, 0, 0, 0, 0, 0)),
+               cloud),
+           Isometry3d::Identity(),
+           &s);
   EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
   EXPECT_NE(s.message.find("occupied cell"), std::string::npos) << s.message;
 }
@@ -218,14 +246,19 @@ TEST(NdtBaseline, LongRangeStartFailsWhereMlNdtSucceeds) {
   // 20 deg away, ML-NDT converges; single-grid NDT with the small cells it
   // needs for accuracy does not, and with the paper's comparison cell (one
   // layer-2 cell, 8.5 m here) it ends ~9 cm off where ML-NDT ends ~1 mm off.
-  const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(5, 0, 0, 0, 0, 20));
-  const RegistrationSummary mlndt = RegisterStreet(truth, RegistrationOptions());
+  const Isometry3d truth =
+      PoseVectorToIsometry(PoseVectorFromDegrees(5, 0, 0, 0, 0, 20));
+  const RegistrationSummary mlndt =
+      RegisterStreet(truth, RegistrationOptions());
   ASSERT_TRUE(mlndt.IsSolutionUsable()) << mlndt.message;
-  EXPECT_LT(TranslationErrorM(truth, mlndt.reference_from_input), 0.05) << mlndt.FullReport();
-  EXPECT_LT(RotationErrorRad(truth, mlndt.reference_from_input) * kRadToDeg, 0.3);
+  EXPECT_LT(TranslationErrorM(truth, mlndt.reference_from_input), 0.05)
+      << mlndt.FullReport();
+  EXPECT_LT(RotationErrorRad(truth, mlndt.reference_from_input) * kRadToDeg,
+            0.3);
 
   for (const RegistrationOptions& options :
-       {NdtOptions(1.0, NdtNeighbors::DIRECT1), NdtOptions(1.0, NdtNeighbors::DIRECT7),
+       {NdtOptions(1.0, NdtNeighbors::DIRECT1),
+        NdtOptions(1.0, NdtNeighbors::DIRECT7),
         NdtOptions(2.0)}) {
     const RegistrationSummary ndt = RegisterStreet(truth, options);
     const double error_m = TranslationErrorM(truth, ndt.reference_from_input);
@@ -234,7 +267,8 @@ TEST(NdtBaseline, LongRangeStartFailsWhereMlNdtSucceeds) {
         << ndt.FullReport();
   }
   const RegistrationSummary coarse = RegisterStreet(truth, NdtOptions(0.0));
-  EXPECT_GT(TranslationErrorM(truth, coarse.reference_from_input), 0.05) << coarse.FullReport();
+  EXPECT_GT(TranslationErrorM(truth, coarse.reference_from_input), 0.05)
+      << coarse.FullReport();
 }
 
 class NdtKittiFrames : public ::testing::Test {
@@ -243,32 +277,37 @@ class NdtKittiFrames : public ::testing::Test {
     for (int i = 0; i < 8; ++i) {
       PointCloud cloud;
       std::string error;
-      ASSERT_TRUE(ReadPointCloud(
-          testing::BundledDataPath("kitti/pcd/00000" + std::to_string(i) + ".pcd"), &cloud,
-          nullptr, &error))
+      ASSERT_TRUE(
+          ReadPointCloud(testing::BundledDataPath("kitti/pcd/00000" +
+                                                  std::to_string(i) + ".pcd"),
+                         &cloud,
+                         nullptr,
+                         &error))
           << error;
       scans_.push_back(cloud);
     }
     std::string error;
-    ASSERT_TRUE(
-        ReadKittiPoses(testing::BundledDataPath("kitti/poses_velo.txt"), &poses_, &error))
+    ASSERT_TRUE(ReadKittiPoses(
+        testing::BundledDataPath("kitti/poses_velo.txt"), &poses_, &error))
         << error;
     ASSERT_EQ(poses_.size(), 8u);
   }
   // Consecutive pairs from identity within 0.2 m and 1 deg of ground truth.
   // (The scans fit best at ~0.8x the ground-truth translation, so even a
   // perfect result ends 0.1-0.17 m off.)
-  static int ConsecutiveSuccesses(const RegistrationOptions& options, std::string* report) {
+  static int ConsecutiveSuccesses(const RegistrationOptions& options,
+                                  std::string* report) {
     int successes = 0;
     for (int i = 0; i + 1 < 8; ++i) {
       const Isometry3d truth = poses_[i].inverse() * poses_[i + 1];
       RegistrationSummary s;
       Register(options, scans_[i], scans_[i + 1], Isometry3d::Identity(), &s);
       const double et = TranslationErrorM(truth, s.reference_from_input);
-      const double er = RotationErrorRad(truth, s.reference_from_input) * kRadToDeg;
+      const double er =
+          RotationErrorRad(truth, s.reference_from_input) * kRadToDeg;
       successes += s.IsSolutionUsable() && et < 0.2 && er < 1.0;
-      *report += "pair " + std::to_string(i) + ": " + std::to_string(et) + " m, " +
-                 std::to_string(er) + " deg, " + s.message + "\n";
+      *report += "pair " + std::to_string(i) + ": " + std::to_string(et) +
+                 " m, " + std::to_string(er) + " deg, " + s.message + "\n";
     }
     return successes;
   }

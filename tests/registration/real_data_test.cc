@@ -1,9 +1,9 @@
 // Registration on the real scans bundled in data/: the Velodyne pair used by
 // ndt_omp / fast_gicp / small_gicp, and KITTI 00 frames 0-7 with ground truth.
 
-#include <vector>
-
 #include <gtest/gtest.h>
+
+#include <vector>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
@@ -17,7 +17,8 @@ namespace {
 PointCloud Load(const std::string& relative) {
   PointCloud cloud;
   std::string error;
-  EXPECT_TRUE(ReadPointCloud(testing::BundledDataPath(relative), &cloud, nullptr, &error))
+  EXPECT_TRUE(ReadPointCloud(
+      testing::BundledDataPath(relative), &cloud, nullptr, &error))
       << error;
   return cloud;
 }
@@ -29,12 +30,14 @@ class KittiFrames : public ::testing::Test {
       scans_.push_back(Load("kitti/pcd/00000" + std::to_string(i) + ".pcd"));
     }
     std::string error;
-    ASSERT_TRUE(
-        ReadKittiPoses(testing::BundledDataPath("kitti/poses_velo.txt"), &poses_, &error))
+    ASSERT_TRUE(ReadKittiPoses(
+        testing::BundledDataPath("kitti/poses_velo.txt"), &poses_, &error))
         << error;
     ASSERT_EQ(poses_.size(), 8u);
   }
-  static Isometry3d Truth(int i, int j) { return poses_[i].inverse() * poses_[j]; }
+  static Isometry3d Truth(int i, int j) {
+    return poses_[i].inverse() * poses_[j];
+  }
   static RegistrationSummary Align(int i, int j, const Isometry3d& initial) {
     RegistrationSummary summary;
     Register(RegistrationOptions(), scans_[i], scans_[j], initial, &summary);
@@ -54,17 +57,19 @@ TEST(VelodynePair, MatchesReferenceResultFromIdentity) {
   std::string error;
   std::vector<Isometry3d> unused;
   RegistrationSummary summary;
-  Register(RegistrationOptions(), target, source, Isometry3d::Identity(), &summary);
+  Register(
+      RegistrationOptions(), target, source, Isometry3d::Identity(), &summary);
   ASSERT_TRUE(summary.IsSolutionUsable()) << summary.message;
   Eigen::Matrix4d m;
-  m << 0.999925, 0.0121483, -0.00177009, 0.488882,  //
-      -0.0121523, 0.999924, -0.00228657, 0.121214,  //
+  m << 0.999925, 0.0121483, -0.00177009, 0.488882,   //
+      -0.0121523, 0.999924, -0.00228657, 0.121214,   //
       0.00174218, 0.00230791, 0.999996, -0.0253342,  //
       0, 0, 0, 1;
   expected.matrix() = m;
   EXPECT_LT(TranslationErrorM(expected, summary.reference_from_input), 0.05)
       << summary.FullReport();
-  EXPECT_LT(RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg, 0.5)
+  EXPECT_LT(
+      RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg, 0.5)
       << summary.FullReport();
 }
 
@@ -73,8 +78,11 @@ TEST_F(KittiFrames, ConsecutivePairsFromIdentityMatchGroundTruth) {
     const RegistrationSummary s = Align(i, i + 1, Isometry3d::Identity());
     ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
     EXPECT_LT(TranslationErrorM(Truth(i, i + 1), s.reference_from_input), 0.2)
-        << "pair " << i << "-" << i + 1 << "\n" << s.FullReport();
-    EXPECT_LT(RotationErrorRad(Truth(i, i + 1), s.reference_from_input) * kRadToDeg, 1.0)
+        << "pair " << i << "-" << i + 1 << "\n"
+        << s.FullReport();
+    EXPECT_LT(
+        RotationErrorRad(Truth(i, i + 1), s.reference_from_input) * kRadToDeg,
+        1.0)
         << "pair " << i << "-" << i + 1;
   }
 }
@@ -93,14 +101,19 @@ TEST_F(KittiFrames, WiderPairsFromIdentityAgreeWithChainedConsecutivePairs) {
   for (int gap : {2, 3, 5}) {
     for (int i = 0; i + gap < 8; ++i) {
       Isometry3d chained = Isometry3d::Identity();
-      for (int k = i; k < i + gap; ++k) chained = chained * consecutive[static_cast<size_t>(k)];
+      for (int k = i; k < i + gap; ++k)
+        chained = chained * consecutive[static_cast<size_t>(k)];
       const RegistrationSummary s = Align(i, i + gap, Isometry3d::Identity());
       ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
-      EXPECT_LT(RotationErrorRad(Truth(i, i + gap), s.reference_from_input) * kRadToDeg, 1.0)
+      EXPECT_LT(RotationErrorRad(Truth(i, i + gap), s.reference_from_input) *
+                    kRadToDeg,
+                1.0)
           << "pair " << i << "-" << i + gap;
       EXPECT_LT(TranslationErrorM(chained, s.reference_from_input), 0.1 * gap)
-          << "pair " << i << "-" << i + gap << "\n" << s.FullReport();
-      EXPECT_LT(RotationErrorRad(chained, s.reference_from_input) * kRadToDeg, 0.5)
+          << "pair " << i << "-" << i + gap << "\n"
+          << s.FullReport();
+      EXPECT_LT(RotationErrorRad(chained, s.reference_from_input) * kRadToDeg,
+                0.5)
           << "pair " << i << "-" << i + gap;
     }
   }
@@ -111,17 +124,22 @@ TEST_F(KittiFrames, LongRangeStartsConverge) {
   // 30 and 45 deg of yaw, and (3 m, 3 m, 20 deg); at least 90 % within
   // 0.2 m and 1 deg on consecutive pairs.
   const std::vector<Vector6d> offsets = {
-      PoseVectorFromDegrees(5, 0, 0, 0, 0, 0), PoseVectorFromDegrees(10, 0, 0, 0, 0, 0),
-      PoseVectorFromDegrees(0, 0, 0, 0, 0, 30), PoseVectorFromDegrees(0, 0, 0, 0, 0, 45),
+      PoseVectorFromDegrees(5, 0, 0, 0, 0, 0),
+      PoseVectorFromDegrees(10, 0, 0, 0, 0, 0),
+      PoseVectorFromDegrees(0, 0, 0, 0, 0, 30),
+      PoseVectorFromDegrees(0, 0, 0, 0, 0, 45),
       PoseVectorFromDegrees(3, 3, 0, 0, 0, 20)};
   int runs = 0, successes = 0;
   for (int i = 0; i + 1 < 8; ++i) {
     for (const Vector6d& offset : offsets) {
       const Isometry3d truth = Truth(i, i + 1);
-      const RegistrationSummary s = Align(i, i + 1, PoseVectorToIsometry(offset) * truth);
+      const RegistrationSummary s =
+          Align(i, i + 1, PoseVectorToIsometry(offset) * truth);
       ++runs;
-      successes += s.IsSolutionUsable() && TranslationErrorM(truth, s.reference_from_input) < 0.2 &&
-                   RotationErrorRad(truth, s.reference_from_input) * kRadToDeg < 1.0;
+      successes +=
+          s.IsSolutionUsable() &&
+          TranslationErrorM(truth, s.reference_from_input) < 0.2 &&
+          RotationErrorRad(truth, s.reference_from_input) * kRadToDeg < 1.0;
     }
   }
   EXPECT_GE(successes, (runs * 9 + 9) / 10) << successes << " of " << runs;

@@ -7,12 +7,12 @@
 // vector of Eq. 11) should average 6 (6 DoF). tools/mlndt_covariance does the
 // same on real pairs, where the truth is not known well enough.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <random>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
@@ -34,24 +34,29 @@ struct Statistics {
 };
 
 Statistics RunTrials(double noise_m, int trials) {
-  const Isometry3d truth =
-      PoseVectorToIsometry(PoseVectorFromDegrees(1.2, -0.4, 0.05, 0.5, -0.3, 3.0));
+  const Isometry3d truth = PoseVectorToIsometry(
+      PoseVectorFromDegrees(1.2, -0.4, 0.05, 0.5, -0.3, 3.0));
   const Vector6d truth_xi = IsometryToPoseVector(truth);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   RegistrationOptions options;
   Statistics stats;
   for (int t = 0; t < trials; ++t) {
-    const PointCloud reference = testing::StreetScene(60000, noise_m, 1000 + 2 * t);
-    const PointCloud input =
-        TransformCloud(truth.inverse(), testing::StreetScene(60000, noise_m, 1001 + 2 * t));
+    const PointCloud reference =
+        testing::StreetScene(60000, noise_m, 1000 + 2 * t);
+    const PointCloud input = TransformCloud(
+        truth.inverse(), testing::StreetScene(60000, noise_m, 1001 + 2 * t));
     // Within +-0.5 m and +-5 deg of the truth.
     Vector6d offset;
     for (int a = 0; a < 3; ++a) offset(a) = 0.5 * unit(rng);
     for (int a = 3; a < 6; ++a) offset(a) = 5.0 * kDegToRad * unit(rng);
     options.sampling.seed = 1 + static_cast<uint64_t>(t);
     RegistrationSummary summary;
-    Register(options, reference, input, PoseVectorToIsometry(offset) * truth, &summary);
+    Register(options,
+             reference,
+             input,
+             PoseVectorToIsometry(offset) * truth,
+             &summary);
     EXPECT_TRUE(summary.IsSolutionUsable()) << summary.message;
     if (!summary.IsSolutionUsable()) continue;
     const Vector6d e = summary.reference_from_input_xi - truth_xi;
@@ -82,21 +87,33 @@ TEST_P(RegistrationCovariance, NeesMatchesSixDegreesOfFreedom) {
   const Statistics stats = RunTrials(c.noise_m, 20);
   ASSERT_EQ(stats.runs, 20);
   const double k = stats.mean_nees / 6.0;
-  std::printf("noise %.3f m: mean NEES %.2f (k = %.2f)\n", c.noise_m, stats.mean_nees, k);
-  std::printf("  error rms  t [mm] %.2f %.2f %.2f  angles [mdeg] %.2f %.2f %.2f\n",
-              stats.error_rms(0) * 1e3, stats.error_rms(1) * 1e3, stats.error_rms(2) * 1e3,
-              stats.error_rms(3) * kRadToDeg * 1e3, stats.error_rms(4) * kRadToDeg * 1e3,
-              stats.error_rms(5) * kRadToDeg * 1e3);
-  std::printf("  predicted  t [mm] %.2f %.2f %.2f  angles [mdeg] %.2f %.2f %.2f\n",
-              stats.predicted_std(0) * 1e3, stats.predicted_std(1) * 1e3,
-              stats.predicted_std(2) * 1e3, stats.predicted_std(3) * kRadToDeg * 1e3,
-              stats.predicted_std(4) * kRadToDeg * 1e3, stats.predicted_std(5) * kRadToDeg * 1e3);
+  std::printf("noise %.3f m: mean NEES %.2f (k = %.2f)\n",
+              c.noise_m,
+              stats.mean_nees,
+              k);
+  std::printf(
+      "  error rms  t [mm] %.2f %.2f %.2f  angles [mdeg] %.2f %.2f %.2f\n",
+      stats.error_rms(0) * 1e3,
+      stats.error_rms(1) * 1e3,
+      stats.error_rms(2) * 1e3,
+      stats.error_rms(3) * kRadToDeg * 1e3,
+      stats.error_rms(4) * kRadToDeg * 1e3,
+      stats.error_rms(5) * kRadToDeg * 1e3);
+  std::printf(
+      "  predicted  t [mm] %.2f %.2f %.2f  angles [mdeg] %.2f %.2f %.2f\n",
+      stats.predicted_std(0) * 1e3,
+      stats.predicted_std(1) * 1e3,
+      stats.predicted_std(2) * 1e3,
+      stats.predicted_std(3) * kRadToDeg * 1e3,
+      stats.predicted_std(4) * kRadToDeg * 1e3,
+      stats.predicted_std(5) * kRadToDeg * 1e3);
   EXPECT_GE(k, c.min_k);
   EXPECT_LE(k, c.max_k);
   // Every axis is predicted within a factor of 4 of its actual error.
   for (int a = 0; a < 6; ++a) {
     EXPECT_LT(stats.error_rms(a), 4.0 * stats.predicted_std(a)) << "axis " << a;
-    EXPECT_GT(stats.error_rms(a), 0.25 * stats.predicted_std(a)) << "axis " << a;
+    EXPECT_GT(stats.error_rms(a), 0.25 * stats.predicted_std(a))
+        << "axis " << a;
   }
 }
 

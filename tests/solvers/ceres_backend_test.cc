@@ -32,15 +32,21 @@ const Koide3& Koide3Pair() {
     auto* p = new Koide3;
     PointCloud reference, input, sampled;
     std::string error;
-    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251370668.pcd"), &reference, nullptr,
+    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251370668.pcd"),
+                         &reference,
+                         nullptr,
                          &error))
         << error;
-    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251371071.pcd"), &input, nullptr,
+    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251371071.pcd"),
+                         &input,
+                         nullptr,
                          &error))
         << error;
-    CHECK(LayeredGrid::Build(DefaultRegistrationGridOptions(), reference, &p->map, &error))
+    CHECK(LayeredGrid::Build(
+        DefaultRegistrationGridOptions(), reference, &p->map, &error))
         << error;
-    CHECK(SamplePoints(SamplingOptions(), input, &sampled, nullptr, &error)) << error;
+    CHECK(SamplePoints(SamplingOptions(), input, &sampled, nullptr, &error))
+        << error;
     p->samples = sampled.points();
     return p;
   }();
@@ -65,13 +71,16 @@ Vector6d Solve(CeresBackend* backend,
                const StageOptions& stage) {
   Vector6d xi = Vector6d::Zero();
   StageSummary summary;
-  backend->SolveStage(Koide3Pair().map.layer(layer), points, stage, &xi, &summary);
-  EXPECT_NE(summary.termination_type, TerminationType::FAILURE) << summary.message;
+  backend->SolveStage(
+      Koide3Pair().map.layer(layer), points, stage, &xi, &summary);
+  EXPECT_NE(summary.termination_type, TerminationType::FAILURE)
+      << summary.message;
   EXPECT_GT(summary.iterations, 0);
   return xi;
 }
 
-std::vector<Eigen::Vector3d> EveryNth(const std::vector<Eigen::Vector3d>& points, size_t n) {
+std::vector<Eigen::Vector3d> EveryNth(
+    const std::vector<Eigen::Vector3d>& points, size_t n) {
   std::vector<Eigen::Vector3d> thinned;
   for (size_t i = 0; i < points.size(); i += n) thinned.push_back(points[i]);
   return thinned;
@@ -84,9 +93,13 @@ TEST(CeresBackend, PointStrideMatchesPreThinnedPoints) {
     SCOPED_TRACE(stride);
     CeresBackend strided{CeresBackendOptions()};
     CeresBackend fresh{CeresBackendOptions()};
-    const Vector6d a = Solve(&strided, 3, pair.samples, Stage(3, stride, policy));
+    const Vector6d a =
+        Solve(&strided, 3, pair.samples, Stage(3, stride, policy));
     const Vector6d b =
-        Solve(&fresh, 3, EveryNth(pair.samples, static_cast<size_t>(stride)), Stage(3, 1, policy));
+        Solve(&fresh,
+              3,
+              EveryNth(pair.samples, static_cast<size_t>(stride)),
+              Stage(3, 1, policy));
     EXPECT_GT(a.head<3>().norm(), 0.05);  // The stage moved the pose.
     EXPECT_EQ(a, b);
   }
@@ -106,24 +119,39 @@ TEST(CeresBackend, ReusedAcrossLayersLikeFreshBackends) {
 
 TEST(CeresBackend, OtherPointsOrPolicyGiveWhatAFreshBackendGives) {
   const Koide3& pair = Koide3Pair();
-  const std::vector<Eigen::Vector3d> first_half(pair.samples.begin(),
-                                                pair.samples.begin() + pair.samples.size() / 2);
-  const std::vector<Eigen::Vector3d> second_half(pair.samples.begin() + pair.samples.size() / 2,
-                                                 pair.samples.end());
+  const std::vector<Eigen::Vector3d> first_half(
+      pair.samples.begin(), pair.samples.begin() + pair.samples.size() / 2);
+  const std::vector<Eigen::Vector3d> second_half(
+      pair.samples.begin() + pair.samples.size() / 2, pair.samples.end());
   CeresBackend reused{CeresBackendOptions()};
   Solve(&reused, 4, first_half, Stage(4, 1, UnmatchedPolicy::NEAREST_CELL));
   {
     CeresBackend fresh{CeresBackendOptions()};
-    EXPECT_EQ(Solve(&reused, 4, second_half, Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)),
-              Solve(&fresh, 4, second_half, Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)));
+    EXPECT_EQ(Solve(&reused,
+                    4,
+                    second_half,
+                    Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)),
+              Solve(&fresh,
+                    4,
+                    second_half,
+                    Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)));
   }
   {
     CeresBackend fresh{CeresBackendOptions()};
-    const Vector6d zero = Solve(&fresh, 4, second_half, Stage(4, 1, UnmatchedPolicy::ZERO_RESIDUAL));
-    EXPECT_EQ(Solve(&reused, 4, second_half, Stage(4, 1, UnmatchedPolicy::ZERO_RESIDUAL)), zero);
+    const Vector6d zero = Solve(
+        &fresh, 4, second_half, Stage(4, 1, UnmatchedPolicy::ZERO_RESIDUAL));
+    EXPECT_EQ(Solve(&reused,
+                    4,
+                    second_half,
+                    Stage(4, 1, UnmatchedPolicy::ZERO_RESIDUAL)),
+              zero);
     // The policy matters on this layer, so a stale pool would show.
     CeresBackend nearest{CeresBackendOptions()};
-    EXPECT_NE(Solve(&nearest, 4, second_half, Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)), zero);
+    EXPECT_NE(Solve(&nearest,
+                    4,
+                    second_half,
+                    Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)),
+              zero);
   }
 }
 
@@ -131,8 +159,11 @@ TEST(CeresBackendDeathTest, ZeroStrideIsAProgrammingError) {
   CeresBackend backend{CeresBackendOptions()};
   Vector6d xi = Vector6d::Zero();
   StageSummary summary;
-  EXPECT_DEATH(backend.SolveStage(Koide3Pair().map.layer(1), Koide3Pair().samples,
-                                  Stage(1, 0, UnmatchedPolicy::NEAREST_CELL), &xi, &summary),
+  EXPECT_DEATH(backend.SolveStage(Koide3Pair().map.layer(1),
+                                  Koide3Pair().samples,
+                                  Stage(1, 0, UnmatchedPolicy::NEAREST_CELL),
+                                  &xi,
+                                  &summary),
                "point_stride");
 }
 

@@ -4,8 +4,9 @@
 // matrices for EXPECT_TRUE; non-finite entries in `actual` fail (tests pre-fill
 // outputs with NaN so that unwritten entries show up).
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+
+#include <Eigen/Core>
 
 namespace mlndt {
 namespace testing {
@@ -22,8 +23,8 @@ template <typename A, typename B>
   }
   const double difference = (actual - expected).cwiseAbs().maxCoeff();
   if (difference > tolerance) {
-    return ::testing::AssertionFailure() << "max |difference| " << difference << " > "
-                                         << tolerance << "\nactual:\n"
+    return ::testing::AssertionFailure() << "max |difference| " << difference
+                                         << " > " << tolerance << "\nactual:\n"
                                          << actual << "\nexpected:\n"
                                          << expected;
   }

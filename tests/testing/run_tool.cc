@@ -1,12 +1,11 @@
 #include "tests/testing/run_tool.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdio>
 #include <fstream>
 #include <sstream>
-
-#include <gtest/gtest.h>
 
 #include "tests/testing/test_data.h"
 
@@ -33,9 +32,11 @@ std::string ReadWholeFile(const std::string& path) {
 }
 
 ToolRun RunTool(const std::string& name, const std::string& args) {
-  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string err_path = ::testing::TempDir() + name + "_" + test->test_suite_name() +
-                               "_" + test->name() + ".stderr";
+  const ::testing::TestInfo* test =
+      ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string err_path = ::testing::TempDir() + name + "_" +
+                               test->test_suite_name() + "_" + test->name() +
+                               ".stderr";
   const std::string command =
       ShellQuote(ToolPath(name)) + " " + args + " 2>" + ShellQuote(err_path);
   ToolRun run;
@@ -46,7 +47,8 @@ ToolRun RunTool(const std::string& name, const std::string& args) {
   }
   char buffer[4096];
   size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.out.append(buffer, n);
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0)
+    run.out.append(buffer, n);
   const int status = pclose(pipe);
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::istringstream stream(run.out);

@@ -16,14 +16,17 @@ struct Patch {
 std::vector<Patch> ScenePatches() {
   std::vector<Patch> patches;
   const Eigen::Vector3d ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
-  patches.push_back({Eigen::Vector3d(-40, -20, 0), 80 * ex, 40 * ey});  // Ground.
+  patches.push_back(
+      {Eigen::Vector3d(-40, -20, 0), 80 * ex, 40 * ey});  // Ground.
   // Building rows on both sides, with recesses every 16 m.
   for (int side = -1; side <= 1; side += 2) {
     for (int b = 0; b < 5; ++b) {
       const double x0 = -40 + 16 * b;
       const double y = side * (12.0 + (b % 2) * 2.5);
-      patches.push_back({Eigen::Vector3d(x0, y, 0), 12 * ex, (8.0 + 2 * (b % 3)) * ez});
-      patches.push_back({Eigen::Vector3d(x0 + 12, y, 0), side * 4 * ey, 8 * ez});
+      patches.push_back(
+          {Eigen::Vector3d(x0, y, 0), 12 * ex, (8.0 + 2 * (b % 3)) * ez});
+      patches.push_back(
+          {Eigen::Vector3d(x0 + 12, y, 0), side * 4 * ey, 8 * ez});
     }
   }
   // Boxes (cars): four faces and a roof each.

@@ -21,11 +21,14 @@ namespace {
 using testing::ToolRun;
 const auto& Quote = testing::ShellQuote;
 
-ToolRun RunAlign(const std::string& args) { return testing::RunTool("mlndt_align", args); }
+ToolRun RunAlign(const std::string& args) {
+  return testing::RunTool("mlndt_align", args);
+}
 
 std::string TestDir() {
-  const std::string dir = ::testing::TempDir() + "mlndt_align_test_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string dir =
+      ::testing::TempDir() + "mlndt_align_test_" +
+      ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -71,7 +74,8 @@ TEST(MlndtAlign, BundledPairMatchesTheReferenceResultAndReportsTimeAndMemory) {
   EXPECT_GE(bytes, cells * 200.0);
   EXPECT_LT(bytes, cells * 2000.0);
   // Two ~70k-point clouds are loaded: at least 2 x 69k x 24 bytes.
-  EXPECT_GT(JsonNumber(json, "peak_resident_bytes"), 2 * 69000 * sizeof(Eigen::Vector3d));
+  EXPECT_GT(JsonNumber(json, "peak_resident_bytes"),
+            2 * 69000 * sizeof(Eigen::Vector3d));
 }
 
 TEST(MlndtAlign, BadInputFailsWithAMessage) {
@@ -80,15 +84,19 @@ TEST(MlndtAlign, BadInputFailsWithAMessage) {
     std::ofstream bad(dir + "/bad.pcd");
     bad << "VERSION .7\nFIELDS x y z\nthis is not a pcd\n";
   }
-  const std::string reference = testing::BundledDataPath("koide3/251370668.pcd");
+  const std::string reference =
+      testing::BundledDataPath("koide3/251370668.pcd");
   struct Case {
     std::string args;
     std::string message;
   } cases[] = {
       {"--reference=" + Quote(reference), "give both --reference and --input"},
-      {"--reference=" + Quote(reference) + " --input=" + Quote(dir + "/missing.pcd"),
+      {"--reference=" + Quote(reference) +
+           " --input=" + Quote(dir + "/missing.pcd"),
        "missing.pcd"},
-      {"--reference=" + Quote(reference) + " --input=" + Quote(dir + "/bad.pcd"), "bad.pcd"},
+      {"--reference=" + Quote(reference) +
+           " --input=" + Quote(dir + "/bad.pcd"),
+       "bad.pcd"},
       {"--backend=simplex", "simplex"},
       {"--threads=0", "threads"},
       {"stray_argument", "unexpected argument"},
@@ -96,7 +104,8 @@ TEST(MlndtAlign, BadInputFailsWithAMessage) {
   for (const Case& c : cases) {
     const ToolRun run = RunAlign(c.args);
     EXPECT_NE(run.exit_code, 0) << c.args;
-    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << "\nstderr: " << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos)
+        << c.args << "\nstderr: " << run.err;
   }
 }
 

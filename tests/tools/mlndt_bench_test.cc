@@ -2,7 +2,6 @@
 // the bundled koide3 pair and checks its markdown table, CSV and exit codes.
 
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cmath>
@@ -14,8 +13,8 @@
 #include <vector>
 
 #include "tests/testing/run_tool.h"
-#include "tests/testing/text_table.h"
 #include "tests/testing/test_data.h"
+#include "tests/testing/text_table.h"
 
 namespace mlndt {
 namespace {
@@ -38,16 +37,19 @@ ToolRun RunBench(const std::string& args) {
 }
 
 const char kCsvHeader[] =
-    "pairs,method,backend,sampling,start_layer,linear_solver,trust_region,threads,runs,"
+    "pairs,method,backend,sampling,start_layer,linear_solver,trust_region,"
+    "threads,runs,"
     "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_score,"
     "mean_translation_error_m,max_translation_error_m,mean_rotation_error_deg,"
-    "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_ms,pcl_over_ours";
+    "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_ms,pcl_"
+    "over_ours";
 
 TEST(MlndtBench, NewtonAndLmOnTheKoide3Pair) {
   const std::string csv_path = TempPath("koide3.csv");
   std::remove(csv_path.c_str());
-  const ToolRun run = RunBench("--repetitions=1 --pairs=koide3 --backends=newton,lm --output_csv=" +
-                               Quote(csv_path));
+  const ToolRun run = RunBench(
+      "--repetitions=1 --pairs=koide3 --backends=newton,lm --output_csv=" +
+      Quote(csv_path));
   ASSERT_EQ(run.exit_code, 0) << run.err;
 
   // Markdown table: a header, a rule and one row per backend.
@@ -88,7 +90,8 @@ TEST(MlndtBench, NewtonAndLmOnTheKoide3Pair) {
     EXPECT_EQ(row["runs"], "1");
     EXPECT_EQ(row["linear_solver"], "");  // Ceres only.
     EXPECT_EQ(row["pcl_over_ours"], "");  // No --compare_pcl.
-    // T_target_source.txt is a reference result, not ground truth: 5 cm / 1 deg.
+    // T_target_source.txt is a reference result, not ground truth: 5 cm / 1
+    // deg.
     const double translation_error = ToNumber(row["mean_translation_error_m"]);
     const double rotation_error = ToNumber(row["mean_rotation_error_deg"]);
     ASSERT_TRUE(std::isfinite(translation_error));
@@ -106,7 +109,8 @@ TEST(MlndtBench, NewtonAndLmOnTheKoide3Pair) {
 }
 
 TEST(MlndtBench, UnknownBackendFails) {
-  const ToolRun run = RunBench("--repetitions=1 --pairs=koide3 --backends=newton,foo");
+  const ToolRun run =
+      RunBench("--repetitions=1 --pairs=koide3 --backends=newton,foo");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_TRUE(run.lines.empty());
   EXPECT_NE(run.err.find("--backends"), std::string::npos) << run.err;
@@ -115,10 +119,20 @@ TEST(MlndtBench, UnknownBackendFails) {
 
 TEST(MlndtBench, RejectsBadFlagValues) {
   for (const std::string flags :
-       {"--backends=foo", "--pairs=bar", "--samplings=none", "--threads=1,x", "--threads=0",
-        "--start_layers=", "--gbs_cell_sizes=", "--gbs_cell_sizes=x", "--gbs_cell_sizes=0",
-        "--linear_solvers=cholesky", "--trust_regions=newton",
-        "--kitti_gaps=0", "--repetitions=0", "--pairs=koide3 --output_csv=/nonexistent/x.csv",
+       {"--backends=foo",
+        "--pairs=bar",
+        "--samplings=none",
+        "--threads=1,x",
+        "--threads=0",
+        "--start_layers=",
+        "--gbs_cell_sizes=",
+        "--gbs_cell_sizes=x",
+        "--gbs_cell_sizes=0",
+        "--linear_solvers=cholesky",
+        "--trust_regions=newton",
+        "--kitti_gaps=0",
+        "--repetitions=0",
+        "--pairs=koide3 --output_csv=/nonexistent/x.csv",
         "unexpected_argument"}) {
     SCOPED_TRACE(flags);
     const ToolRun run = RunBench(flags);

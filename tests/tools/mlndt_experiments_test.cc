@@ -26,8 +26,9 @@ const auto& ReadFile = testing::ReadWholeFile;
 namespace fs = std::filesystem;
 
 std::string TestDir(const std::string& suffix = "") {
-  const std::string dir = ::testing::TempDir() + "mlndt_experiments_test_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name() + suffix;
+  const std::string dir =
+      ::testing::TempDir() + "mlndt_experiments_test_" +
+      ::testing::UnitTest::GetInstance()->current_test_info()->name() + suffix;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -37,34 +38,39 @@ ToolRun RunExperiments(const std::string& args) {
   return testing::RunTool("mlndt_experiments", args);
 }
 
-bool GnuplotInstalled() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+bool GnuplotInstalled() {
+  return std::system("gnuplot --version >/dev/null 2>&1") == 0;
+}
 
 // Few scans, offsets, fractions and seeds, and the fast LM backend.
 const char kTinyRun[] =
     " --max_scans=3 --steps=1 --table9_steps=1,2 --translation_offsets=0,10"
-    " --rotation_offsets=0,15 --long_range_ndt_cells=0 --fractions=0,0.9 --random_seeds=1"
+    " --rotation_offsets=0,15 --long_range_ndt_cells=0 --fractions=0,0.9 "
+    "--random_seeds=1"
     " --adaptive_inits=constant_velocity --backend=lm";
 
 TEST(MlndtExperiments, TinyRunWritesEveryReportSection) {
   const std::string dir = TestDir();
   const bool plots = GnuplotInstalled();
-  const ToolRun run =
-      RunExperiments("--output_dir=" + Quote(dir) + kTinyRun + (plots ? "" : " --plots=false"));
+  const ToolRun run = RunExperiments("--output_dir=" + Quote(dir) + kTinyRun +
+                                     (plots ? "" : " --plots=false"));
   ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
   const std::string report = ReadFile(dir + "/REPORT.md");
   ASSERT_FALSE(report.empty());
   // The command line comes first, then the data caveat and every section.
   EXPECT_EQ(report.find("# ML-NDT experiments"), 0u);
-  EXPECT_NE(report.find("Command:\n\n```\n" + testing::ToolPath("mlndt_experiments")),
-            std::string::npos);
+  EXPECT_NE(
+      report.find("Command:\n\n```\n" + testing::ToolPath("mlndt_experiments")),
+      std::string::npos);
   EXPECT_NE(report.find("--max_scans=3"), std::string::npos);
-  for (const char* section : {"**Ground-truth caveat**",
-                              "## 1. Long-range convergence (Section 5.1)",
-                              "## 2. Optimisers: score against iteration (Figs. 11 and 13)",
-                              "## 3. Accuracy and sampling strategies (Tables 2–8)",
-                              "## 4. Start layer × initialisation (Table 9)",
-                              "## 5. Adaptive start layer (end of Section 5.3)",
-                              "## Notes"}) {
+  for (const char* section :
+       {"**Ground-truth caveat**",
+        "## 1. Long-range convergence (Section 5.1)",
+        "## 2. Optimisers: score against iteration (Figs. 11 and 13)",
+        "## 3. Accuracy and sampling strategies (Tables 2–8)",
+        "## 4. Start layer × initialisation (Table 9)",
+        "## 5. Adaptive start layer (end of Section 5.3)",
+        "## Notes"}) {
     EXPECT_NE(report.find(section), std::string::npos) << section;
   }
   // Tables with the paper's numbers beside ours.
@@ -91,7 +97,8 @@ TEST(MlndtExperiments, TinyRunWritesEveryReportSection) {
                             "sampling.png",
                             "table9.png"}) {
       EXPECT_GT(fs::file_size(dir + "/" + png), 1000u) << png;
-      EXPECT_NE(report.find(std::string("(") + png + ")"), std::string::npos) << png;
+      EXPECT_NE(report.find(std::string("(") + png + ")"), std::string::npos)
+          << png;
     }
   }
   EXPECT_NE(run.out.find("REPORT.md"), std::string::npos) << run.out;
@@ -115,10 +122,12 @@ TEST(MlndtExperiments, ReadsTheSharedDataLayout) {
     GTEST_SKIP() << shared << " has no kitti00_frames_0000_0007/";
   }
   const std::string dir = TestDir();
-  const ToolRun run = RunExperiments("--data_dir=" + Quote(shared) + " --output_dir=" + Quote(dir) +
-                                     kTinyRun + " --experiments=optimizers --plots=false");
+  const ToolRun run = RunExperiments("--data_dir=" + Quote(shared) +
+                                     " --output_dir=" + Quote(dir) + kTinyRun +
+                                     " --experiments=optimizers --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(ReadFile(dir + "/REPORT.md").find("kitti00_frames_0000_0007/pcd"), std::string::npos);
+  EXPECT_NE(ReadFile(dir + "/REPORT.md").find("kitti00_frames_0000_0007/pcd"),
+            std::string::npos);
 }
 
 TEST(MlndtExperiments, BadFlagsExitOne) {
@@ -127,23 +136,28 @@ TEST(MlndtExperiments, BadFlagsExitOne) {
       {"", "Usage"},
       {"--output_dir=" + Quote(dir) + " --experiments=bogus", "bogus"},
       {"--output_dir=" + Quote(dir) + " --steps=0", "--steps"},
-      {"--output_dir=" + Quote(dir) + " --data_dir=/nonexistent", "/nonexistent"},
+      {"--output_dir=" + Quote(dir) + " --data_dir=/nonexistent",
+       "/nonexistent"},
       {"--output_dir=" + Quote(dir) + " --method=bogus", "--method"},
-      {"--output_dir=" + Quote(dir) + " --experiments=table9 --fractions=x", "--fractions"},
-      {"--output_dir=" + Quote(dir) + " --experiments=optimizers --optimizer_pair=99",
+      {"--output_dir=" + Quote(dir) + " --experiments=table9 --fractions=x",
+       "--fractions"},
+      {"--output_dir=" + Quote(dir) +
+           " --experiments=optimizers --optimizer_pair=99",
        "optimizer_pair"},
   };
   for (const auto& [args, message] : cases) {
     const ToolRun run = RunExperiments(args);
     EXPECT_EQ(run.exit_code, 1) << args << "\n" << run.err;
-    EXPECT_NE(run.err.find(message), std::string::npos) << args << "\n" << run.err;
+    EXPECT_NE(run.err.find(message), std::string::npos) << args << "\n"
+                                                        << run.err;
   }
 }
 
 TEST(MlndtExperiments, MissingGnuplotExitsOneButWritesTheReport) {
   const std::string dir = TestDir();
-  const ToolRun run = RunExperiments("--output_dir=" + Quote(dir) + kTinyRun +
-                                     " --experiments=optimizers --gnuplot=/nonexistent/gnuplot");
+  const ToolRun run = RunExperiments(
+      "--output_dir=" + Quote(dir) + kTinyRun +
+      " --experiments=optimizers --gnuplot=/nonexistent/gnuplot");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.err.find("gnuplot"), std::string::npos) << run.err;
   EXPECT_TRUE(fs::is_regular_file(dir + "/REPORT.md"));

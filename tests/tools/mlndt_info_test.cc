@@ -2,7 +2,6 @@
 // bundled and shared scans and checks its JSON lines, stderr and exit code.
 
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cmath>
@@ -57,15 +56,19 @@ double NumberAfter(const std::string& json,
 }
 
 // The numbers of the array after `"key": [`; empty when absent.
-std::vector<double> ArrayAfter(const std::string& json, const std::string& key, size_t from = 0) {
+std::vector<double> ArrayAfter(const std::string& json,
+                               const std::string& key,
+                               size_t from = 0) {
   const std::string pattern = "\"" + key + "\": [";
   const size_t at = json.find(pattern, from);
   if (at == std::string::npos) return {};
   const size_t close = json.find(']', at);
-  std::istringstream items(json.substr(at + pattern.size(), close - at - pattern.size()));
+  std::istringstream items(
+      json.substr(at + pattern.size(), close - at - pattern.size()));
   std::vector<double> values;
   std::string item;
-  while (std::getline(items, item, ',')) values.push_back(std::strtod(item.c_str(), nullptr));
+  while (std::getline(items, item, ','))
+    values.push_back(std::strtod(item.c_str(), nullptr));
   return values;
 }
 
@@ -117,7 +120,8 @@ void ExpectCloudLine(const std::string& line,
   const std::vector<double> max = ArrayAfter(line, "max");
   ASSERT_EQ(min.size(), 3u);
   ASSERT_EQ(max.size(), 3u);
-  for (int axis = 0; axis < 3; ++axis) EXPECT_LT(min[axis], max[axis]) << "axis " << axis;
+  for (int axis = 0; axis < 3; ++axis)
+    EXPECT_LT(min[axis], max[axis]) << "axis " << axis;
 }
 
 const char kReference[] = "koide3/251370668.pcd";
@@ -150,12 +154,14 @@ TEST(MlndtInfo, LayersOfPaperMapHalveTheCellSize) {
     EXPECT_EQ(layers[i].layer, static_cast<int>(i + 1));
     EXPECT_GT(layers[i].cell_size_m, 0.0);
     ASSERT_EQ(layers[i].dims.size(), 3u);
-    const double grid_cells = layers[i].dims[0] * layers[i].dims[1] * layers[i].dims[2];
+    const double grid_cells =
+        layers[i].dims[0] * layers[i].dims[1] * layers[i].dims[2];
     EXPECT_GT(layers[i].occupied_cells, 0.0);
     EXPECT_LE(layers[i].occupied_cells + layers[i].sparse_cells, grid_cells);
     if (i > 0) {
       // q = 8: the edge halves from one layer to the next.
-      EXPECT_NEAR(layers[i].cell_size_m, 0.5 * layers[i - 1].cell_size_m,
+      EXPECT_NEAR(layers[i].cell_size_m,
+                  0.5 * layers[i - 1].cell_size_m,
                   1e-9 * layers[i - 1].cell_size_m);
       EXPECT_GE(layers[i].occupied_cells, layers[i - 1].occupied_cells);
     }
@@ -163,16 +169,16 @@ TEST(MlndtInfo, LayersOfPaperMapHalveTheCellSize) {
 }
 
 TEST(MlndtInfo, NumLayersFlagSetsTheLayerCount) {
-  const ToolRun run =
-      RunInfo("--layers --num_layers=2 " + Quote(testing::BundledDataPath(kReference)));
+  const ToolRun run = RunInfo("--layers --num_layers=2 " +
+                              Quote(testing::BundledDataPath(kReference)));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
   EXPECT_EQ(ParseLayers(run.lines[0]).size(), 2u) << run.lines[0];
 }
 
 TEST(MlndtInfo, FinestCellSizeChoosesTheLayerCount) {
-  const ToolRun run =
-      RunInfo("--layers --finest_cell_size=1 " + Quote(testing::BundledDataPath(kReference)));
+  const ToolRun run = RunInfo("--layers --finest_cell_size=1 " +
+                              Quote(testing::BundledDataPath(kReference)));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
   const std::vector<Layer> layers = ParseLayers(run.lines[0]);
@@ -203,7 +209,8 @@ TEST(MlndtInfo, NoArgumentsPrintsUsage) {
 TEST(MlndtInfo, MalformedFileFails) {
   const std::string bad = TempPath("malformed.pcd");
   WriteFile(bad,
-            "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n"
+            "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F "
+            "F\nCOUNT 1 1 1\n"
             "WIDTH 100\nHEIGHT 1\nPOINTS 100\nDATA binary\nshort");
   const ToolRun run = RunInfo(Quote(bad));
   EXPECT_EQ(run.exit_code, 1);
@@ -239,7 +246,8 @@ TEST(MlndtInfo, CountsDroppedNonFinitePoints) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
   EXPECT_EQ(NumberAfter(run.lines[0], "points"), 2.0) << run.lines[0];
-  EXPECT_EQ(NumberAfter(run.lines[0], "dropped_non_finite"), 1.0) << run.lines[0];
+  EXPECT_EQ(NumberAfter(run.lines[0], "dropped_non_finite"), 1.0)
+      << run.lines[0];
   EXPECT_EQ(ArrayAfter(run.lines[0], "min"), (std::vector<double>{-1, -2, -3}));
   EXPECT_EQ(ArrayAfter(run.lines[0], "max"), (std::vector<double>{1, 2, 3}));
 }
@@ -255,7 +263,8 @@ TEST(MlndtInfo, EmptyCloudIsDescribed) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
   EXPECT_EQ(NumberAfter(run.lines[0], "points"), 0.0) << run.lines[0];
-  EXPECT_NE(run.lines[0].find("\"min\": null, \"max\": null"), std::string::npos)
+  EXPECT_NE(run.lines[0].find("\"min\": null, \"max\": null"),
+            std::string::npos)
       << run.lines[0];
 }
 
@@ -272,8 +281,11 @@ TEST(MlndtInfo, EmptyCloudWithLayersFails) {
 
 TEST(MlndtInfo, RejectsBadFlagCombinations) {
   const std::string reference = Quote(testing::BundledDataPath(kReference));
-  for (const std::string flags : {"--num_layers=3", "--layers --num_layers=3 --finest_cell_size=1",
-                                  "--layers --division_constant=1", "--layers --num_layers=0"}) {
+  for (const std::string flags :
+       {"--num_layers=3",
+        "--layers --num_layers=3 --finest_cell_size=1",
+        "--layers --division_constant=1",
+        "--layers --num_layers=0"}) {
     SCOPED_TRACE(flags);
     const ToolRun run = RunInfo(flags + " " + reference);
     EXPECT_EQ(run.exit_code, 1);
@@ -310,13 +322,16 @@ TEST(MlndtInfo, SharedDataScansHaveReadmeCounts) {
       {"3dtk_example_scans/scan002.3d", "UOS_3D", 81360},
   };
   std::string args;
-  for (const Expected& e : expected) args += " " + Quote(dir + "/" + e.relative);
+  for (const Expected& e : expected)
+    args += " " + Quote(dir + "/" + e.relative);
   const ToolRun run = RunInfo(args);
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.err, "");
   ASSERT_EQ(run.lines.size(), expected.size());
   for (size_t i = 0; i < expected.size(); ++i) {
-    ExpectCloudLine(run.lines[i], dir + "/" + expected[i].relative, expected[i].format,
+    ExpectCloudLine(run.lines[i],
+                    dir + "/" + expected[i].relative,
+                    expected[i].format,
                     expected[i].points);
   }
 }

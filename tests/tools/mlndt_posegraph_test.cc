@@ -2,7 +2,6 @@
 // on the bundled KITTI frames 0-7 and checks its outputs and exit codes.
 
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cmath>
@@ -36,7 +35,9 @@ ToolRun RunPosegraph(const std::string& args, const std::string& /*dir*/) {
 }
 
 // The number after `"key": ` in `json`; NaN when absent.
-double NumberAfter(const std::string& json, const std::string& key, size_t from = 0) {
+double NumberAfter(const std::string& json,
+                   const std::string& key,
+                   size_t from = 0) {
   const std::string pattern = "\"" + key + "\": ";
   const size_t at = json.find(pattern, from);
   if (at == std::string::npos) return std::nan("");
@@ -57,15 +58,18 @@ int CountLines(const std::string& text) {
 TEST(MlndtPosegraph, JointIsNotWorseThanChainedOnKittiFrames0To7) {
   const std::string dir = TempDir("kitti");
   const std::string json_path = dir + "/result.json";
-  const ToolRun run = RunPosegraph(
-      "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
-          " --gt_poses=" + Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
-          " --threads=2 --output_dir=" + Quote(dir) + " --output_json=" + Quote(json_path),
-      dir);
+  const ToolRun run =
+      RunPosegraph("--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
+                       " --gt_poses=" +
+                       Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
+                       " --threads=2 --output_dir=" + Quote(dir) +
+                       " --output_json=" + Quote(json_path),
+                   dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
 
   // Both trajectories: 8 KITTI lines that read back as poses, scan 0 = world.
-  for (const std::string name : {"trajectory_chained.txt", "trajectory_joint.txt"}) {
+  for (const std::string name :
+       {"trajectory_chained.txt", "trajectory_joint.txt"}) {
     SCOPED_TRACE(name);
     EXPECT_EQ(CountLines(ReadFile(dir + "/" + name)), 8);
     std::vector<Eigen::Isometry3d> poses;
@@ -80,8 +84,10 @@ TEST(MlndtPosegraph, JointIsNotWorseThanChainedOnKittiFrames0To7) {
   // The same JSON on stdout and in the file, with the four metrics.
   const std::string json = ReadFile(json_path);
   EXPECT_EQ(json, run.out);
-  for (const std::string key : {"ate_chained_m", "ate_joint_m", "rpe_chained", "rpe_joint"}) {
-    EXPECT_NE(json.find("\"" + key + "\": "), std::string::npos) << key << " in " << json;
+  for (const std::string key :
+       {"ate_chained_m", "ate_joint_m", "rpe_chained", "rpe_joint"}) {
+    EXPECT_NE(json.find("\"" + key + "\": "), std::string::npos)
+        << key << " in " << json;
   }
   const double ate_chained = NumberAfter(json, "ate_chained_m");
   const double ate_joint = NumberAfter(json, "ate_joint_m");
@@ -98,7 +104,8 @@ TEST(MlndtPosegraph, JointIsNotWorseThanChainedOnKittiFrames0To7) {
   EXPECT_LT(NumberAfter(json, "rotation_deg", rpe_joint), 1.0) << json;
   // The joint solve lowered its own objective below its value at the
   // chained poses (a check free of the ground truth).
-  EXPECT_LE(NumberAfter(json, "joint_final_cost"), NumberAfter(json, "joint_cost_at_chained"))
+  EXPECT_LE(NumberAfter(json, "joint_final_cost"),
+            NumberAfter(json, "joint_cost_at_chained"))
       << json;
   EXPECT_EQ(NumberAfter(json, "chained_failures"), 0.0) << json;
 }
@@ -110,11 +117,14 @@ TEST(MlndtPosegraph, WithoutGroundTruthThereAreNoMetrics) {
   const std::string scans = dir + "/scans";
   std::system(("mkdir -p " + Quote(scans)).c_str());
   for (const char* name : {"000000.pcd", "000001.pcd", "000002.pcd"}) {
-    std::system(("cp " + Quote(testing::BundledDataPath(std::string("kitti/pcd/") + name)) + " " +
-                 Quote(scans) + "/")
-                    .c_str());
+    std::system(
+        ("cp " +
+         Quote(testing::BundledDataPath(std::string("kitti/pcd/") + name)) +
+         " " + Quote(scans) + "/")
+            .c_str());
   }
-  const ToolRun run = RunPosegraph("--scans=" + Quote(scans) + " --neighbors=1", dir);
+  const ToolRun run =
+      RunPosegraph("--scans=" + Quote(scans) + " --neighbors=1", dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(NumberAfter(run.out, "scans"), 3.0) << run.out;
   EXPECT_EQ(run.out.find("ate_"), std::string::npos) << run.out;
@@ -123,29 +133,33 @@ TEST(MlndtPosegraph, WithoutGroundTruthThereAreNoMetrics) {
 
 TEST(MlndtPosegraph, BadFlagsExitWithOne) {
   const std::string dir = TempDir("bad_flags");
-  const std::string scans = " --scans=" + Quote(testing::BundledDataPath("kitti/pcd"));
+  const std::string scans =
+      " --scans=" + Quote(testing::BundledDataPath("kitti/pcd"));
   // Ground truth with 2 poses for 8 scans.
   const std::string short_gt = dir + "/short_gt.txt";
-  std::system(("head -n 2 " + Quote(testing::BundledDataPath("kitti/poses_velo.txt")) + " > " +
+  std::system(("head -n 2 " +
+               Quote(testing::BundledDataPath("kitti/poses_velo.txt")) + " > " +
                Quote(short_gt))
                   .c_str());
   // A folder with a single scan.
   const std::string one_scan = dir + "/one_scan";
   std::system(("mkdir -p " + Quote(one_scan) + " && cp " +
-               Quote(testing::BundledDataPath("kitti/pcd/000000.pcd")) + " " + Quote(one_scan))
+               Quote(testing::BundledDataPath("kitti/pcd/000000.pcd")) + " " +
+               Quote(one_scan))
                   .c_str());
   for (const std::string& args : {
-           std::string(""),                                      // No --scans.
-           scans + " --neighbors=0",                             // Not >= 1.
-           scans + " --joint_layers=3",                          // 1 or 2.
-           scans + " --joint_max_iterations=0",                  // Not >= 1.
-           scans + " --backend=nonsense",                        // Registration flag.
-           scans + " --method=ndt",                              // Not ML-NDT.
-           scans + " --loss_scale=-1",                           // Invalid option.
-           scans + " --gt_poses=" + Quote(dir + "/missing.txt"),  // Unreadable file.
-           scans + " --gt_poses=" + Quote(short_gt),             // Too few poses.
-           " --scans=" + Quote(dir + "/missing"),                // No folder.
-           " --scans=" + Quote(one_scan),                        // Fewer than 2 scans.
+           std::string(""),                      // No --scans.
+           scans + " --neighbors=0",             // Not >= 1.
+           scans + " --joint_layers=3",          // 1 or 2.
+           scans + " --joint_max_iterations=0",  // Not >= 1.
+           scans + " --backend=nonsense",        // Registration flag.
+           scans + " --method=ndt",              // Not ML-NDT.
+           scans + " --loss_scale=-1",           // Invalid option.
+           scans + " --gt_poses=" +
+               Quote(dir + "/missing.txt"),           // Unreadable file.
+           scans + " --gt_poses=" + Quote(short_gt),  // Too few poses.
+           " --scans=" + Quote(dir + "/missing"),     // No folder.
+           " --scans=" + Quote(one_scan),             // Fewer than 2 scans.
        }) {
     SCOPED_TRACE(args);
     const ToolRun run = RunPosegraph(args, dir);

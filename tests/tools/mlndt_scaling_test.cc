@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "tests/testing/run_tool.h"
-#include "tests/testing/text_table.h"
 #include "tests/testing/test_data.h"
+#include "tests/testing/text_table.h"
 
 namespace mlndt {
 namespace {
@@ -35,9 +35,13 @@ namespace fs = std::filesystem;
 constexpr double kMaxTranslationErrorCm = 10.0;
 constexpr double kMaxRotationErrorDeg = 0.5;
 
-ToolRun RunScaling(const std::string& args) { return testing::RunTool("mlndt_scaling", args); }
+ToolRun RunScaling(const std::string& args) {
+  return testing::RunTool("mlndt_scaling", args);
+}
 
-bool GnuplotInstalled() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+bool GnuplotInstalled() {
+  return std::system("gnuplot --version >/dev/null 2>&1") == 0;
+}
 
 // Table rows: lines starting with "| <digit>".
 std::vector<std::vector<std::string>> TableRows(const ToolRun& run) {
@@ -52,8 +56,9 @@ std::vector<std::vector<std::string>> TableRows(const ToolRun& run) {
 }
 
 std::string TestDir() {
-  const std::string dir = ::testing::TempDir() + "mlndt_scaling_test_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string dir =
+      ::testing::TempDir() + "mlndt_scaling_test_" +
+      ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -62,10 +67,13 @@ std::string TestDir() {
 TEST(MlndtScaling, SmallSizesOnTheBundledKittiFrames) {
   const std::string dir = TestDir();
   const bool gnuplot = GnuplotInstalled();
-  const ToolRun run = RunScaling("--sizes=3000,12000 --repetitions=1 --output_dir=" + Quote(dir));
+  const ToolRun run = RunScaling(
+      "--sizes=3000,12000 --repetitions=1 --output_dir=" + Quote(dir));
   // Without gnuplot the CSV is written and the tool exits 1 for the PNG.
   ASSERT_EQ(run.exit_code, gnuplot ? 0 : 1) << run.out << run.err;
-  EXPECT_NE(run.out.find("merged cloud: 991949 points from 8 scans"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("merged cloud: 991949 points from 8 scans"),
+            std::string::npos)
+      << run.out;
 
   // Table: points, map, sampling, solve, total, sampled, cells, layers,
   // iterations, t error cm, r error deg, solve.
@@ -77,7 +85,8 @@ TEST(MlndtScaling, SmallSizesOnTheBundledKittiFrames) {
     ASSERT_EQ(row.size(), 12u) << run.out;
     EXPECT_GT(ToNumber(row[3]), 0.0) << "solve ms, N = " << row[0];
     EXPECT_GT(ToNumber(row[4]), 0.0) << "total ms, N = " << row[0];
-    EXPECT_GE(ToNumber(row[1]), 0.0) << "map ms, N = " << row[0];  // 0.1 ms resolution.
+    EXPECT_GE(ToNumber(row[1]), 0.0)
+        << "map ms, N = " << row[0];  // 0.1 ms resolution.
     EXPECT_GE(ToNumber(row[2]), 0.0) << "sampling ms, N = " << row[0];
     EXPECT_GT(ToNumber(row[5]), 0.0) << "sampled points, N = " << row[0];
     EXPECT_LE(ToNumber(row[5]), ToNumber(row[0]));
@@ -92,24 +101,28 @@ TEST(MlndtScaling, SmallSizesOnTheBundledKittiFrames) {
   for (const char* stage : {"map:", "sampling:", "solve:", "total:"}) {
     const size_t at = run.out.find(std::string("  ") + stage);
     ASSERT_NE(at, std::string::npos) << stage << "\n" << run.out;
-    const double slope = std::strtod(run.out.c_str() + at + 2 + std::string(stage).size(), nullptr);
+    const double slope = std::strtod(
+        run.out.c_str() + at + 2 + std::string(stage).size(), nullptr);
     EXPECT_TRUE(std::isfinite(slope)) << stage;
   }
 
   // CSV: the same rows, with full precision.
-  const std::vector<std::string> lines = Split(ReadFile(dir + "/scaling.csv"), '\n');
+  const std::vector<std::string> lines =
+      Split(ReadFile(dir + "/scaling.csv"), '\n');
   ASSERT_EQ(lines.size(), 4u) << "header, 2 rows and a final newline expected\n"
                               << ReadFile(dir + "/scaling.csv");
   EXPECT_EQ(lines[3], "");
   EXPECT_EQ(lines[0],
-            "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_layer_cells,"
-            "num_layers,iterations,termination,translation_error_m,rotation_error_deg,ok");
+            "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_"
+            "layer_cells,"
+            "num_layers,iterations,termination,translation_error_m,rotation_"
+            "error_deg,ok");
   for (size_t k = 1; k < 3; ++k) {
     const std::vector<std::string> f = Split(lines[k], ',');
     ASSERT_EQ(f.size(), 13u) << lines[k];
     EXPECT_EQ(f[0], rows[k - 1][0]);
-    const double map = ToNumber(f[1]), sampling = ToNumber(f[2]), solve = ToNumber(f[3]),
-                 total = ToNumber(f[4]);
+    const double map = ToNumber(f[1]), sampling = ToNumber(f[2]),
+                 solve = ToNumber(f[3]), total = ToNumber(f[4]);
     EXPECT_GT(map, 0.0) << lines[k];
     EXPECT_GT(sampling, 0.0) << lines[k];
     EXPECT_GT(solve, 0.0) << lines[k];
@@ -135,17 +148,22 @@ TEST(MlndtScaling, WithoutOutputDirPrintsOnlyTheTable) {
   EXPECT_EQ(TableRows(run).size(), 1u) << run.out;
   EXPECT_EQ(run.out.find("output:"), std::string::npos) << run.out;
   // One size gives no slope.
-  EXPECT_NE(run.out.find("  map:                –"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("  map:                –"), std::string::npos)
+      << run.out;
 }
 
 TEST(MlndtScaling, ErrorAboveTheToleranceIsReportedAndFails) {
-  const ToolRun run = RunScaling("--sizes=3000 --repetitions=1 --max_translation_error=0.0001");
+  const ToolRun run =
+      RunScaling("--sizes=3000 --repetitions=1 --max_translation_error=0.0001");
   EXPECT_EQ(run.exit_code, 1);
   const std::vector<std::vector<std::string>> rows = TableRows(run);
   ASSERT_EQ(rows.size(), 1u) << run.out;
   EXPECT_EQ(rows[0].back(), "LARGE ERROR");
-  EXPECT_NE(run.err.find("N = 3000: recovered motion off by"), std::string::npos) << run.err;
-  EXPECT_NE(run.err.find("did not recover --motion"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("N = 3000: recovered motion off by"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("did not recover --motion"), std::string::npos)
+      << run.err;
 }
 
 struct BadFlagCase {
@@ -155,9 +173,11 @@ struct BadFlagCase {
 
 TEST(MlndtScaling, BadFlagsExitNonZeroNamingTheProblem) {
   const BadFlagCase cases[] = {
-      {"--sizes=12000,3000", "--sizes=12000,3000: sizes must be strictly increasing"},
+      {"--sizes=12000,3000",
+       "--sizes=12000,3000: sizes must be strictly increasing"},
       {"--sizes=3000,3000", "strictly increasing (3000 after 3000)"},
-      {"--sizes=3000,abc", "--sizes=3000,abc: expected comma-separated positive integers"},
+      {"--sizes=3000,abc",
+       "--sizes=3000,abc: expected comma-separated positive integers"},
       {"--sizes=0,3000", "'0' is not a positive integer"},
       {"--sizes=1500.5", "'1500.5' is not a positive integer"},
       {"--sizes=3000,2000000", "2000000 points requested, but the 8 scans"},
@@ -171,7 +191,9 @@ TEST(MlndtScaling, BadFlagsExitNonZeroNamingTheProblem) {
   for (const BadFlagCase& c : cases) {
     const ToolRun run = RunScaling(c.args);
     EXPECT_NE(run.exit_code, 0) << c.args;
-    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << ": stderr was\n" << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos)
+        << c.args << ": stderr was\n"
+        << run.err;
     EXPECT_TRUE(TableRows(run).empty()) << c.args;
   }
 }

@@ -25,8 +25,8 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
-#include "tests/testing/synthetic_scene.h"
 #include "tests/testing/run_tool.h"
+#include "tests/testing/synthetic_scene.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -40,8 +40,9 @@ namespace fs = std::filesystem;
 
 // A fresh folder under the test temp dir, named after the current test.
 std::string TestDir(const std::string& suffix = "") {
-  const std::string dir = ::testing::TempDir() + "mlndt_sequence_test_" +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name() + suffix;
+  const std::string dir =
+      ::testing::TempDir() + "mlndt_sequence_test_" +
+      ::testing::UnitTest::GetInstance()->current_test_info()->name() + suffix;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -52,7 +53,9 @@ ToolRun RunSequence(const std::string& args) {
   return testing::RunTool("mlndt_sequence", args);
 }
 
-bool GnuplotInstalled() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+bool GnuplotInstalled() {
+  return std::system("gnuplot --version >/dev/null 2>&1") == 0;
+}
 
 // ---- A minimal JSON reader: numbers, strings, booleans and null of nested
 // objects, flattened to "a.b.c" keys (arrays are skipped). -------------------
@@ -67,7 +70,8 @@ class FlatJson {
   bool Has(const std::string& key) const { return values_.count(key) > 0; }
   double Number(const std::string& key) const {
     auto it = values_.find(key);
-    return it == values_.end() ? std::nan("") : std::strtod(it->second.c_str(), nullptr);
+    return it == values_.end() ? std::nan("")
+                               : std::strtod(it->second.c_str(), nullptr);
   }
   std::string String(const std::string& key) const {
     auto it = values_.find(key);
@@ -76,7 +80,9 @@ class FlatJson {
 
  private:
   void SkipSpace() {
-    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+    while (pos_ < text_.size() &&
+           std::isspace(static_cast<unsigned char>(text_[pos_])))
+      ++pos_;
   }
   bool ParseString(std::string* out) {
     if (text_[pos_] != '"') return false;
@@ -127,7 +133,8 @@ class FlatJson {
       return true;
     }
     const size_t begin = pos_;
-    while (pos_ < text_.size() && std::string(",}] \n\t").find(text_[pos_]) == std::string::npos) {
+    while (pos_ < text_.size() &&
+           std::string(",}] \n\t").find(text_[pos_]) == std::string::npos) {
       ++pos_;
     }
     values_[key] = text_.substr(begin, pos_ - begin);
@@ -141,7 +148,8 @@ class FlatJson {
 };
 
 // pairs.csv as rows of named fields.
-std::vector<std::map<std::string, std::string>> ReadCsv(const std::string& path) {
+std::vector<std::map<std::string, std::string>> ReadCsv(
+    const std::string& path) {
   std::ifstream in(path);
   std::string line;
   std::vector<std::string> header;
@@ -158,16 +166,19 @@ std::vector<std::map<std::string, std::string>> ReadCsv(const std::string& path)
     }
     EXPECT_EQ(fields.size(), header.size()) << line;
     std::map<std::string, std::string> row;
-    for (size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
+    for (size_t k = 0; k < header.size() && k < fields.size(); ++k)
+      row[header[k]] = fields[k];
     rows.push_back(row);
   }
   return rows;
 }
 
-double Field(const std::map<std::string, std::string>& row, const std::string& name) {
+double Field(const std::map<std::string, std::string>& row,
+             const std::string& name) {
   auto it = row.find(name);
   EXPECT_NE(it, row.end()) << name;
-  return it == row.end() ? std::nan("") : std::strtod(it->second.c_str(), nullptr);
+  return it == row.end() ? std::nan("")
+                         : std::strtod(it->second.c_str(), nullptr);
 }
 
 size_t CountLines(const std::string& path) {
@@ -198,23 +209,28 @@ Recomputed Recompute(std::vector<double> v) {
 }
 
 void ExpectClose(double summary, double recomputed, const std::string& what) {
-  EXPECT_NEAR(summary, recomputed, 1e-6 * std::max(1.0, std::abs(recomputed))) << what;
+  EXPECT_NEAR(summary, recomputed, 1e-6 * std::max(1.0, std::abs(recomputed)))
+      << what;
 }
 
 std::string KittiArgs(const std::string& output_dir) {
   return "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
-         " --gt_poses=" + Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
+         " --gt_poses=" +
+         Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
          " --output_dir=" + Quote(output_dir);
 }
 
 TEST(MlndtSequence, KittiStepOneFromZero) {
   const std::string dir = TestDir();
   const bool plots = GnuplotInstalled();
-  const ToolRun run =
-      RunSequence(KittiArgs(dir) + " --step=1 --init=zero" + (plots ? "" : " --plots=false"));
+  const ToolRun run = RunSequence(KittiArgs(dir) + " --step=1 --init=zero" +
+                                  (plots ? "" : " --plots=false"));
   ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
-  for (const char* file :
-       {"pairs.csv", "summary.json", "trace.csv", "trajectory.txt", "gt_trajectory.txt"}) {
+  for (const char* file : {"pairs.csv",
+                           "summary.json",
+                           "trace.csv",
+                           "trajectory.txt",
+                           "gt_trajectory.txt"}) {
     EXPECT_TRUE(fs::is_regular_file(dir + "/" + file)) << file;
   }
   if (plots) {
@@ -228,7 +244,8 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
   // One progress line per pair when stderr is not a terminal.
   EXPECT_NE(run.err.find("7/7 pair 6->7"), std::string::npos) << run.err;
 
-  const std::vector<std::map<std::string, std::string>> rows = ReadCsv(dir + "/pairs.csv");
+  const std::vector<std::map<std::string, std::string>> rows =
+      ReadCsv(dir + "/pairs.csv");
   ASSERT_EQ(rows.size(), 7u);
   const FlatJson summary(ReadFile(dir + "/summary.json"));
   ASSERT_TRUE(summary.ok()) << ReadFile(dir + "/summary.json");
@@ -239,14 +256,15 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
   double successes = 0, strict = 0;
   std::vector<double> time, iterations;
   std::map<std::string, std::vector<double>> errors;
-  const std::map<std::string, std::string> columns = {{"tx_cm", "err_tx_cm"},
-                                                      {"ty_cm", "err_ty_cm"},
-                                                      {"tz_cm", "err_tz_cm"},
-                                                      {"alpha_deg", "err_alpha_deg"},
-                                                      {"beta_deg", "err_beta_deg"},
-                                                      {"gamma_deg", "err_gamma_deg"},
-                                                      {"translation_cm", "translation_error_cm"},
-                                                      {"rotation_deg", "rotation_error_deg"}};
+  const std::map<std::string, std::string> columns = {
+      {"tx_cm", "err_tx_cm"},
+      {"ty_cm", "err_ty_cm"},
+      {"tz_cm", "err_tz_cm"},
+      {"alpha_deg", "err_alpha_deg"},
+      {"beta_deg", "err_beta_deg"},
+      {"gamma_deg", "err_gamma_deg"},
+      {"translation_cm", "translation_error_cm"},
+      {"rotation_deg", "rotation_error_deg"}};
   for (size_t k = 0; k < rows.size(); ++k) {
     const auto& row = rows[k];
     EXPECT_EQ(Field(row, "reference"), double(k));
@@ -255,35 +273,48 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
     strict += Field(row, "strict_success");
     time.push_back(Field(row, "time_total_ms"));
     iterations.push_back(Field(row, "iterations"));
-    for (const auto& [name, column] : columns) errors[name].push_back(std::abs(Field(row, column)));
+    for (const auto& [name, column] : columns)
+      errors[name].push_back(std::abs(Field(row, column)));
     // The norms agree with the components.
     const double tx = Field(row, "err_tx_cm"), ty = Field(row, "err_ty_cm"),
                  tz = Field(row, "err_tz_cm");
-    EXPECT_NEAR(std::sqrt(tx * tx + ty * ty + tz * tz), Field(row, "translation_error_cm"), 1e-6);
-    EXPECT_EQ(Field(row, "success"), Field(row, "translation_error_cm") < 50.0 ? 1.0 : 0.0);
+    EXPECT_NEAR(std::sqrt(tx * tx + ty * ty + tz * tz),
+                Field(row, "translation_error_cm"),
+                1e-6);
+    EXPECT_EQ(Field(row, "success"),
+              Field(row, "translation_error_cm") < 50.0 ? 1.0 : 0.0);
     EXPECT_EQ(Field(row, "strict_success"),
-              Field(row, "translation_error_cm") < 20.0 && Field(row, "rotation_error_deg") < 1.0
+              Field(row, "translation_error_cm") < 20.0 &&
+                      Field(row, "rotation_error_deg") < 1.0
                   ? 1.0
                   : 0.0);
-    EXPECT_LE(
-        Field(row, "time_map_ms") + Field(row, "time_sampling_ms") + Field(row, "time_solve_ms"),
-        Field(row, "time_total_ms") + 1e-6);
+    EXPECT_LE(Field(row, "time_map_ms") + Field(row, "time_sampling_ms") +
+                  Field(row, "time_solve_ms"),
+              Field(row, "time_total_ms") + 1e-6);
   }
-  ExpectClose(summary.Number("success_rate_percent"), 100.0 * successes / rows.size(), "success");
-  ExpectClose(
-      summary.Number("strict_success_rate_percent"), 100.0 * strict / rows.size(), "strict");
+  ExpectClose(summary.Number("success_rate_percent"),
+              100.0 * successes / rows.size(),
+              "success");
+  ExpectClose(summary.Number("strict_success_rate_percent"),
+              100.0 * strict / rows.size(),
+              "strict");
   for (const auto& [name, values] : errors) {
     const Recomputed r = Recompute(values);
-    ExpectClose(summary.Number("errors." + name + ".mean"), r.mean, name + " mean");
-    ExpectClose(summary.Number("errors." + name + ".std"), r.std, name + " std");
-    ExpectClose(summary.Number("errors." + name + ".max"), r.max, name + " max");
+    ExpectClose(
+        summary.Number("errors." + name + ".mean"), r.mean, name + " mean");
+    ExpectClose(
+        summary.Number("errors." + name + ".std"), r.std, name + " std");
+    ExpectClose(
+        summary.Number("errors." + name + ".max"), r.max, name + " max");
   }
   const Recomputed t = Recompute(time);
   ExpectClose(summary.Number("time_ms.mean"), t.mean, "time mean");
   ExpectClose(summary.Number("time_ms.median"), t.median, "time median");
   ExpectClose(summary.Number("time_ms.p95"), t.p95, "time p95");
   ExpectClose(summary.Number("time_ms.max"), t.max, "time max");
-  ExpectClose(summary.Number("mean_iterations"), Recompute(iterations).mean, "iterations");
+  ExpectClose(summary.Number("mean_iterations"),
+              Recompute(iterations).mean,
+              "iterations");
 
   // The issue's requirement: >= 95 % strict successes on consecutive pairs.
   EXPECT_GE(summary.Number("strict_success_rate_percent"), 95.0);
@@ -293,12 +324,16 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
   ASSERT_EQ(CountLines(dir + "/gt_trajectory.txt"), 8u);
   std::vector<Eigen::Isometry3d> estimate, truth, velo;
   std::string error;
-  ASSERT_TRUE(ReadKittiPoses(dir + "/trajectory.txt", &estimate, &error)) << error;
-  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory.txt", &truth, &error)) << error;
-  ASSERT_TRUE(ReadKittiPoses(testing::BundledDataPath("kitti/poses_velo.txt"), &velo, &error));
+  ASSERT_TRUE(ReadKittiPoses(dir + "/trajectory.txt", &estimate, &error))
+      << error;
+  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory.txt", &truth, &error))
+      << error;
+  ASSERT_TRUE(ReadKittiPoses(
+      testing::BundledDataPath("kitti/poses_velo.txt"), &velo, &error));
   EXPECT_TRUE(estimate[0].isApprox(Eigen::Isometry3d::Identity(), 1e-12));
   for (size_t k = 0; k < 8; ++k) {
-    EXPECT_LT(TranslationErrorM(truth[k], velo[0].inverse() * velo[k]), 1e-4) << k;
+    EXPECT_LT(TranslationErrorM(truth[k], velo[0].inverse() * velo[k]), 1e-4)
+        << k;
   }
   // Chained estimate: the data's ~0.8x scale leaves ~0.17 m per frame.
   EXPECT_LT(TranslationErrorM(estimate[7], truth[7]), 0.25 * 7);
@@ -310,14 +345,15 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
 std::string WriteSyntheticSequence(const std::string& dir) {
   std::vector<Eigen::Isometry3d> poses;
   for (int k = 0; k < 4; ++k) {
-    Eigen::Isometry3d world_from_scan =
-        PoseVectorToIsometry(PoseVectorFromDegrees(1.5 * k, 0.2 * k, 0.02 * k, 0.0, 0.0, 3.0 * k));
+    Eigen::Isometry3d world_from_scan = PoseVectorToIsometry(
+        PoseVectorFromDegrees(1.5 * k, 0.2 * k, 0.02 * k, 0.0, 0.0, 3.0 * k));
     poses.push_back(world_from_scan);
     const PointCloud world = testing::StreetScene(40000, 0.01, 100 + k);
     std::string error;
-    EXPECT_TRUE(WritePointCloud(dir + "/scan_" + std::to_string(k) + ".pcd",
-                                TransformCloud(world_from_scan.inverse(), world),
-                                &error))
+    EXPECT_TRUE(
+        WritePointCloud(dir + "/scan_" + std::to_string(k) + ".pcd",
+                        TransformCloud(world_from_scan.inverse(), world),
+                        &error))
         << error;
   }
   std::string error;
@@ -329,9 +365,10 @@ TEST(MlndtSequence, GroundTruthInitGivesNearZeroErrorQuickly) {
   const std::string data = TestDir("_data");
   const std::string poses = WriteSyntheticSequence(data);
   const std::string dir = TestDir();
-  const ToolRun run = RunSequence("--scans=" + Quote(data) + " --gt_poses=" + Quote(poses) +
-                                  " --output_dir=" + Quote(dir) +
-                                  " --init=gt_fraction:1.0 --start_layer=0 --plots=false");
+  const ToolRun run =
+      RunSequence("--scans=" + Quote(data) + " --gt_poses=" + Quote(poses) +
+                  " --output_dir=" + Quote(dir) +
+                  " --init=gt_fraction:1.0 --start_layer=0 --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
   const FlatJson summary(ReadFile(dir + "/summary.json"));
   ASSERT_TRUE(summary.ok());
@@ -344,11 +381,13 @@ TEST(MlndtSequence, GroundTruthInitGivesNearZeroErrorQuickly) {
 
   // From zero the same pairs need more iterations (and still succeed).
   const std::string zero_dir = TestDir("_zero");
-  const ToolRun zero = RunSequence("--scans=" + Quote(data) + " --gt_poses=" + Quote(poses) +
-                                   " --output_dir=" + Quote(zero_dir) + " --plots=false");
+  const ToolRun zero =
+      RunSequence("--scans=" + Quote(data) + " --gt_poses=" + Quote(poses) +
+                  " --output_dir=" + Quote(zero_dir) + " --plots=false");
   ASSERT_EQ(zero.exit_code, 0) << zero.err;
   const FlatJson zero_summary(ReadFile(zero_dir + "/summary.json"));
-  EXPECT_GT(zero_summary.Number("mean_iterations"), summary.Number("mean_iterations"));
+  EXPECT_GT(zero_summary.Number("mean_iterations"),
+            summary.Number("mean_iterations"));
   EXPECT_EQ(zero_summary.Number("strict_success_rate_percent"), 100.0);
 }
 
@@ -356,9 +395,10 @@ TEST(MlndtSequence, KittiGroundTruthInitStaysAtTheDataOptimum) {
   // On KITTI the optimum itself is ~0.17 m from GT (0.8x scale): a GT start
   // ends there, in few iterations on the last layer.
   const std::string dir = TestDir();
-  const ToolRun run = RunSequence(KittiArgs(dir) +
-                                  " --max_scans=4 --init=gt_fraction:1.0 --start_layer=0 "
-                                  "--plots=false");
+  const ToolRun run =
+      RunSequence(KittiArgs(dir) +
+                  " --max_scans=4 --init=gt_fraction:1.0 --start_layer=0 "
+                  "--plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const FlatJson summary(ReadFile(dir + "/summary.json"));
   EXPECT_EQ(summary.Number("strict_success_rate_percent"), 100.0);
@@ -373,36 +413,46 @@ TEST(MlndtSequence, CameraPosesWithCalibMatchVelodynePoses) {
   const std::string data = TestDir("_data");
   for (int k = 0; k < 3; ++k) {
     const std::string name = "00000" + std::to_string(k) + ".pcd";
-    fs::create_symlink(testing::BundledDataPath("kitti/pcd/" + name), data + "/" + name);
+    fs::create_symlink(testing::BundledDataPath("kitti/pcd/" + name),
+                       data + "/" + name);
   }
-  fs::copy_file(testing::BundledDataPath("kitti/poses_cam0.txt"), data + "/poses_cam0.txt");
-  fs::copy_file(testing::BundledDataPath("kitti/calib.txt"), data + "/calib.txt");
+  fs::copy_file(testing::BundledDataPath("kitti/poses_cam0.txt"),
+                data + "/poses_cam0.txt");
+  fs::copy_file(testing::BundledDataPath("kitti/calib.txt"),
+                data + "/calib.txt");
   const std::string dir = TestDir();
-  const ToolRun run =
-      RunSequence("--scans=" + Quote(data) + " --gt_poses=" + Quote(data + "/poses_cam0.txt") +
-                  " --calib=" + Quote(data + "/calib.txt") + " --output_dir=" + Quote(dir) +
-                  " --backend=lm --plots=false");
+  const ToolRun run = RunSequence(
+      "--scans=" + Quote(data) +
+      " --gt_poses=" + Quote(data + "/poses_cam0.txt") +
+      " --calib=" + Quote(data + "/calib.txt") + " --output_dir=" + Quote(dir) +
+      " --backend=lm --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const FlatJson summary(ReadFile(dir + "/summary.json"));
   EXPECT_EQ(summary.Number("scans"), 3.0);
   std::vector<Eigen::Isometry3d> truth, velo;
   std::string error;
-  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory.txt", &truth, &error)) << error;
-  ASSERT_TRUE(ReadKittiPoses(testing::BundledDataPath("kitti/poses_velo.txt"), &velo, &error));
+  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory.txt", &truth, &error))
+      << error;
+  ASSERT_TRUE(ReadKittiPoses(
+      testing::BundledDataPath("kitti/poses_velo.txt"), &velo, &error));
   ASSERT_EQ(truth.size(), 3u);
   for (size_t k = 0; k < 3; ++k) {
-    EXPECT_LT(TranslationErrorM(truth[k], velo[0].inverse() * velo[k]), 1e-4) << k;
-    EXPECT_LT(RotationErrorRad(truth[k], velo[0].inverse() * velo[k]), 1e-5) << k;
+    EXPECT_LT(TranslationErrorM(truth[k], velo[0].inverse() * velo[k]), 1e-4)
+        << k;
+    EXPECT_LT(RotationErrorRad(truth[k], velo[0].inverse() * velo[k]), 1e-5)
+        << k;
   }
 }
 
 TEST(MlndtSequence, AdaptiveStartLayerFollowsTheRunningFailRate) {
   const std::string dir = TestDir();
-  const ToolRun run = RunSequence(KittiArgs(dir) +
-                                  " --max_scans=6 --step=2 --init=constant_velocity "
-                                  "--adaptive_start_layer --backend=lm --plots=false");
+  const ToolRun run =
+      RunSequence(KittiArgs(dir) +
+                  " --max_scans=6 --step=2 --init=constant_velocity "
+                  "--adaptive_start_layer --backend=lm --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const std::vector<std::map<std::string, std::string>> rows = ReadCsv(dir + "/pairs.csv");
+  const std::vector<std::map<std::string, std::string>> rows =
+      ReadCsv(dir + "/pairs.csv");
   ASSERT_EQ(rows.size(), 4u);
   const double n = Field(rows[0], "num_layers");
   EXPECT_EQ(Field(rows[0], "start_layer"), n);  // Starts on the last layer.
@@ -416,7 +466,8 @@ TEST(MlndtSequence, AdaptiveStartLayerFollowsTheRunningFailRate) {
     const bool check_failed = Field(rows[p], "guess_deviation_m") > 1.0 ||
                               Field(rows[p], "guess_deviation_deg") > 15.0 ||
                               rows[p].at("termination") == "FAILURE";
-    EXPECT_EQ(Field(rows[p], "guess_check_failed"), check_failed ? 1.0 : 0.0) << p;
+    EXPECT_EQ(Field(rows[p], "guess_check_failed"), check_failed ? 1.0 : 0.0)
+        << p;
     failed += check_failed;
   }
   // The first step-2 pair moves ~1.7 m from a zero guess: a "failure" by the
@@ -436,7 +487,8 @@ TEST(MlndtSequence, BadFlagsExitOne) {
       {kitti + " --step=8", "too few"},
       {kitti + " --init=bogus", "--init=bogus"},
       {kitti + " --init=gt_fraction:x", "gt_fraction"},
-      {kitti + " --init=poses:/nonexistent/poses.txt", "/nonexistent/poses.txt"},
+      {kitti + " --init=poses:/nonexistent/poses.txt",
+       "/nonexistent/poses.txt"},
       {kitti + " --method=ndt --adaptive_start_layer", "adaptive"},
       {kitti + " --adaptive_fail_rates=0.5,0.1", "adaptive_fail_rates"},
       {kitti + " --sampling=bogus", "--sampling"},
@@ -453,7 +505,8 @@ TEST(MlndtSequence, BadFlagsExitOne) {
   for (const auto& [args, message] : cases) {
     const ToolRun run = RunSequence(args);
     EXPECT_EQ(run.exit_code, 1) << args << "\n" << run.err;
-    EXPECT_NE(run.err.find(message), std::string::npos) << args << "\n" << run.err;
+    EXPECT_NE(run.err.find(message), std::string::npos) << args << "\n"
+                                                        << run.err;
   }
 }
 
@@ -463,9 +516,11 @@ TEST(MlndtSequence, MissingGnuplotExitsOneUnlessPlotsAreOff) {
   const ToolRun run = RunSequence(args + " --gnuplot=/nonexistent/gnuplot");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.err.find("gnuplot"), std::string::npos) << run.err;
-  EXPECT_TRUE(fs::is_regular_file(dir + "/pairs.csv"));  // The data is still written.
+  EXPECT_TRUE(
+      fs::is_regular_file(dir + "/pairs.csv"));  // The data is still written.
   EXPECT_TRUE(fs::is_regular_file(dir + "/summary.json"));
-  const ToolRun off = RunSequence(args + " --gnuplot=/nonexistent/gnuplot --plots=false");
+  const ToolRun off =
+      RunSequence(args + " --gnuplot=/nonexistent/gnuplot --plots=false");
   EXPECT_EQ(off.exit_code, 0) << off.err;
 }
 

@@ -38,7 +38,8 @@ inline std::string GnuplotQuote(const std::string& text) {
 // True when `gnuplot --version` runs (the program `gnuplot` is a path or a
 // name looked up on PATH).
 inline bool GnuplotAvailable(const std::string& gnuplot) {
-  const std::string command = ShellQuote(gnuplot) + " --version >/dev/null 2>&1";
+  const std::string command =
+      ShellQuote(gnuplot) + " --version >/dev/null 2>&1";
   return std::system(command.c_str()) == 0;
 }
 
@@ -73,8 +74,9 @@ inline bool RunGnuplot(const std::string& gnuplot,
     }
   }
   const std::string log_path = script_path + ".log";
-  const std::string command =
-      ShellQuote(gnuplot) + " " + ShellQuote(script_path) + " >" + ShellQuote(log_path) + " 2>&1";
+  const std::string command = ShellQuote(gnuplot) + " " +
+                              ShellQuote(script_path) + " >" +
+                              ShellQuote(log_path) + " 2>&1";
   if (std::system(command.c_str()) != 0) {
     *error = "gnuplot failed on " + script_path + " (see " + log_path + ")";
     return false;

@@ -16,13 +16,22 @@ inline std::string JsonString(const std::string& value) {
   out << '"';
   for (const char c : value) {
     switch (c) {
-      case '"': out << "\\\""; break;
-      case '\\': out << "\\\\"; break;
-      case '\n': out << "\\n"; break;
-      case '\t': out << "\\t"; break;
+      case '"':
+        out << "\\\"";
+        break;
+      case '\\':
+        out << "\\\\";
+        break;
+      case '\n':
+        out << "\\n";
+        break;
+      case '\t':
+        out << "\\t";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
-          out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
+          out << "\\u" << std::hex << std::setw(4) << std::setfill('0')
+              << int(c) << std::dec;
         } else {
           out << c;
         }
@@ -62,8 +71,12 @@ class JsonObject {
   JsonObject& AddString(const std::string& key, const std::string& value) {
     return Add(key, JsonString(value));
   }
-  JsonObject& AddNumber(const std::string& key, double value) { return Add(key, JsonNumber(value)); }
-  JsonObject& AddBool(const std::string& key, bool value) { return Add(key, value ? "true" : "false"); }
+  JsonObject& AddNumber(const std::string& key, double value) {
+    return Add(key, JsonNumber(value));
+  }
+  JsonObject& AddBool(const std::string& key, bool value) {
+    return Add(key, value ? "true" : "false");
+  }
   std::string str() const { return "{" + body_ + "}"; }
 
  private:

@@ -34,7 +34,8 @@ struct PoseError {
   double rotation_rad = 0.0;
 };
 
-inline PoseError ComputePoseError(const Isometry3d& truth, const Isometry3d& estimate) {
+inline PoseError ComputePoseError(const Isometry3d& truth,
+                                  const Isometry3d& estimate) {
   PoseError e;
   const Isometry3d error = truth.inverse() * estimate;
   e.components = IsometryToPoseVector(error);
@@ -43,9 +44,12 @@ inline PoseError ComputePoseError(const Isometry3d& truth, const Isometry3d& est
   return e;
 }
 
-inline bool IsSuccess(const PoseError& e) { return e.translation_m < kSuccessTranslationM; }
+inline bool IsSuccess(const PoseError& e) {
+  return e.translation_m < kSuccessTranslationM;
+}
 inline bool IsStrictSuccess(const PoseError& e) {
-  return e.translation_m < kStrictTranslationM && e.rotation_rad * kRadToDeg < kStrictRotationDeg;
+  return e.translation_m < kStrictTranslationM &&
+         e.rotation_rad * kRadToDeg < kStrictRotationDeg;
 }
 
 // Scales a relative motion by c: the translation by c and the rotation's
@@ -53,7 +57,8 @@ inline bool IsStrictSuccess(const PoseError& e) {
 inline Isometry3d ScaleMotion(const Isometry3d& motion, double c) {
   const Eigen::AngleAxisd rotation(motion.linear());
   Isometry3d scaled = Isometry3d::Identity();
-  scaled.linear() = Eigen::AngleAxisd(c * rotation.angle(), rotation.axis()).toRotationMatrix();
+  scaled.linear() = Eigen::AngleAxisd(c * rotation.angle(), rotation.axis())
+                        .toRotationMatrix();
   scaled.translation() = c * motion.translation();
   return scaled;
 }
@@ -96,7 +101,8 @@ inline Stats ComputeStats(std::vector<double> values) {
 // (sampling + solve + bookkeeping).
 struct PairTimes {
   double total_ms = 0.0;
-  double map_ms = 0.0;  // Building the reference map for this pair; 0 when reused.
+  double map_ms =
+      0.0;  // Building the reference map for this pair; 0 when reused.
   double sampling_ms = 0.0;
   double solve_ms = 0.0;
 };
@@ -122,14 +128,20 @@ inline bool RegisterPair(const RegistrationOptions& options,
   if (options.method == Method::NDT) {
     const PointCloud* reference_cloud = store->Cloud(reference, error);
     if (reference_cloud == nullptr) return false;
-    Register(options, *reference_cloud, *input_cloud, initial_reference_from_input, summary);
+    Register(options,
+             *reference_cloud,
+             *input_cloud,
+             initial_reference_from_input,
+             summary);
     times->map_ms = summary->map_time_s * 1e3;
     times->total_ms = summary->total_time_s * 1e3;
   } else {
     double build_time_s = 0.0;
-    const LayeredGrid* map = store->Map(reference, options.grid, &build_time_s, error);
+    const LayeredGrid* map =
+        store->Map(reference, options.grid, &build_time_s, error);
     if (map == nullptr) return false;
-    Register(options, *map, *input_cloud, initial_reference_from_input, summary);
+    Register(
+        options, *map, *input_cloud, initial_reference_from_input, summary);
     times->map_ms = build_time_s * 1e3;
     times->total_ms = (build_time_s + summary->total_time_s) * 1e3;
   }

@@ -15,14 +15,17 @@ class Progress {
  public:
   // `label` prefixes every line; `total` steps are expected (0: unknown).
   Progress(std::string label, size_t total)
-      : label_(std::move(label)), total_(total), terminal_(isatty(STDERR_FILENO) == 1) {}
+      : label_(std::move(label)),
+        total_(total),
+        terminal_(isatty(STDERR_FILENO) == 1) {}
   ~Progress() { Finish(); }
 
   // Reports that `done` steps are complete; `detail` describes the last one.
   void Update(size_t done, const std::string& detail) {
     if (terminal_) {
       constexpr int kWidth = 30;
-      const int filled = total_ > 0 ? static_cast<int>(kWidth * done / total_) : 0;
+      const int filled =
+          total_ > 0 ? static_cast<int>(kWidth * done / total_) : 0;
       std::string bar(static_cast<size_t>(filled), '#');
       bar.resize(kWidth, '.');
       std::fprintf(stderr,
@@ -34,7 +37,12 @@ class Progress {
                    detail.c_str());
       open_line_ = true;
     } else {
-      std::fprintf(stderr, "%s %zu/%zu %s\n", label_.c_str(), done, total_, detail.c_str());
+      std::fprintf(stderr,
+                   "%s %zu/%zu %s\n",
+                   label_.c_str(),
+                   done,
+                   total_,
+                   detail.c_str());
     }
     std::fflush(stderr);
   }

@@ -48,20 +48,24 @@ inline bool ListScanFiles(const std::string& dir,
     if (!entry.is_regular_file(file_ec)) continue;
     CloudFormat format;
     std::string ignored;
-    if (!CloudFormatFromPath(entry.path().string(), &format, &ignored)) continue;
-    const bool excluded = std::any_of(exclude.begin(), exclude.end(), [&](const std::string& e) {
-      std::error_code eq_ec;
-      return !e.empty() && fs::equivalent(entry.path(), e, eq_ec);
-    });
+    if (!CloudFormatFromPath(entry.path().string(), &format, &ignored))
+      continue;
+    const bool excluded =
+        std::any_of(exclude.begin(), exclude.end(), [&](const std::string& e) {
+          std::error_code eq_ec;
+          return !e.empty() && fs::equivalent(entry.path(), e, eq_ec);
+        });
     if (!excluded) paths->push_back(entry.path().string());
   }
   if (ec) {
     *error = dir + ": " + ec.message();
     return false;
   }
-  std::sort(paths->begin(), paths->end(), [](const std::string& a, const std::string& b) {
-    return fs::path(a).filename() < fs::path(b).filename();
-  });
+  std::sort(paths->begin(),
+            paths->end(),
+            [](const std::string& a, const std::string& b) {
+              return fs::path(a).filename() < fs::path(b).filename();
+            });
   if (paths->empty()) {
     *error = dir + ": no point-cloud files (.pcd, .ply, .bin, .3d, .xyz, .txt)";
     return false;
@@ -106,7 +110,9 @@ inline std::string GridOptionsKey(const LayeredGridOptions& o) {
 class ScanStore {
  public:
   explicit ScanStore(std::vector<std::string> paths)
-      : paths_(std::move(paths)), clouds_(paths_.size()), maps_(paths_.size()) {}
+      : paths_(std::move(paths)),
+        clouds_(paths_.size()),
+        maps_(paths_.size()) {}
 
   size_t size() const { return paths_.size(); }
   const std::string& path(size_t i) const { return paths_.at(i); }
@@ -118,7 +124,8 @@ class ScanStore {
   const PointCloud* Cloud(size_t i, std::string* error) {
     if (clouds_.at(i) == nullptr) {
       auto cloud = std::make_unique<PointCloud>();
-      if (!ReadPointCloud(paths_[i], cloud.get(), nullptr, error)) return nullptr;
+      if (!ReadPointCloud(paths_[i], cloud.get(), nullptr, error))
+        return nullptr;
       if (cloud->size() == 0) {
         *error = paths_[i] + ": no finite points";
         return nullptr;

@@ -38,8 +38,8 @@ namespace mlndt {
 namespace tools {
 
 enum class InitMode {
-  ZERO,               // Identity: no odometry (the paper's Z_i = 0).
-  GT_FRACTION,        // c times the ground-truth motion (Z_i = c Z_gt, Table 9).
+  ZERO,         // Identity: no odometry (the paper's Z_i = 0).
+  GT_FRACTION,  // c times the ground-truth motion (Z_i = c Z_gt, Table 9).
   CONSTANT_VELOCITY,  // The previous pair's estimate.
   POSES,              // Relative motion from a KITTI pose file (odometry).
 };
@@ -51,7 +51,9 @@ struct InitSpec {
 };
 
 // Parses "zero", "gt_fraction:c", "constant_velocity" or "poses:FILE".
-inline bool ParseInitSpec(const std::string& text, InitSpec* spec, std::string* error) {
+inline bool ParseInitSpec(const std::string& text,
+                          InitSpec* spec,
+                          std::string* error) {
   *spec = InitSpec();
   if (text == "zero") return true;
   if (text == "constant_velocity") {
@@ -61,8 +63,10 @@ inline bool ParseInitSpec(const std::string& text, InitSpec* spec, std::string* 
   const std::string fraction_prefix = "gt_fraction:";
   if (text.rfind(fraction_prefix, 0) == 0) {
     std::vector<double> v;
-    if (!ParseNumberList(text.substr(fraction_prefix.size()), &v) || v.size() != 1) {
-      *error = "--init=" + text + ": gt_fraction needs one number, e.g. gt_fraction:0.6";
+    if (!ParseNumberList(text.substr(fraction_prefix.size()), &v) ||
+        v.size() != 1) {
+      *error = "--init=" + text +
+               ": gt_fraction needs one number, e.g. gt_fraction:0.6";
       return false;
     }
     spec->mode = InitMode::GT_FRACTION;
@@ -75,7 +79,8 @@ inline bool ParseInitSpec(const std::string& text, InitSpec* spec, std::string* 
     spec->poses_path = text.substr(poses_prefix.size());
     return true;
   }
-  *error = "--init=" + text + ": expected zero, gt_fraction:c, constant_velocity or poses:FILE";
+  *error = "--init=" + text +
+           ": expected zero, gt_fraction:c, constant_velocity or poses:FILE";
   return false;
 }
 
@@ -99,7 +104,8 @@ inline std::string InitSpecToString(const InitSpec& spec) {
 // The adaptive start layer (see the top of this file).
 struct AdaptiveStartLayerOptions {
   bool enabled = false;
-  double max_translation_m = 1.0;  // Deviation from the guess that counts as failed.
+  double max_translation_m =
+      1.0;  // Deviation from the guess that counts as failed.
   double max_rotation_deg = 15.0;
   // Ascending fail rates in [0, 1]: exceeding the k-th starts k layers
   // coarser than the last.
@@ -118,7 +124,7 @@ struct SequenceOptions {
 struct PairResult {
   size_t reference = 0;
   size_t input = 0;
-  Isometry3d guess = Isometry3d::Identity();     // Initial reference_from_input.
+  Isometry3d guess = Isometry3d::Identity();  // Initial reference_from_input.
   Isometry3d estimate = Isometry3d::Identity();  // Registration result.
   bool has_truth = false;
   Isometry3d truth = Isometry3d::Identity();
@@ -145,13 +151,14 @@ struct PairResult {
 // store->size() poses when given. `on_pair` (may be empty) is called after
 // each pair with the number done and the total. False with *error on
 // unreadable scans, unusable maps or missing poses.
-inline bool RunSequence(const SequenceOptions& options,
-                        ScanStore* store,
-                        const std::vector<Isometry3d>* truth,
-                        const std::vector<Isometry3d>* odometry,
-                        const std::function<void(const PairResult&, size_t, size_t)>& on_pair,
-                        std::vector<PairResult>* results,
-                        std::string* error) {
+inline bool RunSequence(
+    const SequenceOptions& options,
+    ScanStore* store,
+    const std::vector<Isometry3d>* truth,
+    const std::vector<Isometry3d>* odometry,
+    const std::function<void(const PairResult&, size_t, size_t)>& on_pair,
+    std::vector<PairResult>* results,
+    std::string* error) {
   results->clear();
   const size_t n = store->size();
   if (options.step < 1) {
@@ -159,16 +166,18 @@ inline bool RunSequence(const SequenceOptions& options,
     return false;
   }
   if (truth != nullptr && truth->size() < n) {
-    *error = "the ground truth has " + std::to_string(truth->size()) + " poses for " +
-             std::to_string(n) + " scans";
+    *error = "the ground truth has " + std::to_string(truth->size()) +
+             " poses for " + std::to_string(n) + " scans";
     return false;
   }
   if (options.init.mode == InitMode::GT_FRACTION && truth == nullptr) {
     *error = "--init=gt_fraction needs ground-truth poses";
     return false;
   }
-  if (options.init.mode == InitMode::POSES && (odometry == nullptr || odometry->size() < n)) {
-    *error = "--init=poses: the pose file needs one pose per scan (" + std::to_string(n) + ")";
+  if (options.init.mode == InitMode::POSES &&
+      (odometry == nullptr || odometry->size() < n)) {
+    *error = "--init=poses: the pose file needs one pose per scan (" +
+             std::to_string(n) + ")";
     return false;
   }
   const size_t total = n > options.step ? n - options.step : 0;
@@ -200,7 +209,8 @@ inline bool RunSequence(const SequenceOptions& options,
 
     RegistrationOptions registration = options.registration;
     if (options.adaptive.enabled) {
-      r.running_fail_rate = results->empty() ? 0.0 : double(failed_so_far) / results->size();
+      r.running_fail_rate =
+          results->empty() ? 0.0 : double(failed_so_far) / results->size();
       int coarser = 0;
       for (double threshold : options.adaptive.fail_rate_thresholds) {
         if (r.running_fail_rate > threshold) ++coarser;
@@ -208,12 +218,15 @@ inline bool RunSequence(const SequenceOptions& options,
       registration.schedule.start_layer = -coarser;
     }
     RegistrationSummary summary;
-    if (!RegisterPair(registration, store, i, j, r.guess, &summary, &r.times, error)) return false;
+    if (!RegisterPair(
+            registration, store, i, j, r.guess, &summary, &r.times, error))
+      return false;
 
     r.termination = summary.termination_type;
     r.message = summary.message;
     // A FAILURE leaves no usable pose: the pair keeps its guess.
-    r.estimate = summary.IsSolutionUsable() ? summary.reference_from_input : r.guess;
+    r.estimate =
+        summary.IsSolutionUsable() ? summary.reference_from_input : r.guess;
     r.iterations = summary.num_iterations;
     r.start_layer = summary.start_layer;
     r.num_layers = summary.num_layers;
@@ -221,9 +234,10 @@ inline bool RunSequence(const SequenceOptions& options,
     r.trace = summary.trace;
     r.guess_deviation_m = TranslationErrorM(r.guess, r.estimate);
     r.guess_deviation_deg = RotationErrorRad(r.guess, r.estimate) * kRadToDeg;
-    r.guess_check_failed = !summary.IsSolutionUsable() ||
-                           r.guess_deviation_m > options.adaptive.max_translation_m ||
-                           r.guess_deviation_deg > options.adaptive.max_rotation_deg;
+    r.guess_check_failed =
+        !summary.IsSolutionUsable() ||
+        r.guess_deviation_m > options.adaptive.max_translation_m ||
+        r.guess_deviation_deg > options.adaptive.max_rotation_deg;
     failed_so_far += r.guess_check_failed;
     if (r.has_truth) {
       r.error = ComputePoseError(r.truth, r.estimate);
@@ -241,9 +255,8 @@ inline bool RunSequence(const SequenceOptions& options,
 // Chains the estimates of a sequence run into poses of scans 0, step,
 // 2 step, ... relative to scan 0 (the first pose is the identity). Only
 // pairs starting at a multiple of the step are chained.
-inline std::vector<Isometry3d> ChainTrajectory(const std::vector<PairResult>& results,
-                                               size_t step,
-                                               bool use_truth) {
+inline std::vector<Isometry3d> ChainTrajectory(
+    const std::vector<PairResult>& results, size_t step, bool use_truth) {
   std::vector<Isometry3d> poses = {Isometry3d::Identity()};
   for (const PairResult& r : results) {
     if (r.reference % step != 0) continue;

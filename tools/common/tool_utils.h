@@ -19,7 +19,8 @@ namespace mlndt {
 namespace tools {
 
 // Parses "a,b,c" into numbers; false when any item is not a finite number.
-inline bool ParseNumberList(const std::string& text, std::vector<double>* values) {
+inline bool ParseNumberList(const std::string& text,
+                            std::vector<double>* values) {
   values->clear();
   std::stringstream stream(text);
   std::string item;
@@ -27,7 +28,8 @@ inline bool ParseNumberList(const std::string& text, std::vector<double>* values
     try {
       size_t used = 0;
       const double v = std::stod(item, &used);
-      if (used != item.size() && item.find_first_not_of(" \t", used) != std::string::npos) {
+      if (used != item.size() &&
+          item.find_first_not_of(" \t", used) != std::string::npos) {
         return false;
       }
       if (!std::isfinite(v)) return false;
@@ -40,7 +42,9 @@ inline bool ParseNumberList(const std::string& text, std::vector<double>* values
 }
 
 // Reads 12 or 16 whitespace-separated numbers (row-major 3x4 or 4x4).
-inline bool ReadMatrixFile(const std::string& path, Isometry3d* transform, std::string* error) {
+inline bool ReadMatrixFile(const std::string& path,
+                           Isometry3d* transform,
+                           std::string* error) {
   std::ifstream in(path);
   if (!in) {
     *error = path + ": cannot open";
@@ -50,7 +54,8 @@ inline bool ReadMatrixFile(const std::string& path, Isometry3d* transform, std::
   double x;
   while (in >> x) v.push_back(x);
   if (!in.eof() || (v.size() != 12 && v.size() != 16)) {
-    *error = path + ": expected 12 or 16 numbers (a row-major 3x4 or 4x4 matrix)";
+    *error =
+        path + ": expected 12 or 16 numbers (a row-major 3x4 or 4x4 matrix)";
     return false;
   }
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
