@@ -8,7 +8,7 @@ packages=(
   cmake make g++ pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev
-  gnuplot-nox clang-format
+  gnuplot-nox clang-format ccache
 )
 
 for arg in "$@"; do
