@@ -59,8 +59,8 @@ std::vector<std::unique_ptr<ceres::CostFunction>> MakeCosts(const Stage& stage,
                                                             LayerSource layer) {
   std::vector<std::unique_ptr<ceres::CostFunction>> costs;
   for (const Eigen::Vector3d& p : stage.samples) {
-    costs.emplace_back(
-        MlNdtPointCost::Create(layer, p, stage.options.unmatched_policy));
+    costs.emplace_back(MlNdtPointCost::Create(
+        layer, p, stage.options.objective.unmatched_policy));
   }
   return costs;
 }
@@ -102,9 +102,10 @@ void BM_ProblemBuildAndFree(benchmark::State& state) {
     for (size_t i = 0; i < stage.samples.size(); ++i) {
       problem.AddResidualBlock(
           pooled ? pool[i].get()
-                 : MlNdtPointCost::Create(stage.layer(),
-                                          stage.samples[i],
-                                          stage.options.unmatched_policy),
+                 : MlNdtPointCost::Create(
+                       stage.layer(),
+                       stage.samples[i],
+                       stage.options.objective.unmatched_policy),
           nullptr,
           xi.data());
     }
@@ -130,12 +131,12 @@ void BM_StageSolve(benchmark::State& state) {
     problem_options.disable_all_safety_checks = true;
     problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(problem_options);
-    ceres::LossFunction* loss =
-        CreateLoss(stage.options.loss, stage.options.loss_scale);
+    ceres::LossFunction* loss = CreateLoss(stage.options.objective.loss,
+                                           stage.options.objective.loss_scale);
     for (const auto& cost : pool)
       problem.AddResidualBlock(cost.get(), loss, xi.data());
     ceres::Solver::Options options;
-    options.linear_solver_type = stage.options.ceres.linear_solver_type;
+    options.linear_solver_type = stage.options.backend.ceres.linear_solver_type;
     options.num_threads = static_cast<int>(state.range(0));
     options.max_num_iterations = 6;
     options.function_tolerance = options.gradient_tolerance =

@@ -89,13 +89,15 @@ bool LoadScan(std::string* path, std::string* error) {
 }
 
 // Builds the map once per iteration and reports the finest layer.
-void RunBuild(const LayeredGridOptions& options, benchmark::State& state) {
+void RunBuild(const LayeredGridOptions& options,
+              int threads,
+              benchmark::State& state) {
   const PointCloud& scan = Scan();
   LayeredGrid grid;
   std::string error;
   for (auto _ : state) {
     LayeredGrid built;
-    if (!LayeredGrid::Build(options, scan, &built, &error)) {
+    if (!LayeredGrid::Build(options, scan, threads, &built, &error)) {
       state.SkipWithError(error.c_str());
       return;
     }
@@ -120,10 +122,9 @@ void RunBuild(const LayeredGridOptions& options, benchmark::State& state) {
 
 // Paper sizing (q = 8) with n = state.range(0) layers, state.range(1) threads.
 void BM_BuildLayeredGrid(benchmark::State& state) {
-  LayeredGridOptions options;
+  LayeredGridOptions options = PaperLayeredGridOptions();
   options.num_layers = static_cast<int>(state.range(0));
-  options.num_threads = static_cast<int>(state.range(1));
-  RunBuild(options, state);
+  RunBuild(options, static_cast<int>(state.range(1)), state);
 }
 BENCHMARK(BM_BuildLayeredGrid)
     ->ArgNames({"num_layers", "threads"})
@@ -136,8 +137,7 @@ BENCHMARK(BM_BuildLayeredGrid)
 void BM_BuildLayeredGridFinestCell(benchmark::State& state) {
   LayeredGridOptions options;
   options.finest_cell_size_m = static_cast<double>(state.range(0)) / 1000.0;
-  options.num_threads = static_cast<int>(state.range(1));
-  RunBuild(options, state);
+  RunBuild(options, static_cast<int>(state.range(1)), state);
 }
 BENCHMARK(BM_BuildLayeredGridFinestCell)
     ->ArgNames({"finest_mm", "threads"})

@@ -45,14 +45,17 @@ void Run(benchmark::State& state, const Pair& pair) {
   RegistrationOptions options;
   std::string error;
   CHECK(tools::RegistrationOptionsFromFlags(&options, &error)) << error;
-  options.backend = static_cast<BackendType>(state.range(0));
+  constexpr BackendType kBackends[] = {BackendType::CERES,
+                                       BackendType::NEWTON,
+                                       BackendType::LEVENBERG_MARQUARDT};
+  options.backend.type = kBackends[state.range(0)];
   RegistrationSummary summary;
   for (auto _ : state) {
     Register(
         options, pair.reference, pair.input, Isometry3d::Identity(), &summary);
     CHECK(summary.IsSolutionUsable()) << summary.message;
   }
-  state.SetLabel(BackendTypeToString(options.backend));
+  state.SetLabel(BackendTypeToString(options.backend.type));
   state.counters["iterations"] = summary.num_iterations;
   state.counters["sampled"] = static_cast<double>(summary.sampled_points);
   state.counters["map_ms"] = summary.map_time_s * 1e3;

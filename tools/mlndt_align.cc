@@ -146,10 +146,9 @@ int Run() {
   if (bundled && expected_path.empty())
     expected_path = data_dir + "/" + kBundledExpected;
 
-  RegistrationOptions options;
+  MatcherOptions options;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Fail(error);
+  if (!tools::MatcherOptionsFromFlags(&options, &error)) return Fail(error);
   Isometry3d initial = Isometry3d::Identity();
   if (!InitialGuessFromFlags(&initial, &error)) return Fail(error);
   Isometry3d expected = Isometry3d::Identity();
@@ -166,7 +165,7 @@ int Run() {
     return Fail(error);
 
   RegistrationSummary summary;
-  Register(options, reference, input, initial, &summary);
+  RegisterWithMatcher(options, reference, input, initial, &summary);
 
   std::cout << "reference: " << reference_path << " (" << reference.size()
             << " points)\n"
@@ -203,7 +202,7 @@ int Run() {
     tools::JsonObject json;
     json.AddString("reference", reference_path)
         .AddString("input", input_path)
-        .AddString("method", MethodToString(summary.method))
+        .AddString("method", MethodToString(options.method))
         .Add("reference_from_input", MatrixJson(summary.reference_from_input))
         .AddBool("converged",
                  summary.termination_type == TerminationType::CONVERGENCE)

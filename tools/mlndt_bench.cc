@@ -59,7 +59,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
 #include "tools/common/tool_utils.h"
@@ -81,7 +81,7 @@ DEFINE_string(samplings, "gbs",
 DEFINE_string(gbs_cell_sizes, "1",
               "Comma-separated GBS cell edges [m] (gbs sampling only; the paper's 1 m is the "
               "default)");
-DEFINE_string(start_layers, std::to_string(mlndt::DefaultRegistrationScheduleOptions().start_layer),
+DEFINE_string(start_layers, std::to_string(mlndt::LayerScheduleOptions().start_layer),
               "Comma-separated 1-based start layers; <= 0 counts from the finest (0 = last layer)");
 DEFINE_string(linear_solvers, "dense_normal_cholesky",
               "Comma-separated Ceres linear solvers (ceres backend only): dense_normal_cholesky, "
@@ -195,15 +195,14 @@ struct Configuration {
 
   RegistrationOptions Options() const {
     RegistrationOptions options;
-    options.backend = backend;
+    options.backend.type = backend;
     options.sampling.method = sampling;
     options.sampling.gbs_cell_size_m = gbs_cell_size_m;
     options.sampling.seed = FLAGS_seed;
     options.schedule.start_layer = start_layer;
-    options.ceres.linear_solver_type = linear_solver;
-    options.ceres.trust_region_strategy_type = trust_region;
+    options.backend.ceres.linear_solver_type = linear_solver;
+    options.backend.ceres.trust_region_strategy_type = trust_region;
     options.num_threads = threads;
-    options.grid.num_threads = threads;  // As --threads in the other tools.
     return options;
   }
 };

@@ -151,7 +151,7 @@ bool FindKittiFolder(const std::string& data_dir,
 struct Context {
   tools::ScanStore* store = nullptr;
   std::vector<Isometry3d> truth;  // world_from_scan.
-  RegistrationOptions base;
+  MatcherOptions base;
   std::vector<size_t> steps;
   std::vector<double>
       layer_sizes;            // Cell edge of layers 1..n of scan 0's map [m].
@@ -229,7 +229,7 @@ Isometry3d MakeOffset(const OffsetFamily& family, double value) {
 // One method setting compared in the long-range runs.
 struct Variant {
   std::string name;
-  RegistrationOptions options;
+  MatcherOptions options;
 };
 
 // Outcomes of one (variant, family, offset) cell over the pairs.
@@ -562,9 +562,9 @@ bool Optimizers(Context* c, std::string* error) {
     dat << "# blocks per optimiser: iteration layer score_per_point "
            "translation_error_cm\n";
     for (const Optimizer& variant : variants) {
-      RegistrationOptions options = c->base;
+      MatcherOptions options = c->base;
       options.method = variant.method;
-      options.backend = variant.backend;
+      options.mlndt.backend.type = variant.backend;
       RegistrationSummary summary;
       tools::PairTimes times;
       if (!tools::RegisterPair(options,
@@ -719,8 +719,11 @@ bool Sampling(Context* c, std::string* error) {
       tools::SequenceOptions options;
       options.registration = c->base;
       options.registration.method = config.method;
-      options.registration.sampling.method = config.sampling;
-      options.registration.sampling.seed = static_cast<uint64_t>(seed);
+      for (SamplingOptions* sampling : {&options.registration.mlndt.sampling,
+                                        &options.registration.ndt.sampling}) {
+        sampling->method = config.sampling;
+        sampling->seed = static_cast<uint64_t>(seed);
+      }
       std::vector<PairResult> results;
       if (!RunSteps(c, c->steps, options, &results, error)) return false;
       if (seed == 1) first = results;
@@ -761,11 +764,11 @@ bool Sampling(Context* c, std::string* error) {
     << " pairs) from Z_i = 0 (no odometry; the paper started from odometry). "
        "Random sampling "
        "keeps "
-    << Fmt(c->base.sampling.random_fraction * 100, 0)
+    << Fmt(c->base.mlndt.sampling.random_fraction * 100, 0)
     << " % of the input (the paper: 10–20 %) "
     << "and is run with seeds 1.." << seeds
     << " (statistics pool the seeds); GBS uses "
-    << Fmt(c->base.sampling.gbs_cell_size_m, 1)
+    << Fmt(c->base.mlndt.sampling.gbs_cell_size_m, 1)
     << " m cells and up to 5 points a cell (Section 4.3). Errors are "
        "|component| of the error "
        "transform truth⁻¹·estimate, as mean / std / max over all pairs (the "
@@ -937,7 +940,7 @@ bool Table9(Context* c, std::string* error) {
        "rotation angle scaled by c) on each start layer s (cell size in "
        "brackets; the run works "
        "on layers s..n with "
-    << c->base.schedule.iterations_per_layer
+    << c->base.mlndt.schedule.iterations_per_layer
     << " iterations on each layer but the last; the paper used 3). Two fail "
        "rates:\n\n"
     << "- **diverged**: the result is more than "
@@ -973,7 +976,7 @@ bool Table9(Context* c, std::string* error) {
     for (int layer = 1; layer <= n; ++layer) {
       tools::SequenceOptions options;
       options.registration = c->base;
-      options.registration.schedule.start_layer = layer;
+      options.registration.mlndt.schedule.start_layer = layer;
       options.init.mode = tools::InitMode::GT_FRACTION;
       options.init.fraction = fraction;
       std::vector<PairResult> results;
@@ -1107,7 +1110,8 @@ bool Adaptive(Context* c, std::string* error) {
         options.step = step;
         options.init = init;
         options.adaptive.enabled = adaptive;
-        if (!adaptive) options.registration.schedule.start_layer = config + 1;
+        if (!adaptive)
+          options.registration.mlndt.schedule.start_layer = config + 1;
         std::vector<PairResult> results;
         if (!tools::RunSequence(
                 options, c->store, &c->truth, nullptr, {}, &results, error)) {
@@ -1166,7 +1170,7 @@ int Run() {
   };
   Context c;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&c.base, &error)) return Fail(error);
+  if (!tools::MatcherOptionsFromFlags(&c.base, &error)) return Fail(error);
   std::vector<double> steps;
   if (!tools::ParseNumberList(FLAGS_steps, &steps) || steps.empty())
     return Fail("bad --steps");
@@ -1215,7 +1219,7 @@ int Run() {
   tools::ScanStore store(paths);
   c.store = &store;
   double build_s = 0.0;
-  const LayeredGrid* map = store.Map(0, c.base.grid, &build_s, &error);
+  const LayeredGrid* map = store.Map(0, c.base.mlndt.grid, &build_s, &error);
   if (map == nullptr) return Fail(error);
   for (const LayerInfo& info : map->layer_info())
     c.layer_sizes.push_back(info.cell_size_m);
@@ -1240,7 +1244,8 @@ int Run() {
 
   // REPORT.md: header, then the experiments' sections.
   std::ostringstream header;
-  const RegistrationOptions& b = c.base;
+  const RegistrationOptions& b = c.base.mlndt;
+  const NdtOptions& ndt = c.base.ndt;
   header << "# ML-NDT experiments: Section 5 of Ulaş & Temeltaş (2013) on "
             "KITTI\n\n"
          << "Command:\n\n```\n"
@@ -1249,13 +1254,14 @@ int Run() {
          << " scans, ground truth `" << poses_path << "`"
          << (calib_path.empty() ? "" : " converted with `" + calib_path + "`")
          << ".\n"
-         << "- Base options: method " << MethodToString(b.method)
-         << ", backend " << BackendTypeToString(b.backend) << ", sampling "
+         << "- Base options: method " << MethodToString(c.base.method)
+         << ", backend " << BackendTypeToString(b.backend.type) << ", sampling "
          << SamplingMethodToString(b.sampling.method) << ", loss "
-         << LossTypeToString(b.loss) << " (scale " << Fmt(b.loss_scale, 1)
-         << "), unmatched points "
-         << UnmatchedPolicyToString(b.unmatched_policy) << ", start layer "
-         << b.schedule.start_layer << ", " << b.schedule.iterations_per_layer
+         << LossTypeToString(b.objective.loss) << " (scale "
+         << Fmt(b.objective.loss_scale, 1) << "), unmatched points "
+         << UnmatchedPolicyToString(b.objective.unmatched_policy)
+         << ", start layer " << b.schedule.start_layer << ", "
+         << b.schedule.iterations_per_layer
          << " iterations per coarse layer, up to "
          << b.schedule.max_final_iterations << " on the last, threads "
          << b.num_threads << ".\n"
@@ -1267,12 +1273,12 @@ int Run() {
   header
       << " m (the paper: n = 4).\n"
       << "- Conventional NDT (`--method=ndt`): one grid, cell "
-      << (b.ndt.cell_size_m > 0
-              ? Fmt(b.ndt.cell_size_m, 2) + " m"
+      << (ndt.cell_size_m > 0
+              ? Fmt(ndt.cell_size_m, 2) + " m"
               : std::string("(V/64)^(1/3) (the paper's layer-2 cell)"))
-      << ", outlier ratio " << Fmt(b.ndt.outlier_ratio, 2) << ", "
-      << NdtNeighborsToString(b.ndt.neighbors) << ", Newton, up to "
-      << b.ndt.max_iterations << " iterations.\n"
+      << ", outlier ratio " << Fmt(ndt.outlier_ratio, 2) << ", "
+      << NdtNeighborsToString(ndt.neighbors) << ", Newton, up to "
+      << ndt.max_iterations << " iterations.\n"
       << "- " << c.runs << " registrations in " << Fmt(elapsed, 0) << " s.\n\n"
       << "**Ground-truth caveat** (measured on KITTI 00 frames 0–7, the "
          "bundled and shared "

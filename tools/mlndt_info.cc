@@ -30,19 +30,19 @@ DEFINE_bool(layers,
             false,
             "Also build the layered NDT map and report its layers");
 DEFINE_int32(num_layers,
-             mlndt::LayeredGridOptions().num_layers,
+             mlndt::PaperLayeredGridOptions().num_layers,
              "--layers: number of layers n (the paper's 4); ignored with "
              "--finest_cell_size");
 DEFINE_int32(division_constant,
-             mlndt::LayeredGridOptions().division_constant,
+             mlndt::PaperLayeredGridOptions().division_constant,
              "--layers: division constant q (layer i has about q^i cells)");
 DEFINE_double(finest_cell_size,
-              mlndt::LayeredGridOptions().finest_cell_size_m,
+              mlndt::PaperLayeredGridOptions().finest_cell_size_m,
               "--layers: when > 0, use the fewest layers whose finest cell "
               "edge is <= this [m] "
               "instead of --num_layers; 0 = paper sizing");
 DEFINE_int32(min_points_per_cell,
-             mlndt::LayeredGridOptions().min_points_per_cell,
+             mlndt::PaperLayeredGridOptions().min_points_per_cell,
              "--layers: a cell keeps a distribution when it holds at least "
              "this many points");
 
@@ -155,7 +155,7 @@ bool DescribeFile(const std::string& path,
 }
 
 int Run(const std::vector<std::string>& files) {
-  LayeredGridOptions grid_options;
+  LayeredGridOptions grid_options = PaperLayeredGridOptions();
   std::string error;
   if (!GridOptionsFromFlags(&grid_options, &error)) {
     PrintError(error);

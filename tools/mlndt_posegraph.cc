@@ -152,10 +152,6 @@ int AddEdges(const std::vector<LayeredGrid>& maps,
              std::vector<PoseBlocks>* poses,
              ceres::Problem* problem) {
   const int n = static_cast<int>(maps.size());
-  ResidualOptions residual_options;
-  residual_options.unmatched_policy = options.unmatched_policy;
-  // One loss shared by all the blocks; the Problem deletes it once.
-  residual_options.loss_function = CreateLoss(options.loss, options.loss_scale);
   int directed_pairs = 0;
   const auto add = [&](int map_scan, int point_scan) {
     const LayeredGrid& map = maps[map_scan];
@@ -164,7 +160,7 @@ int AddEdges(const std::vector<LayeredGrid>& maps,
     PoseBlocks& pose_j = (*poses)[point_scan];
     AddMlNdtPairResiduals(map.layer(layer),
                           samples[point_scan].points(),
-                          residual_options,
+                          options.objective,
                           pose_i.rotation,
                           pose_i.translation,
                           pose_j.rotation,
@@ -177,10 +173,6 @@ int AddEdges(const std::vector<LayeredGrid>& maps,
       add(i, j);
       if (!FLAGS_joint_one_way) add(j, i);
     }
-  }
-  if (residual_options.loss_function != nullptr &&
-      problem->NumResidualBlocks() == 0) {
-    delete residual_options.loss_function;
   }
   return directed_pairs;
 }
@@ -282,11 +274,8 @@ int Run() {
     return Fail("--joint_max_iterations must be >= 1");
   RegistrationOptions options;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Fail(error);
-  if (options.method != Method::MLNDT) {
-    return Fail("--method=" + FLAGS_method +
-                ": the joint problem is built from ML-NDT residuals");
+  if (!tools::RegistrationOptionsFromFlags(&options, &error)) {
+    return Fail(error + " (the joint problem is built from ML-NDT residuals)");
   }
 
   std::vector<std::string> paths;

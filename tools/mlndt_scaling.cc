@@ -210,7 +210,7 @@ struct SizeResult {
   bool ok = false;  // Not FAILURE, and within the error tolerances.
 };
 
-bool MeasureSize(const RegistrationOptions& options,
+bool MeasureSize(const MatcherOptions& options,
                  const PointCloud& merged,
                  size_t n,
                  const Isometry3d& reference_from_input,
@@ -227,7 +227,7 @@ bool MeasureSize(const RegistrationOptions& options,
   if (options.method == Method::MLNDT) {
     // Untimed, for the cell count (and a warm-up of the allocator).
     LayeredGrid grid;
-    if (!LayeredGrid::Build(options.grid, reference, &grid, error)) {
+    if (!LayeredGrid::Build(options.mlndt.grid, reference, &grid, error)) {
       *error = "N = " + std::to_string(n) + ": map: " + *error;
       return false;
     }
@@ -238,7 +238,8 @@ bool MeasureSize(const RegistrationOptions& options,
   std::vector<double> map_ms, sampling_ms, solve_ms, total_ms;
   RegistrationSummary summary;
   for (int r = 0; r < FLAGS_repetitions; ++r) {
-    Register(options, reference, input, Isometry3d::Identity(), &summary);
+    RegisterWithMatcher(
+        options, reference, input, Isometry3d::Identity(), &summary);
     map_ms.push_back(summary.map_time_s * 1e3);
     sampling_ms.push_back(summary.sampling_time_s * 1e3);
     solve_ms.push_back(summary.solve_time_s * 1e3);
@@ -332,7 +333,7 @@ bool WriteCsv(const std::string& path,
 
 // scaling.gp / scaling.png: log-log time against N, read from scaling.csv.
 bool WritePlot(const std::string& dir,
-               const RegistrationOptions& options,
+               const MatcherOptions& options,
                const std::vector<SizeResult>& results,
                const std::vector<double>& slopes,
                std::string* error) {
@@ -346,8 +347,7 @@ bool WritePlot(const std::string& dir,
       << tools::GnuplotQuote(dir + "/scaling.png") << "\n"
       << "set title 'Registration time against cloud size (median of "
       << FLAGS_repetitions << " runs; " << MethodToString(options.method)
-      << ", " << BackendTypeToString(options.backend) << ", "
-      << SamplingMethodToString(options.sampling.method) << " sampling)'\n"
+      << ", " << FLAGS_backend << ", " << FLAGS_sampling << " sampling)'\n"
       << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
       << "set xlabel 'points N (reference = input size)'\nset ylabel 'time "
          "[ms]'\n"
@@ -395,9 +395,8 @@ int Run() {
   const Isometry3d reference_from_input =
       PoseVectorToIsometry(PoseVectorFromDegrees(
           motion[0], motion[1], motion[2], motion[3], motion[4], motion[5]));
-  RegistrationOptions options;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Fail(error);
+  MatcherOptions options;
+  if (!tools::MatcherOptionsFromFlags(&options, &error)) return Fail(error);
   if (!FLAGS_output_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(FLAGS_output_dir, ec);
@@ -449,7 +448,7 @@ int Run() {
       MethodToString(options.method),
       FLAGS_backend.c_str(),
       FLAGS_sampling.c_str(),
-      options.num_threads,
+      FLAGS_threads,
       FLAGS_motion.c_str(),
       FLAGS_repetitions);
   std::printf(

@@ -133,7 +133,7 @@ int Run() {
   options.step = static_cast<size_t>(FLAGS_step);
   options.release_used_scans = true;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options.registration, &error))
+  if (!tools::MatcherOptionsFromFlags(&options.registration, &error))
     return Fail(error);
   if (!tools::ParseInitSpec(FLAGS_init, &options.init, &error))
     return Fail(error);
@@ -251,9 +251,13 @@ int Run() {
       .AddNumber("step", static_cast<double>(options.step))
       .AddString("init", tools::InitSpecToString(options.init))
       .AddString("method", MethodToString(options.registration.method))
-      .AddString("backend", BackendTypeToString(options.registration.backend))
+      .AddString("backend",
+                 BackendTypeToString(options.registration.mlndt.backend.type))
       .AddString("sampling",
-                 SamplingMethodToString(options.registration.sampling.method))
+                 SamplingMethodToString(
+                     options.registration.method == Method::NDT
+                         ? options.registration.ndt.sampling.method
+                         : options.registration.mlndt.sampling.method))
       .AddBool("adaptive_start_layer", options.adaptive.enabled);
   if (options.adaptive.enabled) {
     header.Add(

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   }
   mlndt::LayeredGrid map;
   if (!mlndt::LayeredGrid::Build(
-          mlndt::DefaultRegistrationGridOptions(), reference, &map, &error)) {
+          mlndt::LayeredGridOptions(), reference, &map, &error)) {
     std::cerr << error << "\n";
     return 1;
   }
@@ -53,14 +53,10 @@ int main(int argc, char** argv) {
   // One Problem: the ML-NDT residuals read their layer through a binding,
   // which moves them coarse to fine; the prior stays.
   mlndt::LayerBinding layer_binding(map.layer(1));
-  mlndt::ResidualOptions residual_options;
-  residual_options.unmatched_policy = mlndt::UnmatchedPolicy::NEAREST_CELL;
-  residual_options.loss_function =
-      new ceres::CauchyLoss(3.0);  // The Problem owns it.
   ceres::Problem problem;
   mlndt::AddMlNdtResidualsQuaternion(layer_binding,
                                      samples.points(),
-                                     residual_options,
+                                     mlndt::ObjectiveOptions(),
                                      rotation,
                                      translation,
                                      &problem);

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 
 namespace mlndt {
 

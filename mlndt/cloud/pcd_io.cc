@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {

@@ -1,6 +1,6 @@
 #include "mlndt/common/types.h"
 
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 
 namespace mlndt {
 

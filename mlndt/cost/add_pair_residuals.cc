@@ -3,6 +3,7 @@
 #include <ceres/manifold.h>
 #include <glog/logging.h>
 
+#include "mlndt/cost/internal/loss_for.h"
 #include "mlndt/cost/mlndt_pair_cost.h"
 
 namespace mlndt {
@@ -19,7 +20,7 @@ void SetQuaternionManifoldUnlessSet(double* rotation, ceres::Problem* problem) {
 std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(
     const NdtLayer& reference_layer_of_scan_i,
     const std::vector<Eigen::Vector3d>& input_points_of_scan_j,
-    const ResidualOptions& options,
+    const ObjectiveOptions& objective,
     double* world_from_scan_i_rotation,
     double* world_from_scan_i_translation,
     double* world_from_scan_j_rotation,
@@ -33,13 +34,15 @@ std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(
   CHECK(world_from_scan_i_rotation != world_from_scan_j_rotation &&
         world_from_scan_i_translation != world_from_scan_j_translation)
       << "AddMlNdtPairResiduals: scan i and scan j need their own pose blocks";
+  ceres::LossFunction* loss =
+      internal::LossFor(objective, input_points_of_scan_j);
   std::vector<ceres::ResidualBlockId> ids;
   ids.reserve(input_points_of_scan_j.size());
   for (const Eigen::Vector3d& point : input_points_of_scan_j) {
     ids.push_back(problem->AddResidualBlock(
         MlNdtPairCost::Create(
-            reference_layer_of_scan_i, point, options.unmatched_policy),
-        options.loss_function,
+            reference_layer_of_scan_i, point, objective.unmatched_policy),
+        loss,
         world_from_scan_i_rotation,
         world_from_scan_i_translation,
         world_from_scan_j_rotation,

@@ -7,8 +7,8 @@
 // caller owns. AddMlNdtResidualsQuaternion (add_residuals.h) is the special
 // case where scan i's pose is the identity.
 //
-// Ownership: the Problem owns the cost functions (and, under its default
-// options, the loss function). The NdtLayer must outlive the Problem.
+// Ownership: the Problem owns the cost functions and the loss function (its
+// default options). The NdtLayer must outlive the Problem.
 
 #include <ceres/problem.h>
 
@@ -25,12 +25,13 @@ namespace mlndt {
 // translation_j of world_from_scan_i and world_from_scan_j. Sets
 // ceres::EigenQuaternionManifold on each rotation block unless the caller
 // has already given it a manifold. The two scans' blocks must be distinct
-// (no self-pairs). options.loss_function (may be null) goes on every block.
+// (no self-pairs). The objective's policy goes into every functor and one
+// loss made from it on every block added (see add_residuals.h).
 // Returns the ids of the blocks added.
 std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(
     const NdtLayer& reference_layer_of_scan_i,
     const std::vector<Eigen::Vector3d>& input_points_of_scan_j,
-    const ResidualOptions& options,
+    const ObjectiveOptions& objective,
     double* world_from_scan_i_rotation,
     double* world_from_scan_i_translation,
     double* world_from_scan_j_rotation,

@@ -6,33 +6,28 @@
 // back end. (mlndt::Register's Ceres backend builds the same residuals,
 // mlndt_point_cost.h, and keeps them from one layer stage to the next.)
 //
+// The residuals minimise the objective of `objective` (objective_options.h;
+// its defaults are Register's): the unmatched-point policy goes into every
+// functor, and one loss function made from objective.loss and loss_scale
+// goes on every block added by one call.
+//
 // The layer is an NdtLayer, fixed, or a LayerBinding (layer_binding.h): then
 // one Problem can move coarse-to-fine by rebinding, without new blocks.
 //
-// Ownership: the Problem owns the cost functions (and, under its default
-// options, the loss function; with no input points nothing is added and the
-// loss stays the caller's). The NdtLayer (or the binding and every layer
-// bound while the Problem is evaluated) must outlive the Problem.
+// Ownership: the Problem owns the cost functions and the loss function
+// (ceres::Problem::Options' default ownership; with DO_NOT_TAKE_OWNERSHIP
+// for loss functions the loss would leak). The NdtLayer (or the binding and
+// every layer bound while the Problem is evaluated) must outlive the Problem.
 
-#include <ceres/loss_function.h>
 #include <ceres/problem.h>
 
 #include <vector>
 
-#include "mlndt/cost/cell_match.h"
 #include "mlndt/cost/layer_binding.h"
+#include "mlndt/cost/objective_options.h"
 #include "mlndt/grid/ndt_layer.h"
 
 namespace mlndt {
-
-struct ResidualOptions {
-  // What a point in no occupied cell contributes (cell_match.h).
-  UnmatchedPolicy unmatched_policy = UnmatchedPolicy::ZERO_RESIDUAL;
-  // Applied to every residual block; nullptr = plain squares (the paper).
-  // Shared by all the blocks; the Problem takes ownership unless its options
-  // say otherwise.
-  ceres::LossFunction* loss_function = nullptr;
-};
 
 // One residual block (3 residuals) per input point, on the 6-vector pose
 // block `reference_from_input_xi` = (tx, ty, tz, alpha, beta, gamma) of
@@ -40,7 +35,7 @@ struct ResidualOptions {
 std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
     LayerSource reference_layer,
     const std::vector<Eigen::Vector3d>& input_points,
-    const ResidualOptions& options,
+    const ObjectiveOptions& objective,
     double* reference_from_input_xi,
     ceres::Problem* problem);
 
@@ -50,7 +45,7 @@ std::vector<ceres::ResidualBlockId> AddMlNdtResiduals(
 std::vector<ceres::ResidualBlockId> AddMlNdtResidualsQuaternion(
     LayerSource reference_layer,
     const std::vector<Eigen::Vector3d>& input_points,
-    const ResidualOptions& options,
+    const ObjectiveOptions& objective,
     double* reference_from_input_rotation,
     double* reference_from_input_translation,
     ceres::Problem* problem);

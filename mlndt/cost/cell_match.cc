@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 
 namespace mlndt {
 

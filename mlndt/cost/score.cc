@@ -14,12 +14,13 @@ void Accumulate(const NdtLayer& layer,
                 size_t begin,
                 size_t end,
                 const TransformDerivatives& transform,
-                const ScoreOptions& options,
+                const ObjectiveOptions& objective,
+                HessianType hessian,
                 ScoreEvaluation* sum) {
   for (size_t k = begin; k < end; ++k) {
     const Eigen::Vector3d& p = points[k];
     const Eigen::Vector3d x = transform.Transform(p);
-    const NdtCell* cell = MatchCell(layer, x, options.unmatched_policy);
+    const NdtCell* cell = MatchCell(layer, x, objective.unmatched_policy);
     if (cell == nullptr) {
       ++sum->unmatched;
       continue;
@@ -28,13 +29,13 @@ void Accumulate(const NdtLayer& layer,
     const Eigen::Vector3d e = x - cell->mean;
     const Eigen::Vector3d information_e = cell->information * e;  // C^-1 e.
     double rho = 0.0, rho_prime = 1.0;
-    EvaluateLoss(options.loss,
-                 options.loss_scale,
+    EvaluateLoss(objective.loss,
+                 objective.loss_scale,
                  e.dot(information_e),
                  &rho,
                  &rho_prime);
     sum->score += rho;
-    if (options.hessian == HessianType::NONE) continue;
+    if (hessian == HessianType::NONE) continue;
     // J = [I | A] with A = d x' / d angles, so J^T C^-1 e = [C^-1 e; A^T C^-1
     // e] and J^T C^-1 J = [C^-1, C^-1 A; A^T C^-1, A^T C^-1 A].
     const double w = 2.0 * rho_prime;
@@ -46,7 +47,7 @@ void Accumulate(const NdtLayer& layer,
     sum->hessian.topRightCorner<3, 3>() += w * information_a;
     sum->hessian.bottomRightCorner<3, 3>().noalias() +=
         w * (a.transpose() * information_a);
-    if (options.hessian == HessianType::FULL) {
+    if (hessian == HessianType::FULL) {
       sum->hessian += (2.0 * rho_prime) *
                       transform.WeightedSecondDerivative(p, information_e);
     }
@@ -58,9 +59,11 @@ void Accumulate(const NdtLayer& layer,
 ScoreEvaluation EvaluateScore(const NdtLayer& layer,
                               const std::vector<Eigen::Vector3d>& input_points,
                               const Vector6d& reference_from_input_xi,
-                              const ScoreOptions& options) {
+                              const ObjectiveOptions& objective,
+                              HessianType hessian,
+                              int num_threads) {
   const TransformDerivatives transform(reference_from_input_xi);
-  const int threads = std::max(1, options.num_threads);
+  const int threads = std::max(1, num_threads);
   std::vector<ScoreEvaluation> partial(static_cast<size_t>(threads));
   const size_t n = input_points.size();
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
@@ -74,7 +77,8 @@ ScoreEvaluation EvaluateScore(const NdtLayer& layer,
                begin,
                end,
                transform,
-               options,
+               objective,
+               hessian,
                &partial[static_cast<size_t>(t)]);
   }
   for (ScoreEvaluation& p : partial) {  // The lower-left block by symmetry.
@@ -90,19 +94,6 @@ ScoreEvaluation EvaluateScore(const NdtLayer& layer,
     total.hessian += partial[t].hessian;
   }
   return total;
-}
-
-ScoreEvaluation EvaluateScore(const NdtLayer& layer,
-                              const std::vector<Eigen::Vector3d>& input_points,
-                              const Vector6d& reference_from_input_xi,
-                              UnmatchedPolicy policy,
-                              LossType loss,
-                              double loss_scale) {
-  ScoreOptions options;
-  options.unmatched_policy = policy;
-  options.loss = loss;
-  options.loss_scale = loss_scale;
-  return EvaluateScore(layer, input_points, reference_from_input_xi, options);
 }
 
 }  // namespace mlndt

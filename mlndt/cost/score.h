@@ -21,8 +21,7 @@
 #include <vector>
 
 #include "mlndt/common/types.h"
-#include "mlndt/cost/cell_match.h"
-#include "mlndt/cost/robust_loss.h"
+#include "mlndt/cost/objective_options.h"
 #include "mlndt/grid/ndt_layer.h"
 
 namespace mlndt {
@@ -33,35 +32,23 @@ enum class HessianType {
   FULL,          // Plus the second-order term of Eq. (14).
 };
 
-struct ScoreOptions {
-  UnmatchedPolicy unmatched_policy = UnmatchedPolicy::ZERO_RESIDUAL;
-  LossType loss = LossType::NONE;
-  double loss_scale = 1.0;  // Mahalanobis distance where the loss bends.
-  HessianType hessian = HessianType::GAUSS_NEWTON;
-  // OpenMP threads over points. >= 1. The sum is reduced in a fixed order,
-  // so a given thread count always gives the same bits.
-  int num_threads = 1;
-};
-
 struct ScoreEvaluation {
   double score = 0.0;                    // sum_k rho(s_k).
   size_t matched = 0;                    // Points scored against a cell.
   size_t unmatched = 0;                  // Points contributing nothing.
   Vector6d gradient = Vector6d::Zero();  // d score / d xi.
-  Matrix6d hessian = Matrix6d::Zero();   // As ScoreOptions::hessian says.
+  Matrix6d hessian = Matrix6d::Zero();   // As the HessianType asked.
 };
 
+// The score of `input_points` moved by xi onto `layer`, with the requested
+// derivatives. `num_threads` OpenMP threads split the points (>= 1); the
+// partial sums are reduced in a fixed order, so a given thread count always
+// gives the same bits.
 ScoreEvaluation EvaluateScore(const NdtLayer& layer,
                               const std::vector<Eigen::Vector3d>& input_points,
                               const Vector6d& reference_from_input_xi,
-                              const ScoreOptions& options);
-
-// Gauss-Newton Hessian, one thread.
-ScoreEvaluation EvaluateScore(const NdtLayer& layer,
-                              const std::vector<Eigen::Vector3d>& input_points,
-                              const Vector6d& reference_from_input_xi,
-                              UnmatchedPolicy policy,
-                              LossType loss,
-                              double loss_scale);
+                              const ObjectiveOptions& objective,
+                              HessianType hessian = HessianType::GAUSS_NEWTON,
+                              int num_threads = 1);
 
 }  // namespace mlndt

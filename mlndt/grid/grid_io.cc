@@ -146,7 +146,8 @@ bool LoadLayeredGrid(const std::string& path,
     return Fail(
         path, "checksum mismatch: the map file is corrupt or truncated", error);
   }
-  LayeredGridOptions options;
+  // The file stores n itself, not the finest cell it was derived from.
+  LayeredGridOptions options = PaperLayeredGridOptions();
   int32_t q = 0, n = 0, min_points = 0;
   CellRegularization& regularization = options.regularization;
   Eigen::Vector3d lo, hi;

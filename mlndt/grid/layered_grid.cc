@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <sstream>
 
-#include "mlndt/common/check_option.h"
+#include "mlndt/common/internal/check_option.h"
 
 namespace mlndt {
 namespace {
@@ -51,6 +51,9 @@ struct LayerGeometry {
            int64_t{dims.x()} * (ijk.y() + int64_t{dims.y()} * ijk.z());
   }
 };
+
+// More threads than this are refused (libgomp fails far beyond it).
+constexpr int kMaxThreads = 256;
 
 // Layers with fewer cells than this finish on one thread: forking the team
 // costs more than ~100 eigen-decompositions.
@@ -217,11 +220,11 @@ NdtLayer FinishLayer(const RawLayer& raw,
                      const Eigen::Vector3d& centre,
                      const LayerGeometry& geometry,
                      const LayeredGridOptions& options,
+                     int threads,
                      LayerInfo* info) {
   const int64_t num_raw = static_cast<int64_t>(raw.keys.size());
   std::vector<NdtCell> candidates(static_cast<size_t>(num_raw));
   std::vector<CellOutcome> outcomes(static_cast<size_t>(num_raw));
-  const int threads = options.num_threads;
 #pragma omp parallel for num_threads(threads) \
     schedule(static) if (threads > 1 && num_raw >= kMinCellsToParallelise)
   for (int64_t i = 0; i < num_raw; ++i) {
@@ -286,6 +289,7 @@ Eigen::Vector3d EffectiveExtent(const Eigen::Vector3d& extent) {
 }
 
 int NumLayers(const LayeredGridOptions& options, double volume) {
+  if (options.cell_size_m > 0.0) return 1;
   if (options.finest_cell_size_m <= 0.0) return options.num_layers;
   const double f = options.finest_cell_size_m;
   const double n =
@@ -296,18 +300,37 @@ int NumLayers(const LayeredGridOptions& options, double volume) {
 }  // namespace
 
 bool LayeredGridOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_GE(division_constant, 2);
-  MLNDT_OPTION_GE(num_layers, 1);
-  MLNDT_OPTION_GE(max_num_layers, 1);
-  MLNDT_OPTION_LE(max_num_layers, 16);
-  MLNDT_OPTION_LE(num_layers, max_num_layers);
-  MLNDT_OPTION_GE(finest_cell_size_m, 0.0);
-  MLNDT_OPTION_GE(min_points_per_cell, 4);
-  MLNDT_OPTION_GT(regularization.min_eigenvalue_ratio, 0.0);
-  MLNDT_OPTION_LE(regularization.min_eigenvalue_ratio, 1.0);
-  MLNDT_OPTION_GE(regularization.min_eigenvalue_m2, 0.0);
-  MLNDT_OPTION_GE(num_threads, 1);
+  MLNDT_OPTION_IN_RANGE(division_constant, 2, 512);
+  MLNDT_OPTION_IN_RANGE(max_num_layers, 1, 16);
+  MLNDT_OPTION_IN_RANGE(num_layers, 1, max_num_layers);
+  if (finest_cell_size_m != 0.0) {
+    MLNDT_OPTION_IN_RANGE(finest_cell_size_m, 1e-3, 1e5);
+  }
+  if (cell_size_m != 0.0) MLNDT_OPTION_IN_RANGE(cell_size_m, 1e-3, 1e5);
+  MLNDT_OPTION_IN_RANGE(min_points_per_cell, 4, 1000000);
+  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_ratio, 1e-9, 1.0);
+  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_m2, 0.0, 1e6);
   return true;
+}
+
+bool operator==(const LayeredGridOptions& a, const LayeredGridOptions& b) {
+  return a.division_constant == b.division_constant &&
+         a.num_layers == b.num_layers &&
+         a.finest_cell_size_m == b.finest_cell_size_m &&
+         a.cell_size_m == b.cell_size_m &&
+         a.max_num_layers == b.max_num_layers &&
+         a.min_points_per_cell == b.min_points_per_cell &&
+         a.regularization.min_eigenvalue_ratio ==
+             b.regularization.min_eigenvalue_ratio &&
+         a.regularization.min_eigenvalue_m2 ==
+             b.regularization.min_eigenvalue_m2;
+}
+
+LayeredGridOptions PaperLayeredGridOptions() {
+  LayeredGridOptions options;
+  options.finest_cell_size_m = 0.0;
+  options.num_layers = 4;
+  return options;
 }
 
 std::vector<double> LayerCellSizes(const LayeredGridOptions& options,
@@ -317,6 +340,7 @@ std::vector<double> LayerCellSizes(const LayeredGridOptions& options,
   const Eigen::Vector3d e = EffectiveExtent(extent);
   const double volume = e.prod();
   const int n = NumLayers(options, volume);
+  if (options.cell_size_m > 0.0) return {options.cell_size_m};
   std::vector<double> sizes;
   for (int i = 1; i <= n; ++i) {
     sizes.push_back(std::cbrt(volume / std::pow(options.division_constant, i)));
@@ -328,13 +352,26 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
                         const PointCloud& reference,
                         LayeredGrid* grid,
                         std::string* error) {
+  return Build(options, reference, 1, grid, error);
+}
+
+bool LayeredGrid::Build(const LayeredGridOptions& options,
+                        const PointCloud& reference,
+                        int num_threads,
+                        LayeredGrid* grid,
+                        std::string* error) {
   if (!options.IsValid(error)) return false;
+  if (num_threads < 1 || num_threads > kMaxThreads) {
+    *error = "invalid num_threads = " + std::to_string(num_threads) +
+             "; it must be in [1, " + std::to_string(kMaxThreads) + "]";
+    return false;
+  }
   if (reference.empty()) {
     *error = "the reference cloud is empty";
     return false;
   }
   Eigen::AlignedBox3d bounds;
-  if (!ScanBounds(reference.points(), options.num_threads, &bounds)) {
+  if (!ScanBounds(reference.points(), num_threads, &bounds)) {
     *error = "the reference cloud has non-finite points";
     return false;
   }
@@ -362,8 +399,9 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
   const double finest = std::cbrt(volume / std::pow(q, n));
   for (int i = n; i >= 1; --i) {
     LayerGeometry& g = geometry[static_cast<size_t>(i - 1)];
-    g.cell_size = ratio > 0 ? finest * std::pow(ratio, n - i)
-                            : std::cbrt(volume / std::pow(q, i));
+    g.cell_size = options.cell_size_m > 0.0 ? options.cell_size_m
+                  : ratio > 0               ? finest * std::pow(ratio, n - i)
+                              : std::cbrt(volume / std::pow(q, i));
     const Eigen::Vector3d cells = (extent / g.cell_size).array().floor() + 1.0;
     if (cells.maxCoeff() > 1e6 || cells.prod() > 4e18) {
       *error = "layer " + std::to_string(i) +
@@ -386,13 +424,13 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
     const size_t l = static_cast<size_t>(i - 1);
     if (i == n || ratio == 0) {
       raw = BinPoints(
-          reference.points(), origin, centre, geometry[l], options.num_threads);
+          reference.points(), origin, centre, geometry[l], num_threads);
     } else {
       raw = Aggregate(raw, geometry[l + 1], geometry[l], ratio);
     }
     info[l].layer = i;
-    layers[l] =
-        FinishLayer(raw, origin, centre, geometry[l], options, &info[l]);
+    layers[l] = FinishLayer(
+        raw, origin, centre, geometry[l], options, num_threads, &info[l]);
   }
   *grid = LayeredGrid(
       options, bounds, reference.size(), std::move(layers), std::move(info));

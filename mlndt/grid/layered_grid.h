@@ -19,6 +19,9 @@
 // layer's moments instead of re-binning the points. Moments are accumulated
 // relative to the box centre, so coordinates far from the origin (UTM,
 // 4e6 m) keep their precision.
+//
+// With LayeredGridOptions::cell_size_m > 0 the map is one layer of cells of
+// exactly that edge: the grid of the conventional NDT baseline (ndt/).
 
 #include <string>
 #include <vector>
@@ -28,34 +31,41 @@
 
 namespace mlndt {
 
+// The library's map; PaperLayeredGridOptions() is the paper's (n = 4).
 struct LayeredGridOptions {
-  // q: layer i has about q^i cells over the bounding box. >= 2.
+  // q: layer i has about q^i cells over the bounding box. In [2, 512].
   int division_constant = 8;
-  // n: number of layers. >= 1. Ignored when finest_cell_size_m > 0.
+  // n: number of layers. In [1, max_num_layers]. Ignored when
+  // finest_cell_size_m > 0.
   int num_layers = 4;
   // When > 0, n is the smallest number of layers whose finest cell edge is
-  // <= this [m]. The paper's n = 4 leaves ~8-10 m cells on an outdoor
-  // (KITTI) scan, where single-grid NDT users run 1-2 m cells.
-  double finest_cell_size_m = 0.0;
-  // Upper bound on n, derived or given. <= 16.
+  // <= this [m] (docs/defaults.md: why 2 m). 0, or in [1e-3, 1e5].
+  double finest_cell_size_m = 2.0;
+  // When > 0, the map has one layer of cubic cells of exactly this edge [m]
+  // (the conventional NDT grid) and q, n and finest_cell_size_m are ignored.
+  // 0, or in [1e-3, 1e5].
+  double cell_size_m = 0.0;
+  // Upper bound on n, derived or given. In [1, 16].
   int max_num_layers = 12;
   // A cell keeps a distribution when it holds at least this many points.
-  // >= 4 (3 points always give a singular covariance).
+  // In [4, 1e6] (3 points always give a singular covariance).
   int min_points_per_cell = 5;
-  // Covariance regularisation (ndt_cell.h). min_eigenvalue_ratio in (0, 1],
-  // min_eigenvalue_m2 >= 0.
+  // Covariance regularisation (ndt_cell.h). min_eigenvalue_ratio in
+  // [1e-9, 1], min_eigenvalue_m2 in [0, 1e6].
   CellRegularization regularization;
-  // Threads (OpenMP) for Build: the bounds scan, the per-point cell keys, the
-  // per-cell moments and the per-cell eigen-decomposition. >= 1. The map is
-  // bit-identical for every value: each cell still sums its points in input
-  // order, and cells keep their order of first appearance. Keep 1 on a
-  // loaded machine: OpenMP's idle threads spin-wait by default, which can
-  // make a build many times slower when the cores are busy; set
-  // OMP_WAIT_POLICY=passive in the environment to make them sleep instead.
-  int num_threads = 1;
 
   bool IsValid(std::string* error) const;
 };
+
+// Equal when two option sets build the same map (for map caches).
+bool operator==(const LayeredGridOptions& a, const LayeredGridOptions& b);
+inline bool operator!=(const LayeredGridOptions& a,
+                       const LayeredGridOptions& b) {
+  return !(a == b);
+}
+
+// The paper's map: n = 4 layers over the bounding box (Section 4).
+LayeredGridOptions PaperLayeredGridOptions();
 
 // Per-layer facts, for reports.
 struct LayerInfo {
@@ -72,10 +82,21 @@ class LayeredGrid {
   LayeredGrid() = default;
 
   // Builds the map of `reference`. Returns false with *error (and leaves
-  // *grid unchanged) for invalid options, an empty cloud, non-finite points or
-  // a cloud whose points all coincide.
+  // *grid unchanged) for invalid options, an empty cloud, non-finite points,
+  // a cloud whose points all coincide or a map with too many cells.
   static bool Build(const LayeredGridOptions& options,
                     const PointCloud& reference,
+                    LayeredGrid* grid,
+                    std::string* error);
+  // The same with `num_threads` OpenMP threads (>= 1) for the bounds scan,
+  // the per-point cell keys, the per-cell moments and the per-cell
+  // eigen-decompositions. The map is bit-identical for every value: each
+  // cell still sums its points in input order, and cells keep their order of
+  // first appearance. OpenMP's idle threads spin-wait by default: on a
+  // loaded machine keep 1, or set OMP_WAIT_POLICY=passive.
+  static bool Build(const LayeredGridOptions& options,
+                    const PointCloud& reference,
+                    int num_threads,
                     LayeredGrid* grid,
                     std::string* error);
 

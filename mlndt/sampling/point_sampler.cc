@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/sampling/voxel_key.h"
 
 namespace mlndt {

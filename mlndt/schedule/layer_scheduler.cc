@@ -4,17 +4,44 @@
 
 #include <algorithm>
 
-#include "mlndt/common/check_option.h"
+#include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/timer.h"
 
 namespace mlndt {
+namespace {
+
+// The control of the stage on `layer` of n.
+StageControl ControlFor(const LayerScheduleOptions& options, int layer, int n) {
+  const bool last = layer == n;
+  StageControl control;
+  control.max_iterations =
+      last ? options.max_final_iterations : options.iterations_per_layer;
+  control.step_tolerance =
+      last ? options.step_tolerance : options.coarse_step_tolerance;
+  // Coarse cells are large: every stride-th sample describes them as well.
+  control.point_stride =
+      std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
+  return control;
+}
+
+}  // namespace
 
 bool LayerScheduleOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_GE(iterations_per_layer, 1);
-  MLNDT_OPTION_GE(max_final_iterations, 1);
-  MLNDT_OPTION_GT(step_tolerance, 0.0);
-  MLNDT_OPTION_GE(coarse_step_tolerance, 0.0);
-  MLNDT_OPTION_GE(max_coarse_point_stride, 1);
+  MLNDT_OPTION_IN_RANGE(start_layer, -16, 16);
+  MLNDT_OPTION_IN_RANGE(iterations_per_layer, 1, 1000);
+  MLNDT_OPTION_IN_RANGE(max_final_iterations, 1, 10000);
+  MLNDT_OPTION_IN_RANGE(step_tolerance, 1e-12, 1.0);
+  MLNDT_OPTION_IN_RANGE(coarse_step_tolerance, 0.0, 1.0);
+  MLNDT_OPTION_IN_RANGE(max_coarse_point_stride, 1, 1024);
   return true;
+}
+
+LayerScheduleOptions PaperLayerScheduleOptions() {
+  LayerScheduleOptions options;
+  options.start_layer = 2;
+  options.iterations_per_layer = 3;
+  options.max_coarse_point_stride = 1;
+  return options;
 }
 
 int ResolveStartLayer(const LayerScheduleOptions& options, int num_layers) {
@@ -25,8 +52,7 @@ int ResolveStartLayer(const LayerScheduleOptions& options, int num_layers) {
 
 void RunLayerSchedule(const LayerScheduleOptions& options,
                       const LayeredGrid& reference_map,
-                      const std::vector<Eigen::Vector3d>& input_points,
-                      const StageOptions& stage_options,
+                      double start_time_s,
                       Backend* backend,
                       Vector6d* reference_from_input_xi,
                       ScheduleSummary* summary) {
@@ -36,41 +62,33 @@ void RunLayerSchedule(const LayerScheduleOptions& options,
   const int n = reference_map.num_layers();
   summary->iterations_per_layer.assign(static_cast<size_t>(n), 0);
   for (int layer = ResolveStartLayer(options, n); layer <= n; ++layer) {
-    const bool last = layer == n;
-    StageOptions stage = stage_options;
-    stage.layer = layer;
-    stage.max_iterations =
-        last ? options.max_final_iterations : options.iterations_per_layer;
-    stage.step_tolerance =
-        last ? options.step_tolerance : options.coarse_step_tolerance;
-    stage.first_iteration = static_cast<int>(summary->trace.size()) + 1;
-    // Coarse cells are large: every stride-th sample describes them as well.
-    stage.point_stride =
-        std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
-    StageSummary stage_summary;
+    const double stage_start_s = NowSeconds() - start_time_s;
+    StageSummary stage;
     backend->SolveStage(reference_map.layer(layer),
-                        input_points,
-                        stage,
+                        ControlFor(options, layer, n),
                         reference_from_input_xi,
-                        &stage_summary);
+                        &stage);
     summary->iterations_per_layer[static_cast<size_t>(layer - 1)] =
-        stage_summary.iterations;
-    summary->trace.insert(summary->trace.end(),
-                          stage_summary.trace.begin(),
-                          stage_summary.trace.end());
-    if (stage_summary.termination_type == TerminationType::FAILURE) {
+        stage.iterations();
+    for (IterationRecord record : stage.trace) {
+      record.layer = layer;
+      record.iteration = static_cast<int>(summary->trace.size()) + 1;
+      record.time_s += stage_start_s;
+      summary->trace.push_back(record);
+    }
+    if (stage.termination_type == TerminationType::FAILURE) {
       summary->termination_type = TerminationType::FAILURE;
       summary->message =
-          "layer " + std::to_string(layer) + ": " + stage_summary.message;
+          "layer " + std::to_string(layer) + ": " + stage.message;
       return;
     }
-    if (last) {
-      summary->termination_type = stage_summary.termination_type;
-      summary->message =
-          stage_summary.termination_type == TerminationType::CONVERGENCE
-              ? "converged on layer " + std::to_string(layer)
-              : "iteration cap reached on layer " + std::to_string(layer) +
-                    " (" + stage_summary.message + ")";
+    if (layer == n) {
+      summary->termination_type = stage.termination_type;
+      summary->message = stage.termination_type == TerminationType::CONVERGENCE
+                             ? "converged on layer " + std::to_string(layer)
+                             : "iteration cap reached on layer " +
+                                   std::to_string(layer) + " (" +
+                                   stage.message + ")";
     }
   }
 }

@@ -5,6 +5,8 @@
 // to the next finer layer, and run the last layer until the update norm
 // falls below a tolerance or an iteration cap is reached. Each stage hands the
 // backend the stage's layer; the Ceres backend builds a fresh Problem for it.
+// The scheduler owns the iteration trace: it numbers the backends' records
+// over the whole registration and stamps their layer and time.
 
 #include <string>
 #include <vector>
@@ -14,28 +16,36 @@
 
 namespace mlndt {
 
+// The library's schedule; PaperLayerScheduleOptions() is the paper's
+// (docs/defaults.md compares them).
 struct LayerScheduleOptions {
   // s, the 1-based layer to start on. Values <= 0 count from the finest
   // layer: 0 is the last layer n, -1 is n - 1, and so on, which keeps the
   // meaning when n is derived from a finest cell size. Clamped to layer 1.
-  int start_layer = 2;
-  int iterations_per_layer =
-      3;  // Iterations on every layer but the last. >= 1.
-  int max_final_iterations = 30;  // Cap on the last layer's iterations. >= 1.
+  // In [-16, 16].
+  int start_layer = 1;
+  // Iterations on every layer but the last. In [1, 1000].
+  int iterations_per_layer = 6;
+  // Cap on the last layer's iterations. In [1, 10000].
+  int max_final_iterations = 30;
   // The last layer converges when a successful step has ||delta xi|| below
-  // this (metres and radians). > 0.
+  // this (metres and radians). In [1e-12, 1].
   double step_tolerance = 1e-4;
   // A coarse layer ends early once a successful step has ||delta xi|| below
   // this; 0 runs every coarse layer for exactly iterations_per_layer
-  // iterations, as the paper. >= 0.
+  // iterations, as the paper. In [0, 1].
   double coarse_step_tolerance = 0.0;
   // Layer i of n uses every s-th sampled point, s = min(2^(n - i), this):
   // a cell twice as large needs fewer points to be located. 1 uses every
-  // sampled point on every layer, as the paper. >= 1.
-  int max_coarse_point_stride = 1;
+  // sampled point on every layer, as the paper. In [1, 1024].
+  int max_coarse_point_stride = 8;
 
   bool IsValid(std::string* error) const;
 };
+
+// Table 1 as the paper runs it: start on layer 2, 3 iterations a layer,
+// every sampled point on every layer.
+LayerScheduleOptions PaperLayerScheduleOptions();
 
 // The 1-based start layer `options.start_layer` resolves to on n layers.
 int ResolveStartLayer(const LayerScheduleOptions& options, int num_layers);
@@ -47,12 +57,12 @@ struct ScheduleSummary {
   std::vector<int> iterations_per_layer;  // Index i - 1 for layer i.
 };
 
-// Runs the stages. `stage_options` supplies the per-point settings (policy,
-// loss, start time); the scheduler fills in layer, iterations and tolerance.
+// Runs the stages on `backend`, whose SetProblem has been called. Trace
+// times count from `start_time_s` (NowSeconds() at the registration's
+// start).
 void RunLayerSchedule(const LayerScheduleOptions& options,
                       const LayeredGrid& reference_map,
-                      const std::vector<Eigen::Vector3d>& input_points,
-                      const StageOptions& stage_options,
+                      double start_time_s,
                       Backend* backend,
                       Vector6d* reference_from_input_xi,
                       ScheduleSummary* summary);

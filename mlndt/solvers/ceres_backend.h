@@ -5,13 +5,12 @@
 // stage's layer, and solves it for at most the stage's iterations. The final
 // stage stops on the update norm through an IterationCallback.
 //
-// The cost functions outlive the stages: they are built once per input point
-// and read the stage's layer through a LayerBinding (layer_binding.h), so a
-// new stage adds existing blocks to a new Problem instead of allocating a
-// functor per point (KITTI pair, 14k residuals: building and freeing a
-// stage's Problem takes 0.84 ms instead of 3.40 ms; ceres_stage_benchmark).
-// So an instance holds state: one per registration, not shared between
-// threads; it keeps its functors until destroyed.
+// The cost functions outlive the stages: SetProblem makes a pool for the
+// registration's points, each cost function is built on first use and reads
+// the stage's layer through a LayerBinding (layer_binding.h), so a new stage
+// adds existing blocks to a new Problem instead of allocating a functor per
+// point (docs/performance.md). So an instance holds state: one per
+// registration, not shared between threads.
 
 #include <ceres/types.h>
 
@@ -28,6 +27,8 @@ struct CeresBackendOptions {
   ceres::TrustRegionStrategyType trust_region_strategy_type =
       ceres::LEVENBERG_MARQUARDT;
 
+  // Ceres checks the combination (e.g. a sparse solver without a sparse
+  // library, DOGLEG with an iterative solver).
   bool IsValid(std::string* error) const;
 };
 
@@ -35,9 +36,11 @@ class CeresBackend : public Backend {
  public:
   explicit CeresBackend(const CeresBackendOptions& options);
   ~CeresBackend() override;
+  void SetProblem(const std::vector<Eigen::Vector3d>& input_points,
+                  const ObjectiveOptions& objective,
+                  int num_threads) override;
   void SolveStage(const NdtLayer& layer,
-                  const std::vector<Eigen::Vector3d>& input_points,
-                  const StageOptions& options,
+                  const StageControl& control,
                   Vector6d* reference_from_input_xi,
                   StageSummary* summary) override;
 
@@ -45,7 +48,9 @@ class CeresBackend : public Backend {
   class CostPool;
 
   CeresBackendOptions options_;
-  std::unique_ptr<CostPool> pool_;  // For the input points of the last stage.
+  ObjectiveOptions objective_;
+  int num_threads_ = 1;
+  std::unique_ptr<CostPool> pool_;  // For the points of SetProblem.
 };
 
 }  // namespace mlndt

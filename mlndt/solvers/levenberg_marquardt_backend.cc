@@ -1,26 +1,30 @@
 #include "mlndt/solvers/levenberg_marquardt_backend.h"
 
+#include <glog/logging.h>
+
 #include <Eigen/Cholesky>
 
-#include "mlndt/common/check_option.h"
-#include "mlndt/solvers/trace_recorder.h"
+#include "mlndt/common/internal/check_option.h"
+#include "mlndt/solvers/internal/stage_monitor.h"
 
 namespace mlndt {
 
 bool LevenbergMarquardtOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_GT(initial_lambda_factor, 0.0);
+  MLNDT_OPTION_IN_RANGE(initial_lambda_factor, 1e-15, 1e6);
   MLNDT_OPTION_GT(lambda_decrease, 1.0);
+  MLNDT_OPTION_LE(lambda_decrease, 1e6);
   MLNDT_OPTION_GT(lambda_increase, 1.0);
+  MLNDT_OPTION_LE(lambda_increase, 1e6);
   return true;
 }
 
 void MinimizeLevenbergMarquardt(const Objective& objective,
                                 const LevenbergMarquardtOptions& lm_options,
-                                const StageOptions& options,
+                                const StageControl& control,
                                 Vector6d* xi,
                                 StageSummary* summary) {
   *summary = StageSummary();
-  TraceRecorder trace(options, summary);
+  internal::StageMonitor trace(control, summary);
   summary->termination_type = TerminationType::NO_CONVERGENCE;
   summary->message = "iteration cap reached";
   // The Gauss-Newton Hessian is 2 J^T J and the gradient 2 J^T r, so
@@ -35,7 +39,7 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
   }
   double lambda = lm_options.initial_lambda_factor *
                   current.hessian.diagonal().mean() / 2.0;
-  for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
+  for (int iteration = 0; iteration < control.max_iterations; ++iteration) {
     const Matrix6d damped =
         current.hessian + 2.0 * lambda * Matrix6d::Identity();
     const Vector6d step = -damped.ldlt().solve(current.gradient);
@@ -65,19 +69,28 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
   }
 }
 
-void LevenbergMarquardtBackend::SolveStage(
-    const NdtLayer& layer,
+void LevenbergMarquardtBackend::SetProblem(
     const std::vector<Eigen::Vector3d>& input_points,
-    const StageOptions& options,
-    Vector6d* reference_from_input_xi,
-    StageSummary* summary) {
+    const ObjectiveOptions& objective,
+    int num_threads) {
+  input_points_ = &input_points;
+  objective_ = objective;
+  num_threads_ = num_threads;
+}
+
+void LevenbergMarquardtBackend::SolveStage(const NdtLayer& layer,
+                                           const StageControl& control,
+                                           Vector6d* reference_from_input_xi,
+                                           StageSummary* summary) {
+  CHECK(input_points_ != nullptr)
+      << "LevenbergMarquardtBackend: SetProblem first";
   std::vector<Eigen::Vector3d> thinned;
   const auto& points =
-      internal::EveryNthPoint(input_points, options.point_stride, &thinned);
+      internal::EveryNthPoint(*input_points_, control.point_stride, &thinned);
   MinimizeLevenbergMarquardt(
-      MlNdtObjective(layer, points, ScoreOptionsForStage(options)),
+      MlNdtObjective(layer, points, objective_, num_threads_),
       options_,
-      options,
+      control,
       reference_from_input_xi,
       summary);
 }

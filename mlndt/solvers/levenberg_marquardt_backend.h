@@ -17,16 +17,17 @@
 namespace mlndt {
 
 struct LevenbergMarquardtOptions {
-  double initial_lambda_factor = 1e-3;  // lambda_0 / mean(diag(J^T J)). > 0.
-  double lambda_decrease = 10.0;        // After a successful step. > 1.
-  double lambda_increase = 10.0;        // After a rejected step. > 1.
+  // lambda_0 / mean(diag(J^T J)). In [1e-15, 1e6].
+  double initial_lambda_factor = 1e-3;
+  double lambda_decrease = 10.0;  // After a successful step. In (1, 1e6].
+  double lambda_increase = 10.0;  // After a rejected step. In (1, 1e6].
 
   bool IsValid(std::string* error) const;
 };
 
 void MinimizeLevenbergMarquardt(const Objective& objective,
                                 const LevenbergMarquardtOptions& lm_options,
-                                const StageOptions& options,
+                                const StageControl& control,
                                 Vector6d* reference_from_input_xi,
                                 StageSummary* summary);
 
@@ -34,14 +35,19 @@ class LevenbergMarquardtBackend : public Backend {
  public:
   explicit LevenbergMarquardtBackend(const LevenbergMarquardtOptions& options)
       : options_(options) {}
+  void SetProblem(const std::vector<Eigen::Vector3d>& input_points,
+                  const ObjectiveOptions& objective,
+                  int num_threads) override;
   void SolveStage(const NdtLayer& layer,
-                  const std::vector<Eigen::Vector3d>& input_points,
-                  const StageOptions& options,
+                  const StageControl& control,
                   Vector6d* reference_from_input_xi,
                   StageSummary* summary) override;
 
  private:
   LevenbergMarquardtOptions options_;
+  const std::vector<Eigen::Vector3d>* input_points_ = nullptr;
+  ObjectiveOptions objective_;
+  int num_threads_ = 1;
 };
 
 }  // namespace mlndt

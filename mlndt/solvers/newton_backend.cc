@@ -1,12 +1,14 @@
 #include "mlndt/solvers/newton_backend.h"
 
+#include <glog/logging.h>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
-#include "mlndt/common/check_option.h"
-#include "mlndt/solvers/trace_recorder.h"
+#include "mlndt/common/internal/check_option.h"
+#include "mlndt/solvers/internal/stage_monitor.h"
 
 namespace mlndt {
 namespace {
@@ -26,21 +28,21 @@ Matrix6d SafelyPositiveDefinite(const Matrix6d& h, double ratio) {
 }  // namespace
 
 bool NewtonOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_GE(max_line_search_steps, 1);
-  MLNDT_OPTION_GT(min_eigenvalue_ratio, 0.0);
+  MLNDT_OPTION_IN_RANGE(max_line_search_steps, 1, 60);
+  MLNDT_OPTION_IN_RANGE(min_eigenvalue_ratio, 1e-15, 1.0);
   return true;
 }
 
 void MinimizeNewton(const Objective& objective,
                     const NewtonOptions& newton_options,
-                    const StageOptions& options,
+                    const StageControl& control,
                     Vector6d* xi,
                     StageSummary* summary) {
   *summary = StageSummary();
-  TraceRecorder trace(options, summary);
+  internal::StageMonitor trace(control, summary);
   summary->termination_type = TerminationType::NO_CONVERGENCE;
   summary->message = "iteration cap reached";
-  for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
+  for (int iteration = 0; iteration < control.max_iterations; ++iteration) {
     const ScoreEvaluation current = objective.Evaluate(*xi, HessianType::FULL);
     summary->final_score = current.score;
     if (current.matched == 0) {
@@ -95,17 +97,25 @@ void MinimizeNewton(const Objective& objective,
   }
 }
 
+void NewtonBackend::SetProblem(const std::vector<Eigen::Vector3d>& input_points,
+                               const ObjectiveOptions& objective,
+                               int num_threads) {
+  input_points_ = &input_points;
+  objective_ = objective;
+  num_threads_ = num_threads;
+}
+
 void NewtonBackend::SolveStage(const NdtLayer& layer,
-                               const std::vector<Eigen::Vector3d>& input_points,
-                               const StageOptions& options,
+                               const StageControl& control,
                                Vector6d* reference_from_input_xi,
                                StageSummary* summary) {
+  CHECK(input_points_ != nullptr) << "NewtonBackend: SetProblem first";
   std::vector<Eigen::Vector3d> thinned;
   const auto& points =
-      internal::EveryNthPoint(input_points, options.point_stride, &thinned);
-  MinimizeNewton(MlNdtObjective(layer, points, ScoreOptionsForStage(options)),
+      internal::EveryNthPoint(*input_points_, control.point_stride, &thinned);
+  MinimizeNewton(MlNdtObjective(layer, points, objective_, num_threads_),
                  options_,
-                 options,
+                 control,
                  reference_from_input_xi,
                  summary);
 }

@@ -17,33 +17,40 @@ namespace mlndt {
 
 struct NewtonOptions {
   bool line_search = true;
-  int max_line_search_steps = 8;  // Halvings before the step is rejected. >= 1.
+  // Halvings before the step is rejected. In [1, 60].
+  int max_line_search_steps = 8;
   // H counts as safely positive definite when its smallest eigenvalue is at
-  // least this fraction of its largest; otherwise gamma lifts it there. > 0.
+  // least this fraction of its largest; otherwise gamma lifts it there.
+  // In [1e-15, 1].
   double min_eigenvalue_ratio = 1e-6;
 
   bool IsValid(std::string* error) const;
 };
 
-// Minimises `objective` from *xi for at most options.max_iterations
-// iterations, recording the trace as the Ceres backend does.
+// Minimises `objective` from *xi for at most control.max_iterations
+// iterations, recording one IterationRecord per iteration.
 void MinimizeNewton(const Objective& objective,
                     const NewtonOptions& newton_options,
-                    const StageOptions& options,
+                    const StageControl& control,
                     Vector6d* reference_from_input_xi,
                     StageSummary* summary);
 
 class NewtonBackend : public Backend {
  public:
   explicit NewtonBackend(const NewtonOptions& options) : options_(options) {}
+  void SetProblem(const std::vector<Eigen::Vector3d>& input_points,
+                  const ObjectiveOptions& objective,
+                  int num_threads) override;
   void SolveStage(const NdtLayer& layer,
-                  const std::vector<Eigen::Vector3d>& input_points,
-                  const StageOptions& options,
+                  const StageControl& control,
                   Vector6d* reference_from_input_xi,
                   StageSummary* summary) override;
 
  private:
   NewtonOptions options_;
+  const std::vector<Eigen::Vector3d>* input_points_ = nullptr;
+  ObjectiveOptions objective_;
+  int num_threads_ = 1;
 };
 
 }  // namespace mlndt

@@ -3,7 +3,7 @@
 // What the hand-written minimisers minimise: a score of the pose vector xi
 // with its gradient and Hessian. MlNdtObjective is ML-NDT's Mahalanobis sum
 // on one layer (cost/score.h); the conventional NDT baseline provides the
-// Gaussian score of Eq. (4) through the same interface.
+// Gaussian score of Eq. (4) through the same interface (ndt/).
 
 #include <vector>
 
@@ -27,21 +27,28 @@ class MlNdtObjective : public Objective {
  public:
   MlNdtObjective(const NdtLayer& layer,
                  const std::vector<Eigen::Vector3d>& input_points,
-                 const ScoreOptions& options)
-      : layer_(layer), input_points_(input_points), options_(options) {}
+                 const ObjectiveOptions& objective,
+                 int num_threads)
+      : layer_(layer),
+        input_points_(input_points),
+        objective_(objective),
+        num_threads_(num_threads) {}
 
   ScoreEvaluation Evaluate(const Vector6d& reference_from_input_xi,
                            HessianType hessian) const override {
-    ScoreOptions options = options_;
-    options.hessian = hessian;
-    return EvaluateScore(
-        layer_, input_points_, reference_from_input_xi, options);
+    return EvaluateScore(layer_,
+                         input_points_,
+                         reference_from_input_xi,
+                         objective_,
+                         hessian,
+                         num_threads_);
   }
 
  private:
   const NdtLayer& layer_;
   const std::vector<Eigen::Vector3d>& input_points_;
-  const ScoreOptions options_;
+  const ObjectiveOptions objective_;
+  const int num_threads_;
 };
 
 }  // namespace mlndt

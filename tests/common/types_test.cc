@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "mlndt/common/check_option.h"
+#include "mlndt/common/internal/check_option.h"
 
 namespace mlndt {
 namespace {

@@ -19,6 +19,7 @@
 #include "mlndt/cost/score.h"
 #include "mlndt/grid/layered_grid.h"
 #include "tests/testing/eigen_near.h"
+#include "tests/testing/objective.h"
 
 namespace mlndt {
 namespace {
@@ -63,7 +64,7 @@ PointCloud Room(uint32_t seed, double density, double noise_m) {
 // The reference map of Room(1): layers with 3.5, 1.7, 0.87 and 0.43 m cells.
 const LayeredGrid& RoomGrid() {
   static const LayeredGrid* grid = [] {
-    LayeredGridOptions options;
+    LayeredGridOptions options = PaperLayeredGridOptions();
     options.num_layers = 4;
     auto* built = new LayeredGrid;
     std::string error;
@@ -127,7 +128,7 @@ TEST(AddMlNdtResiduals, AddsOneThreeResidualBlockPerPointOnCallersPose) {
   ASSERT_GT(points.size(), 50u);
   double xi[6] = {0, 0, 0, 0, 0, 0};
   ceres::Problem problem;
-  ResidualOptions options;
+  ObjectiveOptions options = PaperObjectiveOptions();
   const std::vector<ceres::ResidualBlockId> ids =
       AddMlNdtResiduals(layer, points, options, xi, &problem);
   ASSERT_EQ(ids.size(), points.size());
@@ -154,18 +155,36 @@ TEST(AddMlNdtResiduals, AddsOneThreeResidualBlockPerPointOnCallersPose) {
   EXPECT_EQ(empty.NumResidualBlocks(), 0);
 }
 
-TEST(AddMlNdtResiduals, SharesTheCallersLossFunction) {
+TEST(AddMlNdtResiduals, OneLossFromTheObjectiveOnEveryBlock) {
   const NdtLayer& layer = RoomGrid().layer(3);
   const std::vector<Vector3d> points = InputScan(200);
   double xi[6] = {0, 0, 0, 0, 0, 0};
   ceres::Problem problem;  // Takes ownership of the loss.
-  ResidualOptions options;
-  options.loss_function = CreateLoss(LossType::HUBER, 1.0);
-  for (const ceres::ResidualBlockId id :
-       AddMlNdtResiduals(layer, points, options, xi, &problem)) {
-    EXPECT_EQ(problem.GetLossFunctionForResidualBlock(id),
-              options.loss_function);
+  const std::vector<ceres::ResidualBlockId> ids = AddMlNdtResiduals(
+      layer,
+      points,
+      testing::Objective(UnmatchedPolicy::NEAREST_CELL, LossType::HUBER, 1.0),
+      xi,
+      &problem);
+  ASSERT_FALSE(ids.empty());
+  const ceres::LossFunction* loss =
+      problem.GetLossFunctionForResidualBlock(ids.front());
+  ASSERT_NE(loss, nullptr);
+  double rho[3];
+  loss->Evaluate(4.0, rho);  // Huber with scale 1 at s = 4: 2 * 2 - 1.
+  EXPECT_DOUBLE_EQ(rho[0], 3.0);
+  for (const ceres::ResidualBlockId id : ids) {
+    EXPECT_EQ(problem.GetLossFunctionForResidualBlock(id), loss);
   }
+  // The library's default objective has the Cauchy loss.
+  ceres::Problem defaults;
+  const std::vector<ceres::ResidualBlockId> default_ids =
+      AddMlNdtResiduals(layer, points, ObjectiveOptions(), xi, &defaults);
+  ASSERT_NE(defaults.GetLossFunctionForResidualBlock(default_ids.front()),
+            nullptr);
+  defaults.GetLossFunctionForResidualBlock(default_ids.front())
+      ->Evaluate(9.0, rho);  // Cauchy, scale 3: 9 log(1 + 9 / 9).
+  EXPECT_DOUBLE_EQ(rho[0], 9.0 * std::log(2.0));
 }
 
 TEST(AddMlNdtResidualsQuaternion, SetsEigenQuaternionManifoldOnRotationBlock) {
@@ -174,8 +193,13 @@ TEST(AddMlNdtResidualsQuaternion, SetsEigenQuaternionManifoldOnRotationBlock) {
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
   Vector3d t = Vector3d::Zero();
   ceres::Problem problem;
-  const std::vector<ceres::ResidualBlockId> ids = AddMlNdtResidualsQuaternion(
-      layer, points, ResidualOptions(), q.coeffs().data(), t.data(), &problem);
+  const std::vector<ceres::ResidualBlockId> ids =
+      AddMlNdtResidualsQuaternion(layer,
+                                  points,
+                                  PaperObjectiveOptions(),
+                                  q.coeffs().data(),
+                                  t.data(),
+                                  &problem);
   ASSERT_EQ(ids.size(), points.size());
   EXPECT_EQ(problem.NumResiduals(), 3 * static_cast<int>(points.size()));
   EXPECT_EQ(problem.ParameterBlockSize(q.coeffs().data()), 4);
@@ -201,23 +225,39 @@ TEST(AddMlNdtResidualsQuaternion, KeepsTheCallersManifold) {
   ceres::Problem problem;  // Owns the manifold.
   ceres::Manifold* callers = new ceres::EigenQuaternionManifold;
   problem.AddParameterBlock(q.coeffs().data(), 4, callers);
-  AddMlNdtResidualsQuaternion(
-      layer, points, ResidualOptions(), q.coeffs().data(), t.data(), &problem);
+  AddMlNdtResidualsQuaternion(layer,
+                              points,
+                              PaperObjectiveOptions(),
+                              q.coeffs().data(),
+                              t.data(),
+                              &problem);
   EXPECT_EQ(problem.GetManifold(q.coeffs().data()), callers);
   // A second scan on the same pose blocks keeps it too.
-  AddMlNdtResidualsQuaternion(
-      layer, points, ResidualOptions(), q.coeffs().data(), t.data(), &problem);
+  AddMlNdtResidualsQuaternion(layer,
+                              points,
+                              PaperObjectiveOptions(),
+                              q.coeffs().data(),
+                              t.data(),
+                              &problem);
   EXPECT_EQ(problem.GetManifold(q.coeffs().data()), callers);
   EXPECT_EQ(problem.NumResidualBlocks(), 2 * static_cast<int>(points.size()));
 
   // And a manifold set by a first call is not replaced by a second one.
   ceres::Problem second;
-  AddMlNdtResidualsQuaternion(
-      layer, points, ResidualOptions(), q.coeffs().data(), t.data(), &second);
+  AddMlNdtResidualsQuaternion(layer,
+                              points,
+                              PaperObjectiveOptions(),
+                              q.coeffs().data(),
+                              t.data(),
+                              &second);
   const ceres::Manifold* first = second.GetManifold(q.coeffs().data());
   ASSERT_NE(first, nullptr);
-  AddMlNdtResidualsQuaternion(
-      layer, points, ResidualOptions(), q.coeffs().data(), t.data(), &second);
+  AddMlNdtResidualsQuaternion(layer,
+                              points,
+                              PaperObjectiveOptions(),
+                              q.coeffs().data(),
+                              t.data(),
+                              &second);
   EXPECT_EQ(second.GetManifold(q.coeffs().data()), first);
 }
 
@@ -232,20 +272,21 @@ TEST(AddMlNdtResiduals, ProblemCostIsHalfTheScore) {
          {LossType::NONE, LossType::HUBER, LossType::CAUCHY}) {
       SCOPED_TRACE(std::string(UnmatchedPolicyToString(policy)) + " " +
                    LossTypeToString(loss));
-      const ScoreEvaluation score =
-          EvaluateScore(layer, points, xi, policy, loss, 2.0);
+      const ScoreEvaluation score = EvaluateScore(
+          layer, points, xi, testing::Objective(policy, loss, 2.0));
       ASSERT_GT(score.matched, points.size() / 2);
       if (policy == UnmatchedPolicy::ZERO_RESIDUAL) {
         EXPECT_GT(score.unmatched,
                   0u);  // So that the policy makes a difference.
       }
-      ResidualOptions options;
+      ObjectiveOptions options = PaperObjectiveOptions();
       options.unmatched_policy = policy;
 
       // The 6-vector: cost and gradient.
       Vector6d xi_block = xi;
       ceres::Problem six;
-      options.loss_function = CreateLoss(loss, 2.0);
+      options.loss = loss;
+      options.loss_scale = 2.0;
       AddMlNdtResiduals(layer, points, options, xi_block.data(), &six);
       double cost = kNaN;
       std::vector<double> gradient;
@@ -264,7 +305,8 @@ TEST(AddMlNdtResiduals, ProblemCostIsHalfTheScore) {
       Eigen::Quaterniond q(EulerRotation(xi(3), xi(4), xi(5)));
       Vector3d t = xi.head<3>();
       ceres::Problem quaternion;
-      options.loss_function = CreateLoss(loss, 2.0);
+      options.loss = loss;
+      options.loss_scale = 2.0;
       AddMlNdtResidualsQuaternion(
           layer, points, options, q.coeffs().data(), t.data(), &quaternion);
       EXPECT_NEAR(
@@ -287,7 +329,7 @@ TEST(AddMlNdtResiduals, SolvingRecoversKnownTransform) {
        {UnmatchedPolicy::ZERO_RESIDUAL, UnmatchedPolicy::NEAREST_CELL}) {
     SCOPED_TRACE(UnmatchedPolicyToString(policy));
     Vector6d xi = Vector6d::Zero();
-    ResidualOptions options;
+    ObjectiveOptions options = PaperObjectiveOptions();
     options.unmatched_policy = policy;
     for (int layer = 3; layer <= 4; ++layer) {
       ceres::Problem problem;
@@ -314,13 +356,17 @@ TEST(AddMlNdtResiduals, BoundResidualsMoveBetweenLayersWithoutNewBlocks) {
   Vector6d xi = Vector6d::Zero();
   LayerBinding binding(grid.layer(3));
   ceres::Problem problem;
-  AddMlNdtResiduals(binding, points, ResidualOptions(), xi.data(), &problem);
+  AddMlNdtResiduals(
+      binding, points, PaperObjectiveOptions(), xi.data(), &problem);
   for (int layer = 3; layer <= 4; ++layer) {
     binding.Rebind(grid.layer(layer));
     Vector6d fresh_xi = xi;
     ceres::Problem fresh;
-    AddMlNdtResiduals(
-        grid.layer(layer), points, ResidualOptions(), fresh_xi.data(), &fresh);
+    AddMlNdtResiduals(grid.layer(layer),
+                      points,
+                      PaperObjectiveOptions(),
+                      fresh_xi.data(),
+                      &fresh);
     const double cost = ProblemCost(&problem);
     EXPECT_EQ(cost, ProblemCost(&fresh)) << "layer " << layer;
     ceres::Solver::Summary summary;
@@ -343,14 +389,18 @@ TEST(AddMlNdtResidualsQuaternion, BoundResidualsFollowRebind) {
   Vector3d t(0.1, -0.1, 0.05);
   LayerBinding binding(grid.layer(2));
   ceres::Problem bound;
-  AddMlNdtResidualsQuaternion(
-      binding, points, ResidualOptions(), q.coeffs().data(), t.data(), &bound);
+  AddMlNdtResidualsQuaternion(binding,
+                              points,
+                              PaperObjectiveOptions(),
+                              q.coeffs().data(),
+                              t.data(),
+                              &bound);
   for (int layer = 2; layer <= 4; ++layer) {
     binding.Rebind(grid.layer(layer));
     ceres::Problem fixed;
     AddMlNdtResidualsQuaternion(grid.layer(layer),
                                 points,
-                                ResidualOptions(),
+                                PaperObjectiveOptions(),
                                 q.coeffs().data(),
                                 t.data(),
                                 &fixed);
@@ -365,7 +415,7 @@ TEST(AddMlNdtResidualsQuaternion, SolvingRecoversKnownTransform) {
   const std::vector<Vector3d> points = InputScan(2);
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
   Vector3d t = Vector3d::Zero();
-  ResidualOptions options;
+  ObjectiveOptions options = PaperObjectiveOptions();
   options.unmatched_policy = UnmatchedPolicy::NEAREST_CELL;
   for (int layer = 3; layer <= 4; ++layer) {
     ceres::Problem problem;
@@ -399,13 +449,13 @@ TEST(AddMlNdtResiduals, CallersPriorSolvesJointly) {
   // optimum lies about half-way.
   const Vector3d t0 = truth.head<3>() + Vector3d(0.04, -0.03, 0.0);
   const Vector3d offset = t0 - truth.head<3>();
-  const Matrix6d h = EvaluateScore(layer,
-                                   points,
-                                   truth,
-                                   UnmatchedPolicy::ZERO_RESIDUAL,
-                                   LossType::NONE,
-                                   1.0)
-                         .hessian;
+  const Matrix6d h =
+      EvaluateScore(layer,
+                    points,
+                    truth,
+                    testing::Objective(
+                        UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0))
+          .hessian;
   const Matrix3d stiffness =
       0.5 * (h.topLeftCorner<3, 3>() -
              h.topRightCorner<3, 3>() * h.bottomRightCorner<3, 3>().inverse() *
@@ -415,7 +465,8 @@ TEST(AddMlNdtResiduals, CallersPriorSolvesJointly) {
 
   Vector6d xi = truth;
   ceres::Problem problem;
-  AddMlNdtResiduals(layer, points, ResidualOptions(), xi.data(), &problem);
+  AddMlNdtResiduals(
+      layer, points, PaperObjectiveOptions(), xi.data(), &problem);
   problem.AddResidualBlock(
       new ceres::AutoDiffCostFunction<TranslationPrior, 3, 6>(
           new TranslationPrior(t0, std::sqrt(weight))),
@@ -455,13 +506,13 @@ TEST(AddMlNdtResiduals, CallersPriorSolvesJointly) {
   EXPECT_LT(joint, at_prior);
   // At the truth the prior term alone is 0.5 * weight * |offset|^2.
   const double ndt_at_truth =
-      0.5 * EvaluateScore(layer,
-                          points,
-                          truth,
-                          UnmatchedPolicy::ZERO_RESIDUAL,
-                          LossType::NONE,
-                          1.0)
-                .score;
+      0.5 *
+      EvaluateScore(layer,
+                    points,
+                    truth,
+                    testing::Objective(
+                        UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0))
+          .score;
   EXPECT_NEAR(at_truth - ndt_at_truth,
               0.5 * weight * offset.squaredNorm(),
               1e-9 * at_truth);

@@ -292,7 +292,7 @@ TEST(AddMlNdtPairResiduals, AddsOneBlockPerPointAndSetsQuaternionManifolds) {
   const std::vector<ceres::ResidualBlockId> ids =
       AddMlNdtPairResiduals(hand.layer,
                             points,
-                            ResidualOptions(),
+                            PaperObjectiveOptions(),
                             pose_i.rotation.coeffs().data(),
                             pose_i.translation.data(),
                             pose_j.rotation.coeffs().data(),
@@ -322,7 +322,7 @@ TEST(AddMlNdtPairResiduals, KeepsTheCallersManifold) {
   auto* callers = problem.GetManifold(pose_i.rotation.coeffs().data());
   AddMlNdtPairResiduals(hand.layer,
                         {Vector3d(1.0, 0.0, 0.0)},
-                        ResidualOptions(),
+                        PaperObjectiveOptions(),
                         pose_i.rotation.coeffs().data(),
                         pose_i.translation.data(),
                         pose_j.rotation.coeffs().data(),
@@ -371,9 +371,7 @@ TEST(AddMlNdtPairResiduals, JointSolveRecoversTheRelativePose) {
   Pose pose1 = Pose::From(world_from_scan1 * push);
   for (int layer = map0.num_layers() - 1; layer <= map0.num_layers(); ++layer) {
     ceres::Problem problem;
-    ResidualOptions residual_options;
-    residual_options.unmatched_policy = UnmatchedPolicy::NEAREST_CELL;
-    residual_options.loss_function = new ceres::CauchyLoss(3.0);
+    const ObjectiveOptions residual_options;  // Nearest cell, Cauchy 3.
     AddMlNdtPairResiduals(map0.layer(layer),
                           samples.points(),
                           residual_options,

@@ -14,6 +14,7 @@
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
 #include "tests/testing/eigen_near.h"
+#include "tests/testing/objective.h"
 
 namespace mlndt {
 namespace {
@@ -97,7 +98,9 @@ double Score(const NdtLayer& layer,
              UnmatchedPolicy policy,
              LossType loss,
              double scale) {
-  return EvaluateScore(layer, points, xi, policy, loss, scale).score;
+  return EvaluateScore(
+             layer, points, xi, testing::Objective(policy, loss, scale))
+      .score;
 }
 
 struct LossCase {
@@ -117,8 +120,8 @@ TEST(EvaluateScore, GradientEqualsCentralFiniteDifferences) {
                               LossCase{LossType::CAUCHY, 0.7}}) {
       SCOPED_TRACE(std::string(UnmatchedPolicyToString(policy)) + " " +
                    LossTypeToString(c.loss));
-      const ScoreEvaluation evaluation =
-          EvaluateScore(layer, points, xi, policy, c.loss, c.scale);
+      const ScoreEvaluation evaluation = EvaluateScore(
+          layer, points, xi, testing::Objective(policy, c.loss, c.scale));
       Vector6d numeric = Vector6d::Constant(kNaN);
       for (int i = 0; i < 6; ++i) {
         Vector6d plus = xi, minus = xi;
@@ -158,8 +161,8 @@ TEST(EvaluateScore, ScoreAndHessianMatchAutoDiffCostFunction) {
       gradient += 2.0 * jacobian.transpose() * residual;
       hessian += 2.0 * jacobian.transpose() * jacobian;
     }
-    const ScoreEvaluation evaluation =
-        EvaluateScore(layer, points, xi, policy, LossType::NONE, 1.0);
+    const ScoreEvaluation evaluation = EvaluateScore(
+        layer, points, xi, testing::Objective(policy, LossType::NONE, 1.0));
     EXPECT_NEAR(evaluation.score, score, 1e-10 * score);
     EXPECT_TRUE(
         EigenNear(evaluation.gradient, gradient, 1e-9 * gradient.norm()));
@@ -196,7 +199,10 @@ TEST(EvaluateScore, RobustHessianIsWeightedByLossDerivative) {
   }
   ASSERT_GE(down_weighted, 2);  // The loss is active on some points.
   const ScoreEvaluation evaluation = EvaluateScore(
-      layer, points, xi, UnmatchedPolicy::ZERO_RESIDUAL, LossType::HUBER, 1.0);
+      layer,
+      points,
+      xi,
+      testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL, LossType::HUBER, 1.0));
   EXPECT_NEAR(evaluation.score, score, 1e-10 * score);
   EXPECT_TRUE(EigenNear(evaluation.hessian, hessian, 1e-9 * hessian.norm()));
 }
@@ -205,13 +211,13 @@ TEST(EvaluateScore, FullHessianEqualsFiniteDifferencesOfGradient) {
   const NdtLayer layer = MakeLayer();
   const std::vector<Vector3d> points = InputPointsFor(WellInsideTargets());
   const Vector6d xi = TestPose();
-  ScoreOptions options;
-  options.hessian = HessianType::FULL;
   constexpr double kStep = 1e-6;
   for (const LossType loss : {LossType::NONE, LossType::HUBER}) {
     SCOPED_TRACE(LossTypeToString(loss));
-    options.loss = loss;
-    const ScoreEvaluation full = EvaluateScore(layer, points, xi, options);
+    const ObjectiveOptions options =
+        testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL, loss);
+    const ScoreEvaluation full =
+        EvaluateScore(layer, points, xi, options, HessianType::FULL);
     Matrix6d numeric = Matrix6d::Constant(kNaN);
     for (int i = 0; i < 6; ++i) {
       Vector6d plus = xi, minus = xi;
@@ -226,10 +232,8 @@ TEST(EvaluateScore, FullHessianEqualsFiniteDifferencesOfGradient) {
       EXPECT_TRUE(EigenNear(full.hessian, numeric, 1e-6 * numeric.norm()));
     }
     // The second-order term is what FULL adds to GAUSS_NEWTON.
-    options.hessian = HessianType::GAUSS_NEWTON;
     const ScoreEvaluation gauss_newton =
-        EvaluateScore(layer, points, xi, options);
-    options.hessian = HessianType::FULL;
+        EvaluateScore(layer, points, xi, options, HessianType::GAUSS_NEWTON);
     EXPECT_GT((full.hessian - gauss_newton.hessian).norm(),
               1e-3 * full.hessian.norm());
     EXPECT_TRUE(EigenNear(full.hessian.topLeftCorner<3, 3>(),
@@ -243,17 +247,15 @@ TEST(EvaluateScore, FullHessianEqualsFiniteDifferencesOfGradient) {
 TEST(EvaluateScore, HessianNoneSkipsDerivatives) {
   const NdtLayer layer = MakeLayer();
   const std::vector<Vector3d> points = InputPointsFor(WellInsideTargets());
-  ScoreOptions options;
-  options.hessian = HessianType::NONE;
+  const ObjectiveOptions options =
+      testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL);
   const ScoreEvaluation none =
-      EvaluateScore(layer, points, TestPose(), options);
-  const ScoreEvaluation gauss_newton =
-      EvaluateScore(layer,
-                    points,
-                    TestPose(),
-                    UnmatchedPolicy::ZERO_RESIDUAL,
-                    LossType::NONE,
-                    1.0);
+      EvaluateScore(layer, points, TestPose(), options, HessianType::NONE);
+  const ScoreEvaluation gauss_newton = EvaluateScore(
+      layer,
+      points,
+      TestPose(),
+      testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0));
   EXPECT_EQ(none.score, gauss_newton.score);
   EXPECT_EQ(none.matched, gauss_newton.matched);
   EXPECT_EQ(none.unmatched, gauss_newton.unmatched);
@@ -269,15 +271,14 @@ TEST(EvaluateScore, ThreadCountDoesNotChangeTheResult) {
   }
   targets.push_back(Vector3d(-50.0, 3.0, 1.0));
   const std::vector<Vector3d> points = InputPointsFor(targets);
-  ScoreOptions options;
-  options.unmatched_policy = UnmatchedPolicy::NEAREST_CELL;
-  options.hessian = HessianType::FULL;
-  const ScoreEvaluation one = EvaluateScore(layer, points, TestPose(), options);
-  options.num_threads = 3;
+  const ObjectiveOptions options =
+      testing::Objective(UnmatchedPolicy::NEAREST_CELL);
+  const ScoreEvaluation one =
+      EvaluateScore(layer, points, TestPose(), options, HessianType::FULL, 1);
   const ScoreEvaluation three =
-      EvaluateScore(layer, points, TestPose(), options);
+      EvaluateScore(layer, points, TestPose(), options, HessianType::FULL, 3);
   const ScoreEvaluation again =
-      EvaluateScore(layer, points, TestPose(), options);
+      EvaluateScore(layer, points, TestPose(), options, HessianType::FULL, 3);
   EXPECT_EQ(three.matched, one.matched);
   EXPECT_EQ(three.unmatched, one.unmatched);
   EXPECT_EQ(three.matched + three.unmatched, points.size());
@@ -290,9 +291,9 @@ TEST(EvaluateScore, ThreadCountDoesNotChangeTheResult) {
   EXPECT_EQ(again.score, three.score);
   EXPECT_TRUE(EigenNear(again.hessian, three.hessian, 0.0));
   // More threads than points.
-  options.num_threads = 8;
   const std::vector<Vector3d> two(points.begin(), points.begin() + 2);
-  const ScoreEvaluation few = EvaluateScore(layer, two, TestPose(), options);
+  const ScoreEvaluation few =
+      EvaluateScore(layer, two, TestPose(), options, HessianType::FULL, 8);
   EXPECT_EQ(few.matched + few.unmatched, 2u);
 }
 
@@ -307,13 +308,19 @@ TEST(EvaluateScore, CountsMatchedAndUnmatchedPoints) {
   const Vector6d xi = TestPose();
 
   const ScoreEvaluation zero = EvaluateScore(
-      layer, points, xi, UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0);
+      layer,
+      points,
+      xi,
+      testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0));
   EXPECT_EQ(zero.matched, 5u);
   EXPECT_EQ(zero.unmatched, 4u);
   EXPECT_EQ(zero.matched + zero.unmatched, points.size());
 
   const ScoreEvaluation nearest = EvaluateScore(
-      layer, points, xi, UnmatchedPolicy::NEAREST_CELL, LossType::NONE, 1.0);
+      layer,
+      points,
+      xi,
+      testing::Objective(UnmatchedPolicy::NEAREST_CELL, LossType::NONE, 1.0));
   EXPECT_EQ(nearest.matched, 7u);
   EXPECT_EQ(nearest.unmatched, 2u);
   EXPECT_EQ(nearest.matched + nearest.unmatched, points.size());
@@ -322,18 +329,20 @@ TEST(EvaluateScore, CountsMatchedAndUnmatchedPoints) {
   // Unmatched points contribute nothing: the score over the 5 matched points
   // alone is the same.
   const std::vector<Vector3d> matched_only(points.begin(), points.begin() + 5);
-  const ScoreEvaluation five = EvaluateScore(layer,
-                                             matched_only,
-                                             xi,
-                                             UnmatchedPolicy::ZERO_RESIDUAL,
-                                             LossType::NONE,
-                                             1.0);
+  const ScoreEvaluation five = EvaluateScore(
+      layer,
+      matched_only,
+      xi,
+      testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0));
   EXPECT_NEAR(five.score, zero.score, 1e-12 * zero.score);
   EXPECT_TRUE(
       EigenNear(five.gradient, zero.gradient, 1e-12 * zero.gradient.norm()));
 
   const ScoreEvaluation empty = EvaluateScore(
-      layer, {}, xi, UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0);
+      layer,
+      {},
+      xi,
+      testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL, LossType::NONE, 1.0));
   EXPECT_EQ(empty.matched + empty.unmatched, 0u);
   EXPECT_EQ(empty.score, 0.0);
   EXPECT_TRUE(EigenNear(empty.hessian, Matrix6d::Zero(), 0.0));

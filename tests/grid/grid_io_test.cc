@@ -17,7 +17,7 @@ LayeredGrid MakeGrid() {
     cloud.Add(Eigen::Vector3d(n(rng), n(rng), 0.3 * n(rng)));
   LayeredGrid grid;
   std::string error;
-  CHECK(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+  CHECK(LayeredGrid::Build(PaperLayeredGridOptions(), cloud, &grid, &error))
       << error;
   return grid;
 }

@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cstring>
+#include <limits>
 #include <random>
 
 #include "mlndt/cloud/io.h"
@@ -36,7 +37,8 @@ TEST(LayeredGrid, PaperWorkedExampleLayerTwo) {
       Eigen::Vector3d(-50, -50, 0), Eigen::Vector3d(50, 50, 20), 20000, 1);
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+  ASSERT_TRUE(
+      LayeredGrid::Build(PaperLayeredGridOptions(), cloud, &grid, &error))
       << error;
   ASSERT_EQ(grid.num_layers(), 4);
   EXPECT_NEAR(grid.layer(2).cell_size(), 14.62, 0.005);
@@ -47,7 +49,7 @@ TEST(LayeredGrid, PaperWorkedExampleLayerTwo) {
 
 TEST(LayeredGrid, CellSizesHalveForQEight) {
   const std::vector<double> sizes =
-      LayerCellSizes(LayeredGridOptions(), Eigen::Vector3d(100, 100, 20));
+      LayerCellSizes(PaperLayeredGridOptions(), Eigen::Vector3d(100, 100, 20));
   ASSERT_EQ(sizes.size(), 4u);
   for (size_t i = 1; i < sizes.size(); ++i)
     EXPECT_NEAR(sizes[i - 1] / sizes[i], 2.0, 1e-12);
@@ -69,7 +71,8 @@ TEST(LayeredGrid, MomentsMatchDirectComputation) {
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(40, 30, 10), 30000, 2);
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+  ASSERT_TRUE(
+      LayeredGrid::Build(PaperLayeredGridOptions(), cloud, &grid, &error))
       << error;
   for (int layer = 1; layer <= grid.num_layers(); ++layer) {
     const NdtLayer& l = grid.layer(layer);
@@ -99,7 +102,7 @@ TEST(LayeredGrid, MomentsMatchDirectComputation) {
 TEST(LayeredGrid, NonCubicDivisionConstantBinsEveryLayer) {
   const PointCloud cloud =
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(40, 40, 10), 20000, 3);
-  LayeredGridOptions options;
+  LayeredGridOptions options = PaperLayeredGridOptions();
   options.division_constant = 10;
   options.num_layers = 3;
   LayeredGrid grid;
@@ -121,7 +124,8 @@ TEST(LayeredGrid, LookupIsConsistentWithCellBounds) {
       Eigen::Vector3d(-10, -10, -2), Eigen::Vector3d(10, 10, 2), 20000, 4);
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
+  ASSERT_TRUE(
+      LayeredGrid::Build(PaperLayeredGridOptions(), cloud, &grid, &error))
       << error;
   const NdtLayer& layer = grid.layer(3);
   for (const auto& p : cloud.points()) {
@@ -142,10 +146,11 @@ TEST(LayeredGrid, FarFromOriginMatchesCentred) {
   for (const auto& p : cloud.points()) moved.push_back(p + offset);
   LayeredGrid near, far;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &near, &error))
-      << error;
   ASSERT_TRUE(
-      LayeredGrid::Build(LayeredGridOptions(), PointCloud(moved), &far, &error))
+      LayeredGrid::Build(PaperLayeredGridOptions(), cloud, &near, &error))
+      << error;
+  ASSERT_TRUE(LayeredGrid::Build(
+      PaperLayeredGridOptions(), PointCloud(moved), &far, &error))
       << error;
   for (int i = 1; i <= near.num_layers(); ++i) {
     ASSERT_EQ(near.layer(i).cells().size(), far.layer(i).cells().size());
@@ -163,7 +168,7 @@ TEST(LayeredGrid, FarFromOriginMatchesCentred) {
 TEST(LayeredGrid, MinPointsPerCellIsRespected) {
   const PointCloud cloud =
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(50, 50, 10), 3000, 6);
-  LayeredGridOptions options;
+  LayeredGridOptions options = PaperLayeredGridOptions();
   options.min_points_per_cell = 20;
   LayeredGrid grid;
   std::string error;
@@ -177,17 +182,18 @@ TEST(LayeredGrid, MinPointsPerCellIsRespected) {
 TEST(LayeredGrid, RejectsBadInput) {
   LayeredGrid grid;
   std::string error;
-  EXPECT_FALSE(
-      LayeredGrid::Build(LayeredGridOptions(), PointCloud(), &grid, &error));
+  EXPECT_FALSE(LayeredGrid::Build(
+      PaperLayeredGridOptions(), PointCloud(), &grid, &error));
   EXPECT_NE(error.find("empty"), std::string::npos);
   PointCloud with_nan =
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1), 100, 7);
   with_nan.Add(Eigen::Vector3d(std::nan(""), 0, 0));
   EXPECT_FALSE(
-      LayeredGrid::Build(LayeredGridOptions(), with_nan, &grid, &error));
+      LayeredGrid::Build(PaperLayeredGridOptions(), with_nan, &grid, &error));
   EXPECT_NE(error.find("non-finite"), std::string::npos);
   PointCloud same(std::vector<Eigen::Vector3d>(10, Eigen::Vector3d(1, 2, 3)));
-  EXPECT_FALSE(LayeredGrid::Build(LayeredGridOptions(), same, &grid, &error));
+  EXPECT_FALSE(
+      LayeredGrid::Build(PaperLayeredGridOptions(), same, &grid, &error));
   EXPECT_NE(error.find("coincide"), std::string::npos);
   EXPECT_TRUE(grid.empty());  // No partial state.
 }
@@ -197,18 +203,59 @@ TEST(LayeredGrid, InvalidOptionsNameTheField) {
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 9), 500, 8);
   LayeredGrid grid;
   std::string error;
-  LayeredGridOptions options;
+  LayeredGridOptions options = PaperLayeredGridOptions();
   options.division_constant = 1;
   EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
   EXPECT_NE(error.find("division_constant"), std::string::npos);
-  options = LayeredGridOptions();
+  options = PaperLayeredGridOptions();
   options.regularization.min_eigenvalue_ratio = std::nan("");
   EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
   EXPECT_NE(error.find("min_eigenvalue_ratio"), std::string::npos);
-  options = LayeredGridOptions();
-  options.finest_cell_size_m = 1e-4;
+  options = PaperLayeredGridOptions();
+  options.finest_cell_size_m = 2e-3;  // 13 layers over a 9 m box.
   EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
   EXPECT_NE(error.find("max_num_layers"), std::string::npos);
+  // Absurd cell sizes are refused by name before any arithmetic with them.
+  for (double size : {1e-300,
+                      1e-4,
+                      1e6,
+                      std::numeric_limits<double>::infinity(),
+                      -1.0,
+                      std::nan("")}) {
+    SCOPED_TRACE(size);
+    options = LayeredGridOptions();
+    options.finest_cell_size_m = size;
+    EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
+    EXPECT_NE(error.find("finest_cell_size_m"), std::string::npos) << error;
+    options = LayeredGridOptions();
+    options.cell_size_m = size;
+    EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
+    EXPECT_NE(error.find("cell_size_m"), std::string::npos) << error;
+  }
+  options = LayeredGridOptions();
+  options.regularization.min_eigenvalue_m2 =
+      std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
+  EXPECT_NE(error.find("min_eigenvalue_m2"), std::string::npos) << error;
+}
+
+TEST(LayeredGrid, ExplicitCellSizeGivesOneLayerOfThatCell) {
+  const PointCloud cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 3), 4000, 12);
+  LayeredGridOptions options;
+  options.cell_size_m = 1.5;
+  LayeredGrid grid;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(options, cloud, &grid, &error)) << error;
+  ASSERT_EQ(grid.num_layers(), 1);
+  EXPECT_EQ(grid.layer(1).cell_size(), 1.5);
+  // floor(extent / k) + 1 cells per axis over the cloud's box.
+  const Eigen::Vector3d extent = grid.bounds().sizes();
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(grid.layer(1).dims()(a),
+              static_cast<int>(std::floor(extent(a) / 1.5)) + 1);
+  }
+  EXPECT_EQ(LayerCellSizes(options, extent), std::vector<double>{1.5});
 }
 
 TEST(LayeredGrid, FlatCloudStillBuilds) {
@@ -219,7 +266,8 @@ TEST(LayeredGrid, FlatCloudStillBuilds) {
     plane.Add(Eigen::Vector3d(u(rng), u(rng), 0.0));
   LayeredGrid grid;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), plane, &grid, &error))
+  ASSERT_TRUE(
+      LayeredGrid::Build(PaperLayeredGridOptions(), plane, &grid, &error))
       << error;
   ASSERT_FALSE(grid.layer(2).cells().empty());
   // A planar cell is regularised: smallest eigenvalue = largest / 100.
@@ -286,10 +334,10 @@ TEST(LayeredGrid, ThreadsBuildTheSameMapOnKitti) {
   // The registration default (2 m, nested layers aggregated from the finest),
   // a finer map, and q = 10 (every layer binned from the points).
   LayeredGridOptions registration;
-  registration.finest_cell_size_m = 2.0;
+  ASSERT_EQ(registration.finest_cell_size_m, 2.0);
   LayeredGridOptions fine = registration;
   fine.finest_cell_size_m = 0.5;
-  LayeredGridOptions non_nested;
+  LayeredGridOptions non_nested = PaperLayeredGridOptions();
   non_nested.division_constant = 10;
   non_nested.num_layers = 4;
   for (const LayeredGridOptions& options : {registration, fine, non_nested}) {
@@ -299,14 +347,11 @@ TEST(LayeredGrid, ThreadsBuildTheSameMapOnKitti) {
     LayeredGrid serial;
     std::string error;
     ASSERT_TRUE(LayeredGrid::Build(options, scan, &serial, &error)) << error;
-    ASSERT_EQ(serial.options().num_threads, 1);
     ASSERT_GT(serial.layer_info().back().occupied_cells, 500u);
     for (int threads : {2, 3}) {
       SCOPED_TRACE("threads " + std::to_string(threads));
-      LayeredGridOptions parallel_options = options;
-      parallel_options.num_threads = threads;
       LayeredGrid parallel;
-      ASSERT_TRUE(LayeredGrid::Build(parallel_options, scan, &parallel, &error))
+      ASSERT_TRUE(LayeredGrid::Build(options, scan, threads, &parallel, &error))
           << error;
       ExpectIdenticalMaps(serial, parallel);
     }
@@ -317,29 +362,28 @@ TEST(LayeredGrid, MoreThreadsThanCellsBuildTheSameMap) {
   // A few cells per layer: most threads get no cells to sum.
   const PointCloud cloud =
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(4, 4, 1), 300, 10);
-  LayeredGridOptions options;
+  LayeredGridOptions options = PaperLayeredGridOptions();
   options.num_layers = 2;
   LayeredGrid serial, parallel;
   std::string error;
   ASSERT_TRUE(LayeredGrid::Build(options, cloud, &serial, &error)) << error;
-  options.num_threads = 8;
-  ASSERT_TRUE(LayeredGrid::Build(options, cloud, &parallel, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(options, cloud, 8, &parallel, &error))
+      << error;
   ExpectIdenticalMaps(serial, parallel);
 }
 
-TEST(LayeredGrid, ZeroThreadsIsInvalid) {
-  LayeredGridOptions options;
-  std::string error;
-  EXPECT_TRUE(options.IsValid(&error)) << error;
-  options.num_threads = 0;
-  EXPECT_FALSE(options.IsValid(&error));
-  EXPECT_NE(error.find("num_threads"), std::string::npos) << error;
+TEST(LayeredGrid, ThreadCountsOutsideOneTo256AreRefused) {
   const PointCloud cloud =
       BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(9, 9, 9), 500, 11);
-  LayeredGrid grid;
-  EXPECT_FALSE(LayeredGrid::Build(options, cloud, &grid, &error));
-  EXPECT_NE(error.find("num_threads"), std::string::npos) << error;
-  EXPECT_TRUE(grid.empty());
+  for (int threads : {0, -1, 257, 100000}) {
+    SCOPED_TRACE(threads);
+    LayeredGrid grid;
+    std::string error;
+    EXPECT_FALSE(LayeredGrid::Build(
+        LayeredGridOptions(), cloud, threads, &grid, &error));
+    EXPECT_NE(error.find("num_threads"), std::string::npos) << error;
+    EXPECT_TRUE(grid.empty());
+  }
 }
 
 TEST(LayeredGrid, MemoryBytesCoversTheCellsAndGrowsWithThem) {

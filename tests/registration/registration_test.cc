@@ -138,7 +138,7 @@ TEST(Registration, InvalidOptionsGiveFailureNotAbort) {
       << summary.message;
 
   options = RegistrationOptions();
-  options.loss_scale = -1.0;
+  options.objective.loss_scale = -1.0;
   Register(options, cloud, cloud, Isometry3d::Identity(), &summary);
   EXPECT_EQ(summary.termination_type, TerminationType::FAILURE);
   EXPECT_NE(summary.message.find("loss_scale"), std::string::npos)
@@ -217,7 +217,7 @@ TEST_P(RegistrationBackends, AllBackendsReachTheSameFinalScore) {
   const Isometry3d truth =
       PoseVectorToIsometry(PoseVectorFromDegrees(2.5, -1, 0.1, 0, 1, 12));
   RegistrationOptions options;
-  options.loss = std::get<0>(GetParam());
+  options.objective.loss = std::get<0>(GetParam());
   options.schedule.start_layer = std::get<1>(GetParam());
   const Isometry3d initial =
       options.schedule.start_layer == 0
@@ -231,7 +231,7 @@ TEST_P(RegistrationBackends, AllBackendsReachTheSameFinalScore) {
   for (BackendType backend : {BackendType::CERES,
                               BackendType::NEWTON,
                               BackendType::LEVENBERG_MARQUARDT}) {
-    options.backend = backend;
+    options.backend.type = backend;
     results.push_back(RegisterStreet(truth, initial, options));
     ASSERT_TRUE(results.back().IsSolutionUsable())
         << BackendTypeToString(backend) << ": " << results.back().message;

@@ -1,10 +1,10 @@
 // The Ceres backend keeps one cost function per input point across stages
 // (ceres_backend.h). These tests check that the reuse is invisible: a stage
 // with a point stride gives what a fresh backend gives on the thinned points,
-// and a backend handed other points or another policy gives what a fresh one
-// gives. A backend that ignored the stride, mis-indexed its pool or kept a
-// stale pool would converge to a nearby but different pose, which the exact
-// comparisons catch.
+// and a backend handed other points or another policy (SetProblem again)
+// gives what a fresh one gives. A backend that ignored the stride, mis-indexed
+// its pool or kept a stale pool would converge to a nearby but different pose,
+// which the exact comparisons catch.
 
 #include "mlndt/solvers/ceres_backend.h"
 
@@ -42,8 +42,7 @@ const Koide3& Koide3Pair() {
                          nullptr,
                          &error))
         << error;
-    CHECK(LayeredGrid::Build(
-        DefaultRegistrationGridOptions(), reference, &p->map, &error))
+    CHECK(LayeredGrid::Build(LayeredGridOptions(), reference, &p->map, &error))
         << error;
     CHECK(SamplePoints(SamplingOptions(), input, &sampled, nullptr, &error))
         << error;
@@ -53,29 +52,33 @@ const Koide3& Koide3Pair() {
   return *pair;
 }
 
-StageOptions Stage(int layer, int stride, UnmatchedPolicy policy) {
-  StageOptions stage;
-  stage.layer = layer;
-  stage.max_iterations = 6;
-  stage.point_stride = stride;
-  stage.unmatched_policy = policy;
-  stage.loss = LossType::CAUCHY;
-  stage.loss_scale = 3.0;
-  return stage;
+StageControl Stage(int stride) {
+  StageControl control;
+  control.max_iterations = 6;
+  control.point_stride = stride;
+  return control;
 }
 
-// Runs one stage from the identity with `backend`; returns the pose.
+ObjectiveOptions Objective(UnmatchedPolicy policy) {
+  ObjectiveOptions objective;  // Cauchy, scale 3.
+  objective.unmatched_policy = policy;
+  return objective;
+}
+
+// Hands `points` to `backend` and runs one stage from the identity; returns
+// the pose.
 Vector6d Solve(CeresBackend* backend,
                int layer,
                const std::vector<Eigen::Vector3d>& points,
-               const StageOptions& stage) {
+               UnmatchedPolicy policy,
+               const StageControl& control) {
+  backend->SetProblem(points, Objective(policy), 1);
   Vector6d xi = Vector6d::Zero();
   StageSummary summary;
-  backend->SolveStage(
-      Koide3Pair().map.layer(layer), points, stage, &xi, &summary);
+  backend->SolveStage(Koide3Pair().map.layer(layer), control, &xi, &summary);
   EXPECT_NE(summary.termination_type, TerminationType::FAILURE)
       << summary.message;
-  EXPECT_GT(summary.iterations, 0);
+  EXPECT_GT(summary.iterations(), 0);
   return xi;
 }
 
@@ -93,13 +96,10 @@ TEST(CeresBackend, PointStrideMatchesPreThinnedPoints) {
     SCOPED_TRACE(stride);
     CeresBackend strided{CeresBackendOptions()};
     CeresBackend fresh{CeresBackendOptions()};
-    const Vector6d a =
-        Solve(&strided, 3, pair.samples, Stage(3, stride, policy));
-    const Vector6d b =
-        Solve(&fresh,
-              3,
-              EveryNth(pair.samples, static_cast<size_t>(stride)),
-              Stage(3, 1, policy));
+    const Vector6d a = Solve(&strided, 3, pair.samples, policy, Stage(stride));
+    const std::vector<Eigen::Vector3d> thinned =
+        EveryNth(pair.samples, static_cast<size_t>(stride));
+    const Vector6d b = Solve(&fresh, 3, thinned, policy, Stage(1));
     EXPECT_GT(a.head<3>().norm(), 0.05);  // The stage moved the pose.
     EXPECT_EQ(a, b);
   }
@@ -109,62 +109,60 @@ TEST(CeresBackend, ReusedAcrossLayersLikeFreshBackends) {
   const Koide3& pair = Koide3Pair();
   const UnmatchedPolicy policy = UnmatchedPolicy::NEAREST_CELL;
   CeresBackend reused{CeresBackendOptions()};
+  reused.SetProblem(pair.samples, Objective(policy), 1);
   for (const int layer : {2, 4, 5}) {
     SCOPED_TRACE(layer);
+    Vector6d xi = Vector6d::Zero();
+    StageSummary summary;
+    reused.SolveStage(pair.map.layer(layer), Stage(1), &xi, &summary);
     CeresBackend fresh{CeresBackendOptions()};
-    EXPECT_EQ(Solve(&reused, layer, pair.samples, Stage(layer, 1, policy)),
-              Solve(&fresh, layer, pair.samples, Stage(layer, 1, policy)));
+    EXPECT_EQ(xi, Solve(&fresh, layer, pair.samples, policy, Stage(1)));
   }
 }
 
-TEST(CeresBackend, OtherPointsOrPolicyGiveWhatAFreshBackendGives) {
+TEST(CeresBackend, SetProblemAgainGivesWhatAFreshBackendGives) {
   const Koide3& pair = Koide3Pair();
   const std::vector<Eigen::Vector3d> first_half(
       pair.samples.begin(), pair.samples.begin() + pair.samples.size() / 2);
   const std::vector<Eigen::Vector3d> second_half(
       pair.samples.begin() + pair.samples.size() / 2, pair.samples.end());
+  const UnmatchedPolicy nearest = UnmatchedPolicy::NEAREST_CELL;
+  const UnmatchedPolicy zero = UnmatchedPolicy::ZERO_RESIDUAL;
   CeresBackend reused{CeresBackendOptions()};
-  Solve(&reused, 4, first_half, Stage(4, 1, UnmatchedPolicy::NEAREST_CELL));
+  Solve(&reused, 4, first_half, nearest, Stage(1));
   {
     CeresBackend fresh{CeresBackendOptions()};
-    EXPECT_EQ(Solve(&reused,
-                    4,
-                    second_half,
-                    Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)),
-              Solve(&fresh,
-                    4,
-                    second_half,
-                    Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)));
+    EXPECT_EQ(Solve(&reused, 4, second_half, nearest, Stage(1)),
+              Solve(&fresh, 4, second_half, nearest, Stage(1)));
   }
   {
     CeresBackend fresh{CeresBackendOptions()};
-    const Vector6d zero = Solve(
-        &fresh, 4, second_half, Stage(4, 1, UnmatchedPolicy::ZERO_RESIDUAL));
-    EXPECT_EQ(Solve(&reused,
-                    4,
-                    second_half,
-                    Stage(4, 1, UnmatchedPolicy::ZERO_RESIDUAL)),
-              zero);
+    const Vector6d with_zero = Solve(&fresh, 4, second_half, zero, Stage(1));
+    EXPECT_EQ(Solve(&reused, 4, second_half, zero, Stage(1)), with_zero);
     // The policy matters on this layer, so a stale pool would show.
-    CeresBackend nearest{CeresBackendOptions()};
-    EXPECT_NE(Solve(&nearest,
-                    4,
-                    second_half,
-                    Stage(4, 1, UnmatchedPolicy::NEAREST_CELL)),
-              zero);
+    CeresBackend other{CeresBackendOptions()};
+    EXPECT_NE(Solve(&other, 4, second_half, nearest, Stage(1)), with_zero);
   }
+}
+
+TEST(CeresBackendDeathTest, StageBeforeSetProblemIsAProgrammingError) {
+  CeresBackend backend{CeresBackendOptions()};
+  Vector6d xi = Vector6d::Zero();
+  StageSummary summary;
+  EXPECT_DEATH(
+      backend.SolveStage(Koide3Pair().map.layer(1), Stage(1), &xi, &summary),
+      "SetProblem");
 }
 
 TEST(CeresBackendDeathTest, ZeroStrideIsAProgrammingError) {
   CeresBackend backend{CeresBackendOptions()};
+  backend.SetProblem(
+      Koide3Pair().samples, Objective(UnmatchedPolicy::NEAREST_CELL), 1);
   Vector6d xi = Vector6d::Zero();
   StageSummary summary;
-  EXPECT_DEATH(backend.SolveStage(Koide3Pair().map.layer(1),
-                                  Koide3Pair().samples,
-                                  Stage(1, 0, UnmatchedPolicy::NEAREST_CELL),
-                                  &xi,
-                                  &summary),
-               "point_stride");
+  EXPECT_DEATH(
+      backend.SolveStage(Koide3Pair().map.layer(1), Stage(0), &xi, &summary),
+      "point_stride");
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "mlndt/common/pose.h"
-#include "mlndt/registration/registration.h"
+#include "mlndt/pipeline/matcher.h"
 #include "tools/common/scan_store.h"
 
 namespace mlndt {
@@ -107,13 +107,11 @@ struct PairTimes {
   double solve_ms = 0.0;
 };
 
-// Registers scan `input` onto scan `reference`. ML-NDT runs on the store's
-// map of the reference (built once, reused afterwards); conventional NDT
-// builds its own single grid from the reference cloud every time (the
-// library has no prebuilt-grid entry point for it) and that build is the
-// map time. False with *error only when a scan cannot be read or its map
-// cannot be built; a registration FAILURE is reported in *summary.
-inline bool RegisterPair(const RegistrationOptions& options,
+// Registers scan `input` onto scan `reference` with the chosen method, on
+// the store's map of the reference (built once, reused afterwards). False
+// with *error only when a scan cannot be read or its map cannot be built; a
+// registration FAILURE is reported in *summary.
+inline bool RegisterPair(const MatcherOptions& options,
                          ScanStore* store,
                          size_t reference,
                          size_t input,
@@ -125,26 +123,21 @@ inline bool RegisterPair(const RegistrationOptions& options,
   *times = PairTimes();
   const PointCloud* input_cloud = store->Cloud(input, error);
   if (input_cloud == nullptr) return false;
-  if (options.method == Method::NDT) {
-    const PointCloud* reference_cloud = store->Cloud(reference, error);
-    if (reference_cloud == nullptr) return false;
-    Register(options,
-             *reference_cloud,
-             *input_cloud,
-             initial_reference_from_input,
-             summary);
-    times->map_ms = summary->map_time_s * 1e3;
-    times->total_ms = summary->total_time_s * 1e3;
-  } else {
-    double build_time_s = 0.0;
-    const LayeredGrid* map =
-        store->Map(reference, options.grid, &build_time_s, error);
-    if (map == nullptr) return false;
-    Register(
-        options, *map, *input_cloud, initial_reference_from_input, summary);
-    times->map_ms = build_time_s * 1e3;
-    times->total_ms = (build_time_s + summary->total_time_s) * 1e3;
+  const PointCloud* reference_cloud = store->Cloud(reference, error);
+  if (reference_cloud == nullptr) return false;
+  LayeredGridOptions grid_options;
+  if (!MatcherGridOptions(options, *reference_cloud, &grid_options, error)) {
+    *error = store->path(reference) + ": map: " + *error;
+    return false;
   }
+  double build_time_s = 0.0;
+  const LayeredGrid* map =
+      store->Map(reference, grid_options, &build_time_s, error);
+  if (map == nullptr) return false;
+  RegisterWithMatcher(
+      options, *map, *input_cloud, initial_reference_from_input, summary);
+  times->map_ms = build_time_s * 1e3;
+  times->total_ms = (build_time_s + summary->total_time_s) * 1e3;
   times->sampling_ms = summary->sampling_time_s * 1e3;
   times->solve_ms = summary->solve_time_s * 1e3;
   return true;

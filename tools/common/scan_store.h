@@ -94,10 +94,11 @@ inline std::string GridOptionsKey(const LayeredGridOptions& o) {
   char key[256];
   std::snprintf(key,
                 sizeof(key),
-                "q%d n%d f%.17g m%d p%d r%.17g e%.17g",
+                "q%d n%d f%.17g c%.17g m%d p%d r%.17g e%.17g",
                 o.division_constant,
                 o.num_layers,
                 o.finest_cell_size_m,
+                o.cell_size_m,
                 o.max_num_layers,
                 o.min_points_per_cell,
                 o.regularization.min_eigenvalue_ratio,

@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "mlndt/common/pose.h"
-#include "mlndt/registration/registration.h"
+#include "mlndt/pipeline/matcher.h"
 #include "tools/common/pair_evaluation.h"
 #include "tools/common/scan_store.h"
 #include "tools/common/tool_utils.h"
@@ -113,7 +113,7 @@ struct AdaptiveStartLayerOptions {
 };
 
 struct SequenceOptions {
-  RegistrationOptions registration;
+  MatcherOptions registration;
   size_t step = 1;  // Scan i + step is registered onto scan i. >= 1.
   InitSpec init;
   AdaptiveStartLayerOptions adaptive;
@@ -207,7 +207,7 @@ inline bool RunSequence(
         break;
     }
 
-    RegistrationOptions registration = options.registration;
+    MatcherOptions registration = options.registration;
     if (options.adaptive.enabled) {
       r.running_fail_rate =
           results->empty() ? 0.0 : double(failed_so_far) / results->size();
@@ -215,7 +215,7 @@ inline bool RunSequence(
       for (double threshold : options.adaptive.fail_rate_thresholds) {
         if (r.running_fail_rate > threshold) ++coarser;
       }
-      registration.schedule.start_layer = -coarser;
+      registration.mlndt.schedule.start_layer = -coarser;
     }
     RegistrationSummary summary;
     if (!RegisterPair(

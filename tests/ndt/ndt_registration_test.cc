@@ -1,6 +1,8 @@
-// The conventional single-grid NDT baseline (RegistrationOptions::method =
-// NDT): summary, failures, convergence on the synthetic street scene and the
-// bundled KITTI pairs, and the paper's long-range claim against ML-NDT.
+// The conventional single-grid NDT baseline (RegisterNdt): summary, failures,
+// convergence on the synthetic street scene and the bundled KITTI pairs, and
+// the paper's long-range claim against ML-NDT.
+
+#include "mlndt/ndt/ndt_registration.h"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +15,9 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/cost/ndt_gaussian_score.h"
-#include "mlndt/grid/single_grid.h"
-#include "mlndt/registration/ndt_objective.h"
+#include "mlndt/ndt/gaussian_score.h"
+#include "mlndt/ndt/ndt_objective.h"
+#include "mlndt/pipeline/matcher.h"
 #include "mlndt/registration/registration.h"
 #include "tests/testing/synthetic_scene.h"
 #include "tests/testing/test_data.h"
@@ -23,20 +25,27 @@
 namespace mlndt {
 namespace {
 
-RegistrationOptions NdtOptions(
-    double cell_size_m,
-    NdtNeighbors neighbors = NdtBaselineOptions().neighbors) {
-  RegistrationOptions options;
-  options.method = Method::NDT;
-  options.ndt.cell_size_m = cell_size_m;
-  options.ndt.neighbors = neighbors;
+NdtOptions Ndt(double cell_size_m,
+               NdtNeighbors neighbors = NdtOptions().neighbors) {
+  NdtOptions options;
+  options.cell_size_m = cell_size_m;
+  options.neighbors = neighbors;
   return options;
 }
 
+void Register(const NdtOptions& options,
+              const PointCloud& reference,
+              const PointCloud& input,
+              const Isometry3d& initial,
+              RegistrationSummary* summary) {
+  RegisterNdt(options, reference, input, initial, summary);
+}
+
 // Registers a second sampling of the street scene, seen from a sensor at
-// `reference_from_input`, from the identity.
+// `reference_from_input`, from the identity (NDT or ML-NDT options).
+template <typename Options>
 RegistrationSummary RegisterStreet(const Isometry3d& reference_from_input,
-                                   const RegistrationOptions& options) {
+                                   const Options& options) {
   const PointCloud reference = testing::StreetScene(60000, 0.02, 1);
   const PointCloud input = TransformCloud(reference_from_input.inverse(),
                                           testing::StreetScene(60000, 0.02, 2));
@@ -62,13 +71,13 @@ TEST(Method, StringsRoundTrip) {
 TEST(NdtBaseline, ObjectiveIsTheGaussianScore) {
   const PointCloud reference = testing::StreetScene(20000, 0.02, 1);
   const PointCloud input = testing::StreetScene(5000, 0.02, 2);
-  SingleGridOptions grid_options;
+  LayeredGridOptions grid_options;
   grid_options.cell_size_m = 2.0;
-  NdtLayer grid;
-  LayerInfo info;
+  LayeredGrid map;
   std::string error;
-  ASSERT_TRUE(BuildSingleGrid(grid_options, reference, &grid, &info, &error))
+  ASSERT_TRUE(LayeredGrid::Build(grid_options, reference, &map, &error))
       << error;
+  const NdtLayer& grid = map.layer(1);
   GaussianScoreOptions score_options;
   const NdtGaussianObjective objective(grid, input.points(), score_options);
   const Vector6d xi = PoseVectorFromDegrees(0.1, -0.1, 0.0, 0.5, 0.0, 1.0);
@@ -102,8 +111,7 @@ TEST_P(NdtSmallTransform, RecoversKnownTransformWithOneMetreCells) {
   const SmallTransformCase& c = GetParam();
   const Isometry3d truth = PoseVectorToIsometry(PoseVectorFromDegrees(
       c.tx, c.ty, c.tz, c.alpha_deg, c.beta_deg, c.gamma_deg));
-  const RegistrationSummary s =
-      RegisterStreet(truth, NdtOptions(1.0, c.neighbors));
+  const RegistrationSummary s = RegisterStreet(truth, Ndt(1.0, c.neighbors));
   ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
   EXPECT_LT(TranslationErrorM(truth, s.reference_from_input), 0.02)
       << s.FullReport();
@@ -126,15 +134,16 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(NdtBaseline, SummaryIsComplete) {
   const Isometry3d truth =
       PoseVectorToIsometry(PoseVectorFromDegrees(0.2, 0.1, 0, 0, 0, 1));
-  const RegistrationSummary s = RegisterStreet(truth, NdtOptions(2.0));
+  const RegistrationSummary s = RegisterStreet(truth, Ndt(2.0));
   ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
-  EXPECT_EQ(s.method, Method::NDT);
+  EXPECT_EQ(s.algorithm, "NDT");
   EXPECT_EQ(s.BriefReport().rfind("NDT registration", 0), 0u)
       << s.BriefReport();
-  EXPECT_NE(s.FullReport().find("one grid of 2.0000 m cells"),
+  EXPECT_NE(s.FullReport().find("start 1 of 1 (finest cell 2.00 m)"),
             std::string::npos)
       << s.FullReport();
-  EXPECT_EQ(s.ndt_cell_size_m, 2.0);
+  EXPECT_EQ(s.finest_cell_size_m, 2.0);
+  EXPECT_GT(s.map_occupied_cells, 0u);
   EXPECT_EQ(s.num_layers, 1);
   EXPECT_EQ(s.start_layer, 1);
   ASSERT_EQ(s.iterations_per_layer.size(), 1u);
@@ -146,7 +155,7 @@ TEST(NdtBaseline, SummaryIsComplete) {
     EXPECT_EQ(s.trace[i].iteration, static_cast<int>(i) + 1);
     if (i > 0) EXPECT_GE(s.trace[i].time_s, s.trace[i - 1].time_s);
   }
-  EXPECT_LE(s.num_iterations, NdtBaselineOptions().max_iterations);
+  EXPECT_LE(s.num_iterations, NdtOptions().max_iterations);
   EXPECT_GT(s.sampled_points, 0u);
   EXPECT_EQ(s.matched_points + s.unmatched_points, s.sampled_points);
   EXPECT_GT(s.map_time_s, 0.0);
@@ -169,68 +178,87 @@ TEST(NdtBaseline, SummaryIsComplete) {
 TEST(NdtBaseline, DefaultCellIsThePapersLayerTwoCell) {
   const PointCloud reference = testing::StreetScene(60000, 0.02, 1);
   const RegistrationSummary s =
-      RegisterStreet(Isometry3d::Identity(), NdtOptions(0.0));
+      RegisterStreet(Isometry3d::Identity(), Ndt(0.0));
   ASSERT_TRUE(s.IsSolutionUsable()) << s.message;
-  EXPECT_NEAR(s.ndt_cell_size_m,
-              PaperNdtCellSize(BoundingBox(reference).sizes()),
-              1e-9);
+  LayeredGrid paper_map;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(
+      PaperLayeredGridOptions(), reference, &paper_map, &error))
+      << error;
+  EXPECT_EQ(s.finest_cell_size_m, paper_map.layer(2).cell_size());
 }
 
-TEST(NdtBaseline, PrebuiltMapOverloadFails) {
+TEST(NdtBaseline, PrebuiltMapGivesWhatTheCloudOverloadGives) {
   const PointCloud reference = testing::StreetScene(20000, 0.02, 1);
-  LayeredGrid map;
-  std::string error;
-  ASSERT_TRUE(
-      LayeredGrid::Build(RegistrationOptions().grid, reference, &map, &error))
-      << error;
-  RegistrationSummary s;
-  Register(NdtOptions(1.0), map, reference, Isometry3d::Identity(), &s);
-  EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
-  EXPECT_EQ(s.method, Method::NDT);
-  EXPECT_NE(s.message.find("method NDT needs the reference cloud"),
-            std::string::npos)
-      << s.message;
+  const PointCloud input = testing::StreetScene(20000, 0.02, 2);
+  for (double cell : {0.0, 1.5}) {
+    SCOPED_TRACE(cell);
+    LayeredGridOptions grid_options;
+    LayeredGrid map;
+    std::string error;
+    ASSERT_TRUE(NdtGridOptions(Ndt(cell), reference, &grid_options, &error));
+    ASSERT_TRUE(LayeredGrid::Build(grid_options, reference, &map, &error))
+        << error;
+    RegistrationSummary on_map, on_cloud;
+    RegisterNdt(Ndt(cell), map, input, Isometry3d::Identity(), &on_map);
+    RegisterNdt(Ndt(cell), reference, input, Isometry3d::Identity(), &on_cloud);
+    ASSERT_TRUE(on_map.IsSolutionUsable()) << on_map.message;
+    EXPECT_EQ(on_map.reference_from_input_xi, on_cloud.reference_from_input_xi);
+    EXPECT_EQ(on_map.final_score, on_cloud.final_score);
+    EXPECT_EQ(on_map.num_iterations, on_cloud.num_iterations);
+    EXPECT_EQ(on_map.map_time_s, 0.0);
+  }
+  // The matcher dispatches to the same entry points.
+  MatcherOptions matcher;
+  matcher.method = Method::NDT;
+  matcher.ndt = Ndt(1.5);
+  RegistrationSummary via_matcher, direct;
+  RegisterWithMatcher(
+      matcher, reference, input, Isometry3d::Identity(), &via_matcher);
+  RegisterNdt(Ndt(1.5), reference, input, Isometry3d::Identity(), &direct);
+  EXPECT_EQ(via_matcher.reference_from_input_xi,
+            direct.reference_from_input_xi);
 }
 
 TEST(NdtBaseline, InvalidOptionsAndBadInputGiveFailure) {
   const PointCloud cloud = testing::StreetScene(5000, 0.02, 1);
   RegistrationSummary s;
-  RegistrationOptions options = NdtOptions(1.0);
-  options.ndt.outlier_ratio = 1.0;
+  NdtOptions options = Ndt(1.0);
+  options.outlier_ratio = 1.0;
   Register(options, cloud, cloud, Isometry3d::Identity(), &s);
   EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
   EXPECT_NE(s.message.find("outlier_ratio"), std::string::npos) << s.message;
 
-  options = NdtOptions(-1.0);
+  options = Ndt(-1.0);
   Register(options, cloud, cloud, Isometry3d::Identity(), &s);
   EXPECT_NE(s.message.find("cell_size_m"), std::string::npos) << s.message;
 
-  options = NdtOptions(1.0);
-  options.ndt.max_iterations = 0;
+  options = Ndt(1.0);
+  options.max_iterations = 0;
   Register(options, cloud, cloud, Isometry3d::Identity(), &s);
   EXPECT_NE(s.message.find("max_iterations"), std::string::npos) << s.message;
 
-  options = NdtOptions(1.0);
-  options.ndt.max_step_norm = -0.1;
+  options = Ndt(1.0);
+  options.max_step_norm = -0.1;
   Register(options, cloud, cloud, Isometry3d::Identity(), &s);
   EXPECT_NE(s.message.find("max_step_norm"), std::string::npos) << s.message;
 
-  Register(NdtOptions(1.0), PointCloud(), cloud, Isometry3d::Identity(), &s);
+  Register(Ndt(1.0), PointCloud(), cloud, Isometry3d::Identity(), &s);
   EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
   EXPECT_NE(s.message.find("reference"), std::string::npos) << s.message;
 
-  Register(NdtOptions(1.0), cloud, PointCloud(), Isometry3d::Identity(), &s);
+  Register(Ndt(1.0), cloud, PointCloud(), Isometry3d::Identity(), &s);
   EXPECT_NE(s.message.find("input cloud is empty"), std::string::npos)
       << s.message;
 
   PointCloud nan_input = cloud;
   nan_input.Add(
       Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0, 0));
-  Register(NdtOptions(1.0), cloud, nan_input, Isometry3d::Identity(), &s);
+  Register(Ndt(1.0), cloud, nan_input, Isometry3d::Identity(), &s);
   EXPECT_NE(s.message.find("non-finite"), std::string::npos) << s.message;
 
   // Clouds 1 km apart: no sampled point lies in an occupied cell.
-  Register(NdtOptions(1.0),
+  Register(Ndt(1.0),
            cloud,
            TransformCloud(
                PoseVectorToIsometry(PoseVectorFromDegrees(1000, 0, 0, 0, 0, 0)),
@@ -256,17 +284,16 @@ TEST(NdtBaseline, LongRangeStartFailsWhereMlNdtSucceeds) {
   EXPECT_LT(RotationErrorRad(truth, mlndt.reference_from_input) * kRadToDeg,
             0.3);
 
-  for (const RegistrationOptions& options :
-       {NdtOptions(1.0, NdtNeighbors::DIRECT1),
-        NdtOptions(1.0, NdtNeighbors::DIRECT7),
-        NdtOptions(2.0)}) {
+  for (const NdtOptions& options : {Ndt(1.0, NdtNeighbors::DIRECT1),
+                                    Ndt(1.0, NdtNeighbors::DIRECT7),
+                                    Ndt(2.0)}) {
     const RegistrationSummary ndt = RegisterStreet(truth, options);
     const double error_m = TranslationErrorM(truth, ndt.reference_from_input);
     EXPECT_TRUE(!ndt.IsSolutionUsable() || error_m > 1.0)
-        << "cell " << options.ndt.cell_size_m << " m: " << error_m << " m\n"
+        << "cell " << options.cell_size_m << " m: " << error_m << " m\n"
         << ndt.FullReport();
   }
-  const RegistrationSummary coarse = RegisterStreet(truth, NdtOptions(0.0));
+  const RegistrationSummary coarse = RegisterStreet(truth, Ndt(0.0));
   EXPECT_GT(TranslationErrorM(truth, coarse.reference_from_input), 0.05)
       << coarse.FullReport();
 }
@@ -295,7 +322,7 @@ class NdtKittiFrames : public ::testing::Test {
   // Consecutive pairs from identity within 0.2 m and 1 deg of ground truth.
   // (The scans fit best at ~0.8x the ground-truth translation, so even a
   // perfect result ends 0.1-0.17 m off.)
-  static int ConsecutiveSuccesses(const RegistrationOptions& options,
+  static int ConsecutiveSuccesses(const NdtOptions& options,
                                   std::string* report) {
     int successes = 0;
     for (int i = 0; i + 1 < 8; ++i) {
@@ -322,9 +349,9 @@ TEST_F(NdtKittiFrames, ConsecutivePairsFromIdentity) {
   // paper's cell (~15 m; at the threshold: its coarse model ends 0.2-0.5 m
   // off on the others), 7 of 7 with 2 m cells.
   std::string report;
-  EXPECT_GE(ConsecutiveSuccesses(NdtOptions(0.0), &report), 5) << report;
+  EXPECT_GE(ConsecutiveSuccesses(Ndt(0.0), &report), 5) << report;
   report.clear();
-  EXPECT_GE(ConsecutiveSuccesses(NdtOptions(2.0), &report), 5) << report;
+  EXPECT_GE(ConsecutiveSuccesses(Ndt(2.0), &report), 5) << report;
 }
 
 }  // namespace

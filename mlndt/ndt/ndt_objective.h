@@ -2,13 +2,13 @@
 
 // The conventional NDT baseline as an Objective for MinimizeNewton
 // (solvers/objective.h): the Gaussian score of ML-NDT Eq. (4) with
-// Magnusson's outlier mixture on a single grid (cost/ndt_gaussian_score.h).
+// Magnusson's outlier mixture on a single grid (gaussian_score.h).
 // Lower is better: the score is the negated sum of -d1 exp(-d2 q / 2).
 
 #include <vector>
 
-#include "mlndt/cost/ndt_gaussian_score.h"
 #include "mlndt/grid/ndt_layer.h"
+#include "mlndt/ndt/gaussian_score.h"
 #include "mlndt/solvers/objective.h"
 
 namespace mlndt {

@@ -1,4 +1,4 @@
-#include "mlndt/cost/ndt_gaussian_score.h"
+#include "mlndt/ndt/gaussian_score.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-#include "mlndt/cost/ndt_gaussian_score.h"
+#include "mlndt/ndt/gaussian_score.h"
 
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "mlndt/common/check_option.h"
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/cost/transform_derivatives.h"
 
 namespace mlndt {

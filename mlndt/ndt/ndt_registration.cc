@@ -1,0 +1,271 @@
+#include "mlndt/ndt/ndt_registration.h"
+
+#include <glog/logging.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+
+#include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/common/timer.h"
+#include "mlndt/ndt/ndt_objective.h"
+#include "mlndt/registration/internal/registration_steps.h"
+
+namespace mlndt {
+namespace {
+
+constexpr char kEntryPoint[] = "mlndt::RegisterNdt";
+
+void Fail(const std::string& message, RegistrationSummary* summary) {
+  internal::Fail(kEntryPoint, message, summary);
+}
+
+GaussianScoreOptions ScoreOptionsFor(const NdtOptions& options) {
+  GaussianScoreOptions score;
+  score.outlier_ratio = options.outlier_ratio;
+  score.neighbors = options.neighbors;
+  score.num_threads = options.num_threads;
+  return score;
+}
+
+// H^-1 when H is positive definite, else zero. The Gaussian score
+// approximates the negative log-likelihood of the input points up to a
+// constant (Magnusson Eq. 6.8), so H^-1 is its Laplace covariance.
+Matrix6d CovarianceFromHessian(const Matrix6d& hessian) {
+  const Eigen::LLT<Matrix6d> llt(hessian);
+  if (llt.info() != Eigen::Success) return Matrix6d::Zero();
+  const Matrix6d covariance = llt.solve(Matrix6d::Identity());
+  return covariance.allFinite() ? covariance : Matrix6d::Zero();
+}
+
+// The objective with its Newton Hessian shifted to H + mu I, mu >= 0, so
+// that the Newton step -(H + mu I)^-1 g is no longer than `max_step_norm`:
+// the solution of the trust-region subproblem min g^T p + p^T H p / 2 s.t.
+// ||p|| <= max_step_norm (Nocedal & Wright, Theorem 4.1). Away from the
+// minimum the Gaussian score's Hessian is indefinite; lifted by a tiny
+// multiple of I, its Newton step runs hundreds of metres along the negative
+// curvature. PCL's NDT bounds its step for the same reason (step_size).
+class StepBoundedObjective : public Objective {
+ public:
+  StepBoundedObjective(const Objective& objective, double max_step_norm)
+      : objective_(objective), max_step_norm_(max_step_norm) {}
+
+  ScoreEvaluation Evaluate(const Vector6d& xi,
+                           HessianType hessian) const override {
+    ScoreEvaluation evaluation = objective_.Evaluate(xi, hessian);
+    if (hessian == HessianType::FULL && max_step_norm_ > 0.0) {
+      evaluation.hessian.diagonal().array() +=
+          Shift(evaluation.hessian, evaluation.gradient);
+    }
+    return evaluation;
+  }
+
+ private:
+  // The smallest mu >= 0 with H + mu I positive definite and
+  // ||(H + mu I)^-1 g|| <= max_step_norm, by bisection on the eigenbasis.
+  double Shift(const Matrix6d& h, const Vector6d& g) const {
+    const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(h);
+    const Vector6d lambda = solver.eigenvalues();
+    const Vector6d gv = solver.eigenvectors().transpose() * g;
+    const double scale = std::max(lambda.cwiseAbs().maxCoeff(), 1e-12);
+    const auto step_norm = [&](double mu) {
+      return (gv.array() / (lambda.array() + mu)).matrix().norm();
+    };
+    // Positive definite with a margin, as MinimizeNewton requires.
+    double low = std::max(0.0, -lambda.minCoeff() + 1e-6 * scale);
+    if (step_norm(low) <= max_step_norm_) return low;
+    double high = low + std::max(scale, g.norm() / max_step_norm_);
+    while (step_norm(high) > max_step_norm_) high *= 2.0;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (low + high);
+      if (step_norm(mid) > max_step_norm_) {
+        low = mid;
+      } else {
+        high = mid;
+      }
+    }
+    return high;  // ||step|| <= max_step_norm.
+  }
+
+  const Objective& objective_;
+  const double max_step_norm_;
+};
+
+// Minimises the Gaussian score of the sampled points on `grid` with Newton
+// and fills *summary (one layer). Returns "" or the failure's message.
+std::string MinimizeOnGrid(const NdtOptions& options,
+                           const NdtLayer& grid,
+                           const std::vector<Eigen::Vector3d>& points,
+                           const Vector6d& initial_xi,
+                           double start_time_s,
+                           RegistrationSummary* summary) {
+  const NdtGaussianObjective objective(grid, points, ScoreOptionsFor(options));
+  summary->initial_reference_from_input_xi = initial_xi;
+  summary->start_layer = 1;
+  summary->initial_score =
+      objective.Evaluate(initial_xi, HessianType::NONE).score;
+
+  StageControl control;
+  control.max_iterations = options.max_iterations;
+  control.step_tolerance = options.step_tolerance;
+  Vector6d xi = initial_xi;
+  StageSummary newton;
+  const double t0 = NowSeconds();
+  const StepBoundedObjective bounded(objective, options.max_step_norm);
+  MinimizeNewton(bounded, options.newton, control, &xi, &newton);
+  summary->solve_time_s = NowSeconds() - t0;
+  for (IterationRecord record : newton.trace) {
+    record.layer = 1;
+    record.iteration = static_cast<int>(summary->trace.size()) + 1;
+    record.time_s += t0 - start_time_s;
+    summary->trace.push_back(record);
+  }
+  summary->iterations_per_layer = {newton.iterations()};
+  summary->num_iterations = newton.iterations();
+  if (newton.termination_type == TerminationType::FAILURE) {
+    return newton.message;
+  }
+  if (!xi.allFinite()) return "the solver returned a non-finite pose";
+
+  // Results at the solution, with the full Newton Hessian (Eq. 6.13).
+  const ScoreEvaluation final = objective.Evaluate(xi, HessianType::FULL);
+  summary->reference_from_input_xi = xi;
+  summary->reference_from_input = PoseVectorToIsometry(xi);
+  summary->final_score = final.score;
+  summary->matched_points = final.matched;
+  summary->unmatched_points = final.unmatched;
+  summary->hessian = final.hessian;
+  summary->covariance = CovarianceFromHessian(final.hessian);
+  summary->termination_type = newton.termination_type;
+  summary->message = newton.message;
+  return "";
+}
+
+// Registration once the grid exists; times are added to *summary.
+void RegisterOnGrid(const NdtOptions& options,
+                    const LayeredGrid& map,
+                    const PointCloud& input,
+                    const Isometry3d& initial_reference_from_input,
+                    double start_time_s,
+                    RegistrationSummary* summary) {
+  if (map.empty()) return Fail("the reference map is empty", summary);
+  std::string error;
+  PointCloud sampled;
+  if (!internal::SampleInput(options.sampling,
+                             input,
+                             initial_reference_from_input,
+                             &sampled,
+                             summary,
+                             &error)) {
+    return Fail(error, summary);
+  }
+  internal::DescribeMap(map, summary);
+  error = MinimizeOnGrid(options,
+                         map.layer(map.num_layers()),
+                         sampled.points(),
+                         IsometryToPoseVector(initial_reference_from_input),
+                         start_time_s,
+                         summary);
+  if (error.empty()) {
+    error =
+        internal::CheckMatchedFraction(options.min_matched_fraction, *summary);
+  }
+  if (!error.empty()) Fail(error, summary);
+}
+
+}  // namespace
+
+bool NdtOptions::IsValid(std::string* error) const {
+  if (cell_size_m != 0.0) MLNDT_OPTION_IN_RANGE(cell_size_m, 1e-3, 1e5);
+  MLNDT_OPTION_IN_RANGE(min_points_per_cell, 4, 1000000);
+  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_ratio, 1e-9, 1.0);
+  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_m2, 0.0, 1e6);
+  MLNDT_OPTION_GT(outlier_ratio, 0.0);
+  MLNDT_OPTION_LT(outlier_ratio, 1.0);
+  MLNDT_OPTION_ENUM(neighbors, NdtNeighborsToString);
+  MLNDT_OPTION_IN_RANGE(max_iterations, 1, 10000);
+  MLNDT_OPTION_IN_RANGE(step_tolerance, 1e-12, 1.0);
+  MLNDT_OPTION_IN_RANGE(max_step_norm, 0.0, 1e3);
+  MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
+  MLNDT_OPTION_IN_RANGE(min_matched_fraction, 0.0, 1.0);
+  return sampling.IsValid(error) && newton.IsValid(error);
+}
+
+bool NdtGridOptions(const NdtOptions& options,
+                    const PointCloud& reference,
+                    LayeredGridOptions* grid_options,
+                    std::string* error) {
+  *grid_options = LayeredGridOptions();
+  grid_options->min_points_per_cell = options.min_points_per_cell;
+  grid_options->regularization = options.regularization;
+  grid_options->cell_size_m = options.cell_size_m;
+  if (options.cell_size_m > 0.0) return true;
+  // The paper's comparison cell: layer 2 of q = 8 over the same box.
+  if (reference.empty() || !AllFinite(reference)) {
+    *error = reference.empty() ? "the reference cloud is empty"
+                               : "the reference cloud has non-finite points";
+    return false;
+  }
+  LayeredGridOptions paper = PaperLayeredGridOptions();
+  paper.num_layers = 2;
+  const std::vector<double> sizes =
+      LayerCellSizes(paper, BoundingBox(reference).sizes());
+  if (sizes.size() != 2) {
+    *error = "all reference points coincide: the bounding box has no volume";
+    return false;
+  }
+  grid_options->cell_size_m = sizes[1];
+  return true;
+}
+
+void RegisterNdt(const NdtOptions& options,
+                 const PointCloud& reference,
+                 const PointCloud& input,
+                 const Isometry3d& initial_reference_from_input,
+                 RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  summary->algorithm = "NDT";
+  const double start = NowSeconds();
+  std::string error;
+  LayeredGridOptions grid_options;
+  LayeredGrid map;
+  if (!options.IsValid(&error)) {
+    Fail(error, summary);
+  } else if (!NdtGridOptions(options, reference, &grid_options, &error) ||
+             !LayeredGrid::Build(
+                 grid_options, reference, options.num_threads, &map, &error)) {
+    Fail("reference map: " + error, summary);
+  } else {
+    summary->map_time_s = NowSeconds() - start;
+    RegisterOnGrid(
+        options, map, input, initial_reference_from_input, start, summary);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
+void RegisterNdt(const NdtOptions& options,
+                 const LayeredGrid& reference_map,
+                 const PointCloud& input,
+                 const Isometry3d& initial_reference_from_input,
+                 RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  summary->algorithm = "NDT";
+  const double start = NowSeconds();
+  std::string error;
+  if (!options.IsValid(&error)) {
+    Fail(error, summary);
+  } else {
+    RegisterOnGrid(options,
+                   reference_map,
+                   input,
+                   initial_reference_from_input,
+                   start,
+                   summary);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
+}  // namespace mlndt

@@ -1,0 +1,79 @@
+#include "mlndt/registration/internal/registration_steps.h"
+
+#include <glog/logging.h>
+
+#include <sstream>
+
+#include "mlndt/common/timer.h"
+
+namespace mlndt {
+namespace internal {
+
+void Fail(const char* entry_point,
+          const std::string& message,
+          RegistrationSummary* summary) {
+  summary->termination_type = TerminationType::FAILURE;
+  summary->message = message;
+  LOG(ERROR) << entry_point << ": " << message;
+}
+
+bool SampleInput(const SamplingOptions& options,
+                 const PointCloud& input,
+                 const Isometry3d& initial_reference_from_input,
+                 PointCloud* sampled,
+                 RegistrationSummary* summary,
+                 std::string* error) {
+  if (input.empty()) {
+    *error = "the input cloud is empty";
+    return false;
+  }
+  if (!AllFinite(input)) {
+    *error = "the input cloud has non-finite points";
+    return false;
+  }
+  if (!initial_reference_from_input.matrix().allFinite()) {
+    *error = "the initial guess is not finite";
+    return false;
+  }
+  const double t0 = NowSeconds();
+  SamplingSummary sampling_summary;
+  if (!SamplePoints(options, input, sampled, &sampling_summary, error)) {
+    *error = "sampling: " + *error;
+    return false;
+  }
+  summary->sampling_time_s = NowSeconds() - t0;
+  summary->input_points = input.size();
+  summary->sampled_points = sampled->size();
+  if (sampled->empty()) {
+    *error = "sampling kept no input points";
+    return false;
+  }
+  return true;
+}
+
+void DescribeMap(const LayeredGrid& map, RegistrationSummary* summary) {
+  summary->num_layers = map.num_layers();
+  summary->finest_cell_size_m = map.layer(map.num_layers()).cell_size();
+  summary->map_occupied_cells = 0;
+  for (const LayerInfo& info : map.layer_info()) {
+    summary->map_occupied_cells += info.occupied_cells;
+  }
+  summary->map_bytes = map.MemoryBytes();
+}
+
+std::string CheckMatchedFraction(double min_fraction,
+                                 const RegistrationSummary& summary) {
+  const double matched_fraction = static_cast<double>(summary.matched_points) /
+                                  static_cast<double>(summary.sampled_points);
+  if (matched_fraction >= min_fraction) return "";
+  std::ostringstream message;
+  message << "only " << summary.matched_points << " of "
+          << summary.sampled_points
+          << " sampled points lie in an occupied cell at the solution "
+             "(min_matched_fraction "
+          << min_fraction << ")";
+  return message.str();
+}
+
+}  // namespace internal
+}  // namespace mlndt

@@ -1,0 +1,41 @@
+#pragma once
+
+// Steps every registration entry point shares (ML-NDT's Register, the NDT
+// baseline's RegisterNdt): failing with a message, checking and sampling the
+// input, the map's facts and the matched-fraction check.
+
+#include <string>
+
+#include "mlndt/cloud/point_cloud.h"
+#include "mlndt/grid/layered_grid.h"
+#include "mlndt/registration/registration_summary.h"
+#include "mlndt/sampling/point_sampler.h"
+
+namespace mlndt {
+namespace internal {
+
+// FAILURE with `message`, logged (LOG(ERROR)) under `entry_point`'s name.
+void Fail(const char* entry_point,
+          const std::string& message,
+          RegistrationSummary* summary);
+
+// Checks the input and the initial guess and samples the input (Section
+// 4.3), filling the sampling counts and time. False (and the message in
+// *error) when nothing usable is left.
+bool SampleInput(const SamplingOptions& options,
+                 const PointCloud& input,
+                 const Isometry3d& initial_reference_from_input,
+                 PointCloud* sampled,
+                 RegistrationSummary* summary,
+                 std::string* error);
+
+// Fills the map's layer count, finest cell, occupied cells and bytes.
+void DescribeMap(const LayeredGrid& map, RegistrationSummary* summary);
+
+// An error message when fewer than `min_fraction` of the sampled points are
+// matched at the solution, else "".
+std::string CheckMatchedFraction(double min_fraction,
+                                 const RegistrationSummary& summary);
+
+}  // namespace internal
+}  // namespace mlndt

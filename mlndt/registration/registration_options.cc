@@ -1,0 +1,27 @@
+#include "mlndt/registration/registration_options.h"
+
+#include "mlndt/common/internal/check_option.h"
+
+namespace mlndt {
+
+bool RegistrationOptions::IsValid(std::string* error) const {
+  if (!grid.IsValid(error) || !sampling.IsValid(error) ||
+      !schedule.IsValid(error) || !objective.IsValid(error) ||
+      !backend.IsValid(error)) {
+    return false;
+  }
+  MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
+  MLNDT_OPTION_IN_RANGE(min_matched_fraction, 0.0, 1.0);
+  return true;
+}
+
+RegistrationOptions PaperRegistrationOptions() {
+  RegistrationOptions options;
+  options.grid = PaperLayeredGridOptions();
+  options.schedule = PaperLayerScheduleOptions();
+  options.objective = PaperObjectiveOptions();
+  options.backend.type = BackendType::NEWTON;
+  return options;
+}
+
+}  // namespace mlndt

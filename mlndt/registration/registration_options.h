@@ -1,0 +1,48 @@
+#pragma once
+
+// Everything a registration is configured by, one component each: the map,
+// the input sampling, the layer schedule, the objective and the backend.
+// Each component's defaults are the library's (docs/defaults.md says why and
+// how each was measured); PaperRegistrationOptions() is the paper's
+// configuration, for reproducing Section 5.
+
+#include <string>
+
+#include "mlndt/cost/objective_options.h"
+#include "mlndt/grid/layered_grid.h"
+#include "mlndt/sampling/point_sampler.h"
+#include "mlndt/schedule/layer_scheduler.h"
+#include "mlndt/solvers/backend_factory.h"
+
+namespace mlndt {
+
+struct RegistrationOptions {
+  // The reference map (used by the Register overload that builds it).
+  LayeredGridOptions grid;
+  // Which input points become residuals (Section 4.3).
+  SamplingOptions sampling;
+  // Start layer, iterations per layer, convergence of the last layer.
+  LayerScheduleOptions schedule;
+  // What is minimised: unmatched-point policy and robust loss (Eq. 10).
+  ObjectiveOptions objective;
+  // Which minimiser, with its options.
+  BackendOptions backend;
+  // Threads for the whole registration: the map build (when Register builds
+  // the map) and the backend (Ceres' evaluator threads, or OpenMP threads
+  // over points). In [1, 256]. OpenMP threads busy-wait between parallel
+  // regions: on a loaded machine, run with OMP_WAIT_POLICY=passive.
+  int num_threads = 1;
+  // The result is reported as FAILURE when fewer than this fraction of the
+  // sampled points are matched to a cell at the solution. In [0, 1].
+  double min_matched_fraction = 0.05;
+
+  bool IsValid(std::string* error) const;
+};
+
+// The paper's configuration (Sections 4 and 5): n = 4 layers, start on
+// layer 2, 3 iterations a layer with every sampled point, the plain Eq. (10)
+// sum over own cells, Newton. GBS sampling and the covariance
+// regularisation (including its absolute floor) are the library's.
+RegistrationOptions PaperRegistrationOptions();
+
+}  // namespace mlndt

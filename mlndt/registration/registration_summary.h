@@ -1,0 +1,68 @@
+#pragma once
+
+// What a registration reports (ML-NDT's Register and the NDT baseline's
+// RegisterNdt alike): termination, pose, per-iteration trace, counts,
+// timings, scores, and the score's Hessian with the pose covariance derived
+// from it. Shaped like ceres::Solver::Summary.
+
+#include <string>
+#include <vector>
+
+#include "mlndt/common/types.h"
+#include "mlndt/solvers/backend.h"
+
+namespace mlndt {
+
+struct RegistrationSummary {
+  TerminationType termination_type = TerminationType::FAILURE;
+  std::string message;
+  // "ML-NDT" or "NDT": the algorithm that ran (for reports).
+  std::string algorithm = "ML-NDT";
+
+  Vector6d initial_reference_from_input_xi = Vector6d::Zero();
+  // (t [m], angles [rad]), Eq. (11).
+  Vector6d reference_from_input_xi = Vector6d::Zero();
+  Isometry3d reference_from_input = Isometry3d::Identity();
+
+  std::vector<IterationRecord> trace;
+  std::vector<int> iterations_per_layer;  // Index i - 1 for layer i.
+  int num_iterations = 0;
+  int start_layer = 0;
+  int num_layers = 0;
+  double finest_cell_size_m = 0.0;  // Cell edge of the last layer [m].
+
+  size_t input_points = 0;    // Finite input points.
+  size_t sampled_points = 0;  // Points that became residuals.
+  // Sampled points in a cell at the solution (last layer), and the rest.
+  size_t matched_points = 0;
+  size_t unmatched_points = 0;
+
+  double map_time_s = 0.0;  // Building the reference map (0 if given).
+  double sampling_time_s = 0.0;
+  double solve_time_s = 0.0;
+  double total_time_s = 0.0;  // Everything after the clouds were loaded.
+
+  size_t map_occupied_cells = 0;  // Over all layers of the reference map.
+  size_t map_bytes = 0;           // LayeredGrid::MemoryBytes() of the map.
+
+  // ML-NDT: Eq. (10) on the last layer. NDT: the Gaussian score (negated
+  // Eq. 4 with Magnusson's d1, d2; <= 0, lower is better).
+  double initial_score = 0.0;  // At the initial pose.
+  double final_score = 0.0;    // At the solution.
+  // ML-NDT: the Gauss-Newton Hessian of the final score w.r.t. xi, and the
+  // covariance of xi derived from it as 2 H^-1 (the Laplace approximation
+  // for whitened residuals of unit variance; zero when H is singular).
+  // NDT: the full Newton Hessian of the Gaussian score (Magnusson Eq. 6.13),
+  // and H^-1 as the covariance (zero unless H is positive definite).
+  // Units m and rad.
+  Matrix6d hessian = Matrix6d::Zero();
+  Matrix6d covariance = Matrix6d::Zero();
+
+  std::string BriefReport() const;
+  std::string FullReport() const;
+  bool IsSolutionUsable() const {
+    return termination_type != TerminationType::FAILURE;
+  }
+};
+
+}  // namespace mlndt

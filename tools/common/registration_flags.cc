@@ -1,0 +1,261 @@
+#include "tools/common/registration_flags.h"
+
+#include <gflags/gflags.h>
+
+#include <vector>
+
+#include "mlndt/common/internal/enum_strings.h"
+
+// clang-format off
+DEFINE_string(preset, "default",
+              "default (the library's options) | paper (the paper's: n = 4, start layer 2, "
+              "3 iterations a layer, plain sum over own cells, Newton); flags given "
+              "explicitly override the preset");
+DEFINE_string(method, "mlndt",
+              "mlndt (layered map, Mahalanobis score) | ndt (conventional single-grid NDT, "
+              "Gaussian score, Newton; the ML-NDT-only flags are refused)");
+DEFINE_double(ndt_cell_size, mlndt::NdtOptions().cell_size_m,
+              "--method=ndt: cell edge [m]; 0 = the paper's layer-2 cell (V / 64)^(1/3)");
+DEFINE_double(ndt_outlier_ratio, mlndt::NdtOptions().outlier_ratio,
+              "--method=ndt: Magnusson's outlier ratio in (0, 1) (PCL: 0.55)");
+DEFINE_string(ndt_neighbors, mlndt::NdtNeighborsToString(mlndt::NdtOptions().neighbors),
+              "--method=ndt: cells a point is scored in: direct1 (its own) | direct7 (+6 faces)");
+DEFINE_int32(ndt_max_iterations, mlndt::NdtOptions().max_iterations,
+             "--method=ndt: Newton iteration cap");
+DEFINE_double(ndt_max_step, mlndt::NdtOptions().max_step_norm,
+              "--method=ndt: longest Newton step ||delta xi|| (m and rad); 0 = unbounded");
+DEFINE_string(backend, "ceres", "ceres | newton | lm");
+DEFINE_string(sampling, "gbs", "gbs | random | all | voxel_centroid");
+DEFINE_double(random_fraction, mlndt::SamplingOptions().random_fraction,
+              "Fraction of the input kept by --sampling=random");
+DEFINE_double(gbs_cell_size, mlndt::SamplingOptions().gbs_cell_size_m, "GBS cell edge [m]");
+DEFINE_int32(start_layer, mlndt::LayerScheduleOptions().start_layer,
+             "1-based start layer s; <= 0 counts from the finest (0 = last layer)");
+DEFINE_int32(num_layers, mlndt::LayeredGridOptions().num_layers,
+             "Number of layers n (used when --finest_cell_size=0)");
+DEFINE_int32(division_constant, mlndt::LayeredGridOptions().division_constant,
+             "q: layer i has about q^i cells");
+DEFINE_double(finest_cell_size, mlndt::LayeredGridOptions().finest_cell_size_m,
+              "When > 0, n is the smallest layer count whose finest cell is <= this [m]");
+DEFINE_int32(min_points_per_cell, mlndt::LayeredGridOptions().min_points_per_cell,
+             "Points a cell needs to keep a distribution");
+DEFINE_double(min_eigenvalue, mlndt::CellRegularization().min_eigenvalue_m2,
+              "Absolute floor on cell covariance eigenvalues [m^2]");
+DEFINE_double(min_eigenvalue_ratio, mlndt::CellRegularization().min_eigenvalue_ratio,
+              "Cell eigenvalues are floored at this fraction of the largest (paper: 0.01)");
+DEFINE_int32(iterations_per_layer, mlndt::LayerScheduleOptions().iterations_per_layer,
+             "Iterations on each layer before the last");
+DEFINE_int32(max_iterations, mlndt::LayerScheduleOptions().max_final_iterations,
+             "Iteration cap on the last layer");
+DEFINE_double(step_tolerance, mlndt::LayerScheduleOptions().step_tolerance,
+              "Convergence: update norm on the last layer (NDT: of its Newton steps)");
+DEFINE_double(coarse_step_tolerance, mlndt::LayerScheduleOptions().coarse_step_tolerance,
+              "A coarse layer ends early below this update norm (0 = fixed iterations)");
+DEFINE_int32(max_coarse_point_stride, mlndt::LayerScheduleOptions().max_coarse_point_stride,
+             "Layer i of n uses every min(2^(n-i), this)-th sample (1 = all)");
+DEFINE_string(unmatched, "nearest_cell", "zero_residual | nearest_cell");
+DEFINE_string(loss, "cauchy", "none | huber | cauchy");
+DEFINE_double(loss_scale, mlndt::ObjectiveOptions().loss_scale,
+              "Mahalanobis distance where the robust loss bends");
+DEFINE_string(linear_solver, "dense_normal_cholesky", "Ceres linear solver type");
+DEFINE_string(trust_region, "levenberg_marquardt", "Ceres trust-region strategy");
+DEFINE_int32(threads, 1,
+             "Threads for the map build and the backend (Ceres evaluator threads, or OpenMP "
+             "threads for newton and lm); with > 1 on a loaded machine set "
+             "OMP_WAIT_POLICY=passive");
+DEFINE_uint64(seed, mlndt::SamplingOptions().seed, "Sampling seed");
+// clang-format on
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+// True when the flag was given on the command line.
+bool Given(const char* name) {
+  return !gflags::GetCommandLineFlagInfoOrDie(name).is_default;
+}
+
+bool ParseCeres(CeresBackendOptions* ceres, std::string* error) {
+  std::string upper = FLAGS_linear_solver;
+  UpperCase(&upper);
+  if (!ceres::StringToLinearSolverType(upper, &ceres->linear_solver_type)) {
+    *error = "--linear_solver=" + FLAGS_linear_solver +
+             ": not a Ceres linear solver type";
+    return false;
+  }
+  upper = FLAGS_trust_region;
+  UpperCase(&upper);
+  if (!ceres::StringToTrustRegionStrategyType(
+          upper, &ceres->trust_region_strategy_type)) {
+    *error = "--trust_region=" + FLAGS_trust_region +
+             ": expected levenberg_marquardt or dogleg";
+    return false;
+  }
+  return true;
+}
+
+bool ParseSampling(SamplingOptions* sampling, std::string* error) {
+  if (Given("sampling") &&
+      !StringToSamplingMethod(FLAGS_sampling, &sampling->method)) {
+    *error = "--sampling=" + FLAGS_sampling +
+             ": expected gbs, random, all or voxel_centroid";
+    return false;
+  }
+  if (Given("random_fraction"))
+    sampling->random_fraction = FLAGS_random_fraction;
+  if (Given("gbs_cell_size")) sampling->gbs_cell_size_m = FLAGS_gbs_cell_size;
+  if (Given("seed")) sampling->seed = FLAGS_seed;
+  return true;
+}
+
+void ParseCells(int* min_points, CellRegularization* regularization) {
+  if (Given("min_points_per_cell")) *min_points = FLAGS_min_points_per_cell;
+  if (Given("min_eigenvalue")) {
+    regularization->min_eigenvalue_m2 = FLAGS_min_eigenvalue;
+  }
+  if (Given("min_eigenvalue_ratio")) {
+    regularization->min_eigenvalue_ratio = FLAGS_min_eigenvalue_ratio;
+  }
+}
+
+// The flags that only ML-NDT reads.
+const std::vector<const char*> kMlNdtOnlyFlags = {"backend",
+                                                  "start_layer",
+                                                  "num_layers",
+                                                  "division_constant",
+                                                  "finest_cell_size",
+                                                  "iterations_per_layer",
+                                                  "max_iterations",
+                                                  "coarse_step_tolerance",
+                                                  "max_coarse_point_stride",
+                                                  "unmatched",
+                                                  "loss",
+                                                  "loss_scale",
+                                                  "linear_solver",
+                                                  "trust_region"};
+const std::vector<const char*> kNdtOnlyFlags = {"ndt_cell_size",
+                                                "ndt_outlier_ratio",
+                                                "ndt_neighbors",
+                                                "ndt_max_iterations",
+                                                "ndt_max_step"};
+
+bool ParseSchedule(LayerScheduleOptions* schedule) {
+  if (Given("start_layer")) schedule->start_layer = FLAGS_start_layer;
+  if (Given("iterations_per_layer")) {
+    schedule->iterations_per_layer = FLAGS_iterations_per_layer;
+  }
+  if (Given("max_iterations")) {
+    schedule->max_final_iterations = FLAGS_max_iterations;
+  }
+  if (Given("step_tolerance")) schedule->step_tolerance = FLAGS_step_tolerance;
+  if (Given("coarse_step_tolerance")) {
+    schedule->coarse_step_tolerance = FLAGS_coarse_step_tolerance;
+  }
+  if (Given("max_coarse_point_stride")) {
+    schedule->max_coarse_point_stride = FLAGS_max_coarse_point_stride;
+  }
+  return true;
+}
+
+bool ParseMlNdt(RegistrationOptions* options, std::string* error) {
+  if (FLAGS_preset == "paper") {
+    *options = PaperRegistrationOptions();
+  } else if (FLAGS_preset != "default") {
+    *error = "--preset=" + FLAGS_preset + ": expected default or paper";
+    return false;
+  }
+  if (Given("backend") &&
+      !StringToBackendType(FLAGS_backend, &options->backend.type)) {
+    *error = "--backend=" + FLAGS_backend + ": expected ceres, newton or lm";
+    return false;
+  }
+  if (Given("unmatched") &&
+      !StringToUnmatchedPolicy(FLAGS_unmatched,
+                               &options->objective.unmatched_policy)) {
+    *error = "--unmatched=" + FLAGS_unmatched +
+             ": expected zero_residual or nearest_cell";
+    return false;
+  }
+  if (Given("loss") &&
+      !StringToLossType(FLAGS_loss, &options->objective.loss)) {
+    *error = "--loss=" + FLAGS_loss + ": expected none, huber or cauchy";
+    return false;
+  }
+  if (Given("loss_scale")) options->objective.loss_scale = FLAGS_loss_scale;
+  if (!ParseCeres(&options->backend.ceres, error) ||
+      !ParseSampling(&options->sampling, error) ||
+      !ParseSchedule(&options->schedule)) {
+    return false;
+  }
+  LayeredGridOptions& grid = options->grid;
+  if (Given("num_layers")) grid.num_layers = FLAGS_num_layers;
+  if (Given("division_constant")) {
+    grid.division_constant = FLAGS_division_constant;
+  }
+  if (Given("finest_cell_size")) {
+    grid.finest_cell_size_m = FLAGS_finest_cell_size;
+  }
+  if (Given("num_layers") && grid.finest_cell_size_m > 0.0) {
+    *error =
+        "--num_layers is ignored while --finest_cell_size > 0 (n is derived "
+        "from it): give --finest_cell_size=0 with --num_layers";
+    return false;
+  }
+  ParseCells(&grid.min_points_per_cell, &grid.regularization);
+  options->num_threads = FLAGS_threads;
+  return options->IsValid(error);
+}
+
+bool ParseNdt(NdtOptions* options, std::string* error) {
+  if (!StringToNdtNeighbors(FLAGS_ndt_neighbors, &options->neighbors)) {
+    *error = "--ndt_neighbors=" + FLAGS_ndt_neighbors +
+             ": expected direct1 or direct7";
+    return false;
+  }
+  options->cell_size_m = FLAGS_ndt_cell_size;
+  options->outlier_ratio = FLAGS_ndt_outlier_ratio;
+  options->max_iterations = FLAGS_ndt_max_iterations;
+  options->max_step_norm = FLAGS_ndt_max_step;
+  options->step_tolerance = FLAGS_step_tolerance;
+  options->num_threads = FLAGS_threads;
+  ParseCells(&options->min_points_per_cell, &options->regularization);
+  return ParseSampling(&options->sampling, error) && options->IsValid(error);
+}
+
+}  // namespace
+
+bool MatcherOptionsFromFlags(MatcherOptions* options, std::string* error) {
+  if (!StringToMethod(FLAGS_method, &options->method)) {
+    *error = "--method=" + FLAGS_method + ": expected mlndt or ndt";
+    return false;
+  }
+  const bool ndt = options->method == Method::NDT;
+  for (const char* flag : ndt ? kMlNdtOnlyFlags : kNdtOnlyFlags) {
+    if (Given(flag)) {
+      *error = std::string("--") + flag +
+               " does not apply to --method=" + FLAGS_method;
+      return false;
+    }
+  }
+  if (ndt && Given("preset")) {
+    *error = "--preset does not apply to --method=ndt";
+    return false;
+  }
+  return ndt ? ParseNdt(&options->ndt, error)
+             : ParseMlNdt(&options->mlndt, error);
+}
+
+bool RegistrationOptionsFromFlags(RegistrationOptions* options,
+                                  std::string* error) {
+  MatcherOptions matcher;
+  if (!MatcherOptionsFromFlags(&matcher, error)) return false;
+  if (matcher.method != Method::MLNDT) {
+    *error = "--method=" + FLAGS_method + ": this tool runs ML-NDT only";
+    return false;
+  }
+  *options = matcher.mlndt;
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt
