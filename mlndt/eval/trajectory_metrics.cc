@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "mlndt/common/enum_strings.h"
-#include "mlndt/eval/pose_error.h"
+#include "mlndt/common/pose.h"
 
 namespace mlndt {
 namespace {
@@ -142,11 +142,10 @@ bool ComputeRpe(const RpeOptions& options,
   }
   std::vector<double> translations, rotations;
   for (size_t k = 0; k + delta < reference.size(); ++k) {
-    const PoseError e =
-        ComputePoseError(reference[k].inverse() * reference[k + delta],
-                         estimate[k].inverse() * estimate[k + delta]);
-    translations.push_back(e.translation_m);
-    rotations.push_back(e.rotation_deg());
+    const Isometry3d q = reference[k].inverse() * reference[k + delta];
+    const Isometry3d p = estimate[k].inverse() * estimate[k + delta];
+    translations.push_back(TranslationErrorM(q, p));
+    rotations.push_back(RotationErrorRad(q, p) * kRadToDeg);
   }
   summary->translation_m = ComputeStats(translations);
   summary->rotation_deg = ComputeStats(rotations);

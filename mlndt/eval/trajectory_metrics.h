@@ -56,8 +56,12 @@ struct RpeOptions {
 
 // RPE over pairs (k, k + delta): with the relative motions
 // Q = reference_k^-1 reference_{k+delta} and P = estimate_k^-1
-// estimate_{k+delta}, the error is E = Q^-1 P (ComputePoseError(Q, P)):
-// translation |t(E)| [m] and rotation angle(R(E)) [deg].
+// estimate_{k+delta}, the error E = Q^-1 P has translation
+// |t(E)| = |t(Q) - t(P)| [m] (TranslationErrorM) and rotation
+// angle(R(E)) = angle(R(Q)^T R(P)) [deg] (RotationErrorRad). The translation
+// is taken as |t(Q) - t(P)|, which equals |t(E)| for exact rotations and,
+// unlike |t(E)|, does not change with the rounding of R(Q) in a file
+// (KITTI's 10 digits move |t(E)| by ~1e-7 relative).
 struct RpeSummary {
   Stats translation_m;
   Stats rotation_deg;

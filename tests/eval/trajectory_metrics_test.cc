@@ -194,6 +194,25 @@ TEST(ComputeRpe, ConstantPerStepErrorIsThatError) {
   EXPECT_NEAR(rpe.rotation_deg.max, 1.0, 0.05);
 }
 
+// The translation error is |t(Q) - t(P)| (TranslationErrorM), which does not
+// depend on how orthonormal R(Q) is; |t(Q^-1 P)| would, by 1e-4 here.
+TEST(ComputeRpe, TranslationIsTheDifferenceOfTheRelativeTranslations) {
+  std::vector<Isometry3d> truth = RandomWalk(3, 10);
+  truth[1].linear() *= 1.0 + 1e-4;  // A rotation rounded badly in a file.
+  std::vector<Isometry3d> estimate = truth;
+  estimate[2].translation() += Vector3d(0.3, -0.2, 0.1);
+  RpeSummary rpe;
+  std::string error;
+  ASSERT_TRUE(ComputeRpe(RpeOptions(), truth, estimate, &rpe, &error));
+  const Isometry3d q = truth[1].inverse() * truth[2];
+  const Isometry3d p = estimate[1].inverse() * estimate[2];
+  EXPECT_NEAR(
+      rpe.translation_m.max, (q.translation() - p.translation()).norm(), 1e-12);
+  EXPECT_GT(
+      std::abs(rpe.translation_m.max - (q.inverse() * p).translation().norm()),
+      1e-6);
+}
+
 TEST(ComputeRpe, Failures) {
   const std::vector<Isometry3d> truth = RandomWalk(3, 9);
   RpeSummary rpe;
