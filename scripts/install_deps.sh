@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   cmake make g++ pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
-  libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev
+  libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev nlohmann-json3-dev
   gnuplot-nox clang-format ccache
 )
 

@@ -46,6 +46,7 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/eval/nees.h"
 #include "tools/common/json_writer.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_utils.h"
@@ -110,17 +111,20 @@ struct Consistency {
   Vector6d predicted_std = Vector6d::Zero();  // sqrt diag mean P.
   Vector6d bias = Vector6d::Zero();           // mean - reference (pair only).
 
-  double k_spread() const { return nees_mean / nees_mean_expected; }
-  double k_reference() const { return nees_reference / 6.0; }
-  double k_spread_sigma2() const {
-    return nees_mean_sigma2 / nees_mean_expected;
+  // k = mean NEES / its expectation (mlndt/eval/nees.h).
+  double k_spread() const {
+    return NeesScaleFactor(nees_mean, nees_mean_expected);
   }
-  double k_reference_sigma2() const { return nees_reference_sigma2 / 6.0; }
+  double k_reference() const {
+    return NeesScaleFactor(nees_reference, kPoseDimension);
+  }
+  double k_spread_sigma2() const {
+    return NeesScaleFactor(nees_mean_sigma2, nees_mean_expected);
+  }
+  double k_reference_sigma2() const {
+    return NeesScaleFactor(nees_reference_sigma2, kPoseDimension);
+  }
 };
-
-double Nees(const Vector6d& error, const Matrix6d& covariance) {
-  return error.dot(covariance.ldlt().solve(error));
-}
 
 Vector6d Mean(const std::vector<Run>& runs) {
   Vector6d mean = Vector6d::Zero();
@@ -146,8 +150,7 @@ void Accumulate(const PairRuns& pair, Consistency* sum) {
     sum->nees_reference_sigma2 +=
         Nees(about_reference, run.sigma2 * run.covariance);
     sum->sigma2 += run.sigma2;
-    sum->nees_mean_expected +=
-        6.0 * static_cast<double>(n - 1) / static_cast<double>(n);
+    sum->nees_mean_expected += ExpectedNeesAboutMean(n);
   }
   spread /= static_cast<double>(n - 1);
   predicted /= static_cast<double>(n);

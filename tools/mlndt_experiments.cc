@@ -48,6 +48,9 @@
 
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
+#include "mlndt/eval/dataset.h"
+#include "mlndt/eval/pose_error.h"
+#include "mlndt/eval/statistics.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/pair_evaluation.h"
 #include "tools/common/progress.h"
@@ -242,7 +245,7 @@ struct OffsetCell {
 
 // "12 cm", or "failed" when most runs failed outright (infinite error).
 std::string MedianText(const std::vector<double>& errors_cm) {
-  const double median = tools::ComputeStats(errors_cm).median;
+  const double median = ComputeStats(errors_cm).median;
   return std::isfinite(median) ? Fmt(median, 0) + " cm" : std::string("failed");
 }
 
@@ -286,7 +289,7 @@ bool LongRange(Context* c, std::string* error) {
   for (size_t m = 0; m < variants.size(); ++m) {
     cells[m].resize(families.size());
     // Pair -> outcome at offset 0 (shared by every family).
-    std::map<size_t, std::pair<tools::PoseError, double>> zero_offset;
+    std::map<size_t, std::pair<PoseError, double>> zero_offset;
     for (size_t f = 0; f < families.size(); ++f) {
       const std::vector<double>& values =
           families[f].rotation ? rotations : translations;
@@ -294,7 +297,7 @@ bool LongRange(Context* c, std::string* error) {
       for (size_t v = 0; v < values.size(); ++v) {
         for (size_t i = 0; i < num_pairs; ++i) {
           const Isometry3d truth = c->truth[i].inverse() * c->truth[i + 1];
-          tools::PoseError e;
+          PoseError e;
           double ms = 0.0;
           bool usable = true;
           auto cached = zero_offset.find(i);
@@ -318,7 +321,7 @@ bool LongRange(Context* c, std::string* error) {
             }
             ++c->runs;
             usable = summary.IsSolutionUsable();
-            e = tools::ComputePoseError(truth, summary.reference_from_input);
+            e = ComputePoseError(truth, summary.reference_from_input);
             if (!usable)
               e.translation_m = e.rotation_rad =
                   std::numeric_limits<double>::infinity();
@@ -330,7 +333,7 @@ bool LongRange(Context* c, std::string* error) {
               e.translation_m < FLAGS_success_translation &&
               e.rotation_rad * kRadToDeg < FLAGS_success_rotation;
           cell.strict += strict;
-          cell.loose += e.translation_m < tools::kSuccessTranslationM;
+          cell.loose += e.translation_m < kPaperSuccessTranslationM;
           cell.errors_cm.push_back(e.translation_m * 100.0);
           cell.time_ms += ms;
           char detail[128];
@@ -578,8 +581,7 @@ bool Optimizers(Context* c, std::string* error) {
         return false;
       }
       ++c->runs;
-      const tools::PoseError e =
-          tools::ComputePoseError(truth, summary.reference_from_input);
+      const PoseError e = ComputePoseError(truth, summary.reference_from_input);
       const double points =
           std::max<double>(1.0, static_cast<double>(summary.sampled_points));
       dat << "0 0 nan "
@@ -750,9 +752,9 @@ bool Sampling(Context* c, std::string* error) {
                            gbs[p - 1].input - gbs[p - 1].reference;
     if (!same_step || gbs[p].reference != gbs[p - 1].reference + 1) continue;
     PairResult q = gbs[p];
-    q.error = tools::ComputePoseError(q.truth, gbs[p - 1].estimate);
-    q.success = tools::IsSuccess(q.error);
-    q.strict_success = tools::IsStrictSuccess(q.error);
+    q.error = ComputePoseError(q.truth, gbs[p - 1].estimate);
+    q.success = kPaperSuccessCriterion.IsWithin(q.error);
+    q.strict_success = SuccessCriterion().IsWithin(q.error);
     prediction.push_back(q);
   }
   const SequenceTotals prediction_totals = tools::ComputeTotals(prediction);
@@ -780,7 +782,7 @@ bool Sampling(Context* c, std::string* error) {
        "[cm] | α [deg] | "
        "β [deg] | γ [deg] | time [ms] | iterations | points |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  const auto triple = [](const tools::Stats& s, int precision) {
+  const auto triple = [](const Stats& s, int precision) {
     return Fmt(s.mean, precision) + " / " + Fmt(s.std, precision) + " / " +
            Fmt(s.max, precision);
   };
@@ -1001,7 +1003,7 @@ bool Table9(Context* c, std::string* error) {
       const double diverged_percent =
           100.0 * diverged / std::max<size_t>(results.size(), 1);
       const double gt_fail = 100.0 - t.success_rate_percent;
-      const double mean_error = tools::ComputeStats(converged_errors).mean;
+      const double mean_error = ComputeStats(converged_errors).mean;
       r << "| " << Fmt(fraction, 1) << " | " << LayerLabel(*c, layer) << " | "
         << Fmt(diverged_percent, 0) << " % | " << Fmt(gt_fail, 0) << " % | "
         << Fmt(t.registration_time_ms.mean, 0) << " | "
@@ -1187,8 +1189,7 @@ int Run() {
     return Fail(error);
   }
   std::vector<std::string> paths;
-  if (!tools::ListScanFiles(
-          scans_dir, {poses_path, calib_path}, &paths, &error)) {
+  if (!ListScanFiles(scans_dir, {poses_path, calib_path}, &paths, &error)) {
     return Fail(error);
   }
   if (FLAGS_max_scans > 0 &&
@@ -1197,7 +1198,7 @@ int Run() {
   }
   if (paths.size() < 2)
     return Fail(scans_dir + ": at least two scans are needed");
-  if (!tools::ReadSequencePoses(poses_path, calib_path, &c.truth, &error))
+  if (!ReadSequencePoses(poses_path, calib_path, &c.truth, &error))
     return Fail(error);
   if (c.truth.size() < paths.size()) {
     return Fail(poses_path + ": fewer poses than scans");

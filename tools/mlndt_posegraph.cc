@@ -24,9 +24,11 @@
 // own frame, one line per scan in file-name order) the JSON has
 //   ate_{chained,joint}_m: RMSE of the translation error over all scans after
 //       aligning the first poses (estimate_k -> gt_0 est_0^-1 est_k; no
-//       rotation, translation or scale fit beyond that);
+//       rotation, translation or scale fit beyond that; ComputeAte with
+//       FIRST_POSE, mlndt/eval/trajectory_metrics.h);
 //   rpe_{chained,joint}: mean over consecutive scans of the relative pose
-//       error gt_{k,k+1}^-1 est_{k,k+1}: {"translation_m", "rotation_deg"}.
+//       error gt_{k,k+1}^-1 est_{k,k+1} (ComputeRpe, delta 1):
+//       {"translation_m", "rotation_deg"}.
 
 #include <ceres/ceres.h>
 #include <gflags/gflags.h>
@@ -47,6 +49,7 @@
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/cost/robust_loss.h"
+#include "mlndt/eval/trajectory_metrics.h"
 #include "tools/common/json_writer.h"
 #include "tools/common/registration_flags.h"
 
@@ -231,31 +234,24 @@ struct Metrics {
   double rpe_rotation_deg = 0.0;
 };
 
-Metrics Evaluate(const std::vector<Isometry3d>& estimate,
-                 const std::vector<Isometry3d>& truth) {
-  Metrics metrics;
-  const Isometry3d align = truth[0] * estimate[0].inverse();
-  double sum_squares = 0.0;
-  for (size_t k = 0; k < estimate.size(); ++k) {
-    sum_squares +=
-        (truth[k].translation() - (align * estimate[k]).translation())
-            .squaredNorm();
+// ATE after aligning the first poses, and the mean RPE of consecutive scans
+// (mlndt/eval/trajectory_metrics.h).
+bool Evaluate(const std::vector<Isometry3d>& estimate,
+              const std::vector<Isometry3d>& truth,
+              Metrics* metrics,
+              std::string* error) {
+  AteOptions ate_options;
+  ate_options.alignment = TrajectoryAlignment::FIRST_POSE;
+  AteSummary ate;
+  RpeSummary rpe;
+  if (!ComputeAte(ate_options, truth, estimate, &ate, error) ||
+      !ComputeRpe(RpeOptions(), truth, estimate, &rpe, error)) {
+    return false;
   }
-  metrics.ate_m = std::sqrt(sum_squares / static_cast<double>(estimate.size()));
-  for (size_t k = 0; k + 1 < estimate.size(); ++k) {
-    const Isometry3d relative_estimate =
-        estimate[k].inverse() * estimate[k + 1];
-    const Isometry3d relative_truth = truth[k].inverse() * truth[k + 1];
-    metrics.rpe_translation_m +=
-        TranslationErrorM(relative_truth, relative_estimate);
-    metrics.rpe_rotation_deg +=
-        RotationErrorRad(relative_truth, relative_estimate) * kRadToDeg;
-  }
-  const double steps =
-      static_cast<double>(std::max<size_t>(1, estimate.size() - 1));
-  metrics.rpe_translation_m /= steps;
-  metrics.rpe_rotation_deg /= steps;
-  return metrics;
+  metrics->ate_m = ate.rmse_m;
+  metrics->rpe_translation_m = rpe.translation_m.mean;
+  metrics->rpe_rotation_deg = rpe.rotation_deg.mean;
+  return true;
 }
 
 std::string RpeJson(const Metrics& metrics) {
@@ -365,8 +361,11 @@ int Run() {
       .AddNumber("joint_cost_at_chained", joint_result.chained_cost_last_stage)
       .AddNumber("joint_final_cost", joint_result.final_cost);
   if (!truth.empty()) {
-    const Metrics chained_metrics = Evaluate(chained, truth);
-    const Metrics joint_metrics = Evaluate(joint, truth);
+    Metrics chained_metrics, joint_metrics;
+    if (!Evaluate(chained, truth, &chained_metrics, &error) ||
+        !Evaluate(joint, truth, &joint_metrics, &error)) {
+      return Fail(error);
+    }
     json.AddString("ate_alignment", "first_pose")
         .AddNumber("ate_chained_m", chained_metrics.ate_m)
         .AddNumber("ate_joint_m", joint_metrics.ate_m)

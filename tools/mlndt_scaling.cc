@@ -58,6 +58,8 @@
 #include <vector>
 
 #include "mlndt/common/pose.h"
+#include "mlndt/eval/dataset.h"
+#include "mlndt/eval/statistics.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/pair_evaluation.h"
 #include "tools/common/progress.h"
@@ -135,12 +137,10 @@ bool LoadMergedCloud(PointCloud* merged,
                      size_t* num_scans,
                      std::string* error) {
   std::vector<std::string> paths;
-  if (!tools::ListScanFiles(
-          FLAGS_scans, {FLAGS_poses, FLAGS_calib}, &paths, error))
+  if (!ListScanFiles(FLAGS_scans, {FLAGS_poses, FLAGS_calib}, &paths, error))
     return false;
   std::vector<Isometry3d> world_from_scan;
-  if (!tools::ReadSequencePoses(
-          FLAGS_poses, FLAGS_calib, &world_from_scan, error))
+  if (!ReadSequencePoses(FLAGS_poses, FLAGS_calib, &world_from_scan, error))
     return false;
   if (world_from_scan.size() < paths.size()) {
     *error = FLAGS_poses + " has " + std::to_string(world_from_scan.size()) +
@@ -245,10 +245,10 @@ bool MeasureSize(const MatcherOptions& options,
     solve_ms.push_back(summary.solve_time_s * 1e3);
     total_ms.push_back(summary.total_time_s * 1e3);
   }
-  result->map_ms = tools::ComputeStats(map_ms).median;
-  result->sampling_ms = tools::ComputeStats(sampling_ms).median;
-  result->solve_ms = tools::ComputeStats(solve_ms).median;
-  result->total_ms = tools::ComputeStats(total_ms).median;
+  result->map_ms = ComputeStats(map_ms).median;
+  result->sampling_ms = ComputeStats(sampling_ms).median;
+  result->solve_ms = ComputeStats(solve_ms).median;
+  result->total_ms = ComputeStats(total_ms).median;
   // Registration is deterministic: the last run stands for all.
   result->sampled_points = summary.sampled_points;
   result->iterations = summary.num_iterations;

@@ -50,6 +50,7 @@
 
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/eval/dataset.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_writer.h"
 #include "tools/common/progress.h"
@@ -153,11 +154,10 @@ int Run() {
   }
 
   std::vector<std::string> paths;
-  if (!tools::ListScanFiles(
-          FLAGS_scans,
-          {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path},
-          &paths,
-          &error)) {
+  if (!ListScanFiles(FLAGS_scans,
+                     {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path},
+                     &paths,
+                     &error)) {
     return Fail(error);
   }
   if (FLAGS_max_scans > 0 &&
@@ -170,7 +170,7 @@ int Run() {
   }
   std::vector<Isometry3d> truth, odometry;
   if (!FLAGS_gt_poses.empty() &&
-      !tools::ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &truth, &error)) {
+      !ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &truth, &error)) {
     return Fail(error);
   }
   if (!truth.empty() && truth.size() < paths.size()) {
@@ -181,7 +181,7 @@ int Run() {
     return Fail("--init=gt_fraction:c needs --gt_poses");
   }
   if (options.init.mode == tools::InitMode::POSES) {
-    if (!tools::ReadSequencePoses(
+    if (!ReadSequencePoses(
             options.init.poses_path, FLAGS_calib, &odometry, &error)) {
       return Fail(error);
     }

@@ -1,8 +1,9 @@
 #pragma once
 
 // The scans of a sequence folder for the evaluation tools (mlndt_sequence,
-// mlndt_experiments): listing, ground-truth poses, and a store that reads
-// each scan once and builds each scan's reference map once.
+// mlndt_experiments): a store that reads each scan once and builds each
+// scan's reference map once. Listing the scans and reading ground-truth
+// poses are in mlndt/eval/dataset.h.
 //
 // Map reuse follows ML-NDT Section 4.3: in a sequence the input scan at t_i
 // is the reference at t_{i+1}, so its map is built once and then reused;
@@ -18,76 +19,13 @@
 #include <system_error>
 #include <vector>
 
-#include "mlndt/cloud/cloud_format.h"
 #include "mlndt/cloud/io.h"
-#include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/timer.h"
+#include "mlndt/eval/dataset.h"
 #include "mlndt/grid/layered_grid.h"
 
 namespace mlndt {
 namespace tools {
-
-// Lists the regular files directly in `dir` whose extension is a cloud
-// format (cloud_format.h), sorted by file name. Files that are the same as a
-// path in `exclude` (pose or calibration files kept beside the scans; .txt
-// is also a cloud extension) are left out. False with *error when the folder
-// cannot be read or holds no scans.
-inline bool ListScanFiles(const std::string& dir,
-                          const std::vector<std::string>& exclude,
-                          std::vector<std::string>* paths,
-                          std::string* error) {
-  namespace fs = std::filesystem;
-  paths->clear();
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    *error = dir + ": not a folder";
-    return false;
-  }
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    std::error_code file_ec;
-    if (!entry.is_regular_file(file_ec)) continue;
-    CloudFormat format;
-    std::string ignored;
-    if (!CloudFormatFromPath(entry.path().string(), &format, &ignored))
-      continue;
-    const bool excluded =
-        std::any_of(exclude.begin(), exclude.end(), [&](const std::string& e) {
-          std::error_code eq_ec;
-          return !e.empty() && fs::equivalent(entry.path(), e, eq_ec);
-        });
-    if (!excluded) paths->push_back(entry.path().string());
-  }
-  if (ec) {
-    *error = dir + ": " + ec.message();
-    return false;
-  }
-  std::sort(paths->begin(),
-            paths->end(),
-            [](const std::string& a, const std::string& b) {
-              return fs::path(a).filename() < fs::path(b).filename();
-            });
-  if (paths->empty()) {
-    *error = dir + ": no point-cloud files (.pcd, .ply, .bin, .3d, .xyz, .txt)";
-    return false;
-  }
-  return true;
-}
-
-// Reads KITTI poses (pose_io.h). With `calib_path`, the poses are KITTI
-// camera (cam0) poses and are converted into the scanner frame with the Tr
-// line (cam0_from_velo): V_i = Tr^-1 P_i Tr.
-inline bool ReadSequencePoses(const std::string& poses_path,
-                              const std::string& calib_path,
-                              std::vector<Isometry3d>* poses,
-                              std::string* error) {
-  if (!ReadKittiPoses(poses_path, poses, error)) return false;
-  if (calib_path.empty()) return true;
-  Isometry3d cam0_from_velo;
-  if (!ReadKittiCalibTr(calib_path, &cam0_from_velo, error)) return false;
-  const Isometry3d velo_from_cam0 = cam0_from_velo.inverse();
-  for (Isometry3d& pose : *poses) pose = velo_from_cam0 * pose * cam0_from_velo;
-  return true;
-}
 
 // A key that differs whenever two grid options can give different maps.
 inline std::string GridOptionsKey(const LayeredGridOptions& o) {

@@ -241,8 +241,10 @@ inline bool RunSequence(
     failed_so_far += r.guess_check_failed;
     if (r.has_truth) {
       r.error = ComputePoseError(r.truth, r.estimate);
-      r.success = summary.IsSolutionUsable() && IsSuccess(r.error);
-      r.strict_success = summary.IsSolutionUsable() && IsStrictSuccess(r.error);
+      r.success = summary.IsSolutionUsable() &&
+                  kPaperSuccessCriterion.IsWithin(r.error);
+      r.strict_success =
+          summary.IsSolutionUsable() && SuccessCriterion().IsWithin(r.error);
     }
     if (summary.IsSolutionUsable()) previous_estimate = r.estimate;
     results->push_back(std::move(r));
