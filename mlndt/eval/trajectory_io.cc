@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "mlndt/common/enum_strings.h"
+#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/common/pose.h"
 
 namespace mlndt {
