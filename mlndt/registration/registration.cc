@@ -36,6 +36,8 @@ void ReportSolution(const RegistrationOptions& options,
   const Eigen::FullPivLU<Matrix6d> lu(final.hessian);
   summary->covariance =
       lu.isInvertible() ? Matrix6d(2.0 * lu.inverse()) : Matrix6d::Zero();
+  summary->quality =
+      EvaluateFitQuality(last, points, xi, options.objective, 3.0);
 }
 
 // The whole ML-NDT registration after the map exists (Table 1); times are

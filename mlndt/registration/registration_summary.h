@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mlndt/common/types.h"
+#include "mlndt/cost/fit_quality.h"
 #include "mlndt/solvers/backend.h"
 
 namespace mlndt {
@@ -41,6 +42,9 @@ struct RegistrationSummary {
   double sampling_time_s = 0.0;
   double solve_time_s = 0.0;
   double total_time_s = 0.0;  // Everything after the clouds were loaded.
+
+  // The fit at the solution on the last layer (fit_quality.h).
+  FitQuality quality;
 
   size_t map_occupied_cells = 0;  // Over all layers of the reference map.
   size_t map_bytes = 0;           // LayeredGrid::MemoryBytes() of the map.
