@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/internal/enum_strings.h"
 
 namespace mlndt {
 namespace {
@@ -13,7 +14,8 @@ namespace {
 // Zeroth, first and second moments of a cell's points, relative to a fixed
 // centre (the box centre) so that far-away coordinates keep their precision.
 struct Moments {
-  int64_t count = 0;
+  int64_t count = 0;    // Points.
+  double weight = 0.0;  // Sum of weights (CoarseWeighting::FINEST_CELLS).
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
 
@@ -29,8 +31,16 @@ struct Moments {
   }
   void Merge(const Moments& other) {
     count += other.count;
+    weight += other.weight;
     sum += other.sum;
     outer += other.outer;
+  }
+  // Scales the moments so that the cell weighs 1 whatever its point count.
+  void WeighAsOne() {
+    const double n = static_cast<double>(count);
+    sum /= n;
+    outer /= n;
+    weight = 1.0;
   }
 };
 
@@ -38,6 +48,7 @@ struct Moments {
 struct RawLayer {
   std::vector<int64_t> keys;
   std::vector<Moments> moments;
+  bool weighted = false;  // Moments weighted per finest cell, not per point.
 };
 
 struct LayerGeometry {
@@ -207,6 +218,7 @@ RawLayer Aggregate(const RawLayer& fine,
     }
     raw.moments[static_cast<size_t>(slot)].Merge(fine.moments[i]);
   }
+  raw.weighted = fine.weighted;
   return raw;
 }
 
@@ -235,10 +247,19 @@ NdtLayer FinishLayer(const RawLayer& raw,
       continue;
     }
     const double n = static_cast<double>(m.count);
-    const Eigen::Vector3d mean = m.sum / n;
     const Eigen::Matrix3d outer = m.outer.selfadjointView<Eigen::Upper>();
-    const Eigen::Matrix3d covariance =
-        (outer - n * mean * mean.transpose()) / (n - 1.0);
+    Eigen::Vector3d mean;
+    Eigen::Matrix3d covariance;
+    if (raw.weighted) {
+      // The mixture of the finest cells, each weighing 1; n / (n - 1) makes
+      // it Eq. (3) when one finest cell fills the cell.
+      mean = m.sum / m.weight;
+      covariance =
+          (outer / m.weight - mean * mean.transpose()) * (n / (n - 1.0));
+    } else {
+      mean = m.sum / n;
+      covariance = (outer - n * mean * mean.transpose()) / (n - 1.0);
+    }
     outcome = MakeNdtCell(static_cast<int32_t>(m.count),
                           mean + centre,
                           covariance,
@@ -299,6 +320,23 @@ int NumLayers(const LayeredGridOptions& options, double volume) {
 
 }  // namespace
 
+const char* CoarseWeightingToString(CoarseWeighting weighting) {
+  switch (weighting) {
+    case CoarseWeighting::POINTS:
+      return "POINTS";
+    case CoarseWeighting::FINEST_CELLS:
+      return "FINEST_CELLS";
+  }
+  return "UNKNOWN";
+}
+
+bool StringToCoarseWeighting(std::string value, CoarseWeighting* result) {
+  UpperCase(&value);
+  MLNDT_STRING_TO_ENUM(POINTS, CoarseWeighting);
+  MLNDT_STRING_TO_ENUM(FINEST_CELLS, CoarseWeighting);
+  return false;
+}
+
 bool LayeredGridOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_IN_RANGE(division_constant, 2, 512);
   MLNDT_OPTION_IN_RANGE(max_num_layers, 1, 16);
@@ -310,6 +348,7 @@ bool LayeredGridOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_IN_RANGE(min_points_per_cell, 4, 1000000);
   MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_ratio, 1e-9, 1.0);
   MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_m2, 0.0, 1e6);
+  MLNDT_OPTION_ENUM(coarse_weighting, CoarseWeightingToString);
   return true;
 }
 
@@ -323,7 +362,8 @@ bool operator==(const LayeredGridOptions& a, const LayeredGridOptions& b) {
          a.regularization.min_eigenvalue_ratio ==
              b.regularization.min_eigenvalue_ratio &&
          a.regularization.min_eigenvalue_m2 ==
-             b.regularization.min_eigenvalue_m2;
+             b.regularization.min_eigenvalue_m2 &&
+         a.coarse_weighting == b.coarse_weighting;
 }
 
 LayeredGridOptions PaperLayeredGridOptions() {
@@ -426,6 +466,11 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
       raw = BinPoints(
           reference.points(), origin, centre, geometry[l], num_threads);
     } else {
+      if (options.coarse_weighting == CoarseWeighting::FINEST_CELLS &&
+          !raw.weighted) {
+        for (Moments& m : raw.moments) m.WeighAsOne();
+        raw.weighted = true;
+      }
       raw = Aggregate(raw, geometry[l + 1], geometry[l], ratio);
     }
     info[l].layer = i;

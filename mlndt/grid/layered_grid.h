@@ -31,6 +31,20 @@
 
 namespace mlndt {
 
+// How the points of a coarse cell are weighted in its mean and covariance.
+enum class CoarseWeighting {
+  POINTS,  // Every point alike (Eqs. 2-3).
+  // Every finest-layer cell alike: the coarse cell is the mixture of its
+  // finest cells' distributions. A scanner samples the ground near it far
+  // more densely than the scene farther out, and those points travel with
+  // it; weighting the finest cells alike keeps them from dominating the
+  // coarse cells. Needs nested layers (q a perfect cube); POINTS otherwise.
+  FINEST_CELLS,
+};
+
+const char* CoarseWeightingToString(CoarseWeighting weighting);
+bool StringToCoarseWeighting(std::string value, CoarseWeighting* weighting);
+
 // The library's map; PaperLayeredGridOptions() is the paper's (n = 4).
 struct LayeredGridOptions {
   // q: layer i has about q^i cells over the bounding box. In [2, 512].
@@ -53,6 +67,9 @@ struct LayeredGridOptions {
   // Covariance regularisation (ndt_cell.h). min_eigenvalue_ratio in
   // [1e-9, 1], min_eigenvalue_m2 in [0, 1e6].
   CellRegularization regularization;
+  // Weights of the points in the coarse layers' moments (the finest layer
+  // always weighs every point alike).
+  CoarseWeighting coarse_weighting = CoarseWeighting::POINTS;
 
   bool IsValid(std::string* error) const;
 };

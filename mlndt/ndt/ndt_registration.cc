@@ -152,7 +152,8 @@ void RegisterOnGrid(const NdtOptions& options,
   if (map.empty()) return Fail("the reference map is empty", summary);
   std::string error;
   PointCloud sampled;
-  if (!internal::SampleInput(options.sampling,
+  if (!internal::SampleInput(options.range_filter,
+                             options.sampling,
                              input,
                              initial_reference_from_input,
                              &sampled,
@@ -189,7 +190,8 @@ bool NdtOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_IN_RANGE(max_step_norm, 0.0, 1e3);
   MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
   MLNDT_OPTION_IN_RANGE(min_matched_fraction, 0.0, 1.0);
-  return sampling.IsValid(error) && newton.IsValid(error);
+  return range_filter.IsValid(error) && sampling.IsValid(error) &&
+         newton.IsValid(error);
 }
 
 bool NdtGridOptions(const NdtOptions& options,
@@ -230,12 +232,15 @@ void RegisterNdt(const NdtOptions& options,
   const double start = NowSeconds();
   std::string error;
   LayeredGridOptions grid_options;
+  PointCloud filtered;
   LayeredGrid map;
   if (!options.IsValid(&error)) {
     Fail(error, summary);
-  } else if (!NdtGridOptions(options, reference, &grid_options, &error) ||
+  } else if (!internal::FilterReference(
+                 options.range_filter, reference, &filtered, &error) ||
+             !NdtGridOptions(options, filtered, &grid_options, &error) ||
              !LayeredGrid::Build(
-                 grid_options, reference, options.num_threads, &map, &error)) {
+                 grid_options, filtered, options.num_threads, &map, &error)) {
     Fail("reference map: " + error, summary);
   } else {
     summary->map_time_s = NowSeconds() - start;

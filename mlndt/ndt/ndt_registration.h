@@ -15,6 +15,7 @@
 #include <string>
 
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/cloud/range_filter.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/ndt/gaussian_score.h"
@@ -25,6 +26,9 @@
 namespace mlndt {
 
 struct NdtOptions {
+  // Returns that are not measurements (range_filter.h), dropped from the
+  // input and, when RegisterNdt builds the grid, the reference.
+  RangeFilterOptions range_filter;
   // Cell edge [m]. 0: the paper's comparison cell, one layer-2 cell of the
   // ML-NDT map (q = 8) over the reference box, (V / 64)^(1/3) (Section 5.1;
   // ~15 m on a KITTI scan). PCL users run 1-2 m outdoors. 0, or in

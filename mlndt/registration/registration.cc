@@ -53,7 +53,8 @@ void RegisterOnMap(const RegistrationOptions& options,
   std::unique_ptr<Backend> backend = CreateBackend(options.backend, &error);
   if (!backend) return Fail(error, summary);
   PointCloud sampled;
-  if (!internal::SampleInput(options.sampling,
+  if (!internal::SampleInput(options.range_filter,
+                             options.sampling,
                              input,
                              initial_reference_from_input,
                              &sampled,
@@ -134,11 +135,14 @@ void Register(const RegistrationOptions& options,
   *summary = RegistrationSummary();
   const double start = NowSeconds();
   std::string error;
+  PointCloud filtered;
   LayeredGrid map;
   if (!options.IsValid(&error)) {
     Fail(error, summary);
-  } else if (!LayeredGrid::Build(
-                 options.grid, reference, options.num_threads, &map, &error)) {
+  } else if (!internal::FilterReference(
+                 options.range_filter, reference, &filtered, &error) ||
+             !LayeredGrid::Build(
+                 options.grid, filtered, options.num_threads, &map, &error)) {
     Fail("reference map: " + error, summary);
   } else {
     summary->map_time_s = NowSeconds() - start;

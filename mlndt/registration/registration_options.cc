@@ -5,9 +5,9 @@
 namespace mlndt {
 
 bool RegistrationOptions::IsValid(std::string* error) const {
-  if (!grid.IsValid(error) || !sampling.IsValid(error) ||
-      !schedule.IsValid(error) || !objective.IsValid(error) ||
-      !backend.IsValid(error)) {
+  if (!range_filter.IsValid(error) || !grid.IsValid(error) ||
+      !sampling.IsValid(error) || !schedule.IsValid(error) ||
+      !objective.IsValid(error) || !backend.IsValid(error)) {
     return false;
   }
   MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);

@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "mlndt/cloud/range_filter.h"
 #include "mlndt/cost/objective_options.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/sampling/point_sampler.h"
@@ -17,6 +18,10 @@
 namespace mlndt {
 
 struct RegistrationOptions {
+  // Returns of the raw scans that are not measurements (at the sensor, at a
+  // saturated maximum range): dropped from the input, and from the reference
+  // when Register builds its map.
+  RangeFilterOptions range_filter;
   // The reference map (used by the Register overload that builds it).
   LayeredGridOptions grid;
   // Which input points become residuals (Section 4.3).
@@ -42,7 +47,8 @@ struct RegistrationOptions {
 // The paper's configuration (Sections 4 and 5): n = 4 layers, start on
 // layer 2, 3 iterations a layer with every sampled point, the plain Eq. (10)
 // sum over own cells, Newton. GBS sampling and the covariance
-// regularisation (including its absolute floor) are the library's.
+// regularisation (including its absolute floor) and the range filter are the
+// library's.
 RegistrationOptions PaperRegistrationOptions();
 
 }  // namespace mlndt

@@ -32,8 +32,9 @@ struct RegistrationSummary {
   int num_layers = 0;
   double finest_cell_size_m = 0.0;  // Cell edge of the last layer [m].
 
-  size_t input_points = 0;    // Finite input points.
-  size_t sampled_points = 0;  // Points that became residuals.
+  size_t input_points = 0;           // Points of the input cloud.
+  size_t range_filtered_points = 0;  // Of those, dropped by the range filter.
+  size_t sampled_points = 0;         // Points that became residuals.
   // Sampled points in a cell at the solution (last layer), and the rest.
   size_t matched_points = 0;
   size_t unmatched_points = 0;

@@ -421,3 +421,61 @@ TEST(LayeredGrid, MemoryBytesCoversTheCellsAndGrowsWithThem) {
 
 }  // namespace
 }  // namespace mlndt
+
+namespace mlndt {
+namespace {
+
+TEST(LayeredGrid, FinestCellWeightingMakesCoarseCellsTheMixtureOfFineCells) {
+  // 200 points near (1, 1, 1) and 20 near (3, 1, 1), plus a far corner that
+  // makes the box 16 m: layers of 8, 4 and 2 m cells. The clusters have
+  // finest (2 m) cells of their own and share a 4 m cell.
+  std::mt19937 rng(21);
+  std::normal_distribution<double> n(0.0, 0.1);
+  PointCloud cloud;
+  for (int i = 0; i < 200; ++i) {
+    cloud.Add(Eigen::Vector3d(1 + n(rng), 1 + n(rng), 1 + n(rng)));
+  }
+  for (int i = 0; i < 20; ++i) {
+    cloud.Add(Eigen::Vector3d(3 + n(rng), 1 + n(rng), 1 + n(rng)));
+  }
+  cloud.Add(Eigen::Vector3d(0, 0, 0));
+  for (int i = 0; i < 5; ++i) cloud.Add(Eigen::Vector3d(16, 16, 16));
+  LayeredGridOptions options = PaperLayeredGridOptions();
+  options.num_layers = 3;
+  LayeredGrid points, cells;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(options, cloud, &points, &error)) << error;
+  options.coarse_weighting = CoarseWeighting::FINEST_CELLS;
+  ASSERT_TRUE(LayeredGrid::Build(options, cloud, &cells, &error)) << error;
+  ASSERT_NEAR(points.layer(3).cell_size(), 2.0, 1e-9);
+  const Eigen::Vector3d dense(1, 1, 1), sparse(3, 1, 1);
+  // The finest layer is the same either way.
+  ASSERT_NE(points.layer(3).Lookup(dense), nullptr);
+  EXPECT_EQ(points.layer(3).Lookup(dense)->mean,
+            cells.layer(3).Lookup(dense)->mean);
+  const Eigen::Vector3d mean_dense = points.layer(3).Lookup(dense)->mean;
+  const Eigen::Vector3d mean_sparse = points.layer(3).Lookup(sparse)->mean;
+  // Layer 2 (4 m): by points the mean sits near the dense cluster, by finest
+  // cells halfway between the two clusters' means.
+  const NdtCell* by_points = points.layer(2).Lookup(dense);
+  const NdtCell* by_cells = cells.layer(2).Lookup(dense);
+  ASSERT_NE(by_points, nullptr);
+  ASSERT_NE(by_cells, nullptr);
+  EXPECT_EQ(by_points->count, 221);
+  EXPECT_EQ(by_cells->count, 221);
+  EXPECT_NEAR(by_points->mean.x(), 1.18, 0.03);
+  // (The corner at the origin is in the dense cluster's finest cell.)
+  EXPECT_LT((by_cells->mean - (mean_dense + mean_sparse) / 2.0).norm(),
+            1e-12);
+  // Its covariance spans the clusters: x variance ~ (2 m / 2)^2.
+  EXPECT_GT(by_cells->covariance(0, 0), 0.8);
+  EXPECT_LT(by_points->covariance(0, 0), 0.5);
+  std::string name = CoarseWeightingToString(CoarseWeighting::FINEST_CELLS);
+  CoarseWeighting parsed = CoarseWeighting::POINTS;
+  EXPECT_TRUE(StringToCoarseWeighting("finest_cells", &parsed));
+  EXPECT_EQ(parsed, CoarseWeighting::FINEST_CELLS);
+  EXPECT_EQ(name, "FINEST_CELLS");
+}
+
+}  // namespace
+}  // namespace mlndt

@@ -265,10 +265,15 @@ TEST(Registration, PrebuiltMapGivesTheSameResult) {
   const PointCloud input =
       TransformCloud(truth.inverse(), testing::StreetScene(40000, 0.02, 10));
   const RegistrationOptions options;
+  // The overload that builds the map drops the reference's returns near the
+  // sensor first; the caller does it for a prebuilt map.
+  RangeFilterSummary filtered;
+  const PointCloud kept =
+      FilterByRange(options.range_filter, reference, &filtered);
+  ASSERT_GT(filtered.too_close, 0u);
   LayeredGrid map;
   std::string error;
-  ASSERT_TRUE(LayeredGrid::Build(options.grid, reference, &map, &error))
-      << error;
+  ASSERT_TRUE(LayeredGrid::Build(options.grid, kept, &map, &error)) << error;
   RegistrationSummary with_map, with_cloud;
   Register(options, map, input, Isometry3d::Identity(), &with_map);
   Register(options, reference, input, Isometry3d::Identity(), &with_cloud);

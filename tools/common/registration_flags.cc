@@ -43,6 +43,16 @@ DEFINE_double(min_eigenvalue, mlndt::CellRegularization().min_eigenvalue_m2,
               "Absolute floor on cell covariance eigenvalues [m^2]");
 DEFINE_double(min_eigenvalue_ratio, mlndt::CellRegularization().min_eigenvalue_ratio,
               "Cell eigenvalues are floored at this fraction of the largest (paper: 0.01)");
+DEFINE_string(coarse_weighting, "points",
+              "Weights in the coarse layers' moments: points | finest_cells (every finest "
+              "cell alike)");
+DEFINE_double(min_range, mlndt::RangeFilterOptions().min_range_m,
+              "Input (and reference) points closer than this to the sensor are dropped [m]");
+DEFINE_double(max_range, mlndt::RangeFilterOptions().max_range_m,
+              "Points farther than this are dropped [m]; 0 keeps all");
+DEFINE_double(saturated_range_fraction, mlndt::RangeFilterOptions().saturated_range_fraction,
+              "Points at the largest range are dropped when at least this fraction of the "
+              "scan is there (0 = off)");
 DEFINE_int32(iterations_per_layer, mlndt::LayerScheduleOptions().iterations_per_layer,
              "Iterations on each layer before the last");
 DEFINE_int32(max_iterations, mlndt::LayerScheduleOptions().max_final_iterations,
@@ -108,6 +118,14 @@ bool ParseSampling(SamplingOptions* sampling, std::string* error) {
   return true;
 }
 
+void ParseRangeFilter(RangeFilterOptions* filter) {
+  if (Given("min_range")) filter->min_range_m = FLAGS_min_range;
+  if (Given("max_range")) filter->max_range_m = FLAGS_max_range;
+  if (Given("saturated_range_fraction")) {
+    filter->saturated_range_fraction = FLAGS_saturated_range_fraction;
+  }
+}
+
 void ParseCells(int* min_points, CellRegularization* regularization) {
   if (Given("min_points_per_cell")) *min_points = FLAGS_min_points_per_cell;
   if (Given("min_eigenvalue")) {
@@ -124,6 +142,7 @@ const std::vector<const char*> kMlNdtOnlyFlags = {"backend",
                                                   "num_layers",
                                                   "division_constant",
                                                   "finest_cell_size",
+                                                  "coarse_weighting",
                                                   "iterations_per_layer",
                                                   "max_iterations",
                                                   "coarse_step_tolerance",
@@ -201,7 +220,15 @@ bool ParseMlNdt(RegistrationOptions* options, std::string* error) {
         "from it): give --finest_cell_size=0 with --num_layers";
     return false;
   }
+  if (Given("coarse_weighting") &&
+      !StringToCoarseWeighting(FLAGS_coarse_weighting,
+                               &grid.coarse_weighting)) {
+    *error = "--coarse_weighting=" + FLAGS_coarse_weighting +
+             ": expected points or finest_cells";
+    return false;
+  }
   ParseCells(&grid.min_points_per_cell, &grid.regularization);
+  ParseRangeFilter(&options->range_filter);
   options->num_threads = FLAGS_threads;
   return options->IsValid(error);
 }
@@ -219,6 +246,7 @@ bool ParseNdt(NdtOptions* options, std::string* error) {
   options->step_tolerance = FLAGS_step_tolerance;
   options->num_threads = FLAGS_threads;
   ParseCells(&options->min_points_per_cell, &options->regularization);
+  ParseRangeFilter(&options->range_filter);
   return ParseSampling(&options->sampling, error) && options->IsValid(error);
 }
 

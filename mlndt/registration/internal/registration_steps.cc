@@ -17,7 +17,8 @@ void Fail(const char* entry_point,
   LOG(ERROR) << entry_point << ": " << message;
 }
 
-bool SampleInput(const SamplingOptions& options,
+bool SampleInput(const RangeFilterOptions& range_filter,
+                 const SamplingOptions& options,
                  const PointCloud& input,
                  const Isometry3d& initial_reference_from_input,
                  PointCloud* sampled,
@@ -36,16 +37,37 @@ bool SampleInput(const SamplingOptions& options,
     return false;
   }
   const double t0 = NowSeconds();
+  RangeFilterSummary filter_summary;
+  const PointCloud kept = FilterByRange(range_filter, input, &filter_summary);
+  summary->input_points = input.size();
+  summary->range_filtered_points = input.size() - kept.size();
+  if (kept.empty()) {
+    *error = "the range filter (min_range_m " +
+             std::to_string(range_filter.min_range_m) +
+             ") dropped every input point";
+    return false;
+  }
   SamplingSummary sampling_summary;
-  if (!SamplePoints(options, input, sampled, &sampling_summary, error)) {
+  if (!SamplePoints(options, kept, sampled, &sampling_summary, error)) {
     *error = "sampling: " + *error;
     return false;
   }
   summary->sampling_time_s = NowSeconds() - t0;
-  summary->input_points = input.size();
   summary->sampled_points = sampled->size();
   if (sampled->empty()) {
     *error = "sampling kept no input points";
+    return false;
+  }
+  return true;
+}
+
+bool FilterReference(const RangeFilterOptions& range_filter,
+                     const PointCloud& reference,
+                     PointCloud* filtered,
+                     std::string* error) {
+  *filtered = FilterByRange(range_filter, reference, nullptr);
+  if (filtered->empty() && !reference.empty()) {
+    *error = "the range filter dropped every reference point";
     return false;
   }
   return true;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/cloud/range_filter.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/registration/registration_summary.h"
 #include "mlndt/sampling/point_sampler.h"
@@ -19,15 +20,24 @@ void Fail(const char* entry_point,
           const std::string& message,
           RegistrationSummary* summary);
 
-// Checks the input and the initial guess and samples the input (Section
-// 4.3), filling the sampling counts and time. False (and the message in
-// *error) when nothing usable is left.
-bool SampleInput(const SamplingOptions& options,
+// Checks the input and the initial guess, drops the returns the range filter
+// rejects and samples the rest (Section 4.3), filling the counts and the
+// sampling time. False (and the message in *error) when nothing usable is
+// left.
+bool SampleInput(const RangeFilterOptions& range_filter,
+                 const SamplingOptions& options,
                  const PointCloud& input,
                  const Isometry3d& initial_reference_from_input,
                  PointCloud* sampled,
                  RegistrationSummary* summary,
                  std::string* error);
+
+// The reference scan without the returns the range filter rejects; false
+// with *error when none is left.
+bool FilterReference(const RangeFilterOptions& range_filter,
+                     const PointCloud& reference,
+                     PointCloud* filtered,
+                     std::string* error);
 
 // Fills the map's layer count, finest cell, occupied cells and bytes.
 void DescribeMap(const LayeredGrid& map, RegistrationSummary* summary);
