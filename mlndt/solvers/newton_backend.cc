@@ -65,8 +65,8 @@ void MinimizeNewton(const Objective& objective,
     bool successful = true;
     if (newton_options.line_search) {
       successful = false;
-      for (int k = 0; k < newton_options.max_line_search_steps;
-           ++k, scale *= 0.5) {
+      for (int k = 0; k < newton_options.max_line_search_steps; ++k) {
+        if (k > 0) scale *= 0.5;  // The last scale tried is the one recorded.
         candidate = *xi + scale * step;
         candidate_score =
             objective.Evaluate(candidate, HessianType::NONE).score;
@@ -75,6 +75,9 @@ void MinimizeNewton(const Objective& objective,
           break;
         }
       }
+    } else {
+      // The step is taken: the trace records the score it reaches.
+      candidate_score = objective.Evaluate(candidate, HessianType::NONE).score;
     }
     if (successful) {
       *xi = candidate;
