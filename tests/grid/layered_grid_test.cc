@@ -465,8 +465,7 @@ TEST(LayeredGrid, FinestCellWeightingMakesCoarseCellsTheMixtureOfFineCells) {
   EXPECT_EQ(by_cells->count, 221);
   EXPECT_NEAR(by_points->mean.x(), 1.18, 0.03);
   // (The corner at the origin is in the dense cluster's finest cell.)
-  EXPECT_LT((by_cells->mean - (mean_dense + mean_sparse) / 2.0).norm(),
-            1e-12);
+  EXPECT_LT((by_cells->mean - (mean_dense + mean_sparse) / 2.0).norm(), 1e-12);
   // Its covariance spans the clusters: x variance ~ (2 m / 2)^2.
   EXPECT_GT(by_cells->covariance(0, 0), 0.8);
   EXPECT_LT(by_points->covariance(0, 0), 0.5);
