@@ -189,16 +189,11 @@ bool ParseBenchConfigurations(const BenchGridFlags& flags,
   return true;
 }
 
-const char* BackendFlagName(BackendType type) {
-  switch (type) {
-    case BackendType::CERES:
-      return "ceres";
-    case BackendType::NEWTON:
-      return "newton";
-    case BackendType::LEVENBERG_MARQUARDT:
-      return "lm";
-  }
-  return "unknown";
+std::string BackendFlagName(BackendType type) {
+  // The library's name in lower case; "lm" is the flags' short spelling.
+  return type == BackendType::LEVENBERG_MARQUARDT
+             ? "lm"
+             : LowerCase(BackendTypeToString(type));
 }
 
 std::string LowerCase(std::string value) {

@@ -48,7 +48,7 @@ bool ParseBenchConfigurations(const BenchGridFlags& flags,
                               std::string* error);
 
 // The flag spelling of a backend: ceres, newton, lm.
-const char* BackendFlagName(BackendType type);
+std::string BackendFlagName(BackendType type);
 
 // `value` in lower case (enum strings as flags spell them).
 std::string LowerCase(std::string value);
