@@ -22,6 +22,7 @@
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 DEFINE_string(reference,
@@ -285,17 +286,14 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Registers --input onto --reference with ML-NDT (--method=mlndt) or NDT "
-      "(--method=ndt).\n"
-      "  mlndt_align --reference=ref.pcd --input=in.pcd "
-      "[--initial_guess=tx,ty,tz,a,b,g]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_align: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Registers --input onto --reference with ML-NDT (--method=mlndt) "
+          "or NDT (--method=ndt).\n"
+          "  mlndt_align --reference=ref.pcd --input=in.pcd "
+          "[--initial_guess=tx,ty,tz,a,b,g]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();

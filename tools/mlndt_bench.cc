@@ -61,6 +61,7 @@
 #include "tools/common/bench_report.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
+#include "tools/common/tool_main.h"
 
 #ifdef MLNDT_WITH_PCL
 #include <pcl/filters/voxel_grid.h>
@@ -380,18 +381,14 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Benchmarks registration configurations on real pairs with ground "
-      "truth.\n"
-      "  mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] "
-      "[--repetitions=5] "
-      "[--compare_pcl] [--output_csv=FILE]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_bench: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Benchmarks registration configurations on real pairs with ground "
+          "truth.\n"
+          "  mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] "
+          "[--repetitions=5] [--compare_pcl] [--output_csv=FILE]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();

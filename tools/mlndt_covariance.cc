@@ -52,6 +52,7 @@
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 
 // clang-format off
 DEFINE_string(data_dir, MLNDT_DATA_DIR, "Folder with kitti/ and koide3/ (the repository's data/)");
@@ -301,13 +302,15 @@ int Main() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Compares the registration covariance with the spread of many "
-      "registrations.\n"
-      "  mlndt_covariance [--datasets=kitti,koide3] [--starts=20] "
-      "[--output_json=FILE]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+  if (!mlndt::tools::StartTool(
+          "Compares the registration covariance with the spread of many "
+          "registrations.\n"
+          "  mlndt_covariance [--datasets=kitti,koide3] [--starts=20] "
+          "[--output_json=FILE]",
+          false,
+          &argc,
+          &argv)) {
+    return 1;
+  }
   return mlndt::Main();
 }

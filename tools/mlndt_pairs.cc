@@ -28,6 +28,7 @@
 #include "mlndt/eval/statistics.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 
 DEFINE_string(scans, "", "Folder of scans (sorted by file name)");
 DEFINE_string(gt_poses,
@@ -205,10 +206,12 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Registers scan pairs with ground truth and reports success rates.");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+  if (!mlndt::tools::StartTool(
+          "Registers scan pairs with ground truth and reports success rates.",
+          false,
+          &argc,
+          &argv)) {
+    return 1;
+  }
   return mlndt::Run();
 }

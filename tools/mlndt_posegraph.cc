@@ -52,6 +52,7 @@
 #include "tools/common/json_writer.h"
 #include "tools/common/posegraph_metrics.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (files with a cloud extension, sorted by name)");
@@ -371,12 +372,15 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Chained ML-NDT odometry and a joint refinement of all scan poses.\n"
-      "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
-      "[--output_dir=DIR]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+  if (!mlndt::tools::StartTool(
+          "Chained ML-NDT odometry and a joint refinement of all scan "
+          "poses.\n"
+          "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
+          "[--output_dir=DIR]",
+          false,
+          &argc,
+          &argv)) {
+    return 1;
+  }
   return mlndt::Run();
 }

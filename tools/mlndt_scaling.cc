@@ -65,6 +65,7 @@
 #include "tools/common/registration_flags.h"
 #include "tools/common/scaling_measure.h"
 #include "tools/common/scaling_report.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -348,19 +349,14 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Times map build, sampling and solve of a registration against the cloud "
-      "size on real "
-      "scans.\n"
-      "  mlndt_scaling [--sizes=10000,30000,100000,300000,990000] "
-      "[--repetitions=3] "
-      "[--output_dir=OUT]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_scaling: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Times map build, sampling and solve of a registration against the "
+          "cloud size on real scans.\n"
+          "  mlndt_scaling [--sizes=10000,30000,100000,300000,990000] "
+          "[--repetitions=3] [--output_dir=OUT]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();

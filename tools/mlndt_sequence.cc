@@ -64,6 +64,7 @@
 #include "tools/common/registration_flags.h"
 #include "tools/common/sequence_output.h"
 #include "tools/common/sequence_plots.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -372,18 +373,14 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Registers a scan sequence pair by pair and evaluates it against ground "
-      "truth.\n"
-      "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
-      "[--step=1] "
-      "[--init=zero]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_sequence: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Registers a scan sequence pair by pair and evaluates it against "
+          "ground truth.\n"
+          "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
+          "[--step=1] [--init=zero]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();
