@@ -267,9 +267,9 @@ int Run() {
                                               !expected_path.empty(),
                                               translation_error,
                                               rotation_error_deg);
-    std::ofstream out(FLAGS_output_json);
-    out << json.str() << "\n";
-    if (!out) return Fail(FLAGS_output_json + ": cannot write");
+    if (!tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+      return Fail(error);
+    }
   }
   if (!FLAGS_output_cloud.empty() &&
       !WritePointCloud(FLAGS_output_cloud,

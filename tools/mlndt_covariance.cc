@@ -290,10 +290,9 @@ int Main() {
       .AddNumber("max_translation_m", FLAGS_max_translation)
       .AddNumber("max_rotation_deg", FLAGS_max_rotation)
       .AddBool("vary_sampling_seed", FLAGS_vary_sampling_seed);
-  if (!FLAGS_output_json.empty()) {
-    std::ofstream out(FLAGS_output_json);
-    out << json.str() << "\n";
-    if (!out.good()) return Fail(FLAGS_output_json + ": cannot write");
+  if (!FLAGS_output_json.empty() &&
+      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+    return Fail(error);
   }
   return 0;
 }

@@ -360,10 +360,9 @@ int Run() {
       .AddNumber("time_joint_s", joint_done - chained_done)
       .AddNumber("time_total_s", joint_done - start);
   std::cout << json.str() << std::endl;
-  if (!FLAGS_output_json.empty()) {
-    std::ofstream out(FLAGS_output_json);
-    out << json.str() << "\n";
-    if (!out.good()) return Fail(FLAGS_output_json + ": cannot write");
+  if (!FLAGS_output_json.empty() &&
+      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+    return Fail(error);
   }
   return 0;
 }

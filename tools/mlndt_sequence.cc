@@ -279,14 +279,11 @@ bool WriteFiles(const SequenceOptions& options,
       !tools::WriteTraceCsv(out + "trace.csv", results, error)) {
     return false;
   }
-  {
-    std::ofstream json(out + "summary.json");
-    json << tools::SummaryJson(SummaryHeader(options, store.size()), results)
-         << "\n";
-    if (!json) {
-      *error = out + "summary.json: cannot write";
-      return false;
-    }
+  if (!tools::WriteJsonFile(
+          out + "summary.json",
+          tools::SummaryJson(SummaryHeader(options, store.size()), results),
+          error)) {
+    return false;
   }
   if (!WriteKittiPoses(out + "trajectory.txt",
                        ChainTrajectory(results, options.step, false),
