@@ -19,7 +19,10 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/json_writer.h"
+#include "tools/common/list_flags.h"
+#include "tools/common/matrix_text.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 DEFINE_string(reference,
@@ -79,24 +82,9 @@ bool InitialGuessFromFlags(Isometry3d* reference_from_input,
     return true;
   }
   if (!FLAGS_initial_matrix.empty()) {
-    if (!tools::ParseNumberList(FLAGS_initial_matrix, &v) || v.size() != 12) {
-      *error =
-          "--initial_matrix needs 12 comma-separated numbers (row-major 3x4)";
-      return false;
-    }
-    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-    for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[static_cast<size_t>(i)];
-    const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
-    if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-3 ||
-        r.determinant() < 0) {
-      *error = "--initial_matrix: the 3x3 part is not a rotation";
-      return false;
-    }
-    reference_from_input->matrix() = m;
-    // Re-orthonormalise the rotation read from text.
-    reference_from_input->linear() =
-        Eigen::Quaterniond(r).normalized().toRotationMatrix();
-    return true;
+    if (!tools::ParseNumberList(FLAGS_initial_matrix, &v)) v.clear();
+    return tools::RowMajorToRigidTransform(
+        v, "--initial_matrix", reference_from_input, error);
   }
   *reference_from_input = Isometry3d::Identity();
   return true;
@@ -130,21 +118,106 @@ std::string TraceJson(const RegistrationSummary& summary) {
   return out + "]";
 }
 
+// The result as mlndt_align's JSON object (README: align_result.json).
+tools::JsonObject ResultJson(const std::string& reference_path,
+                             const std::string& input_path,
+                             Method method,
+                             const RegistrationSummary& summary,
+                             double peak_bytes,
+                             bool has_expected,
+                             double translation_error,
+                             double rotation_error_deg) {
+  tools::JsonObject json;
+  json.AddString("reference", reference_path)
+      .AddString("input", input_path)
+      .AddString("method", MethodToString(method))
+      .Add("reference_from_input", MatrixJson(summary.reference_from_input))
+      .AddBool("converged",
+               summary.termination_type == TerminationType::CONVERGENCE)
+      .AddString("termination",
+                 TerminationTypeToString(summary.termination_type))
+      .AddString("message", summary.message)
+      .AddNumber("iterations", summary.num_iterations)
+      .Add("iterations_per_layer",
+           tools::JsonArray(summary.iterations_per_layer))
+      .AddNumber("start_layer", summary.start_layer)
+      .AddNumber("num_layers", summary.num_layers)
+      .AddNumber("score", summary.final_score)
+      .AddNumber("initial_score", summary.initial_score)
+      .AddNumber("sampled_points", static_cast<double>(summary.sampled_points))
+      .AddNumber("matched_points", static_cast<double>(summary.matched_points))
+      .AddNumber("unmatched_points",
+                 static_cast<double>(summary.unmatched_points))
+      .Add("time_ms",
+           tools::JsonObject()
+               .AddNumber("total", summary.total_time_s * 1e3)
+               .AddNumber("map", summary.map_time_s * 1e3)
+               .AddNumber("sampling", summary.sampling_time_s * 1e3)
+               .AddNumber("solve", summary.solve_time_s * 1e3)
+               .str())
+      .Add("memory",
+           tools::JsonObject()
+               .AddNumber("map_bytes", static_cast<double>(summary.map_bytes))
+               .AddNumber("map_occupied_cells",
+                          static_cast<double>(summary.map_occupied_cells))
+               .AddNumber("peak_resident_bytes", peak_bytes)
+               .str())
+      .Add("covariance",
+           tools::JsonArray(std::vector<double>(
+               summary.covariance.data(), summary.covariance.data() + 36)))
+      .Add("trace", TraceJson(summary));
+  if (has_expected) {
+    json.AddNumber("translation_error_m", translation_error)
+        .AddNumber("rotation_error_deg", rotation_error_deg);
+  }
+  return json;
+}
+
+// --trace: one line per iteration.
+void PrintTrace(const RegistrationSummary& summary) {
+  for (const IterationRecord& r : summary.trace) {
+    std::printf("  iter %2d layer %d score %12.2f step %.2e %s\n",
+                r.iteration,
+                r.layer,
+                r.score,
+                r.step_norm,
+                r.step_is_successful ? "" : "(rejected)");
+  }
+}
+
+// Prints the result's distance from the expected transform (read from
+// `path`) and returns it.
+void CompareWithExpected(const Isometry3d& expected,
+                         const std::string& path,
+                         const RegistrationSummary& summary,
+                         double* translation_error,
+                         double* rotation_error_deg) {
+  *translation_error =
+      TranslationErrorM(expected, summary.reference_from_input);
+  *rotation_error_deg =
+      RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg;
+  std::printf("  vs expected:    %.4f m, %.4f deg (%s)\n",
+              *translation_error,
+              *rotation_error_deg,
+              path.c_str());
+}
+
 int Run() {
-  const bool bundled = FLAGS_reference.empty() && FLAGS_input.empty();
   if (FLAGS_reference.empty() != FLAGS_input.empty()) {
     return Fail(
         "give both --reference and --input, or neither (to align the bundled "
         "pair)");
   }
-  const std::string data_dir = MLNDT_DATA_DIR;
+  const bool bundled = FLAGS_reference.empty();
+  const std::string data_dir = std::string(MLNDT_DATA_DIR) + "/";
   const std::string reference_path =
-      bundled ? data_dir + "/" + kBundledReference : FLAGS_reference;
+      bundled ? data_dir + kBundledReference : FLAGS_reference;
   const std::string input_path =
-      bundled ? data_dir + "/" + kBundledInput : FLAGS_input;
-  std::string expected_path = FLAGS_expected_matrix_file;
-  if (bundled && expected_path.empty())
-    expected_path = data_dir + "/" + kBundledExpected;
+      bundled ? data_dir + kBundledInput : FLAGS_input;
+  const std::string expected_path =
+      bundled && FLAGS_expected_matrix_file.empty()
+          ? data_dir + kBundledExpected
+          : FLAGS_expected_matrix_file;
 
   MatcherOptions options;
   std::string error;
@@ -158,11 +231,10 @@ int Run() {
   }
 
   PointCloud reference, input;
-  ReadCloudInfo reference_info, input_info;
-  if (!ReadPointCloud(reference_path, &reference, &reference_info, &error))
+  if (!ReadPointCloud(reference_path, &reference, nullptr, &error) ||
+      !ReadPointCloud(input_path, &input, nullptr, &error)) {
     return Fail(error);
-  if (!ReadPointCloud(input_path, &input, &input_info, &error))
-    return Fail(error);
+  }
 
   RegistrationSummary summary;
   RegisterWithMatcher(options, reference, input, initial, &summary);
@@ -176,85 +248,28 @@ int Run() {
   std::printf(
       "  peak memory:    %.1f MB resident (the process, clouds included)\n",
       peak_bytes / 1e6);
-  if (FLAGS_trace) {
-    for (const IterationRecord& r : summary.trace) {
-      std::printf("  iter %2d layer %d score %12.2f step %.2e %s\n",
-                  r.iteration,
-                  r.layer,
-                  r.score,
-                  r.step_norm,
-                  r.step_is_successful ? "" : "(rejected)");
-    }
-  }
+  if (FLAGS_trace) PrintTrace(summary);
   double translation_error = -1, rotation_error_deg = -1;
   if (!expected_path.empty()) {
-    translation_error =
-        TranslationErrorM(expected, summary.reference_from_input);
-    rotation_error_deg =
-        RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg;
-    std::printf("  vs expected:    %.4f m, %.4f deg (%s)\n",
-                translation_error,
-                rotation_error_deg,
-                expected_path.c_str());
+    CompareWithExpected(expected,
+                        expected_path,
+                        summary,
+                        &translation_error,
+                        &rotation_error_deg);
   }
 
   if (!FLAGS_output_json.empty()) {
-    tools::JsonObject json;
-    json.AddString("reference", reference_path)
-        .AddString("input", input_path)
-        .AddString("method", MethodToString(options.method))
-        .Add("reference_from_input", MatrixJson(summary.reference_from_input))
-        .AddBool("converged",
-                 summary.termination_type == TerminationType::CONVERGENCE)
-        .AddString("termination",
-                   TerminationTypeToString(summary.termination_type))
-        .AddString("message", summary.message)
-        .AddNumber("iterations", summary.num_iterations)
-        .Add("iterations_per_layer",
-             tools::JsonArray(summary.iterations_per_layer))
-        .AddNumber("start_layer", summary.start_layer)
-        .AddNumber("num_layers", summary.num_layers)
-        .AddNumber("score", summary.final_score)
-        .AddNumber("initial_score", summary.initial_score)
-        .AddNumber("sampled_points",
-                   static_cast<double>(summary.sampled_points))
-        .AddNumber("matched_points",
-                   static_cast<double>(summary.matched_points))
-        .AddNumber("unmatched_points",
-                   static_cast<double>(summary.unmatched_points))
-        .Add("quality",
-             tools::JsonObject()
-                 .AddNumber("own_cell_fraction",
-                            summary.quality.own_cell_fraction)
-                 .AddNumber("inlier_fraction", summary.quality.inlier_fraction)
-                 .AddNumber("mean_score", summary.quality.mean_score)
-                 .AddNumber("median_distance", summary.quality.median_distance)
-                 .str())
-        .Add("time_ms",
-             tools::JsonObject()
-                 .AddNumber("total", summary.total_time_s * 1e3)
-                 .AddNumber("map", summary.map_time_s * 1e3)
-                 .AddNumber("sampling", summary.sampling_time_s * 1e3)
-                 .AddNumber("solve", summary.solve_time_s * 1e3)
-                 .str())
-        .Add("memory",
-             tools::JsonObject()
-                 .AddNumber("map_bytes", static_cast<double>(summary.map_bytes))
-                 .AddNumber("map_occupied_cells",
-                            static_cast<double>(summary.map_occupied_cells))
-                 .AddNumber("peak_resident_bytes", peak_bytes)
-                 .str())
-        .Add("covariance",
-             tools::JsonArray(std::vector<double>(
-                 summary.covariance.data(), summary.covariance.data() + 36)))
-        .Add("trace", TraceJson(summary));
-    if (!expected_path.empty()) {
-      json.AddNumber("translation_error_m", translation_error)
-          .AddNumber("rotation_error_deg", rotation_error_deg);
+    const tools::JsonObject json = ResultJson(reference_path,
+                                              input_path,
+                                              options.method,
+                                              summary,
+                                              peak_bytes,
+                                              !expected_path.empty(),
+                                              translation_error,
+                                              rotation_error_deg);
+    if (!tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+      return Fail(error);
     }
-    std::ofstream out(FLAGS_output_json);
-    out << json.str() << "\n";
-    if (!out) return Fail(FLAGS_output_json + ": cannot write");
   }
   if (!FLAGS_output_cloud.empty() &&
       !WritePointCloud(FLAGS_output_cloud,
@@ -271,17 +286,14 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Registers --input onto --reference with ML-NDT (--method=mlndt) or NDT "
-      "(--method=ndt).\n"
-      "  mlndt_align --reference=ref.pcd --input=in.pcd "
-      "[--initial_guess=tx,ty,tz,a,b,g]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_align: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Registers --input onto --reference with ML-NDT (--method=mlndt) "
+          "or NDT (--method=ndt).\n"
+          "  mlndt_align --reference=ref.pcd --input=in.pcd "
+          "[--initial_guess=tx,ty,tz,a,b,g]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();

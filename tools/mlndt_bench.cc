@@ -9,12 +9,8 @@
 //               [--repetitions=5]
 //               [--compare_pcl] [--output_csv=FILE]
 //
-// Pairs (from --data_dir, default the repository's data/):
-//   koide3  koide3/251371071.pcd registered onto koide3/251370668.pcd; truth:
-//           koide3/T_target_source.txt, the reference result shipped with the
-//           pair (there is no independent ground truth).
-//   kitti   kitti/pcd/<j>.pcd onto kitti/pcd/<i>.pcd for j = i + gap, every
-//           gap in --kitti_gaps; truth V_i^-1 V_j from kitti/poses_velo.txt.
+// Pairs: koide3 (the bundled Velodyne pair) and kitti (frame gaps of the
+// bundled KITTI frames), see tools/common/bench_pairs.h.
 // Every registration starts from the identity.
 //
 // The grid is backends x samplings (x GBS cell sizes for gbs) x start layers x
@@ -43,26 +39,29 @@
 // success rate over all runs, and the median over rounds of the per-round
 // ratio PCL time / ours.
 
-#include <ceres/types.h>
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/common/timer.h"
+#include "mlndt/eval/statistics.h"
 #include "mlndt/registration/registration.h"
-#include "tools/common/tool_utils.h"
+#include "tools/common/bench_configurations.h"
+#include "tools/common/bench_pairs.h"
+#include "tools/common/bench_report.h"
+#include "tools/common/list_flags.h"
+#include "tools/common/matrix_text.h"
+#include "tools/common/tool_main.h"
 
 #ifdef MLNDT_WITH_PCL
 #include <pcl/filters/voxel_grid.h>
@@ -111,119 +110,20 @@ DEFINE_string(output_csv, "", "Write one row per set of pairs and configuration 
 namespace mlndt {
 namespace {
 
+using tools::BenchFormat;
+using tools::BenchRowStats;
+using tools::BenchRun;
+using tools::ScanPair;
+
 int Fail(const std::string& message) {
   std::cerr << "mlndt_bench: " << message << std::endl;
   return 1;
 }
 
-double NowSeconds() {
-  return std::chrono::duration<double>(
-             std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
-std::string LowerCase(std::string value) {
-  std::transform(
-      value.begin(), value.end(), value.begin(), [](unsigned char c) {
-        return static_cast<char>(std::tolower(c));
-      });
-  return value;
-}
-
-// Splits "a,b,c" into trimmed items; false when the list or an item is empty.
-bool SplitList(const std::string& text, std::vector<std::string>* items) {
-  items->clear();
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    const size_t begin = item.find_first_not_of(" \t");
-    if (begin == std::string::npos) return false;
-    items->push_back(
-        item.substr(begin, item.find_last_not_of(" \t") - begin + 1));
-  }
-  return !items->empty() && text.back() != ',';
-}
-
-// Parses "a,b,c" into integers; false on anything else.
-bool ParseIntList(const std::string& text, std::vector<int>* values) {
-  std::vector<std::string> items;
-  if (!SplitList(text, &items)) return false;
-  values->clear();
-  for (const std::string& item : items) {
-    try {
-      size_t used = 0;
-      const int v = std::stoi(item, &used);
-      if (used != item.size()) return false;
-      values->push_back(v);
-    } catch (...) {
-      return false;
-    }
-  }
-  return true;
-}
-
-// The flag spelling of a backend.
-const char* BackendName(BackendType type) {
-  switch (type) {
-    case BackendType::CERES:
-      return "ceres";
-    case BackendType::NEWTON:
-      return "newton";
-    case BackendType::LEVENBERG_MARQUARDT:
-      return "lm";
-  }
-  return "unknown";
-}
-
-struct ScanPair {
-  std::string set;    // "koide3" or "kitti".
-  std::string label;  // e.g. "000000<-000001".
-  PointCloud reference;
-  PointCloud input;
-  Isometry3d reference_from_input_truth = Isometry3d::Identity();
-};
-
-// One point of the grid. Ceres-only fields are unused by the other backends.
-struct Configuration {
-  BackendType backend = BackendType::CERES;
-  SamplingMethod sampling = SamplingMethod::GBS;
-  double gbs_cell_size_m = 1.0;
-  int start_layer = 1;
-  ceres::LinearSolverType linear_solver = ceres::DENSE_NORMAL_CHOLESKY;
-  ceres::TrustRegionStrategyType trust_region = ceres::LEVENBERG_MARQUARDT;
-  int threads = 1;
-
-  RegistrationOptions Options() const {
-    RegistrationOptions options;
-    options.backend.type = backend;
-    options.sampling.method = sampling;
-    options.sampling.gbs_cell_size_m = gbs_cell_size_m;
-    options.sampling.seed = FLAGS_seed;
-    options.schedule.start_layer = start_layer;
-    options.backend.ceres.linear_solver_type = linear_solver;
-    options.backend.ceres.trust_region_strategy_type = trust_region;
-    options.num_threads = threads;
-    return options;
-  }
-};
-
-// The result of one registration.
-struct RunResult {
-  double time_ms = 0.0;
-  double align_ms = 0.0;  // PCL only: align() alone.
-  int iterations = 0;
-  double score = std::nan("");
-  double translation_error_m = 0.0;
-  double rotation_error_deg = 0.0;
-  bool converged =
-      false;  // Stopped on its convergence test, not on an iteration cap.
-  bool success = false;
-};
-
-RunResult Evaluate(const Isometry3d& truth,
-                   const Isometry3d& estimate,
-                   bool usable) {
-  RunResult r;
+BenchRun Evaluate(const Isometry3d& truth,
+                  const Isometry3d& estimate,
+                  bool usable) {
+  BenchRun r;
   r.translation_error_m = TranslationErrorM(truth, estimate);
   r.rotation_error_deg = RotationErrorRad(truth, estimate) * kRadToDeg;
   r.success = usable && r.translation_error_m < FLAGS_max_translation_error &&
@@ -231,13 +131,13 @@ RunResult Evaluate(const Isometry3d& truth,
   return r;
 }
 
-RunResult RunMlndt(const RegistrationOptions& options, const ScanPair& pair) {
+BenchRun RunMlndt(const RegistrationOptions& options, const ScanPair& pair) {
   RegistrationSummary summary;
   Register(
       options, pair.reference, pair.input, Isometry3d::Identity(), &summary);
-  RunResult r = Evaluate(pair.reference_from_input_truth,
-                         summary.reference_from_input,
-                         summary.IsSolutionUsable());
+  BenchRun r = Evaluate(pair.reference_from_input_truth,
+                        summary.reference_from_input,
+                        summary.IsSolutionUsable());
   r.time_ms = summary.total_time_s * 1e3;
   r.iterations = summary.num_iterations;
   r.score = summary.final_score;
@@ -266,7 +166,7 @@ struct PclPair {
 };
 
 // PCL NDT as the --pcl_* flags say (see the file comment).
-RunResult RunPclNdt(const PclPair& pair, const Isometry3d& truth) {
+tools::BenchRun RunPclNdt(const PclPair& pair, const Isometry3d& truth) {
   const double start = NowSeconds();
   pcl::VoxelGrid<pcl::PointXYZ> voxel_grid;
   const float leaf = static_cast<float>(FLAGS_pcl_leaf_size);
@@ -293,7 +193,7 @@ RunResult RunPclNdt(const PclPair& pair, const Isometry3d& truth) {
   // Re-orthonormalise the single-precision rotation.
   estimate.linear() =
       Eigen::Quaterniond(estimate.linear()).normalized().toRotationMatrix();
-  RunResult r = Evaluate(truth, estimate, ndt.hasConverged());
+  tools::BenchRun r = Evaluate(truth, estimate, ndt.hasConverged());
   r.time_ms = (end - start) * 1e3;
   r.align_ms = (end - align_start) * 1e3;
   r.iterations = ndt.getFinalNumIteration();
@@ -303,293 +203,118 @@ RunResult RunPclNdt(const PclPair& pair, const Isometry3d& truth) {
 }
 #endif
 
-bool ParseConfigurations(std::vector<Configuration>* configurations,
-                         std::string* error) {
-  std::vector<std::string> items;
-  std::vector<BackendType> backends;
-  if (!SplitList(FLAGS_backends, &items)) {
-    *error = "--backends: expected a comma-separated list of ceres, newton, lm";
-    return false;
+// Runs every method on every pair; results[method][round][pair]. Each round
+// alternates the methods pair by pair and rotates their order from round to
+// round, so that machine noise hits all methods alike.
+template <typename RunMethod>
+std::vector<std::vector<std::vector<BenchRun>>> RunRounds(
+    size_t num_methods, size_t num_pairs, const RunMethod& run_method) {
+  if (FLAGS_warmup) {
+    for (size_t m = 0; m < num_methods; ++m) run_method(m, 0);
   }
-  for (const std::string& item : items) {
-    BackendType type;
-    if (!StringToBackendType(item, &type)) {
-      *error = "--backends: '" + item + "' is not ceres, newton or lm";
-      return false;
-    }
-    backends.push_back(type);
-  }
-  std::vector<SamplingMethod> samplings;
-  if (!SplitList(FLAGS_samplings, &items)) {
-    *error =
-        "--samplings: expected a comma-separated list of gbs, random, all, "
-        "voxel_centroid";
-    return false;
-  }
-  for (const std::string& item : items) {
-    SamplingMethod method;
-    if (!StringToSamplingMethod(item, &method)) {
-      *error = "--samplings: '" + item +
-               "' is not gbs, random, all or voxel_centroid";
-      return false;
-    }
-    samplings.push_back(method);
-  }
-  std::vector<double> gbs_cell_sizes;
-  if (!tools::ParseNumberList(FLAGS_gbs_cell_sizes, &gbs_cell_sizes) ||
-      gbs_cell_sizes.empty()) {
-    *error = "--gbs_cell_sizes: expected comma-separated numbers";
-    return false;
-  }
-  std::vector<int> start_layers, threads;
-  if (!ParseIntList(FLAGS_start_layers, &start_layers)) {
-    *error = "--start_layers: expected comma-separated integers";
-    return false;
-  }
-  if (!ParseIntList(FLAGS_threads, &threads)) {
-    *error = "--threads: expected comma-separated integers";
-    return false;
-  }
-  std::vector<ceres::LinearSolverType> linear_solvers;
-  if (!SplitList(FLAGS_linear_solvers, &items)) {
-    *error =
-        "--linear_solvers: expected a comma-separated list of Ceres linear "
-        "solver types";
-    return false;
-  }
-  for (std::string item : items) {
-    ceres::LinearSolverType type;
-    UpperCase(&item);
-    if (!ceres::StringToLinearSolverType(item, &type)) {
-      *error = "--linear_solvers: '" + LowerCase(item) +
-               "' is not a Ceres linear solver type";
-      return false;
-    }
-    linear_solvers.push_back(type);
-  }
-  std::vector<ceres::TrustRegionStrategyType> trust_regions;
-  if (!SplitList(FLAGS_trust_regions, &items)) {
-    *error =
-        "--trust_regions: expected a comma-separated list of "
-        "levenberg_marquardt, dogleg";
-    return false;
-  }
-  for (std::string item : items) {
-    ceres::TrustRegionStrategyType type;
-    UpperCase(&item);
-    if (!ceres::StringToTrustRegionStrategyType(item, &type)) {
-      *error = "--trust_regions: '" + LowerCase(item) +
-               "' is not levenberg_marquardt or dogleg";
-      return false;
-    }
-    trust_regions.push_back(type);
-  }
-
-  // (method, GBS cell size): one entry per GBS size, one for other methods.
-  std::vector<std::pair<SamplingMethod, double>> sampling_choices;
-  for (const SamplingMethod sampling : samplings) {
-    if (sampling != SamplingMethod::GBS) {
-      sampling_choices.emplace_back(sampling, 1.0);
-      continue;
-    }
-    for (const double size : gbs_cell_sizes)
-      sampling_choices.emplace_back(sampling, size);
-  }
-
-  configurations->clear();
-  for (const BackendType backend : backends) {
-    const bool ceres_backend = backend == BackendType::CERES;
-    const size_t num_solvers = ceres_backend ? linear_solvers.size() : 1;
-    const size_t num_regions = ceres_backend ? trust_regions.size() : 1;
-    for (const auto& [sampling, gbs_cell_size] : sampling_choices) {
-      for (const int start_layer : start_layers) {
-        for (size_t s = 0; s < num_solvers; ++s) {
-          for (size_t t = 0; t < num_regions; ++t) {
-            for (const int thread_count : threads) {
-              Configuration c;
-              c.backend = backend;
-              c.sampling = sampling;
-              c.gbs_cell_size_m = gbs_cell_size;
-              c.start_layer = start_layer;
-              if (ceres_backend) {
-                c.linear_solver = linear_solvers[s];
-                c.trust_region = trust_regions[t];
-              }
-              c.threads = thread_count;
-              if (!c.Options().IsValid(error)) {
-                *error = std::string("invalid configuration (backend ") +
-                         BackendName(backend) + ", threads " +
-                         std::to_string(thread_count) + "): " + *error;
-                return false;
-              }
-              configurations->push_back(c);
-            }
-          }
-        }
+  const size_t rounds = static_cast<size_t>(FLAGS_repetitions);
+  std::vector<std::vector<std::vector<BenchRun>>> results(
+      num_methods,
+      std::vector<std::vector<BenchRun>>(rounds,
+                                         std::vector<BenchRun>(num_pairs)));
+  const double bench_start = NowSeconds();
+  for (size_t round = 0; round < rounds; ++round) {
+    for (size_t p = 0; p < num_pairs; ++p) {
+      for (size_t k = 0; k < num_methods; ++k) {
+        const size_t method = (k + round) % num_methods;  // Rotated order.
+        results[method][round][p] = run_method(method, p);
       }
     }
+    std::cerr << "mlndt_bench: round " << round + 1 << "/" << FLAGS_repetitions
+              << " done after "
+              << BenchFormat("%.1f", NowSeconds() - bench_start) << " s"
+              << std::endl;
   }
-  return true;
+  return results;
 }
 
-bool LoadPairs(const std::vector<std::string>& sets,
-               std::vector<ScanPair>* pairs,
-               std::string* error) {
-  const std::string& dir = FLAGS_data_dir;
+void PrintPreamble(const std::vector<std::string>& sets,
+                   const std::vector<ScanPair>& pairs,
+                   size_t num_configurations,
+                   bool with_pcl) {
+  std::cout << "mlndt_bench: " << FLAGS_repetitions << " round(s); "
+            << num_configurations << " configuration(s)"
+            << (with_pcl ? " + pcl::NDT" : "")
+            << "; time = per round, mean time_ms.total over the set's pairs: "
+               "median and min-max "
+               "over rounds\n";
   for (const std::string& set : sets) {
-    if (set == "koide3") {
-      ScanPair pair;
-      pair.set = set;
-      pair.label = "251370668<-251371071";
-      if (!ReadPointCloud(
-              dir + "/koide3/251370668.pcd", &pair.reference, nullptr, error) ||
-          !ReadPointCloud(
-              dir + "/koide3/251371071.pcd", &pair.input, nullptr, error) ||
-          !tools::ReadMatrixFile(dir + "/koide3/T_target_source.txt",
-                                 &pair.reference_from_input_truth,
-                                 error)) {
-        return false;
+    size_t count = 0;
+    for (const ScanPair& pair : pairs) count += pair.set == set;
+    std::cout << "  " << set << ": " << count << " pair(s)"
+              << (set == "kitti" ? " (gaps " + FLAGS_kitti_gaps + ")" : "")
+              << "\n";
+  }
+  std::cout << "\n";
+}
+
+void PrintNotes(bool with_pcl, const std::vector<std::string>& notes) {
+  std::cout << "\n- success: translation error < "
+            << FLAGS_max_translation_error << " m and rotation error < "
+            << FLAGS_max_rotation_error << " deg\n"
+            << "- converged: stopped on the convergence test, not on the "
+               "iteration cap\n"
+            << "- iters, score, err_t, err_r: means over runs; score is Eq. "
+               "(10) on the last "
+               "layer (mlndt only)\n";
+  if (with_pcl) {
+    std::cout << "- pcl/ours: median over rounds of the per-round time ratio; "
+                 "pcl_ndt is "
+                 "single-threaded\n";
+  }
+  for (const std::string& note : notes) std::cout << "- " << note << "\n";
+}
+
+// The table (and CSV rows) per set of pairs and method; PCL's row last.
+int Report(const std::vector<std::string>& sets,
+           const std::vector<ScanPair>& pairs,
+           const std::vector<tools::BenchConfiguration>& configurations,
+           bool with_pcl,
+           const std::vector<std::vector<std::vector<BenchRun>>>& results,
+           std::ofstream* csv) {
+  PrintPreamble(sets, pairs, configurations.size(), with_pcl);
+  std::vector<std::vector<std::string>> table = {tools::BenchTableHeader()};
+  if (csv->is_open()) *csv << tools::BenchCsvHeader();
+  std::vector<std::string> notes;
+  for (const std::string& set : sets) {
+    std::vector<size_t> indices;
+    for (size_t p = 0; p < pairs.size(); ++p) {
+      if (pairs[p].set == set) indices.push_back(p);
+    }
+    std::vector<BenchRowStats> stats;
+    for (const auto& method_results : results)
+      stats.push_back(tools::SummariseRuns(method_results, indices));
+    const BenchRowStats* pcl = with_pcl ? &stats.back() : nullptr;
+    for (size_t m = 0; m < stats.size(); ++m) {
+      const bool is_pcl = m == configurations.size();
+      const tools::BenchMethodLabels labels =
+          is_pcl ? tools::PclLabels(FLAGS_pcl_leaf_size)
+                 : tools::ConfigurationLabels(configurations[m]);
+      table.push_back(tools::BenchTableRow(set, labels, stats[m], pcl));
+      if (csv->is_open())
+        *csv << tools::BenchCsvRow(set, labels, stats[m], pcl) << "\n";
+      if (is_pcl) {
+        notes.push_back(
+            set +
+            ": pcl_ndt align() alone (without filtering and setInputTarget): "
+            "median " +
+            BenchFormat("%.1f", ComputeStats(stats[m].round_align_ms).median) +
+            " ms");
       }
-      pairs->push_back(std::move(pair));
-    } else if (set == "kitti") {
-      std::vector<int> gaps;
-      if (!ParseIntList(FLAGS_kitti_gaps, &gaps) ||
-          std::any_of(gaps.begin(), gaps.end(), [](int g) { return g < 1; })) {
-        *error = "--kitti_gaps: expected comma-separated integers >= 1";
-        return false;
-      }
-      std::vector<Isometry3d> poses;
-      if (!ReadKittiPoses(dir + "/kitti/poses_velo.txt", &poses, error))
-        return false;
-      std::vector<PointCloud> scans(poses.size());
-      std::vector<std::string> names(poses.size());
-      for (size_t i = 0; i < poses.size(); ++i) {
-        char name[32];
-        std::snprintf(name, sizeof(name), "%06zu", i);
-        names[i] = name;
-        if (!ReadPointCloud(dir + "/kitti/pcd/" + names[i] + ".pcd",
-                            &scans[i],
-                            nullptr,
-                            error)) {
-          return false;
-        }
-      }
-      const size_t before = pairs->size();
-      for (const int gap : gaps) {
-        for (size_t i = 0; i + static_cast<size_t>(gap) < scans.size(); ++i) {
-          const size_t j = i + static_cast<size_t>(gap);
-          ScanPair pair;
-          pair.set = set;
-          pair.label = names[i] + "<-" + names[j];
-          pair.reference = scans[i];
-          pair.input = scans[j];
-          pair.reference_from_input_truth = poses[i].inverse() * poses[j];
-          pairs->push_back(std::move(pair));
-        }
-      }
-      if (pairs->size() == before) {
-        *error = "--kitti_gaps: no pair of the " +
-                 std::to_string(scans.size()) +
-                 " KITTI scans is that far apart";
-        return false;
-      }
-    } else {
-      *error = "unknown set of pairs '" + set + "'";
-      return false;
     }
   }
-  return true;
-}
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-double Mean(const std::vector<double>& v) {
-  if (v.empty()) return std::nan("");
-  double sum = 0.0;
-  for (const double x : v) sum += x;
-  return sum / static_cast<double>(v.size());
-}
-
-// What a table row reports for one set of pairs and one method.
-struct RowStats {
-  std::vector<double> round_times_ms;  // Per round: mean over the set's pairs.
-  std::vector<double> round_align_ms;  // PCL only, same shape.
-  double mean_iterations = 0.0;
-  double mean_score = 0.0;
-  double mean_translation_error_m = 0.0;
-  double max_translation_error_m = 0.0;
-  double mean_rotation_error_deg = 0.0;
-  double max_rotation_error_deg = 0.0;
-  int runs = 0;
-  int converged = 0;
-  int successes = 0;
-};
-
-// results[round][pair] for one method.
-RowStats Summarise(const std::vector<std::vector<RunResult>>& results,
-                   const std::vector<size_t>& pair_indices) {
-  RowStats s;
-  std::vector<double> iterations, scores, translation, rotation;
-  for (const std::vector<RunResult>& round : results) {
-    std::vector<double> times, align;
-    for (const size_t p : pair_indices) {
-      const RunResult& r = round[p];
-      times.push_back(r.time_ms);
-      align.push_back(r.align_ms);
-      iterations.push_back(r.iterations);
-      scores.push_back(r.score);
-      translation.push_back(r.translation_error_m);
-      rotation.push_back(r.rotation_error_deg);
-      ++s.runs;
-      s.converged += r.converged;
-      s.successes += r.success;
-    }
-    s.round_times_ms.push_back(Mean(times));
-    s.round_align_ms.push_back(Mean(align));
+  tools::PrintMarkdownTable(table);
+  PrintNotes(with_pcl, notes);
+  if (csv->is_open()) {
+    csv->close();
+    if (!*csv) return Fail(FLAGS_output_csv + ": cannot write");
   }
-  s.mean_iterations = Mean(iterations);
-  s.mean_score = Mean(scores);
-  s.mean_translation_error_m = Mean(translation);
-  s.max_translation_error_m =
-      *std::max_element(translation.begin(), translation.end());
-  s.mean_rotation_error_deg = Mean(rotation);
-  s.max_rotation_error_deg =
-      *std::max_element(rotation.begin(), rotation.end());
-  return s;
-}
-
-std::string Format(const char* format, double value) {
-  if (!std::isfinite(value)) return "-";
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), format, value);
-  return buffer;
-}
-
-// Prints rows (the first is the header) as a markdown table with padded
-// columns.
-void PrintMarkdownTable(const std::vector<std::vector<std::string>>& rows) {
-  std::vector<size_t> widths(rows[0].size(), 3);
-  for (const auto& row : rows) {
-    for (size_t c = 0; c < row.size(); ++c)
-      widths[c] = std::max(widths[c], row[c].size());
-  }
-  auto print_row = [&](const std::vector<std::string>& row) {
-    std::string line = "|";
-    for (size_t c = 0; c < row.size(); ++c) {
-      line += " " + row[c] + std::string(widths[c] - row[c].size(), ' ') + " |";
-    }
-    std::cout << line << "\n";
-  };
-  print_row(rows[0]);
-  std::string rule = "|";
-  for (const size_t w : widths) rule += std::string(w + 2, '-') + "|";
-  std::cout << rule << "\n";
-  for (size_t r = 1; r < rows.size(); ++r) print_row(rows[r]);
+  return 0;
 }
 
 int Run() {
@@ -601,24 +326,25 @@ int Run() {
         "-DMLNDT_WITH_PCL=ON");
   }
 #endif
-  std::vector<std::string> listed, sets;
-  if (!SplitList(FLAGS_pairs, &listed))
-    return Fail("--pairs: expected koide3, kitti or both");
-  for (const std::string& set : listed) {
-    if (set != "koide3" && set != "kitti") {
-      return Fail("--pairs: '" + set + "' is not koide3 or kitti");
-    }
-  }
-  for (const char* set :
-       {"koide3", "kitti"}) {  // A fixed order, no duplicates.
-    if (std::find(listed.begin(), listed.end(), set) != listed.end())
-      sets.push_back(set);
-  }
-  std::vector<Configuration> configurations;
+  std::vector<std::string> sets;
   std::string error;
-  if (!ParseConfigurations(&configurations, &error)) return Fail(error);
+  if (!tools::ParseBenchSets(FLAGS_pairs, &sets, &error)) return Fail(error);
+  const tools::BenchGridFlags grid{FLAGS_backends,
+                                   FLAGS_samplings,
+                                   FLAGS_gbs_cell_sizes,
+                                   FLAGS_start_layers,
+                                   FLAGS_linear_solvers,
+                                   FLAGS_trust_regions,
+                                   FLAGS_threads,
+                                   FLAGS_seed};
+  std::vector<tools::BenchConfiguration> configurations;
+  if (!tools::ParseBenchConfigurations(grid, &configurations, &error))
+    return Fail(error);
   std::vector<ScanPair> pairs;
-  if (!LoadPairs(sets, &pairs, &error)) return Fail(error);
+  if (!tools::LoadBenchPairs(
+          FLAGS_data_dir, sets, FLAGS_kitti_gaps, &pairs, &error)) {
+    return Fail(error);
+  }
   std::ofstream csv;
   if (!FLAGS_output_csv.empty()) {
     csv.open(FLAGS_output_csv);
@@ -628,9 +354,8 @@ int Run() {
   // Methods: the configurations, then PCL (when compared).
   const size_t num_configurations = configurations.size();
   const bool with_pcl = FLAGS_compare_pcl;
-  const size_t num_methods = num_configurations + (with_pcl ? 1 : 0);
   std::vector<RegistrationOptions> options;
-  for (const Configuration& c : configurations) options.push_back(c.Options());
+  for (const auto& c : configurations) options.push_back(c.Options(FLAGS_seed));
 #ifdef MLNDT_WITH_PCL
   std::vector<PclPair> pcl_pairs;
   if (with_pcl) {
@@ -647,227 +372,23 @@ int Run() {
 #endif
     return RunMlndt(options[method], pairs[p]);
   };
-
-  if (FLAGS_warmup) {
-    for (size_t m = 0; m < num_methods; ++m) run_method(m, 0);
-  }
-  // results[method][round][pair]
-  std::vector<std::vector<std::vector<RunResult>>> results(
-      num_methods,
-      std::vector<std::vector<RunResult>>(
-          static_cast<size_t>(FLAGS_repetitions),
-          std::vector<RunResult>(pairs.size())));
-  const double bench_start = NowSeconds();
-  for (size_t round = 0; round < static_cast<size_t>(FLAGS_repetitions);
-       ++round) {
-    for (size_t p = 0; p < pairs.size(); ++p) {
-      for (size_t k = 0; k < num_methods; ++k) {
-        const size_t method = (k + round) % num_methods;  // Rotated order.
-        results[method][round][p] = run_method(method, p);
-      }
-    }
-    std::cerr << "mlndt_bench: round " << round + 1 << "/" << FLAGS_repetitions
-              << " done after " << Format("%.1f", NowSeconds() - bench_start)
-              << " s" << std::endl;
-  }
-
-  // Report.
-  std::cout << "mlndt_bench: " << FLAGS_repetitions << " round(s); "
-            << num_configurations << " configuration(s)"
-            << (with_pcl ? " + pcl::NDT" : "")
-            << "; time = per round, mean time_ms.total over the set's pairs: "
-               "median and min-max "
-               "over rounds\n";
-  for (const std::string& set : sets) {
-    size_t count = 0;
-    for (const ScanPair& pair : pairs) count += pair.set == set;
-    std::cout << "  " << set << ": " << count << " pair(s)"
-              << (set == "kitti" ? " (gaps " + FLAGS_kitti_gaps + ")" : "")
-              << "\n";
-  }
-  std::cout << "\n";
-
-  const std::vector<std::string> header = {"pairs",
-                                           "method",
-                                           "sampling",
-                                           "start",
-                                           "linear solver",
-                                           "trust region",
-                                           "threads",
-                                           "runs",
-                                           "time med [ms]",
-                                           "time min-max [ms]",
-                                           "iters",
-                                           "score",
-                                           "err_t [m]",
-                                           "err_r [deg]",
-                                           "converged",
-                                           "success",
-                                           "pcl/ours"};
-  std::vector<std::vector<std::string>> table = {header};
-  if (csv.is_open()) {
-    csv << "pairs,method,backend,sampling,start_layer,linear_solver,trust_"
-           "region,threads,runs,"
-           "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_"
-           "score,"
-           "mean_translation_error_m,max_translation_error_m,mean_rotation_"
-           "error_deg,"
-           "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_"
-           "ms,pcl_over_ours\n";
-  }
-  std::vector<std::string> notes;
-  for (const std::string& set : sets) {
-    std::vector<size_t> indices;
-    for (size_t p = 0; p < pairs.size(); ++p) {
-      if (pairs[p].set == set) indices.push_back(p);
-    }
-    std::vector<RowStats> stats;
-    for (size_t m = 0; m < num_methods; ++m)
-      stats.push_back(Summarise(results[m], indices));
-    const RowStats* pcl = with_pcl ? &stats.back() : nullptr;
-    for (size_t m = 0; m < num_methods; ++m) {
-      const RowStats& s = stats[m];
-      const bool is_pcl = m == num_configurations;
-      std::string method = "pcl_ndt", backend = "", start = "", solver = "",
-                  region = "", threads = "1";
-      std::string sampling = "voxel_grid_" + Format("%g", FLAGS_pcl_leaf_size);
-      if (!is_pcl) {
-        const Configuration& c = configurations[m];
-        const bool ceres_backend = c.backend == BackendType::CERES;
-        method = "mlndt";
-        backend = BackendName(c.backend);
-        sampling = LowerCase(SamplingMethodToString(c.sampling));
-        if (c.sampling == SamplingMethod::GBS) {
-          sampling += "_" + Format("%g", c.gbs_cell_size_m) + "m";
-        }
-        start = std::to_string(c.start_layer);
-        solver =
-            ceres_backend
-                ? LowerCase(ceres::LinearSolverTypeToString(c.linear_solver))
-                : "";
-        region = ceres_backend
-                     ? LowerCase(ceres::TrustRegionStrategyTypeToString(
-                           c.trust_region))
-                     : "";
-        threads = std::to_string(c.threads);
-      }
-      const double median = Median(s.round_times_ms);
-      const double min =
-          *std::min_element(s.round_times_ms.begin(), s.round_times_ms.end());
-      const double max =
-          *std::max_element(s.round_times_ms.begin(), s.round_times_ms.end());
-      double ratio = std::nan("");
-      if (pcl != nullptr && !is_pcl) {
-        std::vector<double> ratios;
-        for (size_t r = 0; r < s.round_times_ms.size(); ++r) {
-          ratios.push_back(pcl->round_times_ms[r] / s.round_times_ms[r]);
-        }
-        ratio = Median(ratios);
-      }
-      const double success_rate = static_cast<double>(s.successes) / s.runs;
-      auto dash = [](const std::string& v) {
-        return v.empty() ? std::string("-") : v;
-      };
-      table.push_back(
-          {set,
-           is_pcl ? method : backend,
-           sampling,
-           dash(start),
-           dash(solver),
-           dash(region),
-           threads,
-           std::to_string(s.runs),
-           Format("%.1f", median),
-           Format("%.1f", min) + "-" + Format("%.1f", max),
-           Format("%.1f", s.mean_iterations),
-           Format("%.1f", s.mean_score),
-           Format("%.4f", s.mean_translation_error_m),
-           Format("%.3f", s.mean_rotation_error_deg),
-           std::to_string(s.converged) + "/" + std::to_string(s.runs),
-           std::to_string(s.successes) + "/" + std::to_string(s.runs) + " (" +
-               Format("%.0f", 100.0 * success_rate) + "%)",
-           Format("%.2f", ratio)});
-      if (csv.is_open()) {
-        auto number = [](double v) {
-          std::ostringstream out;
-          out.precision(6);
-          if (std::isfinite(v)) out << v;
-          return out.str();
-        };
-        const std::vector<std::string> values = {
-            set,
-            method,
-            backend,
-            sampling,
-            start,
-            solver,
-            region,
-            threads,
-            std::to_string(s.runs),
-            number(median),
-            number(min),
-            number(max),
-            number(s.mean_iterations),
-            number(s.mean_score),
-            number(s.mean_translation_error_m),
-            number(s.max_translation_error_m),
-            number(s.mean_rotation_error_deg),
-            number(s.max_rotation_error_deg),
-            number(static_cast<double>(s.converged) / s.runs),
-            number(success_rate),
-            number(pcl != nullptr ? Median(pcl->round_times_ms) : std::nan("")),
-            number(ratio)};
-        for (size_t c = 0; c < values.size(); ++c)
-          csv << (c ? "," : "") << values[c];
-        csv << "\n";
-      }
-      if (is_pcl) {
-        notes.push_back(
-            set +
-            ": pcl_ndt align() alone (without filtering and setInputTarget): "
-            "median " +
-            Format("%.1f", Median(s.round_align_ms)) + " ms");
-      }
-    }
-  }
-  PrintMarkdownTable(table);
-  std::cout << "\n- success: translation error < "
-            << FLAGS_max_translation_error << " m and rotation error < "
-            << FLAGS_max_rotation_error << " deg\n"
-            << "- converged: stopped on the convergence test, not on the "
-               "iteration cap\n"
-            << "- iters, score, err_t, err_r: means over runs; score is Eq. "
-               "(10) on the last "
-               "layer (mlndt only)\n";
-  if (with_pcl) {
-    std::cout << "- pcl/ours: median over rounds of the per-round time ratio; "
-                 "pcl_ndt is "
-                 "single-threaded\n";
-  }
-  for (const std::string& note : notes) std::cout << "- " << note << "\n";
-  if (csv.is_open()) {
-    csv.close();
-    if (!csv) return Fail(FLAGS_output_csv + ": cannot write");
-  }
-  return 0;
+  const auto results = RunRounds(
+      num_configurations + (with_pcl ? 1 : 0), pairs.size(), run_method);
+  return Report(sets, pairs, configurations, with_pcl, results, &csv);
 }
 
 }  // namespace
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Benchmarks registration configurations on real pairs with ground "
-      "truth.\n"
-      "  mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] "
-      "[--repetitions=5] "
-      "[--compare_pcl] [--output_csv=FILE]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_bench: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Benchmarks registration configurations on real pairs with ground "
+          "truth.\n"
+          "  mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm] "
+          "[--repetitions=5] [--compare_pcl] [--output_csv=FILE]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();

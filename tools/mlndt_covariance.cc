@@ -46,21 +46,16 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/nees.h"
+#include "mlndt/eval/statistics.h"
+#include "tools/common/covariance_consistency.h"
 #include "tools/common/json_writer.h"
+#include "tools/common/list_flags.h"
+#include "tools/common/matrix_text.h"
 #include "tools/common/registration_flags.h"
-#include "tools/common/tool_utils.h"
-
-namespace {
-// The repository's data/ folder, from this file's path (in-tree builds).
-std::string DefaultDataDir() {
-  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "data")
-      .string();
-}
-}  // namespace
+#include "tools/common/tool_main.h"
 
 // clang-format off
-DEFINE_string(data_dir, DefaultDataDir(), "Folder with kitti/ and koide3/ (the repository's data/)");
+DEFINE_string(data_dir, MLNDT_DATA_DIR, "Folder with kitti/ and koide3/ (the repository's data/)");
 DEFINE_string(datasets, "kitti,koide3", "Comma-separated: kitti (7 consecutive pairs) | koide3");
 DEFINE_int32(starts, 20, "Registrations per pair, each from its own perturbed start; >= 2");
 DEFINE_double(max_translation, 0.5, "Start offsets are uniform in +-this per axis [m]");
@@ -78,164 +73,13 @@ DEFINE_string(output_csv, "", "One row per registration");
 namespace mlndt {
 namespace {
 
+using tools::Consistency;
+using tools::PairRuns;
+using tools::StartResult;
+
 int Fail(const std::string& message) {
   std::cerr << "mlndt_covariance: " << message << std::endl;
   return 1;
-}
-
-struct Run {
-  Vector6d xi = Vector6d::Zero();
-  Matrix6d covariance = Matrix6d::Zero();
-  double sigma2 = 1.0;  // final_score / (3 matched - 6).
-};
-
-struct PairRuns {
-  std::string dataset;
-  std::string name;
-  Vector6d reference_xi = Vector6d::Zero();
-  std::vector<Run> runs;  // Usable, non-outlier runs.
-  int failures = 0;       // Not usable (FAILURE) or singular H.
-  int outliers = 0;       // Far from the median estimate.
-};
-
-// Consistency of a set of runs (one pair, or a data set pooled).
-struct Consistency {
-  int runs = 0;
-  double nees_mean = 0.0;           // Mean NEES about the pair means.
-  double nees_mean_expected = 0.0;  // 6 (n - 1) / n, averaged over pairs.
-  double nees_reference = 0.0;      // Mean NEES about the reference pose.
-  double nees_mean_sigma2 = 0.0;    // With sigma2 P.
-  double nees_reference_sigma2 = 0.0;
-  double sigma2 = 0.0;                     // Mean residual variance estimate.
-  Vector6d spread_std = Vector6d::Zero();  // sqrt diag S (pooled: RMS).
-  Vector6d predicted_std = Vector6d::Zero();  // sqrt diag mean P.
-  Vector6d bias = Vector6d::Zero();           // mean - reference (pair only).
-
-  // k = mean NEES / its expectation (mlndt/eval/nees.h).
-  double k_spread() const {
-    return NeesScaleFactor(nees_mean, nees_mean_expected);
-  }
-  double k_reference() const {
-    return NeesScaleFactor(nees_reference, kPoseDimension);
-  }
-  double k_spread_sigma2() const {
-    return NeesScaleFactor(nees_mean_sigma2, nees_mean_expected);
-  }
-  double k_reference_sigma2() const {
-    return NeesScaleFactor(nees_reference_sigma2, kPoseDimension);
-  }
-};
-
-Vector6d Mean(const std::vector<Run>& runs) {
-  Vector6d mean = Vector6d::Zero();
-  for (const Run& run : runs) mean += run.xi;
-  return mean / static_cast<double>(runs.size());
-}
-
-// Sums over the pair's runs into *sum (divide by the run count later).
-void Accumulate(const PairRuns& pair, Consistency* sum) {
-  const size_t n = pair.runs.size();
-  if (n < 2) return;
-  const Vector6d mean = Mean(pair.runs);
-  Matrix6d spread = Matrix6d::Zero();
-  Matrix6d predicted = Matrix6d::Zero();
-  for (const Run& run : pair.runs) {
-    const Vector6d about_mean = run.xi - mean;
-    const Vector6d about_reference = run.xi - pair.reference_xi;
-    spread += about_mean * about_mean.transpose();
-    predicted += run.covariance;
-    sum->nees_mean += Nees(about_mean, run.covariance);
-    sum->nees_reference += Nees(about_reference, run.covariance);
-    sum->nees_mean_sigma2 += Nees(about_mean, run.sigma2 * run.covariance);
-    sum->nees_reference_sigma2 +=
-        Nees(about_reference, run.sigma2 * run.covariance);
-    sum->sigma2 += run.sigma2;
-    sum->nees_mean_expected += ExpectedNeesAboutMean(n);
-  }
-  spread /= static_cast<double>(n - 1);
-  predicted /= static_cast<double>(n);
-  // Squares now, square roots in Finish (RMS over pairs when pooled).
-  sum->spread_std += static_cast<double>(n) * spread.diagonal();
-  sum->predicted_std += static_cast<double>(n) * predicted.diagonal();
-  sum->bias += static_cast<double>(n) * (mean - pair.reference_xi);
-  sum->runs += static_cast<int>(n);
-}
-
-Consistency Finish(Consistency sum) {
-  if (sum.runs == 0) return sum;
-  const double n = sum.runs;
-  sum.nees_mean /= n;
-  sum.nees_mean_expected /= n;
-  sum.nees_reference /= n;
-  sum.nees_mean_sigma2 /= n;
-  sum.nees_reference_sigma2 /= n;
-  sum.sigma2 /= n;
-  sum.spread_std = (sum.spread_std / n).cwiseSqrt();
-  sum.predicted_std = (sum.predicted_std / n).cwiseSqrt();
-  sum.bias /= n;
-  return sum;
-}
-
-// Translation [m] and angles [deg] of a pose-vector quantity, for printing.
-std::vector<double> InDegrees(const Vector6d& v) {
-  return {
-      v(0), v(1), v(2), v(3) * kRadToDeg, v(4) * kRadToDeg, v(5) * kRadToDeg};
-}
-
-std::string ConsistencyJson(const Consistency& c) {
-  return tools::JsonObject()
-      .AddNumber("runs", c.runs)
-      .AddNumber("nees_about_mean", c.nees_mean)
-      .AddNumber("nees_about_mean_expected", c.nees_mean_expected)
-      .AddNumber("k_spread", c.k_spread())
-      .AddNumber("nees_about_reference", c.nees_reference)
-      .AddNumber("k_reference", c.k_reference())
-      .AddNumber("sigma2", c.sigma2)
-      .AddNumber("k_spread_sigma2", c.k_spread_sigma2())
-      .AddNumber("k_reference_sigma2", c.k_reference_sigma2())
-      .Add("spread_std_m_deg", tools::JsonArray(InDegrees(c.spread_std)))
-      .Add("predicted_std_m_deg", tools::JsonArray(InDegrees(c.predicted_std)))
-      .Add("bias_m_deg", tools::JsonArray(InDegrees(c.bias)))
-      .str();
-}
-
-void PrintRow(const std::string& label, const Consistency& c) {
-  const std::vector<double> spread = InDegrees(c.spread_std);
-  const std::vector<double> predicted = InDegrees(c.predicted_std);
-  std::printf(
-      "%-16s %4d  NEES(mean) %9.3g (exp %4.2f) k %9.3g | NEES(ref) %9.3g k "
-      "%9.3g | "
-      "sigma2 %6.3f k_s2 %8.3g / %8.3g\n",
-      label.c_str(),
-      c.runs,
-      c.nees_mean,
-      c.nees_mean_expected,
-      c.k_spread(),
-      c.nees_reference,
-      c.k_reference(),
-      c.sigma2,
-      c.k_spread_sigma2(),
-      c.k_reference_sigma2());
-  std::printf(
-      "%-16s       spread std  t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f "
-      "%7.2f %7.2f\n",
-      "",
-      spread[0] * 1e3,
-      spread[1] * 1e3,
-      spread[2] * 1e3,
-      spread[3] * 1e3,
-      spread[4] * 1e3,
-      spread[5] * 1e3);
-  std::printf(
-      "%-16s       predicted   t [mm] %7.2f %7.2f %7.2f  rot [mdeg] %7.2f "
-      "%7.2f %7.2f\n",
-      "",
-      predicted[0] * 1e3,
-      predicted[1] * 1e3,
-      predicted[2] * 1e3,
-      predicted[3] * 1e3,
-      predicted[4] * 1e3,
-      predicted[5] * 1e3);
 }
 
 // Registers input onto reference from the perturbed starts.
@@ -252,7 +96,7 @@ bool RunPair(const RegistrationOptions& base_options,
     return false;
   pair->reference_xi = IsometryToPoseVector(reference_from_input);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::vector<Run> runs;
+  std::vector<StartResult> runs;
   for (int k = 0; k < FLAGS_starts; ++k) {
     Vector6d offset;
     for (int a = 0; a < 3; ++a) offset(a) = FLAGS_max_translation * unit(*rng);
@@ -282,7 +126,7 @@ bool RunPair(const RegistrationOptions& base_options,
       ++pair->failures;
       continue;
     }
-    Run run;
+    StartResult run;
     run.xi = summary.reference_from_input_xi;
     run.covariance = summary.covariance;
     const double dof = 3.0 * static_cast<double>(summary.matched_points) - 6.0;
@@ -293,13 +137,10 @@ bool RunPair(const RegistrationOptions& base_options,
   Vector6d median;
   for (int a = 0; a < 6; ++a) {
     std::vector<double> values;
-    for (const Run& run : runs) values.push_back(run.xi(a));
-    if (values.empty()) break;
-    std::nth_element(
-        values.begin(), values.begin() + values.size() / 2, values.end());
-    median(a) = values[values.size() / 2];
+    for (const StartResult& run : runs) values.push_back(run.xi(a));
+    median(a) = ComputeStats(values).median;
   }
-  for (const Run& run : runs) {
+  for (const StartResult& run : runs) {
     const Vector6d d = run.xi - median;
     if (d.head<3>().norm() > FLAGS_outlier_translation ||
         d.tail<3>().norm() * kRadToDeg > FLAGS_outlier_rotation) {
@@ -309,16 +150,6 @@ bool RunPair(const RegistrationOptions& base_options,
     }
   }
   return true;
-}
-
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
 }
 
 bool RunKitti(const RegistrationOptions& options,
@@ -396,8 +227,10 @@ int Main() {
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error))
     return Fail(error);
-  const std::vector<std::string> datasets = SplitList(FLAGS_datasets);
-  if (datasets.empty()) return Fail("--datasets is empty");
+  std::vector<std::string> datasets;
+  if (!tools::SplitList(FLAGS_datasets, &datasets)) {
+    return Fail("--datasets: expected a comma-separated list of kitti, koide3");
+  }
   std::ofstream csv;
   if (!FLAGS_output_csv.empty()) {
     csv.open(FLAGS_output_csv);
@@ -457,10 +290,9 @@ int Main() {
       .AddNumber("max_translation_m", FLAGS_max_translation)
       .AddNumber("max_rotation_deg", FLAGS_max_rotation)
       .AddBool("vary_sampling_seed", FLAGS_vary_sampling_seed);
-  if (!FLAGS_output_json.empty()) {
-    std::ofstream out(FLAGS_output_json);
-    out << json.str() << "\n";
-    if (!out.good()) return Fail(FLAGS_output_json + ": cannot write");
+  if (!FLAGS_output_json.empty() &&
+      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+    return Fail(error);
   }
   return 0;
 }
@@ -469,13 +301,15 @@ int Main() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Compares the registration covariance with the spread of many "
-      "registrations.\n"
-      "  mlndt_covariance [--datasets=kitti,koide3] [--starts=20] "
-      "[--output_json=FILE]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+  if (!mlndt::tools::StartTool(
+          "Compares the registration covariance with the spread of many "
+          "registrations.\n"
+          "  mlndt_covariance [--datasets=kitti,koide3] [--starts=20] "
+          "[--output_json=FILE]",
+          false,
+          &argc,
+          &argv)) {
+    return 1;
+  }
   return mlndt::Main();
 }

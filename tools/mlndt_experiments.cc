@@ -51,13 +51,14 @@
 #include "mlndt/eval/dataset.h"
 #include "mlndt/eval/pose_error.h"
 #include "mlndt/eval/statistics.h"
+#include "mlndt/pipeline/pair_registration.h"
+#include "mlndt/pipeline/scan_store.h"
+#include "mlndt/pipeline/sequence_registration.h"
+#include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/pair_evaluation.h"
+#include "tools/common/list_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
-#include "tools/common/scan_store.h"
-#include "tools/common/sequence_output.h"
-#include "tools/common/sequence_runner.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -97,9 +98,6 @@ namespace mlndt {
 namespace {
 
 using tools::Fmt;
-
-using tools::PairResult;
-using tools::SequenceTotals;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_experiments: " << message << std::endl;
@@ -152,7 +150,7 @@ bool FindKittiFolder(const std::string& data_dir,
 
 // Everything the experiments share.
 struct Context {
-  tools::ScanStore* store = nullptr;
+  ScanStore* store = nullptr;
   std::vector<Isometry3d> truth;  // world_from_scan.
   MatcherOptions base;
   std::vector<size_t> steps;
@@ -178,17 +176,16 @@ std::string LayerLabel(const Context& c, int layer) {
 // Runs RunSequence for every step and concatenates the pairs.
 bool RunSteps(Context* c,
               const std::vector<size_t>& steps,
-              const tools::SequenceOptions& options,
+              const SequenceOptions& options,
               std::vector<PairResult>* all,
               std::string* error) {
   all->clear();
   for (size_t step : steps) {
     if (c->store->size() <= step) continue;
-    tools::SequenceOptions o = options;
+    SequenceOptions o = options;
     o.step = step;
     std::vector<PairResult> results;
-    if (!tools::RunSequence(
-            o, c->store, &c->truth, nullptr, {}, &results, error))
+    if (!RunSequence(o, c->store, &c->truth, nullptr, {}, &results, error))
       return false;
     c->runs += results.size();
     all->insert(all->end(), results.begin(), results.end());
@@ -306,17 +303,17 @@ bool LongRange(Context* c, std::string* error) {
             ms = cached->second.second;
           } else {
             RegistrationSummary summary;
-            tools::PairTimes pair_times;
+            PairTimes pair_times;
             const Isometry3d initial =
                 MakeOffset(families[f], values[v]) * truth;
-            if (!tools::RegisterPair(variants[m].options,
-                                     c->store,
-                                     i,
-                                     i + 1,
-                                     initial,
-                                     &summary,
-                                     &pair_times,
-                                     error)) {
+            if (!RegisterPair(variants[m].options,
+                              c->store,
+                              i,
+                              i + 1,
+                              initial,
+                              &summary,
+                              &pair_times,
+                              error)) {
               return false;
             }
             ++c->runs;
@@ -569,15 +566,15 @@ bool Optimizers(Context* c, std::string* error) {
       options.method = variant.method;
       options.mlndt.backend.type = variant.backend;
       RegistrationSummary summary;
-      tools::PairTimes times;
-      if (!tools::RegisterPair(options,
-                               c->store,
-                               i,
-                               i + 1,
-                               start.initial,
-                               &summary,
-                               &times,
-                               error)) {
+      PairTimes times;
+      if (!RegisterPair(options,
+                        c->store,
+                        i,
+                        i + 1,
+                        start.initial,
+                        &summary,
+                        &times,
+                        error)) {
         return false;
       }
       ++c->runs;
@@ -718,7 +715,7 @@ bool Sampling(Context* c, std::string* error) {
     std::vector<PairResult> first;
     const int runs = config.sampling == SamplingMethod::RANDOM ? seeds : 1;
     for (int seed = 1; seed <= runs; ++seed) {
-      tools::SequenceOptions options;
+      SequenceOptions options;
       options.registration = c->base;
       options.registration.method = config.method;
       for (SamplingOptions* sampling : {&options.registration.mlndt.sampling,
@@ -733,7 +730,7 @@ bool Sampling(Context* c, std::string* error) {
       done += results.size();
       progress.Update(done, config.name + " seed " + std::to_string(seed));
     }
-    totals.push_back(tools::ComputeTotals(all));
+    totals.push_back(ComputeTotals(all));
     first_runs.push_back(first);
     double points = 0;
     for (const PairResult& p : all)
@@ -757,7 +754,7 @@ bool Sampling(Context* c, std::string* error) {
     q.strict_success = SuccessCriterion().IsWithin(q.error);
     prediction.push_back(q);
   }
-  const SequenceTotals prediction_totals = tools::ComputeTotals(prediction);
+  const SequenceTotals prediction_totals = ComputeTotals(prediction);
 
   std::ostringstream& r = c->report;
   const std::string steps = StepsText(c->steps);
@@ -923,9 +920,9 @@ bool Table9(Context* c, std::string* error) {
   // error against the ground truth this is free of the data's ~0.8x scale.
   std::map<std::pair<size_t, size_t>, Isometry3d> optimum;
   {
-    tools::SequenceOptions options;
+    SequenceOptions options;
     options.registration = c->base;
-    options.init.mode = tools::InitMode::GT_FRACTION;
+    options.init.mode = InitMode::GT_FRACTION;
     options.init.fraction = 1.0;
     std::vector<PairResult> results;
     if (!RunSteps(c, steps, options, &results, error)) return false;
@@ -976,10 +973,10 @@ bool Table9(Context* c, std::string* error) {
          "gt_fail_percent\n";
   for (double fraction : fractions) {
     for (int layer = 1; layer <= n; ++layer) {
-      tools::SequenceOptions options;
+      SequenceOptions options;
       options.registration = c->base;
       options.registration.mlndt.schedule.start_layer = layer;
-      options.init.mode = tools::InitMode::GT_FRACTION;
+      options.init.mode = InitMode::GT_FRACTION;
       options.init.fraction = fraction;
       std::vector<PairResult> results;
       if (!RunSteps(c, steps, options, &results, error)) return false;
@@ -987,7 +984,7 @@ bool Table9(Context* c, std::string* error) {
       progress.Update(
           done,
           "c=" + Fmt(fraction, 1) + " start layer " + std::to_string(layer));
-      const SequenceTotals t = tools::ComputeTotals(results);
+      const SequenceTotals t = ComputeTotals(results);
       size_t diverged = 0;
       std::vector<double> converged_errors;
       for (const PairResult& p : results) {
@@ -1065,13 +1062,13 @@ bool Table9(Context* c, std::string* error) {
 // ---- Adaptive start layer (end of Section 5.3) -----------------------------
 
 bool Adaptive(Context* c, std::string* error) {
-  std::vector<tools::InitSpec> inits;
+  std::vector<InitSpec> inits;
   std::stringstream list(FLAGS_adaptive_inits);
   std::string item;
   while (std::getline(list, item, ',')) {
-    tools::InitSpec spec;
-    if (!tools::ParseInitSpec(item, &spec, error)) return false;
-    if (spec.mode == tools::InitMode::POSES) {
+    InitSpec spec;
+    if (!ParseInitSpec(item, &spec, error)) return false;
+    if (spec.mode == InitMode::POSES) {
       *error = "--adaptive_inits: poses:FILE is not supported here";
       return false;
     }
@@ -1087,7 +1084,8 @@ bool Adaptive(Context* c, std::string* error) {
        "start layer when "
        "the fail rate grows, a failure being an estimate more than 1 m or 15 "
        "deg from the "
-       "odometry guess. Ours (tools/common/sequence_runner.h): the running "
+       "odometry guess. Ours (mlndt/pipeline/adaptive_start_layer.h): the "
+       "running "
        "fail rate over the "
        "pairs so far; above 5 % start one layer coarser than the last, above "
        "20 % two coarser. "
@@ -1102,12 +1100,12 @@ bool Adaptive(Context* c, std::string* error) {
        "failures | "
        "start layers used | time [ms] | iterations | err. norm [cm] |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const tools::InitSpec& init : inits) {
+  for (const InitSpec& init : inits) {
     for (size_t step : c->steps) {
       if (c->store->size() <= step) continue;
       for (int config = 0; config <= n; ++config) {
         const bool adaptive = config == n;
-        tools::SequenceOptions options;
+        SequenceOptions options;
         options.registration = c->base;
         options.step = step;
         options.init = init;
@@ -1115,7 +1113,7 @@ bool Adaptive(Context* c, std::string* error) {
         if (!adaptive)
           options.registration.mlndt.schedule.start_layer = config + 1;
         std::vector<PairResult> results;
-        if (!tools::RunSequence(
+        if (!RunSequence(
                 options, c->store, &c->truth, nullptr, {}, &results, error)) {
           return false;
         }
@@ -1124,13 +1122,13 @@ bool Adaptive(Context* c, std::string* error) {
         const std::string label =
             adaptive ? "adaptive" : LayerLabel(*c, config + 1);
         progress.Update(done,
-                        tools::InitSpecToString(init) + " step " +
+                        InitSpecToString(init) + " step " +
                             std::to_string(step) + " " + label);
-        const SequenceTotals t = tools::ComputeTotals(results);
+        const SequenceTotals t = ComputeTotals(results);
         std::string used;
         for (const PairResult& p : results)
           used += (used.empty() ? "" : ",") + std::to_string(p.start_layer);
-        r << "| " << tools::InitSpecToString(init) << " | " << step << " | "
+        r << "| " << InitSpecToString(init) << " | " << step << " | "
           << (adaptive ? "**adaptive**" : label) << " | " << t.pairs << " | "
           << Fmt(t.success_rate_percent, 0) << " % | "
           << Fmt(t.strict_success_rate_percent, 0) << " % | "
@@ -1217,10 +1215,11 @@ int Run() {
   std::filesystem::create_directories(c.data, ec);
   if (ec) return Fail(c.data + ": " + ec.message());
 
-  tools::ScanStore store(paths);
+  ScanStore store(paths);
   c.store = &store;
   double build_s = 0.0;
-  const LayeredGrid* map = store.Map(0, c.base.mlndt.grid, &build_s, &error);
+  const LayeredGrid* map = store.Map(
+      0, c.base.mlndt.grid, c.base.mlndt.num_threads, &build_s, &error);
   if (map == nullptr) return Fail(error);
   for (const LayerInfo& info : map->layer_info())
     c.layer_sizes.push_back(info.cell_size_m);

@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -25,8 +24,11 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/eval/dataset.h"
+#include "mlndt/eval/statistics.h"
+#include "tools/common/list_flags.h"
 #include "tools/common/registration_flags.h"
-#include "tools/common/tool_utils.h"
+#include "tools/common/tool_main.h"
 
 DEFINE_string(scans, "", "Folder of scans (sorted by file name)");
 DEFINE_string(gt_poses,
@@ -50,10 +52,80 @@ int Fail(const std::string& message) {
   return 1;
 }
 
-double Median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+// ';'-separated tx,ty,tz,alpha,beta,gamma offsets [m, deg].
+bool ParsePerturbations(const std::string& text,
+                        std::vector<Vector6d>* perturbations,
+                        std::string* error) {
+  std::stringstream list(text);
+  std::string item;
+  while (std::getline(list, item, ';')) {
+    std::vector<double> v;
+    if (!tools::ParseNumberList(item, &v) || v.size() != 6) {
+      *error = "bad --perturbations item '" + item + "': 6 numbers needed";
+      return false;
+    }
+    perturbations->push_back(
+        PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]));
+  }
+  return true;
+}
+
+// The initial guess of run k and its label: the identity, or the truth
+// pushed off by perturbation k in the reference frame.
+Isometry3d InitialGuess(const std::vector<Vector6d>& perturbations,
+                        size_t k,
+                        const Isometry3d& truth,
+                        std::string* label) {
+  if (perturbations.empty()) {
+    *label = "identity";
+    return Isometry3d::Identity();
+  }
+  std::ostringstream l;
+  const Vector6d& p = perturbations[k];
+  l << "gt+(" << p(0) << "," << p(1) << "," << p(2) << "," << p(3) * kRadToDeg
+    << "," << p(4) * kRadToDeg << "," << p(5) * kRadToDeg << ")";
+  *label = l.str();
+  return PoseVectorToIsometry(perturbations[k]) * truth;
+}
+
+// Registers scan j onto scan i from `initial`, prints the table line and
+// the CSV row; true on success.
+bool RegisterAndPrint(const RegistrationOptions& options,
+                      const std::vector<PointCloud>& scans,
+                      size_t i,
+                      size_t j,
+                      size_t gap,
+                      const Isometry3d& truth,
+                      const Isometry3d& initial,
+                      const std::string& label,
+                      std::ofstream* csv,
+                      std::vector<double>* times) {
+  RegistrationSummary summary;
+  Register(options, scans[i], scans[j], initial, &summary);
+  const double et = TranslationErrorM(truth, summary.reference_from_input);
+  const double er =
+      RotationErrorRad(truth, summary.reference_from_input) * kRadToDeg;
+  const bool ok = summary.IsSolutionUsable() &&
+                  et < FLAGS_max_translation_error &&
+                  er < FLAGS_max_rotation_error;
+  times->push_back(summary.total_time_s * 1e3);
+  std::printf("%-4zu %-4zu %-3zu %-24s %10.4f %10.4f %4s %5d %8.1f\n",
+              i,
+              j,
+              gap,
+              label.c_str(),
+              et,
+              er,
+              ok ? "yes" : "NO",
+              summary.num_iterations,
+              summary.total_time_s * 1e3);
+  if (csv->is_open()) {
+    *csv << i << "," << j << "," << gap << ",\"" << label << "\"," << et << ","
+         << er << "," << ok << ","
+         << TerminationTypeToString(summary.termination_type) << ","
+         << summary.num_iterations << "," << summary.total_time_s * 1e3 << "\n";
+  }
+  return ok;
 }
 
 int Run() {
@@ -65,18 +137,9 @@ int Run() {
     return Fail(error);
 
   std::vector<std::string> paths;
-  std::error_code ec;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(FLAGS_scans, ec)) {
-    CloudFormat format;
-    std::string ignored;
-    if (entry.is_regular_file() &&
-        CloudFormatFromPath(entry.path().string(), &format, &ignored)) {
-      paths.push_back(entry.path().string());
-    }
+  if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
+    return Fail(error);
   }
-  if (ec) return Fail(FLAGS_scans + ": " + ec.message());
-  std::sort(paths.begin(), paths.end());
   std::vector<Isometry3d> poses;
   if (!ReadKittiPoses(FLAGS_gt_poses, &poses, &error)) return Fail(error);
   if (poses.size() < paths.size()) {
@@ -87,17 +150,9 @@ int Run() {
   if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty())
     return Fail("bad --gaps");
   std::vector<Vector6d> perturbations;
-  std::stringstream list(FLAGS_perturbations);
-  std::string item;
-  while (std::getline(list, item, ';')) {
-    std::vector<double> v;
-    if (!tools::ParseNumberList(item, &v) || v.size() != 6) {
-      return Fail("bad --perturbations item '" + item + "': 6 numbers needed");
-    }
-    perturbations.push_back(
-        PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]));
+  if (!ParsePerturbations(FLAGS_perturbations, &perturbations, &error)) {
+    return Fail(error);
   }
-
   std::vector<PointCloud> scans(paths.size());
   for (size_t i = 0; i < paths.size(); ++i) {
     if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
@@ -130,46 +185,12 @@ int Run() {
           poses[i].inverse() * poses[j];  // reference_from_input.
       const size_t runs = std::max<size_t>(1, perturbations.size());
       for (size_t k = 0; k < runs; ++k) {
-        Isometry3d initial = Isometry3d::Identity();
-        std::string label = "identity";
-        if (!perturbations.empty()) {
-          initial = PoseVectorToIsometry(perturbations[k]) * truth;
-          std::ostringstream l;
-          const Vector6d& p = perturbations[k];
-          l << "gt+(" << p(0) << "," << p(1) << "," << p(2) << ","
-            << p(3) * kRadToDeg << "," << p(4) * kRadToDeg << ","
-            << p(5) * kRadToDeg << ")";
-          label = l.str();
-        }
-        RegistrationSummary summary;
-        Register(options, scans[i], scans[j], initial, &summary);
-        const double et =
-            TranslationErrorM(truth, summary.reference_from_input);
-        const double er =
-            RotationErrorRad(truth, summary.reference_from_input) * kRadToDeg;
-        const bool ok = summary.IsSolutionUsable() &&
-                        et < FLAGS_max_translation_error &&
-                        er < FLAGS_max_rotation_error;
+        std::string label;
+        const Isometry3d initial =
+            InitialGuess(perturbations, k, truth, &label);
         ++total;
-        successes += ok;
-        times.push_back(summary.total_time_s * 1e3);
-        std::printf("%-4zu %-4zu %-3zu %-24s %10.4f %10.4f %4s %5d %8.1f\n",
-                    i,
-                    j,
-                    gap,
-                    label.c_str(),
-                    et,
-                    er,
-                    ok ? "yes" : "NO",
-                    summary.num_iterations,
-                    summary.total_time_s * 1e3);
-        if (csv.is_open()) {
-          csv << i << "," << j << "," << gap << ",\"" << label << "\"," << et
-              << "," << er << "," << ok << ","
-              << TerminationTypeToString(summary.termination_type) << ","
-              << summary.num_iterations << "," << summary.total_time_s * 1e3
-              << "\n";
-        }
+        successes += RegisterAndPrint(
+            options, scans, i, j, gap, truth, initial, label, &csv, &times);
       }
     }
   }
@@ -177,7 +198,7 @@ int Run() {
               successes,
               total,
               100.0 * successes / std::max(1, total),
-              Median(times));
+              ComputeStats(times).median);
   return 0;
 }
 
@@ -185,10 +206,12 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Registers scan pairs with ground truth and reports success rates.");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+  if (!mlndt::tools::StartTool(
+          "Registers scan pairs with ground truth and reports success rates.",
+          false,
+          &argc,
+          &argv)) {
+    return 1;
+  }
   return mlndt::Run();
 }

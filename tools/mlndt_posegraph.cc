@@ -42,16 +42,17 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/cloud/cloud_format.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/cost/robust_loss.h"
-#include "mlndt/eval/trajectory_metrics.h"
+#include "mlndt/eval/dataset.h"
 #include "tools/common/json_writer.h"
+#include "tools/common/posegraph_metrics.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (files with a cloud extension, sorted by name)");
@@ -97,27 +98,6 @@ struct PoseBlocks {
     return out;
   }
 };
-
-// Cloud files of a folder, sorted by name.
-bool ListScans(const std::string& folder,
-               std::vector<std::string>* paths,
-               std::string* error) {
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    CloudFormat format;
-    std::string ignored;
-    if (entry.is_regular_file() &&
-        CloudFormatFromPath(entry.path().string(), &format, &ignored)) {
-      paths->push_back(entry.path().string());
-    }
-  }
-  if (ec) {
-    *error = folder + ": " + ec.message();
-    return false;
-  }
-  std::sort(paths->begin(), paths->end());
-  return true;
-}
 
 // SPARSE_NORMAL_CHOLESKY when Ceres was built with a sparse library (Debian's
 // 2.1 has SuiteSparse and CXSparse), else DENSE_QR: a pose-only problem has no
@@ -228,37 +208,88 @@ JointResult SolveJointly(const std::vector<LayeredGrid>& maps,
   return result;
 }
 
-struct Metrics {
-  double ate_m = 0.0;
-  double rpe_translation_m = 0.0;
-  double rpe_rotation_deg = 0.0;
-};
-
-// ATE after aligning the first poses, and the mean RPE of consecutive scans
-// (mlndt/eval/trajectory_metrics.h).
-bool Evaluate(const std::vector<Isometry3d>& estimate,
-              const std::vector<Isometry3d>& truth,
-              Metrics* metrics,
-              std::string* error) {
-  AteOptions ate_options;
-  ate_options.alignment = TrajectoryAlignment::FIRST_POSE;
-  AteSummary ate;
-  RpeSummary rpe;
-  if (!ComputeAte(ate_options, truth, estimate, &ate, error) ||
-      !ComputeRpe(RpeOptions(), truth, estimate, &rpe, error)) {
+// trajectory_chained.txt and trajectory_joint.txt into `dir`.
+bool WriteTrajectories(const std::string& dir,
+                       const std::vector<Isometry3d>& chained,
+                       const std::vector<Isometry3d>& joint,
+                       std::string* error) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    *error = dir + ": " + ec.message();
     return false;
   }
-  metrics->ate_m = ate.rmse_m;
-  metrics->rpe_translation_m = rpe.translation_m.mean;
-  metrics->rpe_rotation_deg = rpe.rotation_deg.mean;
+  return WriteKittiPoses(dir + "/trajectory_chained.txt", chained, error) &&
+         WriteKittiPoses(dir + "/trajectory_joint.txt", joint, error);
+}
+
+// The settings and the joint problem's facts.
+tools::JsonObject JointJson(size_t num_scans,
+                            const JointResult& joint_result,
+                            int chained_failures) {
+  tools::JsonObject json;
+  json.AddNumber("scans", static_cast<double>(num_scans))
+      .AddNumber("neighbors", FLAGS_neighbors)
+      .AddNumber("joint_layers", FLAGS_joint_layers)
+      .AddBool("joint_both_directions", !FLAGS_joint_one_way)
+      .AddNumber("directed_pairs", joint_result.directed_pairs)
+      .AddNumber("residual_blocks", joint_result.residual_blocks)
+      .AddString("linear_solver", joint_result.linear_solver)
+      .AddNumber("chained_failures", chained_failures)
+      .AddNumber("joint_iterations", joint_result.iterations)
+      .AddString("joint_termination", joint_result.termination)
+      .AddNumber("joint_initial_cost", joint_result.initial_cost)
+      .AddNumber("joint_cost_at_chained", joint_result.chained_cost_last_stage)
+      .AddNumber("joint_final_cost", joint_result.final_cost);
+  return json;
+}
+
+// Reads every scan, builds its map once and samples its points once.
+bool LoadScans(const RegistrationOptions& options,
+               const std::vector<std::string>& paths,
+               std::vector<PointCloud>* scans,
+               std::vector<LayeredGrid>* maps,
+               std::vector<PointCloud>* samples,
+               std::string* error) {
+  for (size_t i = 0; i < paths.size(); ++i) {
+    if (!ReadPointCloud(paths[i], &(*scans)[i], nullptr, error)) return false;
+    if (!LayeredGrid::Build(options.grid, (*scans)[i], &(*maps)[i], error)) {
+      *error = paths[i] + ": map: " + *error;
+      return false;
+    }
+    if (!SamplePoints(
+            options.sampling, (*scans)[i], &(*samples)[i], nullptr, error)) {
+      *error = paths[i] + ": sampling: " + *error;
+      return false;
+    }
+  }
   return true;
 }
 
-std::string RpeJson(const Metrics& metrics) {
-  return tools::JsonObject()
-      .AddNumber("translation_m", metrics.rpe_translation_m)
-      .AddNumber("rotation_deg", metrics.rpe_rotation_deg)
-      .str();
+// (a): scan i+1 registered onto scan i from the previous relative estimate;
+// world_from_scan poses, scan 0 = world. A failed pair keeps the previous
+// relative pose and is counted in *failures.
+std::vector<Isometry3d> ChainRegistrations(const RegistrationOptions& options,
+                                           const std::vector<LayeredGrid>& maps,
+                                           const std::vector<PointCloud>& scans,
+                                           int* failures) {
+  std::vector<Isometry3d> chained(scans.size(), Isometry3d::Identity());
+  Isometry3d relative = Isometry3d::Identity();
+  for (size_t i = 0; i + 1 < scans.size(); ++i) {
+    RegistrationSummary summary;
+    Register(options, maps[i], scans[i + 1], relative, &summary);
+    if (summary.IsSolutionUsable()) {
+      relative = summary.reference_from_input;
+    } else {
+      ++*failures;
+      LOG(WARNING) << "scan " << i + 1 << " onto " << i << ": "
+                   << summary.message << "; keeping the previous relative pose";
+    }
+    chained[i + 1] = chained[i] * relative;
+    LOG(INFO) << "scan " << i + 1 << " onto " << i << ": "
+              << summary.BriefReport();
+  }
+  return chained;
 }
 
 int Run() {
@@ -275,7 +306,9 @@ int Run() {
   }
 
   std::vector<std::string> paths;
-  if (!ListScans(FLAGS_scans, &paths, &error)) return Fail(error);
+  if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
+    return Fail(error);
+  }
   if (paths.size() < 2) return Fail(FLAGS_scans + ": fewer than 2 scans");
   std::vector<Isometry3d> truth;
   if (!FLAGS_gt_poses.empty()) {
@@ -292,37 +325,15 @@ int Run() {
   // Scans, maps (built once, shared by both stages) and samples.
   std::vector<PointCloud> scans(n), samples(n);
   std::vector<LayeredGrid> maps(n);
-  for (size_t i = 0; i < n; ++i) {
-    if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
-      return Fail(error);
-    if (!LayeredGrid::Build(options.grid, scans[i], &maps[i], &error)) {
-      return Fail(paths[i] + ": map: " + error);
-    }
-    if (!SamplePoints(
-            options.sampling, scans[i], &samples[i], nullptr, &error)) {
-      return Fail(paths[i] + ": sampling: " + error);
-    }
+  if (!LoadScans(options, paths, &scans, &maps, &samples, &error)) {
+    return Fail(error);
   }
   const double maps_done = NowSeconds();
 
   // (a) Chained pairwise registrations.
-  std::vector<Isometry3d> chained(n, Isometry3d::Identity());
-  Isometry3d relative = Isometry3d::Identity();
   int chained_failures = 0;
-  for (size_t i = 0; i + 1 < n; ++i) {
-    RegistrationSummary summary;
-    Register(options, maps[i], scans[i + 1], relative, &summary);
-    if (summary.IsSolutionUsable()) {
-      relative = summary.reference_from_input;
-    } else {
-      ++chained_failures;
-      LOG(WARNING) << "scan " << i + 1 << " onto " << i << ": "
-                   << summary.message << "; keeping the previous relative pose";
-    }
-    chained[i + 1] = chained[i] * relative;
-    LOG(INFO) << "scan " << i + 1 << " onto " << i << ": "
-              << summary.BriefReport();
-  }
+  const std::vector<Isometry3d> chained =
+      ChainRegistrations(options, maps, scans, &chained_failures);
   const double chained_done = NowSeconds();
 
   // (b) Joint refinement from the chained poses.
@@ -335,52 +346,23 @@ int Run() {
   for (const PoseBlocks& b : blocks) joint.push_back(b.ToIsometry());
   const double joint_done = NowSeconds();
 
-  if (!FLAGS_output_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(FLAGS_output_dir, ec);
-    if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
-    const std::string dir = FLAGS_output_dir + "/";
-    if (!WriteKittiPoses(dir + "trajectory_chained.txt", chained, &error) ||
-        !WriteKittiPoses(dir + "trajectory_joint.txt", joint, &error)) {
-      return Fail(error);
-    }
+  if (!FLAGS_output_dir.empty() &&
+      !WriteTrajectories(FLAGS_output_dir, chained, joint, &error)) {
+    return Fail(error);
   }
-
-  tools::JsonObject json;
-  json.AddNumber("scans", static_cast<double>(n))
-      .AddNumber("neighbors", FLAGS_neighbors)
-      .AddNumber("joint_layers", FLAGS_joint_layers)
-      .AddBool("joint_both_directions", !FLAGS_joint_one_way)
-      .AddNumber("directed_pairs", joint_result.directed_pairs)
-      .AddNumber("residual_blocks", joint_result.residual_blocks)
-      .AddString("linear_solver", joint_result.linear_solver)
-      .AddNumber("chained_failures", chained_failures)
-      .AddNumber("joint_iterations", joint_result.iterations)
-      .AddString("joint_termination", joint_result.termination)
-      .AddNumber("joint_initial_cost", joint_result.initial_cost)
-      .AddNumber("joint_cost_at_chained", joint_result.chained_cost_last_stage)
-      .AddNumber("joint_final_cost", joint_result.final_cost);
-  if (!truth.empty()) {
-    Metrics chained_metrics, joint_metrics;
-    if (!Evaluate(chained, truth, &chained_metrics, &error) ||
-        !Evaluate(joint, truth, &joint_metrics, &error)) {
-      return Fail(error);
-    }
-    json.AddString("ate_alignment", "first_pose")
-        .AddNumber("ate_chained_m", chained_metrics.ate_m)
-        .AddNumber("ate_joint_m", joint_metrics.ate_m)
-        .Add("rpe_chained", RpeJson(chained_metrics))
-        .Add("rpe_joint", RpeJson(joint_metrics));
+  tools::JsonObject json = JointJson(n, joint_result, chained_failures);
+  if (!truth.empty() &&
+      !tools::AddTrajectoryMetrics(chained, joint, truth, &json, &error)) {
+    return Fail(error);
   }
   json.AddNumber("time_maps_s", maps_done - start)
       .AddNumber("time_chained_s", chained_done - maps_done)
       .AddNumber("time_joint_s", joint_done - chained_done)
       .AddNumber("time_total_s", joint_done - start);
   std::cout << json.str() << std::endl;
-  if (!FLAGS_output_json.empty()) {
-    std::ofstream out(FLAGS_output_json);
-    out << json.str() << "\n";
-    if (!out.good()) return Fail(FLAGS_output_json + ": cannot write");
+  if (!FLAGS_output_json.empty() &&
+      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+    return Fail(error);
   }
   return 0;
 }
@@ -389,12 +371,15 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Chained ML-NDT odometry and a joint refinement of all scan poses.\n"
-      "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
-      "[--output_dir=DIR]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+  if (!mlndt::tools::StartTool(
+          "Chained ML-NDT odometry and a joint refinement of all scan "
+          "poses.\n"
+          "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
+          "[--output_dir=DIR]",
+          false,
+          &argc,
+          &argv)) {
+    return 1;
+  }
   return mlndt::Run();
 }

@@ -46,13 +46,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <limits>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,12 +57,15 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/dataset.h"
 #include "mlndt/eval/statistics.h"
+#include "mlndt/pipeline/matcher.h"
+#include "mlndt/pipeline/scan_store.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/pair_evaluation.h"
+#include "tools/common/list_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
-#include "tools/common/scan_store.h"
-#include "tools/common/sequence_output.h"
+#include "tools/common/scaling_measure.h"
+#include "tools/common/scaling_report.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -96,39 +96,11 @@ namespace mlndt {
 namespace {
 
 using tools::Fmt;
+using tools::SizeResult;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_scaling: " << message << std::endl;
   return 1;
-}
-
-// Parses --sizes: strictly increasing positive integers.
-bool ParseSizes(const std::string& text,
-                std::vector<size_t>* sizes,
-                std::string* error) {
-  std::vector<double> values;
-  if (!tools::ParseNumberList(text, &values) || values.empty()) {
-    *error = "--sizes=" + text +
-             ": expected comma-separated positive integers, e.g. 10000,30000";
-    return false;
-  }
-  sizes->clear();
-  for (double v : values) {
-    if (!(v >= 1) || v != std::floor(v) || v > 1e12) {
-      *error = "--sizes=" + text + ": '" + tools::Num(v) +
-               "' is not a positive integer";
-      return false;
-    }
-    const size_t n = static_cast<size_t>(v);
-    if (!sizes->empty() && n <= sizes->back()) {
-      *error = "--sizes=" + text + ": sizes must be strictly increasing (" +
-               std::to_string(n) + " after " + std::to_string(sizes->back()) +
-               ")";
-      return false;
-    }
-    sizes->push_back(n);
-  }
-  return true;
 }
 
 // Reads every scan, moves it into the first scan's frame with the ground
@@ -148,7 +120,7 @@ bool LoadMergedCloud(PointCloud* merged,
              FLAGS_scans;
     return false;
   }
-  tools::ScanStore store(paths);
+  ScanStore store(paths);
   const Isometry3d first_from_world = world_from_scan[0].inverse();
   for (size_t i = 0; i < paths.size(); ++i) {
     const PointCloud* cloud = store.Cloud(i, error);
@@ -163,240 +135,144 @@ bool LoadMergedCloud(PointCloud* merged,
   return true;
 }
 
-// A uniform draw in [0, bound) without modulo bias, written out so that the
-// same seed gives the same subsets on every standard library.
-uint64_t UniformBelow(uint64_t bound, std::mt19937_64* rng) {
-  const uint64_t limit = std::numeric_limits<uint64_t>::max() -
-                         std::numeric_limits<uint64_t>::max() % bound;
-  uint64_t draw;
-  do {
-    draw = (*rng)();
-  } while (draw >= limit);
-  return draw % bound;
-}
-
-// `n` distinct points of `cloud`, uniformly at random (partial Fisher-Yates),
-// kept in the cloud's order.
-PointCloud RandomSubset(const PointCloud& cloud, size_t n, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::vector<size_t> index(cloud.size());
-  for (size_t i = 0; i < index.size(); ++i) index[i] = i;
-  for (size_t i = 0; i < n; ++i) {
-    std::swap(index[i], index[i + UniformBelow(index.size() - i, &rng)]);
-  }
-  index.resize(n);
-  std::sort(index.begin(), index.end());
-  PointCloud subset;
-  subset.Reserve(n);
-  for (size_t i : index) subset.Add(cloud[i]);
-  return subset;
-}
-
-// The measurements at one size.
-struct SizeResult {
-  size_t points = 0;
-  double map_ms = 0.0;  // Medians over the repetitions.
-  double sampling_ms = 0.0;
-  double solve_ms = 0.0;
-  double total_ms = 0.0;
-  size_t sampled_points = 0;
-  size_t finest_cells = 0;  // Occupied cells on the finest layer (0 for NDT).
-  int num_layers = 0;
-  int iterations = 0;
-  TerminationType termination = TerminationType::FAILURE;
-  std::string message;
-  double translation_error_m = 0.0;
-  double rotation_error_deg = 0.0;
-  bool ok = false;  // Not FAILURE, and within the error tolerances.
-};
-
-bool MeasureSize(const MatcherOptions& options,
-                 const PointCloud& merged,
-                 size_t n,
-                 const Isometry3d& reference_from_input,
-                 SizeResult* result,
-                 std::string* error) {
-  *result = SizeResult();
-  result->points = n;
-  // Two independent subsets: seeds differ per size and per role.
-  const uint64_t seed = FLAGS_seed * 0x9E3779B97F4A7C15ull + n;
-  const PointCloud reference = RandomSubset(merged, n, seed * 2);
-  const PointCloud input = TransformCloud(
-      reference_from_input.inverse(), RandomSubset(merged, n, seed * 2 + 1));
-
-  if (options.method == Method::MLNDT) {
-    // Untimed, for the cell count (and a warm-up of the allocator).
-    LayeredGrid grid;
-    if (!LayeredGrid::Build(options.mlndt.grid, reference, &grid, error)) {
-      *error = "N = " + std::to_string(n) + ": map: " + *error;
-      return false;
-    }
-    result->finest_cells = grid.layer_info().back().occupied_cells;
-    result->num_layers = grid.num_layers();
-  }
-
-  std::vector<double> map_ms, sampling_ms, solve_ms, total_ms;
-  RegistrationSummary summary;
-  for (int r = 0; r < FLAGS_repetitions; ++r) {
-    RegisterWithMatcher(
-        options, reference, input, Isometry3d::Identity(), &summary);
-    map_ms.push_back(summary.map_time_s * 1e3);
-    sampling_ms.push_back(summary.sampling_time_s * 1e3);
-    solve_ms.push_back(summary.solve_time_s * 1e3);
-    total_ms.push_back(summary.total_time_s * 1e3);
-  }
-  result->map_ms = ComputeStats(map_ms).median;
-  result->sampling_ms = ComputeStats(sampling_ms).median;
-  result->solve_ms = ComputeStats(solve_ms).median;
-  result->total_ms = ComputeStats(total_ms).median;
-  // Registration is deterministic: the last run stands for all.
-  result->sampled_points = summary.sampled_points;
-  result->iterations = summary.num_iterations;
-  if (summary.num_layers > 0) result->num_layers = summary.num_layers;
-  result->termination = summary.termination_type;
-  result->message = summary.message;
-  result->translation_error_m =
-      TranslationErrorM(reference_from_input, summary.reference_from_input);
-  result->rotation_error_deg =
-      RotationErrorRad(reference_from_input, summary.reference_from_input) *
-      kRadToDeg;
-  result->ok = summary.IsSolutionUsable() &&
-               result->translation_error_m <= FLAGS_max_translation_error &&
-               result->rotation_error_deg <= FLAGS_max_rotation_error;
-  return true;
-}
-
-// Least-squares slope b of log(y) = a + b log(x); NaN with fewer than two
-// points or a non-positive value.
-double LogLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
-  if (x.size() < 2 || x.size() != y.size()) return std::nan("");
-  double mx = 0.0, my = 0.0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    if (!(x[i] > 0) || !(y[i] > 0)) return std::nan("");
-    mx += std::log(x[i]);
-    my += std::log(y[i]);
-  }
-  mx /= x.size();
-  my /= x.size();
-  double sxy = 0.0, sxx = 0.0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
-    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
-  }
-  return sxy / sxx;
-}
-
-// The quantities whose slopes are reported, by name, one value per size.
-std::vector<std::pair<std::string, std::vector<double>>> Series(
-    const std::vector<SizeResult>& results) {
-  std::vector<std::pair<std::string, std::vector<double>>> series = {
-      {"map", {}},
-      {"sampling", {}},
-      {"solve", {}},
-      {"total", {}},
-      {"sampled points", {}},
-      {"finest-layer cells", {}}};
-  for (const SizeResult& r : results) {
-    series[0].second.push_back(r.map_ms);
-    series[1].second.push_back(r.sampling_ms);
-    series[2].second.push_back(r.solve_ms);
-    series[3].second.push_back(r.total_ms);
-    series[4].second.push_back(static_cast<double>(r.sampled_points));
-    series[5].second.push_back(static_cast<double>(r.finest_cells));
-  }
-  return series;
-}
-
-bool WriteCsv(const std::string& path,
-              const std::vector<SizeResult>& results,
-              std::string* error) {
-  using tools::Num;
-  std::ofstream out(path);
-  out << "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_"
-         "layer_cells,"
-         "num_layers,iterations,termination,translation_error_m,rotation_error_"
-         "deg,ok\n";
-  for (const SizeResult& r : results) {
-    out << r.points << "," << Num(r.map_ms) << "," << Num(r.sampling_ms) << ","
-        << Num(r.solve_ms) << "," << Num(r.total_ms) << "," << r.sampled_points
-        << "," << r.finest_cells << "," << r.num_layers << "," << r.iterations
-        << "," << TerminationTypeToString(r.termination) << ","
-        << Num(r.translation_error_m) << "," << Num(r.rotation_error_deg) << ","
-        << (r.ok ? 1 : 0) << "\n";
-  }
-  if (!out) {
-    *error = path + ": cannot write";
+// --sizes, --repetitions, the tolerances, --motion and the registration
+// flags; false with *error for a bad value.
+bool ParseFlags(std::vector<size_t>* sizes,
+                Isometry3d* reference_from_input,
+                MatcherOptions* options,
+                std::string* error) {
+  if (!tools::ParseSizes(FLAGS_sizes, sizes, error)) return false;
+  if (FLAGS_repetitions < 1) {
+    *error =
+        "--repetitions=" + std::to_string(FLAGS_repetitions) + ": must be >= 1";
     return false;
   }
-  return true;
+  if (!(FLAGS_max_translation_error > 0) || !(FLAGS_max_rotation_error > 0)) {
+    *error = "--max_translation_error and --max_rotation_error must be > 0";
+    return false;
+  }
+  std::vector<double> motion;
+  if (!tools::ParseNumberList(FLAGS_motion, &motion) || motion.size() != 6) {
+    *error = "--motion=" + FLAGS_motion +
+             ": expected 6 comma-separated numbers tx,ty,tz "
+             "[m],alpha,beta,gamma [deg]";
+    return false;
+  }
+  *reference_from_input = PoseVectorToIsometry(PoseVectorFromDegrees(
+      motion[0], motion[1], motion[2], motion[3], motion[4], motion[5]));
+  return tools::MatcherOptionsFromFlags(options, error);
 }
 
-// scaling.gp / scaling.png: log-log time against N, read from scaling.csv.
-bool WritePlot(const std::string& dir,
-               const MatcherOptions& options,
-               const std::vector<SizeResult>& results,
-               const std::vector<double>& slopes,
-               std::string* error) {
-  const std::string csv = tools::GnuplotQuote(dir + "/scaling.csv");
-  // The slope-1 line through the smallest size's total.
-  const double per_point_ms =
-      results.front().total_ms / static_cast<double>(results.front().points);
-  std::ostringstream script;
-  script
-      << tools::GnuplotPngHeader(900, 600) << "set output "
-      << tools::GnuplotQuote(dir + "/scaling.png") << "\n"
-      << "set title 'Registration time against cloud size (median of "
-      << FLAGS_repetitions << " runs; " << MethodToString(options.method)
-      << ", " << FLAGS_backend << ", " << FLAGS_sampling << " sampling)'\n"
-      << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-      << "set xlabel 'points N (reference = input size)'\nset ylabel 'time "
-         "[ms]'\n"
-      << "set key inside top left\nset datafile separator ','\n"
-      << "set xrange [" << tools::Num(results.front().points / 1.5) << ":"
-      << tools::Num(results.back().points * 1.5) << "]\n"
-      << "linear(x) = " << tools::Num(per_point_ms) << " * x\n"
-      << "plot " << csv
-      << " skip 1 using 1:2 with linespoints lw 2 pt 7 title 'map build (slope "
-      << Fmt(slopes[0], 2) << ")', \\\n"
-      << "     '' skip 1 using 1:3 with linespoints lw 2 pt 5 title 'sampling "
-         "(slope "
-      << Fmt(slopes[1], 2) << ")', \\\n"
-      << "     '' skip 1 using 1:4 with linespoints lw 2 pt 9 title 'solve "
-         "(slope "
-      << Fmt(slopes[2], 2) << ")', \\\n"
-      << "     '' skip 1 using 1:5 with linespoints lw 2 pt 11 title 'total "
-         "(slope "
-      << Fmt(slopes[3], 2) << ")', \\\n"
-      << "     [" << tools::Num(static_cast<double>(results.front().points))
-      << ":" << tools::Num(static_cast<double>(results.back().points))
-      << "] linear(x) with lines dashtype 2 lc rgb 'gray40' lw 1.5 title "
-         "'slope 1 (∝ N)'\n";
-  return tools::RunGnuplot(
-      FLAGS_gnuplot, dir + "/scaling.gp", script.str(), error);
+void PrintTable(const std::vector<SizeResult>& results) {
+  std::printf(
+      "| points | map ms | sampling ms | solve ms | total ms | sampled | "
+      "finest-layer "
+      "cells | layers | iterations | t error cm | r error deg | solve |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+  for (const SizeResult& r : results) {
+    std::printf(
+        "| %zu | %s | %s | %s | %s | %zu | %zu | %d | %d | %s | %s | %s |\n",
+        r.points,
+        Fmt(r.map_ms, 1).c_str(),
+        Fmt(r.sampling_ms, 1).c_str(),
+        Fmt(r.solve_ms, 1).c_str(),
+        Fmt(r.total_ms, 1).c_str(),
+        r.sampled_points,
+        r.finest_cells,
+        r.num_layers,
+        r.iterations,
+        Fmt(r.translation_error_m * 100.0, 2).c_str(),
+        Fmt(r.rotation_error_deg, 3).c_str(),
+        r.ok ? "ok"
+             : (r.termination == TerminationType::FAILURE ? "FAILED"
+                                                          : "LARGE ERROR"));
+  }
+}
+
+// Prints the slope of every series and of the solve against the sampled
+// points; returns the series' slopes.
+std::vector<double> PrintSlopes(const std::vector<size_t>& sizes,
+                                const std::vector<SizeResult>& results) {
+  std::printf(
+      "\nlog-log slope over N = %zu..%zu (time ∝ N^slope; 1 = linear):\n",
+      sizes.front(),
+      sizes.back());
+  std::vector<double> x;
+  for (size_t n : sizes) x.push_back(static_cast<double>(n));
+  std::vector<double> slopes;
+  for (const auto& [name, values] : tools::Series(results)) {
+    slopes.push_back(tools::LogLogSlope(x, values));
+    std::printf(
+        "  %-19s %s\n", (name + ":").c_str(), Fmt(slopes.back(), 2).c_str());
+  }
+  // The solve's cost per residual: its time against the sampled points.
+  std::vector<double> sampled, solve_ms;
+  for (const SizeResult& r : results) {
+    sampled.push_back(static_cast<double>(r.sampled_points));
+    solve_ms.push_back(r.solve_ms);
+  }
+  std::printf("  solve against sampled points (time ∝ S^slope): %s\n",
+              Fmt(tools::LogLogSlope(sampled, solve_ms), 2).c_str());
+  return slopes;
+}
+
+// scaling.csv and, when gnuplot is there, scaling.png into --output_dir.
+int WriteOutputs(const MatcherOptions& options,
+                 const std::vector<SizeResult>& results,
+                 const std::vector<double>& slopes,
+                 bool gnuplot_ok) {
+  const std::string dir = FLAGS_output_dir;
+  std::string error;
+  if (!tools::WriteScalingCsv(dir + "/scaling.csv", results, &error)) {
+    return Fail(error);
+  }
+  std::printf("\noutput: %s/scaling.csv", dir.c_str());
+  if (!gnuplot_ok) {
+    std::printf("\n");
+    return Fail("scaling.png skipped: gnuplot ('" + FLAGS_gnuplot +
+                "') not found; scaling.csv is written. Install gnuplot-nox");
+  }
+  const std::string title = "Registration time against cloud size (median of " +
+                            std::to_string(FLAGS_repetitions) + " runs; " +
+                            MethodToString(options.method) + ", " +
+                            FLAGS_backend + ", " + FLAGS_sampling +
+                            " sampling)";
+  if (!tools::WriteScalingPlot(
+          FLAGS_gnuplot, dir, title, results, slopes, &error)) {
+    return Fail(error);
+  }
+  std::printf(", scaling.gp, scaling.png\n");
+  return 0;
+}
+
+// Names every size whose solve failed or missed --motion; exit code 1.
+int ReportBrokenSolves(const std::vector<SizeResult>& results) {
+  for (const SizeResult& r : results) {
+    if (r.ok) continue;
+    std::cerr << "mlndt_scaling: N = " << r.points << ": "
+              << (r.termination == TerminationType::FAILURE
+                      ? "registration FAILED: " + r.message
+                      : "recovered motion off by " +
+                            Fmt(r.translation_error_m * 100.0, 2) + " cm, " +
+                            Fmt(r.rotation_error_deg, 3) + " deg (tolerance " +
+                            Fmt(FLAGS_max_translation_error * 100.0, 1) +
+                            " cm, " + Fmt(FLAGS_max_rotation_error, 2) +
+                            " deg)")
+              << std::endl;
+  }
+  return Fail(
+      "the solve did not recover --motion at every size: its times are not "
+      "representative (see the table's last column)");
 }
 
 int Run() {
   std::vector<size_t> sizes;
-  std::string error;
-  if (!ParseSizes(FLAGS_sizes, &sizes, &error)) return Fail(error);
-  if (FLAGS_repetitions < 1) {
-    return Fail("--repetitions=" + std::to_string(FLAGS_repetitions) +
-                ": must be >= 1");
-  }
-  if (!(FLAGS_max_translation_error > 0) || !(FLAGS_max_rotation_error > 0)) {
-    return Fail("--max_translation_error and --max_rotation_error must be > 0");
-  }
-  std::vector<double> motion;
-  if (!tools::ParseNumberList(FLAGS_motion, &motion) || motion.size() != 6) {
-    return Fail("--motion=" + FLAGS_motion +
-                ": expected 6 comma-separated numbers tx,ty,tz "
-                "[m],alpha,beta,gamma [deg]");
-  }
-  const Isometry3d reference_from_input =
-      PoseVectorToIsometry(PoseVectorFromDegrees(
-          motion[0], motion[1], motion[2], motion[3], motion[4], motion[5]));
+  Isometry3d reference_from_input;
   MatcherOptions options;
-  if (!tools::MatcherOptionsFromFlags(&options, &error)) return Fail(error);
+  std::string error;
+  if (!ParseFlags(&sizes, &reference_from_input, &options, &error)) {
+    return Fail(error);
+  }
   if (!FLAGS_output_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(FLAGS_output_dir, ec);
@@ -420,15 +296,21 @@ int Run() {
                 std::to_string(merged.size()) + " points");
   }
 
+  tools::ScalingSettings settings;
+  settings.seed = FLAGS_seed;
+  settings.repetitions = FLAGS_repetitions;
+  settings.max_translation_error_m = FLAGS_max_translation_error;
+  settings.max_rotation_error_deg = FLAGS_max_rotation_error;
   tools::Progress progress("mlndt_scaling", sizes.size());
   std::vector<SizeResult> results(sizes.size());
   for (size_t k = 0; k < sizes.size(); ++k) {
-    if (!MeasureSize(options,
-                     merged,
-                     sizes[k],
-                     reference_from_input,
-                     &results[k],
-                     &error)) {
+    if (!tools::MeasureSize(settings,
+                            options,
+                            merged,
+                            sizes[k],
+                            reference_from_input,
+                            &results[k],
+                            &error)) {
       progress.Finish();
       return Fail(error);
     }
@@ -451,82 +333,14 @@ int Run() {
       FLAGS_threads,
       FLAGS_motion.c_str(),
       FLAGS_repetitions);
-  std::printf(
-      "| points | map ms | sampling ms | solve ms | total ms | sampled | "
-      "finest-layer "
-      "cells | layers | iterations | t error cm | r error deg | solve |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
-  bool all_ok = true;
-  for (const SizeResult& r : results) {
-    std::printf(
-        "| %zu | %s | %s | %s | %s | %zu | %zu | %d | %d | %s | %s | %s |\n",
-        r.points,
-        Fmt(r.map_ms, 1).c_str(),
-        Fmt(r.sampling_ms, 1).c_str(),
-        Fmt(r.solve_ms, 1).c_str(),
-        Fmt(r.total_ms, 1).c_str(),
-        r.sampled_points,
-        r.finest_cells,
-        r.num_layers,
-        r.iterations,
-        Fmt(r.translation_error_m * 100.0, 2).c_str(),
-        Fmt(r.rotation_error_deg, 3).c_str(),
-        r.ok ? "ok"
-             : (r.termination == TerminationType::FAILURE ? "FAILED"
-                                                          : "LARGE ERROR"));
-    all_ok = all_ok && r.ok;
-  }
-  std::printf(
-      "\nlog-log slope over N = %zu..%zu (time ∝ N^slope; 1 = linear):\n",
-      sizes.front(),
-      sizes.back());
-  std::vector<double> x;
-  for (size_t n : sizes) x.push_back(static_cast<double>(n));
-  std::vector<double> slopes;
-  for (const auto& [name, values] : Series(results)) {
-    slopes.push_back(LogLogSlope(x, values));
-    std::printf(
-        "  %-19s %s\n", (name + ":").c_str(), Fmt(slopes.back(), 2).c_str());
-  }
-  // The solve's cost per residual: its time against the sampled points.
-  std::vector<double> sampled, solve_ms;
-  for (const SizeResult& r : results) {
-    sampled.push_back(static_cast<double>(r.sampled_points));
-    solve_ms.push_back(r.solve_ms);
-  }
-  std::printf("  solve against sampled points (time ∝ S^slope): %s\n",
-              Fmt(LogLogSlope(sampled, solve_ms), 2).c_str());
-
+  PrintTable(results);
+  const std::vector<double> slopes = PrintSlopes(sizes, results);
   if (!FLAGS_output_dir.empty()) {
-    const std::string dir = FLAGS_output_dir;
-    if (!WriteCsv(dir + "/scaling.csv", results, &error)) return Fail(error);
-    std::printf("\noutput: %s/scaling.csv", dir.c_str());
-    if (!gnuplot_ok) {
-      std::printf("\n");
-      return Fail("scaling.png skipped: gnuplot ('" + FLAGS_gnuplot +
-                  "') not found; scaling.csv is written. Install gnuplot-nox");
-    }
-    if (!WritePlot(dir, options, results, slopes, &error)) return Fail(error);
-    std::printf(", scaling.gp, scaling.png\n");
+    const int code = WriteOutputs(options, results, slopes, gnuplot_ok);
+    if (code != 0) return code;
   }
-  if (!all_ok) {
-    for (const SizeResult& r : results) {
-      if (r.ok) continue;
-      std::cerr << "mlndt_scaling: N = " << r.points << ": "
-                << (r.termination == TerminationType::FAILURE
-                        ? "registration FAILED: " + r.message
-                        : "recovered motion off by " +
-                              Fmt(r.translation_error_m * 100.0, 2) + " cm, " +
-                              Fmt(r.rotation_error_deg, 3) +
-                              " deg (tolerance " +
-                              Fmt(FLAGS_max_translation_error * 100.0, 1) +
-                              " cm, " + Fmt(FLAGS_max_rotation_error, 2) +
-                              " deg)")
-                << std::endl;
-    }
-    return Fail(
-        "the solve did not recover --motion at every size: its times are not "
-        "representative (see the table's last column)");
+  for (const SizeResult& r : results) {
+    if (!r.ok) return ReportBrokenSolves(results);
   }
   return 0;
 }
@@ -535,19 +349,14 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Times map build, sampling and solve of a registration against the cloud "
-      "size on real "
-      "scans.\n"
-      "  mlndt_scaling [--sizes=10000,30000,100000,300000,990000] "
-      "[--repetitions=3] "
-      "[--output_dir=OUT]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_scaling: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Times map build, sampling and solve of a registration against the "
+          "cloud size on real scans.\n"
+          "  mlndt_scaling [--sizes=10000,30000,100000,300000,990000] "
+          "[--repetitions=3] [--output_dir=OUT]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();

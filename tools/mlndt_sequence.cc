@@ -28,8 +28,8 @@
 // --method=ndt builds its own single grid per pair (no prebuilt-grid API).
 //
 // --adaptive_start_layer: the paper's proposal (end of Section 5.3), defined
-// precisely in tools/common/sequence_runner.h: start on the last layer; a
-// pair fails when its estimate is more than 1 m or 15 deg from its --init
+// precisely in mlndt/pipeline/adaptive_start_layer.h: start on the last layer;
+// a pair fails when its estimate is more than 1 m or 15 deg from its --init
 // guess (or the registration fails); while the running fail rate over the
 // pairs so far exceeds 5 % start one layer coarser, above 20 % two coarser.
 //
@@ -44,20 +44,27 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/dataset.h"
+#include "mlndt/pipeline/scan_store.h"
+#include "mlndt/pipeline/sequence_registration.h"
+#include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_writer.h"
+#include "tools/common/list_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
-#include "tools/common/scan_store.h"
 #include "tools/common/sequence_output.h"
-#include "tools/common/sequence_runner.h"
+#include "tools/common/sequence_plots.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -90,7 +97,7 @@ int Fail(const std::string& message) {
   return 1;
 }
 
-bool AdaptiveOptionsFromFlags(tools::AdaptiveStartLayerOptions* adaptive,
+bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
                               std::string* error) {
   adaptive->enabled = FLAGS_adaptive_start_layer;
   adaptive->max_translation_m = FLAGS_adaptive_max_translation;
@@ -114,150 +121,137 @@ bool AdaptiveOptionsFromFlags(tools::AdaptiveStartLayerOptions* adaptive,
   return true;
 }
 
-std::string CommandLine() {
-  std::string line;
-  for (const std::string& arg : gflags::GetArgvs()) {
-    line += (line.empty() ? "" : " ") + arg;
+// The run's options from the flags; false with *error for bad values.
+bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
+  if (FLAGS_scans.empty() || FLAGS_output_dir.empty()) {
+    *error =
+        "Usage: mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
+        "...";
+    return false;
   }
-  return line;
+  if (FLAGS_step < 1) {
+    *error = "--step must be >= 1";
+    return false;
+  }
+  if (FLAGS_max_scans < 0) {
+    *error = "--max_scans must be >= 0";
+    return false;
+  }
+  options->step = static_cast<size_t>(FLAGS_step);
+  options->release_used_scans = true;
+  if (!tools::MatcherOptionsFromFlags(&options->registration, error) ||
+      !ParseInitSpec(FLAGS_init, &options->init, error) ||
+      !AdaptiveOptionsFromFlags(&options->adaptive, error)) {
+    return false;
+  }
+  if (options->adaptive.enabled &&
+      options->registration.method != Method::MLNDT) {
+    *error = "--adaptive_start_layer needs --method=mlndt (NDT has one layer)";
+    return false;
+  }
+  if (FLAGS_trace_plot_pairs < 0) {
+    *error = "--trace_plot_pairs must be >= 0";
+    return false;
+  }
+  if (!FLAGS_calib.empty() && FLAGS_gt_poses.empty() &&
+      options->init.mode != InitMode::POSES) {
+    *error =
+        "--calib converts pose files; give --gt_poses or --init=poses:FILE "
+        "with it";
+    return false;
+  }
+  return true;
 }
 
-int Run() {
-  if (FLAGS_scans.empty() || FLAGS_output_dir.empty()) {
-    return Fail(
-        "Usage: mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
-        "...");
-  }
-  if (FLAGS_step < 1) return Fail("--step must be >= 1");
-  if (FLAGS_max_scans < 0) return Fail("--max_scans must be >= 0");
-  tools::SequenceOptions options;
-  options.step = static_cast<size_t>(FLAGS_step);
-  options.release_used_scans = true;
-  std::string error;
-  if (!tools::MatcherOptionsFromFlags(&options.registration, &error))
-    return Fail(error);
-  if (!tools::ParseInitSpec(FLAGS_init, &options.init, &error))
-    return Fail(error);
-  if (!AdaptiveOptionsFromFlags(&options.adaptive, &error)) return Fail(error);
-  if (options.adaptive.enabled &&
-      options.registration.method != Method::MLNDT) {
-    return Fail(
-        "--adaptive_start_layer needs --method=mlndt (NDT has one layer)");
-  }
-  if (FLAGS_trace_plot_pairs < 0)
-    return Fail("--trace_plot_pairs must be >= 0");
-  if (!FLAGS_calib.empty() && FLAGS_gt_poses.empty() &&
-      options.init.mode != tools::InitMode::POSES) {
-    return Fail(
-        "--calib converts pose files; give --gt_poses or --init=poses:FILE "
-        "with it");
-  }
-
-  std::vector<std::string> paths;
+// The scans (at most --max_scans) and, when given, the ground truth and
+// the odometry of --init=poses:FILE, one pose per scan.
+bool ReadScansAndPoses(const SequenceOptions& options,
+                       std::vector<std::string>* paths,
+                       std::vector<Isometry3d>* truth,
+                       std::vector<Isometry3d>* odometry,
+                       std::string* error) {
   if (!ListScanFiles(FLAGS_scans,
                      {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path},
-                     &paths,
-                     &error)) {
-    return Fail(error);
+                     paths,
+                     error)) {
+    return false;
   }
   if (FLAGS_max_scans > 0 &&
-      paths.size() > static_cast<size_t>(FLAGS_max_scans)) {
-    paths.resize(static_cast<size_t>(FLAGS_max_scans));
+      paths->size() > static_cast<size_t>(FLAGS_max_scans)) {
+    paths->resize(static_cast<size_t>(FLAGS_max_scans));
   }
-  if (paths.size() <= options.step) {
-    return Fail(FLAGS_scans + ": " + std::to_string(paths.size()) +
-                " scans, too few for --step=" + std::to_string(options.step));
+  const std::string scans = std::to_string(paths->size()) + " scans";
+  if (paths->size() <= options.step) {
+    *error = FLAGS_scans + ": " + scans +
+             ", too few for --step=" + std::to_string(options.step);
+    return false;
   }
-  std::vector<Isometry3d> truth, odometry;
   if (!FLAGS_gt_poses.empty() &&
-      !ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &truth, &error)) {
-    return Fail(error);
+      !ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, truth, error)) {
+    return false;
   }
-  if (!truth.empty() && truth.size() < paths.size()) {
-    return Fail(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
-                " poses for " + std::to_string(paths.size()) + " scans");
+  if (!truth->empty() && truth->size() < paths->size()) {
+    *error = FLAGS_gt_poses + " has " + std::to_string(truth->size()) +
+             " poses for " + scans;
+    return false;
   }
-  if (options.init.mode == tools::InitMode::GT_FRACTION && truth.empty()) {
-    return Fail("--init=gt_fraction:c needs --gt_poses");
+  if (options.init.mode == InitMode::GT_FRACTION && truth->empty()) {
+    *error = "--init=gt_fraction:c needs --gt_poses";
+    return false;
   }
-  if (options.init.mode == tools::InitMode::POSES) {
-    if (!ReadSequencePoses(
-            options.init.poses_path, FLAGS_calib, &odometry, &error)) {
-      return Fail(error);
-    }
-    if (odometry.size() < paths.size()) {
-      return Fail(options.init.poses_path + " has " +
-                  std::to_string(odometry.size()) + " poses for " +
-                  std::to_string(paths.size()) + " scans");
-    }
+  if (options.init.mode != InitMode::POSES) return true;
+  if (!ReadSequencePoses(
+          options.init.poses_path, FLAGS_calib, odometry, error)) {
+    return false;
   }
-  std::error_code ec;
-  std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
-  const bool gnuplot_ok =
-      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
-  if (!gnuplot_ok) {
-    std::cerr << "mlndt_sequence: gnuplot ('" << FLAGS_gnuplot
-              << "') not found: plots will be skipped (install gnuplot-nox, "
-                 "e.g. with "
-                 "scripts/install_deps.sh, or pass --plots=false)\n";
+  if (odometry->size() < paths->size()) {
+    *error = options.init.poses_path + " has " +
+             std::to_string(odometry->size()) + " poses for " + scans;
+    return false;
   }
+  return true;
+}
 
-  tools::ScanStore store(paths);
-  const size_t total = paths.size() - options.step;
-  tools::Progress progress("mlndt_sequence", total);
-  std::vector<tools::PairResult> results;
-  const auto on_pair = [&](const tools::PairResult& r, size_t done, size_t) {
-    char detail[160];
-    int used = std::snprintf(detail,
-                             sizeof(detail),
-                             "pair %zu->%zu %s, %d it, %.0f ms",
-                             r.reference,
-                             r.input,
-                             TerminationTypeToString(r.termination),
-                             r.iterations,
-                             r.times.total_ms);
-    if (r.has_truth && used > 0 && used < static_cast<int>(sizeof(detail))) {
-      std::snprintf(detail + used,
-                    sizeof(detail) - used,
-                    ", error %.1f cm %.2f deg",
-                    r.error.translation_m * 100.0,
-                    r.error.rotation_rad * kRadToDeg);
-    }
-    progress.Update(done, detail);
-  };
-  if (!tools::RunSequence(options,
-                          &store,
-                          truth.empty() ? nullptr : &truth,
-                          odometry.empty() ? nullptr : &odometry,
-                          on_pair,
-                          &results,
-                          &error)) {
-    progress.Finish();
-    return Fail(error);
+// One progress line per pair.
+std::string PairDetail(const PairResult& r) {
+  char detail[160];
+  int used = std::snprintf(detail,
+                           sizeof(detail),
+                           "pair %zu->%zu %s, %d it, %.0f ms",
+                           r.reference,
+                           r.input,
+                           TerminationTypeToString(r.termination),
+                           r.iterations,
+                           r.times.total_ms);
+  if (r.has_truth && used > 0 && used < static_cast<int>(sizeof(detail))) {
+    std::snprintf(detail + used,
+                  sizeof(detail) - used,
+                  ", error %.1f cm %.2f deg",
+                  r.error.translation_m * 100.0,
+                  r.error.rotation_rad * kRadToDeg);
   }
-  progress.Finish();
+  return detail;
+}
 
-  const std::string out = FLAGS_output_dir + "/";
-  if (!tools::WritePairsCsv(out + "pairs.csv", store, results, &error))
-    return Fail(error);
-  if (!tools::WriteTraceCsv(out + "trace.csv", results, &error))
-    return Fail(error);
+// The run's settings, first in summary.json.
+tools::JsonObject SummaryHeader(const SequenceOptions& options,
+                                size_t num_scans) {
+  const MatcherOptions& registration = options.registration;
   tools::JsonObject header;
   header.AddString("tool", "mlndt_sequence")
-      .AddString("command", CommandLine())
+      .AddString("command", tools::CommandLine())
       .AddString("scans_dir", FLAGS_scans)
-      .AddNumber("scans", static_cast<double>(paths.size()))
+      .AddNumber("scans", static_cast<double>(num_scans))
       .AddNumber("step", static_cast<double>(options.step))
-      .AddString("init", tools::InitSpecToString(options.init))
-      .AddString("method", MethodToString(options.registration.method))
+      .AddString("init", InitSpecToString(options.init))
+      .AddString("method", MethodToString(registration.method))
       .AddString("backend",
-                 BackendTypeToString(options.registration.mlndt.backend.type))
-      .AddString("sampling",
-                 SamplingMethodToString(
-                     options.registration.method == Method::NDT
-                         ? options.registration.ndt.sampling.method
-                         : options.registration.mlndt.sampling.method))
+                 BackendTypeToString(registration.mlndt.backend.type))
+      .AddString(
+          "sampling",
+          SamplingMethodToString(registration.method == Method::NDT
+                                     ? registration.ndt.sampling.method
+                                     : registration.mlndt.sampling.method))
       .AddBool("adaptive_start_layer", options.adaptive.enabled);
   if (options.adaptive.enabled) {
     header.Add(
@@ -271,102 +265,119 @@ int Run() {
   } else {
     header.AddNumber("start_layer_flag", FLAGS_start_layer);
   }
-  {
-    std::ofstream json(out + "summary.json");
-    json << tools::SummaryJson(header, results) << "\n";
-    if (!json) return Fail(out + "summary.json: cannot write");
+  return header;
+}
+
+// pairs.csv, trace.csv, summary.json and the trajectories.
+bool WriteFiles(const SequenceOptions& options,
+                const ScanStore& store,
+                const std::vector<PairResult>& results,
+                bool has_truth,
+                std::string* error) {
+  const std::string out = FLAGS_output_dir + "/";
+  if (!tools::WritePairsCsv(out + "pairs.csv", store, results, error) ||
+      !tools::WriteTraceCsv(out + "trace.csv", results, error)) {
+    return false;
+  }
+  if (!tools::WriteJsonFile(
+          out + "summary.json",
+          tools::SummaryJson(SummaryHeader(options, store.size()), results),
+          error)) {
+    return false;
   }
   if (!WriteKittiPoses(out + "trajectory.txt",
-                       tools::ChainTrajectory(results, options.step, false),
-                       &error)) {
+                       ChainTrajectory(results, options.step, false),
+                       error)) {
+    return false;
+  }
+  return !has_truth ||
+         WriteKittiPoses(out + "gt_trajectory.txt",
+                         ChainTrajectory(results, options.step, true),
+                         error);
+}
+
+int WritePlots(const SequenceOptions& options,
+               const std::vector<PairResult>& results,
+               bool gnuplot_ok) {
+  if (!gnuplot_ok) {
+    return Fail("plots skipped: gnuplot ('" + FLAGS_gnuplot +
+                "') not found; the other outputs are written. Install "
+                "gnuplot-nox or pass "
+                "--plots=false");
+  }
+  std::vector<std::string> pngs;
+  std::string error;
+  if (!tools::WriteSequencePlots(FLAGS_gnuplot,
+                                 FLAGS_output_dir,
+                                 results,
+                                 options.step,
+                                 FLAGS_trace_plot_pairs,
+                                 &pngs,
+                                 &error)) {
     return Fail(error);
   }
-  if (!truth.empty() &&
-      !WriteKittiPoses(out + "gt_trajectory.txt",
-                       tools::ChainTrajectory(results, options.step, true),
-                       &error)) {
-    return Fail(error);
-  }
-
-  const tools::SequenceTotals t = tools::ComputeTotals(results);
-  std::printf("pairs: %zu (step %zu, init %s, %s)\n",
-              t.pairs,
-              options.step,
-              tools::InitSpecToString(options.init).c_str(),
-              MethodToString(options.registration.method));
-  if (t.has_truth) {
-    std::printf(
-        "success (< 50 cm): %zu/%zu = %.1f %%, strict (< 20 cm, < 1 deg): "
-        "%zu/%zu = %.1f %%\n",
-        t.successes,
-        t.pairs,
-        t.success_rate_percent,
-        t.strict_successes,
-        t.pairs,
-        t.strict_success_rate_percent);
-    std::printf(
-        "error |mean| (std, max): t %.2f cm (%.2f, %.2f), r %.3f deg (%.3f, "
-        "%.3f)\n",
-        t.errors[6].mean,
-        t.errors[6].std,
-        t.errors[6].max,
-        t.errors[7].mean,
-        t.errors[7].std,
-        t.errors[7].max);
-  }
-  std::printf(
-      "time per pair [ms]: mean %.1f, median %.1f, p95 %.1f, max %.1f (map "
-      "mean %.1f); "
-      "iterations mean %.1f\n",
-      t.time_ms.mean,
-      t.time_ms.median,
-      t.time_ms.p95,
-      t.time_ms.max,
-      t.map_time_ms.mean,
-      t.iterations.mean);
-  std::printf("output: %s\n", FLAGS_output_dir.c_str());
-
-  if (FLAGS_plots) {
-    if (!gnuplot_ok) {
-      return Fail("plots skipped: gnuplot ('" + FLAGS_gnuplot +
-                  "') not found; the other outputs are written. Install "
-                  "gnuplot-nox or pass "
-                  "--plots=false");
-    }
-    std::vector<std::string> pngs;
-    if (!tools::WriteSequencePlots(FLAGS_gnuplot,
-                                   FLAGS_output_dir,
-                                   results,
-                                   options.step,
-                                   FLAGS_trace_plot_pairs,
-                                   &pngs,
-                                   &error)) {
-      return Fail(error);
-    }
-    std::printf("plots: ");
-    for (size_t k = 0; k < pngs.size(); ++k)
-      std::printf("%s%s", k ? ", " : "", pngs[k].c_str());
-    std::printf("\n");
-  }
+  std::printf("plots: ");
+  for (size_t k = 0; k < pngs.size(); ++k)
+    std::printf("%s%s", k ? ", " : "", pngs[k].c_str());
+  std::printf("\n");
   return 0;
+}
+
+int Run() {
+  SequenceOptions options;
+  std::string error;
+  if (!SequenceOptionsFromFlags(&options, &error)) return Fail(error);
+  std::vector<std::string> paths;
+  std::vector<Isometry3d> truth, odometry;
+  if (!ReadScansAndPoses(options, &paths, &truth, &odometry, &error)) {
+    return Fail(error);
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(FLAGS_output_dir, ec);
+  if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
+  const bool gnuplot_ok =
+      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
+  if (!gnuplot_ok) {
+    std::cerr << "mlndt_sequence: gnuplot ('" << FLAGS_gnuplot
+              << "') not found: plots will be skipped (install gnuplot-nox, "
+                 "e.g. with "
+                 "scripts/install_deps.sh, or pass --plots=false)\n";
+  }
+
+  ScanStore store(paths);
+  tools::Progress progress("mlndt_sequence", paths.size() - options.step);
+  std::vector<PairResult> results;
+  const auto on_pair = [&](const PairResult& r, size_t done, size_t) {
+    progress.Update(done, PairDetail(r));
+  };
+  const bool ok = RunSequence(options,
+                              &store,
+                              truth.empty() ? nullptr : &truth,
+                              odometry.empty() ? nullptr : &odometry,
+                              on_pair,
+                              &results,
+                              &error);
+  progress.Finish();
+  if (!ok) return Fail(error);
+  if (!WriteFiles(options, store, results, !truth.empty(), &error)) {
+    return Fail(error);
+  }
+  tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
+  return FLAGS_plots ? WritePlots(options, results, gnuplot_ok) : 0;
 }
 
 }  // namespace
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Registers a scan sequence pair by pair and evaluates it against ground "
-      "truth.\n"
-      "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
-      "[--step=1] "
-      "[--init=zero]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_sequence: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
+  if (!mlndt::tools::StartTool(
+          "Registers a scan sequence pair by pair and evaluates it against "
+          "ground truth.\n"
+          "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
+          "[--step=1] [--init=zero]",
+          true,
+          &argc,
+          &argv)) {
     return 1;
   }
   return mlndt::Run();

@@ -54,20 +54,6 @@ RegistrationSummary RegisterStreet(const Isometry3d& reference_from_input,
   return summary;
 }
 
-TEST(Method, StringsRoundTrip) {
-  for (Method m : {Method::MLNDT, Method::NDT}) {
-    Method parsed = m == Method::MLNDT ? Method::NDT : Method::MLNDT;
-    EXPECT_TRUE(StringToMethod(MethodToString(m), &parsed));
-    EXPECT_EQ(parsed, m);
-  }
-  Method parsed;
-  EXPECT_TRUE(StringToMethod("ndt", &parsed));
-  EXPECT_EQ(parsed, Method::NDT);
-  EXPECT_TRUE(StringToMethod("mlndt", &parsed));
-  EXPECT_EQ(parsed, Method::MLNDT);
-  EXPECT_FALSE(StringToMethod("icp", &parsed));
-}
-
 TEST(NdtBaseline, ObjectiveIsTheGaussianScore) {
   const PointCloud reference = testing::StreetScene(20000, 0.02, 1);
   const PointCloud input = testing::StreetScene(5000, 0.02, 2);

@@ -3,6 +3,7 @@
 // A minimal JSON writer for the tools' one-object outputs.
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -82,6 +83,19 @@ class JsonObject {
  private:
   std::string body_;
 };
+
+// Writes `json` and a newline to `path`; false with *error when it cannot.
+inline bool WriteJsonFile(const std::string& path,
+                          const std::string& json,
+                          std::string* error) {
+  std::ofstream out(path);
+  out << json << "\n";
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
 
 }  // namespace tools
 }  // namespace mlndt

@@ -1,84 +1,29 @@
 #pragma once
 
-// Small helpers shared by the tools: number lists from flags, 4x4 matrix
-// text files, peak memory.
+// Small helpers shared by the tools: numbers for tables, CSV and data
+// files, the command line, peak memory.
 
-#include <sys/resource.h>
-
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
-
-#include "mlndt/common/types.h"
 
 namespace mlndt {
 namespace tools {
 
-// Parses "a,b,c" into numbers; false when any item is not a finite number.
-inline bool ParseNumberList(const std::string& text,
-                            std::vector<double>* values) {
-  values->clear();
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    try {
-      size_t used = 0;
-      const double v = std::stod(item, &used);
-      if (used != item.size() &&
-          item.find_first_not_of(" \t", used) != std::string::npos) {
-        return false;
-      }
-      if (!std::isfinite(v)) return false;
-      values->push_back(v);
-    } catch (...) {
-      return false;
-    }
-  }
-  return true;
-}
-
-// Reads 12 or 16 whitespace-separated numbers (row-major 3x4 or 4x4).
-inline bool ReadMatrixFile(const std::string& path,
-                           Isometry3d* transform,
-                           std::string* error) {
-  std::ifstream in(path);
-  if (!in) {
-    *error = path + ": cannot open";
-    return false;
-  }
-  std::vector<double> v;
-  double x;
-  while (in >> x) v.push_back(x);
-  if (!in.eof() || (v.size() != 12 && v.size() != 16)) {
-    *error =
-        path + ": expected 12 or 16 numbers (a row-major 3x4 or 4x4 matrix)";
-    return false;
-  }
-  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[static_cast<size_t>(i)];
-  transform->matrix() = m;
-  return true;
-}
-
 // `value` with `precision` decimals for tables; "–" when not finite.
-inline std::string Fmt(double value, int precision) {
-  if (!std::isfinite(value)) return "–";
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", precision, value);
-  return text;
-}
+std::string Fmt(double value, int precision);
+
+// A number for CSV and data files: 10 significant digits, "nan" when not
+// finite.
+std::string Num(double value);
+
+// `text` as one CSV field (quoted when it holds a comma, quote or newline).
+std::string CsvField(const std::string& text);
+
+// The command line the tool was started with (gflags' argv, space-joined).
+std::string CommandLine();
 
 // The process's peak resident set size so far [bytes] (getrusage; Linux
 // reports ru_maxrss in KiB).
-inline double PeakResidentBytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) * 1024.0;
-}
+double PeakResidentBytes();
 
 }  // namespace tools
 }  // namespace mlndt

@@ -1,0 +1,208 @@
+#include "tools/common/bench_configurations.h"
+
+#include <algorithm>
+#include <cctype>
+#include <utility>
+
+#include "mlndt/common/internal/enum_strings.h"
+#include "tools/common/list_flags.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+// The choices of every grid axis, parsed.
+struct GridAxes {
+  std::vector<BackendType> backends;
+  // (method, GBS cell size): one entry per GBS size, one for other methods.
+  std::vector<std::pair<SamplingMethod, double>> samplings;
+  std::vector<int> start_layers, threads;
+  std::vector<ceres::LinearSolverType> linear_solvers;
+  std::vector<ceres::TrustRegionStrategyType> trust_regions;
+};
+
+bool ParseBackends(const std::string& text,
+                   std::vector<BackendType>* backends,
+                   std::string* error) {
+  std::vector<std::string> items;
+  if (!SplitList(text, &items)) {
+    *error = "--backends: expected a comma-separated list of ceres, newton, lm";
+    return false;
+  }
+  for (const std::string& item : items) {
+    BackendType type;
+    if (!StringToBackendType(item, &type)) {
+      *error = "--backends: '" + item + "' is not ceres, newton or lm";
+      return false;
+    }
+    backends->push_back(type);
+  }
+  return true;
+}
+
+bool ParseSamplings(const BenchGridFlags& flags,
+                    std::vector<std::pair<SamplingMethod, double>>* samplings,
+                    std::string* error) {
+  std::vector<std::string> items;
+  if (!SplitList(flags.samplings, &items)) {
+    *error =
+        "--samplings: expected a comma-separated list of gbs, random, all, "
+        "voxel_centroid";
+    return false;
+  }
+  std::vector<SamplingMethod> methods;
+  for (const std::string& item : items) {
+    SamplingMethod method;
+    if (!StringToSamplingMethod(item, &method)) {
+      *error = "--samplings: '" + item +
+               "' is not gbs, random, all or voxel_centroid";
+      return false;
+    }
+    methods.push_back(method);
+  }
+  std::vector<double> gbs_cell_sizes;
+  if (!ParseNumberList(flags.gbs_cell_sizes, &gbs_cell_sizes) ||
+      gbs_cell_sizes.empty()) {
+    *error = "--gbs_cell_sizes: expected comma-separated numbers";
+    return false;
+  }
+  for (const SamplingMethod method : methods) {
+    if (method != SamplingMethod::GBS) {
+      samplings->emplace_back(method, 1.0);
+      continue;
+    }
+    for (const double size : gbs_cell_sizes)
+      samplings->emplace_back(method, size);
+  }
+  return true;
+}
+
+// A list of Ceres enum values by their (case-insensitive) names.
+template <typename Enum>
+bool ParseCeresList(const std::string& text,
+                    const std::string& flag,
+                    const std::string& expected,
+                    bool (*from_string)(std::string, Enum*),
+                    std::vector<Enum>* values,
+                    std::string* error) {
+  std::vector<std::string> items;
+  if (!SplitList(text, &items)) {
+    *error = flag + ": expected a comma-separated list of " + expected;
+    return false;
+  }
+  for (std::string item : items) {
+    Enum value;
+    UpperCase(&item);
+    if (!from_string(item, &value)) {
+      *error = flag + ": '" + LowerCase(item) + "' is not " +
+               (flag == "--linear_solvers" ? "a Ceres linear solver type"
+                                           : "levenberg_marquardt or dogleg");
+      return false;
+    }
+    values->push_back(value);
+  }
+  return true;
+}
+
+bool ParseAxes(const BenchGridFlags& flags, GridAxes* axes, std::string* e) {
+  if (!ParseBackends(flags.backends, &axes->backends, e) ||
+      !ParseSamplings(flags, &axes->samplings, e)) {
+    return false;
+  }
+  if (!ParseIntList(flags.start_layers, &axes->start_layers)) {
+    *e = "--start_layers: expected comma-separated integers";
+    return false;
+  }
+  if (!ParseIntList(flags.threads, &axes->threads)) {
+    *e = "--threads: expected comma-separated integers";
+    return false;
+  }
+  return ParseCeresList<ceres::LinearSolverType>(
+             flags.linear_solvers,
+             "--linear_solvers",
+             "Ceres linear solver types",
+             ceres::StringToLinearSolverType,
+             &axes->linear_solvers,
+             e) &&
+         ParseCeresList<ceres::TrustRegionStrategyType>(
+             flags.trust_regions,
+             "--trust_regions",
+             "levenberg_marquardt, dogleg",
+             ceres::StringToTrustRegionStrategyType,
+             &axes->trust_regions,
+             e);
+}
+
+}  // namespace
+
+RegistrationOptions BenchConfiguration::Options(uint64_t seed) const {
+  RegistrationOptions options;
+  options.backend.type = backend;
+  options.sampling.method = sampling;
+  options.sampling.gbs_cell_size_m = gbs_cell_size_m;
+  options.sampling.seed = seed;
+  options.schedule.start_layer = start_layer;
+  options.backend.ceres.linear_solver_type = linear_solver;
+  options.backend.ceres.trust_region_strategy_type = trust_region;
+  options.num_threads = threads;
+  return options;
+}
+
+bool ParseBenchConfigurations(const BenchGridFlags& flags,
+                              std::vector<BenchConfiguration>* configurations,
+                              std::string* error) {
+  GridAxes axes;
+  if (!ParseAxes(flags, &axes, error)) return false;
+  configurations->clear();
+  for (const BackendType backend : axes.backends) {
+    const bool ceres_backend = backend == BackendType::CERES;
+    const size_t num_solvers = ceres_backend ? axes.linear_solvers.size() : 1;
+    const size_t num_regions = ceres_backend ? axes.trust_regions.size() : 1;
+    for (const auto& [sampling, gbs_cell_size] : axes.samplings) {
+      for (const int start_layer : axes.start_layers) {
+        for (size_t s = 0; s < num_solvers; ++s) {
+          for (size_t t = 0; t < num_regions; ++t) {
+            for (const int thread_count : axes.threads) {
+              BenchConfiguration c;
+              c.backend = backend;
+              c.sampling = sampling;
+              c.gbs_cell_size_m = gbs_cell_size;
+              c.start_layer = start_layer;
+              if (ceres_backend) {
+                c.linear_solver = axes.linear_solvers[s];
+                c.trust_region = axes.trust_regions[t];
+              }
+              c.threads = thread_count;
+              if (!c.Options(flags.seed).IsValid(error)) {
+                *error = std::string("invalid configuration (backend ") +
+                         BackendFlagName(backend) + ", threads " +
+                         std::to_string(thread_count) + "): " + *error;
+                return false;
+              }
+              configurations->push_back(c);
+            }
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+std::string BackendFlagName(BackendType type) {
+  // The library's name in lower case; "lm" is the flags' short spelling.
+  return type == BackendType::LEVENBERG_MARQUARDT
+             ? "lm"
+             : LowerCase(BackendTypeToString(type));
+}
+
+std::string LowerCase(std::string value) {
+  std::transform(
+      value.begin(), value.end(), value.begin(), [](unsigned char c) {
+        return static_cast<char>(std::tolower(c));
+      });
+  return value;
+}
+
+}  // namespace tools
+}  // namespace mlndt

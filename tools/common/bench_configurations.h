@@ -1,0 +1,57 @@
+#pragma once
+
+// The grid of registration configurations mlndt_bench times: backends x
+// samplings (x GBS cell sizes for gbs) x start layers x threads, and for
+// the Ceres backend also x linear solvers x trust regions.
+
+#include <ceres/types.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mlndt/registration/registration_options.h"
+
+namespace mlndt {
+namespace tools {
+
+// One point of the grid. Ceres-only fields are unused by the other backends.
+struct BenchConfiguration {
+  BackendType backend = BackendType::CERES;
+  SamplingMethod sampling = SamplingMethod::GBS;
+  double gbs_cell_size_m = 1.0;
+  int start_layer = 1;
+  ceres::LinearSolverType linear_solver = ceres::DENSE_NORMAL_CHOLESKY;
+  ceres::TrustRegionStrategyType trust_region = ceres::LEVENBERG_MARQUARDT;
+  int threads = 1;
+
+  // The library's defaults with this point's choices; sampling `seed`.
+  RegistrationOptions Options(uint64_t seed) const;
+};
+
+// The comma-separated list flags that span the grid.
+struct BenchGridFlags {
+  std::string backends;        // ceres, newton, lm
+  std::string samplings;       // gbs, random, all, voxel_centroid
+  std::string gbs_cell_sizes;  // [m]
+  std::string start_layers;
+  std::string linear_solvers;  // Ceres linear solver types.
+  std::string trust_regions;   // levenberg_marquardt, dogleg
+  std::string threads;
+  uint64_t seed = 1;
+};
+
+// Every configuration of the grid, backends outermost; false with *error
+// naming the flag for a bad item or an invalid configuration.
+bool ParseBenchConfigurations(const BenchGridFlags& flags,
+                              std::vector<BenchConfiguration>* configurations,
+                              std::string* error);
+
+// The flag spelling of a backend: ceres, newton, lm.
+std::string BackendFlagName(BackendType type);
+
+// `value` in lower case (enum strings as flags spell them).
+std::string LowerCase(std::string value);
+
+}  // namespace tools
+}  // namespace mlndt

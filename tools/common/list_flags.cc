@@ -1,0 +1,60 @@
+#include "tools/common/list_flags.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace mlndt {
+namespace tools {
+
+bool SplitList(const std::string& text, std::vector<std::string>* items) {
+  items->clear();
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    const size_t begin = item.find_first_not_of(" \t");
+    if (begin == std::string::npos) return false;
+    items->push_back(
+        item.substr(begin, item.find_last_not_of(" \t") - begin + 1));
+  }
+  return !items->empty() && text.back() != ',';
+}
+
+bool ParseNumberList(const std::string& text, std::vector<double>* values) {
+  values->clear();
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    try {
+      size_t used = 0;
+      const double v = std::stod(item, &used);
+      if (item.find_first_not_of(" \t", used) != std::string::npos) {
+        return false;
+      }
+      if (!std::isfinite(v)) return false;
+      values->push_back(v);
+    } catch (...) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ParseIntList(const std::string& text, std::vector<int>* values) {
+  std::vector<std::string> items;
+  if (!SplitList(text, &items)) return false;
+  values->clear();
+  for (const std::string& item : items) {
+    try {
+      size_t used = 0;
+      const int v = std::stoi(item, &used);
+      if (used != item.size()) return false;
+      values->push_back(v);
+    } catch (...) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,24 @@
+#pragma once
+
+// Comma-separated list flags ("a,b,c"): the one parser of items, numbers
+// and integers the tools share.
+
+#include <string>
+#include <vector>
+
+namespace mlndt {
+namespace tools {
+
+// Splits "a,b,c" into items trimmed of blanks; false when the list or an
+// item is empty (including a trailing comma).
+bool SplitList(const std::string& text, std::vector<std::string>* items);
+
+// Parses "a,b,c" into finite numbers; false when an item is not one. An
+// empty text is an empty list (callers that need items check for it).
+bool ParseNumberList(const std::string& text, std::vector<double>* values);
+
+// Parses "a,b,c" into integers (SplitList items); false on anything else.
+bool ParseIntList(const std::string& text, std::vector<int>* values);
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,60 @@
+#include "tools/common/matrix_text.h"
+
+#include <glog/logging.h>
+
+#include <Eigen/Geometry>
+#include <fstream>
+
+namespace mlndt {
+namespace tools {
+
+Eigen::Matrix4d RowMajorMatrix(const std::vector<double>& values) {
+  CHECK(values.size() == 12 || values.size() == 16) << values.size();
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = values[static_cast<size_t>(i)];
+  return m;
+}
+
+bool RowMajorToRigidTransform(const std::vector<double>& values,
+                              const std::string& what,
+                              Isometry3d* transform,
+                              std::string* error) {
+  if (values.size() != 12) {
+    *error = what + " needs 12 comma-separated numbers (row-major 3x4)";
+    return false;
+  }
+  const Eigen::Matrix4d m = RowMajorMatrix(values);
+  const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
+  if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-3 ||
+      r.determinant() < 0) {
+    *error = what + ": the 3x3 part is not a rotation";
+    return false;
+  }
+  transform->matrix() = m;
+  // Re-orthonormalise the rotation read from text.
+  transform->linear() = Eigen::Quaterniond(r).normalized().toRotationMatrix();
+  return true;
+}
+
+bool ReadMatrixFile(const std::string& path,
+                    Isometry3d* transform,
+                    std::string* error) {
+  std::ifstream in(path);
+  if (!in) {
+    *error = path + ": cannot open";
+    return false;
+  }
+  std::vector<double> v;
+  double x;
+  while (in >> x) v.push_back(x);
+  if (!in.eof() || (v.size() != 12 && v.size() != 16)) {
+    *error =
+        path + ": expected 12 or 16 numbers (a row-major 3x4 or 4x4 matrix)";
+    return false;
+  }
+  transform->matrix() = RowMajorMatrix(v);
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt

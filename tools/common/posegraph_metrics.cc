@@ -1,0 +1,63 @@
+#include "tools/common/posegraph_metrics.h"
+
+#include "mlndt/eval/trajectory_metrics.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+struct Metrics {
+  double ate_m = 0.0;
+  double rpe_translation_m = 0.0;
+  double rpe_rotation_deg = 0.0;
+};
+
+// ATE after aligning the first poses, and the mean RPE of consecutive scans
+// (mlndt/eval/trajectory_metrics.h).
+bool Evaluate(const std::vector<Isometry3d>& estimate,
+              const std::vector<Isometry3d>& truth,
+              Metrics* metrics,
+              std::string* error) {
+  AteOptions ate_options;
+  ate_options.alignment = TrajectoryAlignment::FIRST_POSE;
+  AteSummary ate;
+  RpeSummary rpe;
+  if (!ComputeAte(ate_options, truth, estimate, &ate, error) ||
+      !ComputeRpe(RpeOptions(), truth, estimate, &rpe, error)) {
+    return false;
+  }
+  metrics->ate_m = ate.rmse_m;
+  metrics->rpe_translation_m = rpe.translation_m.mean;
+  metrics->rpe_rotation_deg = rpe.rotation_deg.mean;
+  return true;
+}
+
+std::string RpeJson(const Metrics& metrics) {
+  return JsonObject()
+      .AddNumber("translation_m", metrics.rpe_translation_m)
+      .AddNumber("rotation_deg", metrics.rpe_rotation_deg)
+      .str();
+}
+
+}  // namespace
+
+bool AddTrajectoryMetrics(const std::vector<Isometry3d>& chained,
+                          const std::vector<Isometry3d>& joint,
+                          const std::vector<Isometry3d>& truth,
+                          JsonObject* json,
+                          std::string* error) {
+  Metrics chained_metrics, joint_metrics;
+  if (!Evaluate(chained, truth, &chained_metrics, error) ||
+      !Evaluate(joint, truth, &joint_metrics, error)) {
+    return false;
+  }
+  json->AddString("ate_alignment", "first_pose")
+      .AddNumber("ate_chained_m", chained_metrics.ate_m)
+      .AddNumber("ate_joint_m", joint_metrics.ate_m)
+      .Add("rpe_chained", RpeJson(chained_metrics))
+      .Add("rpe_joint", RpeJson(joint_metrics));
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt

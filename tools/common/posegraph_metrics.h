@@ -1,0 +1,28 @@
+#pragma once
+
+// mlndt_posegraph's accuracy figures: for the chained and the jointly
+// refined trajectory, the ATE after aligning the first poses
+// (estimate_k -> gt_0 est_0^-1 est_k; ComputeAte with FIRST_POSE) and the
+// mean relative pose error of consecutive scans (ComputeRpe, delta 1), see
+// mlndt/eval/trajectory_metrics.h.
+
+#include <string>
+#include <vector>
+
+#include "mlndt/common/types.h"
+#include "tools/common/json_writer.h"
+
+namespace mlndt {
+namespace tools {
+
+// Adds ate_alignment, ate_{chained,joint}_m and rpe_{chained,joint}
+// ({"translation_m", "rotation_deg"}) to *json; false with *error when a
+// trajectory does not match the truth.
+bool AddTrajectoryMetrics(const std::vector<Isometry3d>& chained,
+                          const std::vector<Isometry3d>& joint,
+                          const std::vector<Isometry3d>& truth,
+                          JsonObject* json,
+                          std::string* error);
+
+}  // namespace tools
+}  // namespace mlndt

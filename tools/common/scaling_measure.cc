@@ -1,0 +1,121 @@
+#include "tools/common/scaling_measure.h"
+
+#include <glog/logging.h>
+
+#include <cmath>
+
+#include "mlndt/common/pose.h"
+#include "mlndt/eval/statistics.h"
+#include "mlndt/sampling/point_sampler.h"
+#include "tools/common/list_flags.h"
+#include "tools/common/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+
+// Parses --sizes: strictly increasing positive integers.
+bool ParseSizes(const std::string& text,
+                std::vector<size_t>* sizes,
+                std::string* error) {
+  std::vector<double> values;
+  if (!ParseNumberList(text, &values) || values.empty()) {
+    *error = "--sizes=" + text +
+             ": expected comma-separated positive integers, e.g. 10000,30000";
+    return false;
+  }
+  sizes->clear();
+  for (double v : values) {
+    if (!(v >= 1) || v != std::floor(v) || v > 1e12) {
+      *error =
+          "--sizes=" + text + ": '" + Num(v) + "' is not a positive integer";
+      return false;
+    }
+    const size_t n = static_cast<size_t>(v);
+    if (!sizes->empty() && n <= sizes->back()) {
+      *error = "--sizes=" + text + ": sizes must be strictly increasing (" +
+               std::to_string(n) + " after " + std::to_string(sizes->back()) +
+               ")";
+      return false;
+    }
+    sizes->push_back(n);
+  }
+  return true;
+}
+
+// `n` distinct points of `cloud`, uniformly at random, kept in the cloud's
+// order: the library's random sampling with an exact count.
+namespace {
+
+PointCloud RandomSubset(const PointCloud& cloud, size_t n, uint64_t seed) {
+  SamplingOptions options;
+  options.method = SamplingMethod::RANDOM;
+  options.random_count = n;
+  options.seed = seed;
+  PointCloud subset;
+  std::string error;
+  CHECK(SamplePoints(options, cloud, &subset, nullptr, &error)) << error;
+  return subset;
+}
+
+}  // namespace
+
+bool MeasureSize(const ScalingSettings& settings,
+                 const MatcherOptions& options,
+                 const PointCloud& merged,
+                 size_t n,
+                 const Isometry3d& reference_from_input,
+                 SizeResult* result,
+                 std::string* error) {
+  *result = SizeResult();
+  result->points = n;
+  // Two independent subsets: seeds differ per size and per role.
+  const uint64_t seed = settings.seed * 0x9E3779B97F4A7C15ull + n;
+  const PointCloud reference = RandomSubset(merged, n, seed * 2);
+  const PointCloud input = TransformCloud(
+      reference_from_input.inverse(), RandomSubset(merged, n, seed * 2 + 1));
+
+  if (options.method == Method::MLNDT) {
+    // Untimed, for the cell count (and a warm-up of the allocator).
+    LayeredGrid grid;
+    if (!LayeredGrid::Build(options.mlndt.grid, reference, &grid, error)) {
+      *error = "N = " + std::to_string(n) + ": map: " + *error;
+      return false;
+    }
+    result->finest_cells = grid.layer_info().back().occupied_cells;
+    result->num_layers = grid.num_layers();
+  }
+
+  std::vector<double> map_ms, sampling_ms, solve_ms, total_ms;
+  RegistrationSummary summary;
+  for (int r = 0; r < settings.repetitions; ++r) {
+    RegisterWithMatcher(
+        options, reference, input, Isometry3d::Identity(), &summary);
+    map_ms.push_back(summary.map_time_s * 1e3);
+    sampling_ms.push_back(summary.sampling_time_s * 1e3);
+    solve_ms.push_back(summary.solve_time_s * 1e3);
+    total_ms.push_back(summary.total_time_s * 1e3);
+  }
+  result->map_ms = ComputeStats(map_ms).median;
+  result->sampling_ms = ComputeStats(sampling_ms).median;
+  result->solve_ms = ComputeStats(solve_ms).median;
+  result->total_ms = ComputeStats(total_ms).median;
+  // Registration is deterministic: the last run stands for all.
+  result->sampled_points = summary.sampled_points;
+  result->iterations = summary.num_iterations;
+  if (summary.num_layers > 0) result->num_layers = summary.num_layers;
+  result->termination = summary.termination_type;
+  result->message = summary.message;
+  result->translation_error_m =
+      TranslationErrorM(reference_from_input, summary.reference_from_input);
+  result->rotation_error_deg =
+      RotationErrorRad(reference_from_input, summary.reference_from_input) *
+      kRadToDeg;
+  result->ok =
+      summary.IsSolutionUsable() &&
+      result->translation_error_m <= settings.max_translation_error_m &&
+      result->rotation_error_deg <= settings.max_rotation_error_deg;
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,116 @@
+#include "tools/common/scaling_report.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "tools/common/gnuplot.h"
+#include "tools/common/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+
+double LogLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
+  if (x.size() < 2 || x.size() != y.size()) return std::nan("");
+  double mx = 0.0, my = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    if (!(x[i] > 0) || !(y[i] > 0)) return std::nan("");
+    mx += std::log(x[i]);
+    my += std::log(y[i]);
+  }
+  mx /= x.size();
+  my /= x.size();
+  double sxy = 0.0, sxx = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
+    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
+  }
+  return sxy / sxx;
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> Series(
+    const std::vector<SizeResult>& results) {
+  std::vector<std::pair<std::string, std::vector<double>>> series = {
+      {"map", {}},
+      {"sampling", {}},
+      {"solve", {}},
+      {"total", {}},
+      {"sampled points", {}},
+      {"finest-layer cells", {}}};
+  for (const SizeResult& r : results) {
+    series[0].second.push_back(r.map_ms);
+    series[1].second.push_back(r.sampling_ms);
+    series[2].second.push_back(r.solve_ms);
+    series[3].second.push_back(r.total_ms);
+    series[4].second.push_back(static_cast<double>(r.sampled_points));
+    series[5].second.push_back(static_cast<double>(r.finest_cells));
+  }
+  return series;
+}
+
+bool WriteScalingCsv(const std::string& path,
+                     const std::vector<SizeResult>& results,
+                     std::string* error) {
+  std::ofstream out(path);
+  out << "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_"
+         "layer_cells,"
+         "num_layers,iterations,termination,translation_error_m,rotation_error_"
+         "deg,ok\n";
+  for (const SizeResult& r : results) {
+    out << r.points << "," << Num(r.map_ms) << "," << Num(r.sampling_ms) << ","
+        << Num(r.solve_ms) << "," << Num(r.total_ms) << "," << r.sampled_points
+        << "," << r.finest_cells << "," << r.num_layers << "," << r.iterations
+        << "," << TerminationTypeToString(r.termination) << ","
+        << Num(r.translation_error_m) << "," << Num(r.rotation_error_deg) << ","
+        << (r.ok ? 1 : 0) << "\n";
+  }
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+bool WriteScalingPlot(const std::string& gnuplot,
+                      const std::string& dir,
+                      const std::string& title,
+                      const std::vector<SizeResult>& results,
+                      const std::vector<double>& slopes,
+                      std::string* error) {
+  const std::string csv = GnuplotQuote(dir + "/scaling.csv");
+  // The slope-1 line through the smallest size's total.
+  const double per_point_ms =
+      results.front().total_ms / static_cast<double>(results.front().points);
+  std::ostringstream script;
+  script
+      << GnuplotPngHeader(900, 600) << "set output "
+      << GnuplotQuote(dir + "/scaling.png") << "\n"
+      << "set title '" << title << "'\n"
+      << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+      << "set xlabel 'points N (reference = input size)'\nset ylabel 'time "
+         "[ms]'\n"
+      << "set key inside top left\nset datafile separator ','\n"
+      << "set xrange [" << Num(results.front().points / 1.5) << ":"
+      << Num(results.back().points * 1.5) << "]\n"
+      << "linear(x) = " << Num(per_point_ms) << " * x\n"
+      << "plot " << csv
+      << " skip 1 using 1:2 with linespoints lw 2 pt 7 title 'map build (slope "
+      << Fmt(slopes[0], 2) << ")', \\\n"
+      << "     '' skip 1 using 1:3 with linespoints lw 2 pt 5 title 'sampling "
+         "(slope "
+      << Fmt(slopes[1], 2) << ")', \\\n"
+      << "     '' skip 1 using 1:4 with linespoints lw 2 pt 9 title 'solve "
+         "(slope "
+      << Fmt(slopes[2], 2) << ")', \\\n"
+      << "     '' skip 1 using 1:5 with linespoints lw 2 pt 11 title 'total "
+         "(slope "
+      << Fmt(slopes[3], 2) << ")', \\\n"
+      << "     [" << Num(static_cast<double>(results.front().points)) << ":"
+      << Num(static_cast<double>(results.back().points))
+      << "] linear(x) with lines dashtype 2 lc rgb 'gray40' lw 1.5 title "
+         "'slope 1 (∝ N)'\n";
+  return RunGnuplot(gnuplot, dir + "/scaling.gp", script.str(), error);
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,196 @@
+#include "tools/common/sequence_output.h"
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+#include "mlndt/common/pose.h"
+#include "mlndt/pipeline/sequence_totals.h"
+#include "tools/common/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+std::string ErrorsJson(const std::vector<Stats>& errors) {
+  JsonObject o;
+  for (int k = 0; k < 8; ++k)
+    o.Add(ErrorNames()[k], StatsJson(errors[k], false));
+  return o.str();
+}
+
+}  // namespace
+
+// pairs.csv: one row per pair. Error columns (signed components of the
+// error transform, norms, success flags) are empty without ground truth.
+bool WritePairsCsv(const std::string& path,
+                   const ScanStore& store,
+                   const std::vector<PairResult>& results,
+                   std::string* error) {
+  std::ofstream out(path);
+  out << "reference,input,reference_file,input_file,"
+         "err_tx_cm,err_ty_cm,err_tz_cm,err_alpha_deg,err_beta_deg,err_gamma_"
+         "deg,"
+         "translation_error_cm,rotation_error_deg,success,strict_success,"
+         "termination,iterations,start_layer,num_layers,sampled_points,"
+         "time_total_ms,time_map_ms,time_sampling_ms,time_solve_ms,"
+         "guess_deviation_m,guess_deviation_deg,guess_check_failed,running_"
+         "fail_rate,"
+         "est_tx_m,est_ty_m,est_tz_m,est_alpha_deg,est_beta_deg,est_gamma_"
+         "deg\n";
+  for (const PairResult& r : results) {
+    out << r.reference << "," << r.input << ","
+        << CsvField(store.file_name(r.reference)) << ","
+        << CsvField(store.file_name(r.input)) << ",";
+    if (r.has_truth) {
+      for (int k = 0; k < 3; ++k)
+        out << Num(r.error.components(k) * 100.0) << ",";
+      for (int k = 3; k < 6; ++k)
+        out << Num(r.error.components(k) * kRadToDeg) << ",";
+      out << Num(r.error.translation_m * 100.0) << ","
+          << Num(r.error.rotation_rad * kRadToDeg) << "," << int(r.success)
+          << "," << int(r.strict_success) << ",";
+    } else {
+      out << ",,,,,,,,,,";
+    }
+    out << TerminationTypeToString(r.termination) << "," << r.iterations << ","
+        << r.start_layer << "," << r.num_layers << "," << r.sampled_points
+        << "," << Num(r.times.total_ms) << "," << Num(r.times.map_ms) << ","
+        << Num(r.times.sampling_ms) << "," << Num(r.times.solve_ms) << ","
+        << Num(r.guess_deviation_m) << "," << Num(r.guess_deviation_deg) << ","
+        << int(r.guess_check_failed) << "," << Num(r.running_fail_rate);
+    const Vector6d xi = IsometryToPoseVector(r.estimate);
+    for (int k = 0; k < 6; ++k)
+      out << "," << Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
+    out << "\n";
+  }
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+// trace.csv: every iteration of every pair.
+bool WriteTraceCsv(const std::string& path,
+                   const std::vector<PairResult>& results,
+                   std::string* error) {
+  std::ofstream out(path);
+  out << "reference,input,iteration,layer,score,step_norm,step_is_successful,"
+         "tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,time_ms\n";
+  for (const PairResult& r : results) {
+    for (const IterationRecord& it : r.trace) {
+      out << r.reference << "," << r.input << "," << it.iteration << ","
+          << it.layer << "," << Num(it.score) << "," << Num(it.step_norm) << ","
+          << int(it.step_is_successful);
+      for (int k = 0; k < 6; ++k) {
+        const double v = it.reference_from_input_xi(k);
+        out << "," << Num(k < 3 ? v : v * kRadToDeg);
+      }
+      out << "," << Num(it.time_s * 1e3) << "\n";
+    }
+  }
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+std::string StatsJson(const Stats& s, bool with_quantiles) {
+  JsonObject o;
+  o.AddNumber("mean", s.mean).AddNumber("std", s.std).AddNumber("max", s.max);
+  if (with_quantiles) o.AddNumber("median", s.median).AddNumber("p95", s.p95);
+  return o.str();
+}
+
+// The run's totals as one JSON object; `header` holds the run's settings
+// (raw JSON members) and comes first.
+std::string SummaryJson(const JsonObject& header,
+                        const std::vector<PairResult>& results) {
+  const SequenceTotals t = ComputeTotals(results);
+  JsonObject o = header;
+  o.AddNumber("pairs", static_cast<double>(t.pairs))
+      .AddBool("has_ground_truth", t.has_truth);
+  if (t.has_truth) {
+    o.AddString("success_rule",
+                "translation error < 50 cm (the paper, Section 5.2.1)")
+        .AddNumber("successes", static_cast<double>(t.successes))
+        .AddNumber("success_rate_percent", t.success_rate_percent)
+        .AddString("strict_success_rule",
+                   "translation error < 20 cm and rotation error < 1 deg")
+        .AddNumber("strict_successes", static_cast<double>(t.strict_successes))
+        .AddNumber("strict_success_rate_percent", t.strict_success_rate_percent)
+        .AddString(
+            "errors_note",
+            "|component| of the error transform truth^-1 * estimate (cm, deg), "
+            "std = sample standard deviation")
+        .Add("errors", ErrorsJson(t.errors))
+        .Add("errors_successful_pairs", ErrorsJson(t.errors_successful));
+  } else {
+    o.Add("success_rate_percent", "null")
+        .Add("strict_success_rate_percent", "null");
+  }
+  std::map<int, int> start_layers;
+  for (const PairResult& r : results) ++start_layers[r.start_layer];
+  JsonObject layers;
+  for (const auto& [layer, count] : start_layers)
+    layers.AddNumber(std::to_string(layer), count);
+  o.AddNumber("registration_failures",
+              static_cast<double>(t.registration_failures))
+      .AddNumber("guess_check_failures",
+                 static_cast<double>(t.guess_check_failures))
+      .AddString("time_note",
+                 "time_ms = map + registration per pair; p95 = nearest rank")
+      .Add("time_ms", StatsJson(t.time_ms, true))
+      .Add("map_time_ms", StatsJson(t.map_time_ms, true))
+      .Add("registration_time_ms", StatsJson(t.registration_time_ms, true))
+      .AddNumber("mean_iterations", t.iterations.mean)
+      .Add("start_layer_counts", layers.str());
+  return o.str();
+}
+
+void PrintSequenceTotals(const SequenceOptions& options,
+                         const std::vector<PairResult>& results,
+                         const std::string& output_dir) {
+  const SequenceTotals t = ComputeTotals(results);
+  std::printf("pairs: %zu (step %zu, init %s, %s)\n",
+              t.pairs,
+              options.step,
+              InitSpecToString(options.init).c_str(),
+              MethodToString(options.registration.method));
+  if (t.has_truth) {
+    std::printf(
+        "success (< 50 cm): %zu/%zu = %.1f %%, strict (< 20 cm, < 1 deg): "
+        "%zu/%zu = %.1f %%\n",
+        t.successes,
+        t.pairs,
+        t.success_rate_percent,
+        t.strict_successes,
+        t.pairs,
+        t.strict_success_rate_percent);
+    std::printf(
+        "error |mean| (std, max): t %.2f cm (%.2f, %.2f), r %.3f deg (%.3f, "
+        "%.3f)\n",
+        t.errors[6].mean,
+        t.errors[6].std,
+        t.errors[6].max,
+        t.errors[7].mean,
+        t.errors[7].std,
+        t.errors[7].max);
+  }
+  std::printf(
+      "time per pair [ms]: mean %.1f, median %.1f, p95 %.1f, max %.1f (map "
+      "mean %.1f); "
+      "iterations mean %.1f\n",
+      t.time_ms.mean,
+      t.time_ms.median,
+      t.time_ms.p95,
+      t.time_ms.max,
+      t.map_time_ms.mean,
+      t.iterations.mean);
+  std::printf("output: %s\n", output_dir.c_str());
+}
+
+}  // namespace tools
+}  // namespace mlndt
