@@ -148,6 +148,14 @@ tools::JsonObject ResultJson(const std::string& reference_path,
       .AddNumber("matched_points", static_cast<double>(summary.matched_points))
       .AddNumber("unmatched_points",
                  static_cast<double>(summary.unmatched_points))
+      .Add(
+          "quality",
+          tools::JsonObject()
+              .AddNumber("own_cell_fraction", summary.quality.own_cell_fraction)
+              .AddNumber("inlier_fraction", summary.quality.inlier_fraction)
+              .AddNumber("mean_score", summary.quality.mean_score)
+              .AddNumber("median_distance", summary.quality.median_distance)
+              .str())
       .Add("time_ms",
            tools::JsonObject()
                .AddNumber("total", summary.total_time_s * 1e3)
