@@ -155,6 +155,8 @@ tools::JsonObject ResultJson(const std::string& reference_path,
               .AddNumber("inlier_fraction", summary.quality.inlier_fraction)
               .AddNumber("mean_score", summary.quality.mean_score)
               .AddNumber("median_distance", summary.quality.median_distance)
+              .AddNumber("constraint_ratio",
+                         summary.constraints.constraint_ratio)
               .str())
       .Add("time_ms",
            tools::JsonObject()

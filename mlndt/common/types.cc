@@ -12,6 +12,10 @@ const char* TerminationTypeToString(TerminationType type) {
       return "NO_CONVERGENCE";
     case TerminationType::FAILURE:
       return "FAILURE";
+    case TerminationType::LOW_QUALITY:
+      return "LOW_QUALITY";
+    case TerminationType::DEGENERATE:
+      return "DEGENERATE";
   }
   return "UNKNOWN";
 }
@@ -21,6 +25,8 @@ bool StringToTerminationType(std::string value, TerminationType* result) {
   MLNDT_STRING_TO_ENUM(CONVERGENCE, TerminationType);
   MLNDT_STRING_TO_ENUM(NO_CONVERGENCE, TerminationType);
   MLNDT_STRING_TO_ENUM(FAILURE, TerminationType);
+  MLNDT_STRING_TO_ENUM(LOW_QUALITY, TerminationType);
+  MLNDT_STRING_TO_ENUM(DEGENERATE, TerminationType);
   return false;
 }
 

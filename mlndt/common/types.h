@@ -18,10 +18,20 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Isometry3d = Eigen::Isometry3d;
 
 // How a solve or a registration ended (names follow ceres::TerminationType).
+// A registration reports CONVERGENCE or NO_CONVERGENCE only when its result
+// passes the quality check (registration_options.h); otherwise it says why
+// the pose is not to be trusted.
 enum class TerminationType {
   CONVERGENCE,     // A convergence tolerance was met.
   NO_CONVERGENCE,  // The iteration cap was reached first.
   FAILURE,         // Invalid options or unusable input; see the message.
+  // The solver stopped, but the input does not fit the map at the solution
+  // (too few inliers, too high a score per point): most likely a wrong pose.
+  LOW_QUALITY,
+  // The fit does not constrain every direction of the pose (a plane, a
+  // corridor, a line): the pose can slide along the directions the message
+  // names, and the covariance is infinite along them.
+  DEGENERATE,
 };
 
 const char* TerminationTypeToString(TerminationType type);

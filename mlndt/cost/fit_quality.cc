@@ -29,7 +29,7 @@ FitQuality EvaluateFitQuality(const NdtLayer& layer,
     const Eigen::Vector3d e = x - cell->mean;
     const double s = e.dot(cell->information * e);
     double rho = 0.0, rho_prime = 0.0;
-    EvaluateLoss(objective.loss, objective.loss_scale, s, &rho, &rho_prime);
+    EvaluateLoss(LossType::CAUCHY, gate, s, &rho, &rho_prime);
     score += rho;
     inliers += s < gate * gate;
     distances.push_back(std::sqrt(s));

@@ -9,8 +9,9 @@
 //
 //   own_cell_fraction  share of points whose own cell is occupied (overlap)
 //   inlier_fraction    share of points with s_k < gate^2 (a Mahalanobis gate)
-//   mean_score         mean of rho(s_k) over matched points (the objective's
-//                      loss), i.e. the final score per matched point
+//   mean_score         mean of g^2 log(1 + s_k / g^2) over matched points: a
+//                      Cauchy loss at the gate g, whatever the objective's
+//                      loss, so that the measure keeps its scale
 //   median_distance    median of sqrt(s_k) over matched points
 
 #include <vector>
@@ -30,6 +31,8 @@ struct FitQuality {
 };
 
 // `gate`: the Mahalanobis distance below which a point is an inlier (> 0).
+// The objective gives the unmatched-point policy (which cell a point is
+// scored in).
 FitQuality EvaluateFitQuality(const NdtLayer& layer,
                               const std::vector<Eigen::Vector3d>& input_points,
                               const Vector6d& reference_from_input_xi,

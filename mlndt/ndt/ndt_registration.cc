@@ -149,8 +149,8 @@ void RegisterOnGrid(const NdtOptions& options,
                     const Isometry3d& initial_reference_from_input,
                     double start_time_s,
                     RegistrationSummary* summary) {
-  if (map.empty()) return Fail("the reference map is empty", summary);
   std::string error;
+  if (!internal::CheckMap(map, &error)) return Fail(error, summary);
   PointCloud sampled;
   if (!internal::SampleInput(options.range_filter,
                              options.sampling,

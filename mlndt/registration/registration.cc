@@ -2,11 +2,15 @@
 
 #include <glog/logging.h>
 
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
 #include <memory>
 
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/score.h"
+#include "mlndt/registration/internal/input_anchor.h"
 #include "mlndt/registration/internal/registration_steps.h"
 
 namespace mlndt {
@@ -18,26 +22,230 @@ void Fail(const std::string& message, RegistrationSummary* summary) {
   internal::Fail(kEntryPoint, message, summary);
 }
 
-// The pose, score, counts, Hessian and covariance at the solution xi, on the
-// last layer.
+// One run of the layer schedule from a start layer, in the anchor's frame.
+struct Attempt {
+  int start_layer = 1;
+  Vector6d xi_local = Vector6d::Zero();
+  ScheduleSummary schedule;
+  double final_score = 0.0;  // On the last layer.
+};
+
+// What the solve needs besides the options: the map, the sampled points
+// about their centroid, the anchor and the backend holding them.
+struct Problem {
+  const LayeredGrid& map;
+  const std::vector<Eigen::Vector3d>& points;  // About the anchor.
+  const internal::InputAnchor& anchor;
+  Backend* backend;
+  double rms_range_m;  // Of the points about the anchor.
+  const NdtLayer& last() const { return map.layer(map.num_layers()); }
+};
+
+Attempt Solve(const RegistrationOptions& options,
+              const Problem& problem,
+              int start_layer,
+              const Vector6d& initial_local,
+              double start_time_s) {
+  Attempt attempt;
+  attempt.start_layer = start_layer;
+  attempt.xi_local = initial_local;
+  RunLayerSchedule(options.schedule,
+                   start_layer,
+                   problem.map,
+                   start_time_s,
+                   problem.backend,
+                   &attempt.xi_local,
+                   &attempt.schedule);
+  attempt.final_score = EvaluateScore(problem.last(),
+                                      problem.points,
+                                      attempt.xi_local,
+                                      options.objective,
+                                      HessianType::NONE)
+                            .score;
+  return attempt;
+}
+
+// The start layer: from the guess's uncertainty when it is given (the
+// displacement it allows at the points' RMS range), else schedule's.
+int StartLayer(const RegistrationOptions& options, const Problem& problem) {
+  const InitialGuessUncertainty& u = options.initial_uncertainty;
+  if (!u.given) {
+    return ResolveStartLayer(options.schedule, problem.map.num_layers());
+  }
+  const double displacement =
+      u.translation_m + u.rotation_deg * kDegToRad * problem.rms_range_m;
+  return StartLayerForUncertainty(options.schedule, problem.map, displacement);
+}
+
+// True when `xi_local` is farther from the guess than its uncertainty says.
+bool LeftTheUncertainty(const RegistrationOptions& options,
+                        const Problem& problem,
+                        const Vector6d& initial_local,
+                        const Vector6d& xi_local) {
+  const InitialGuessUncertainty& u = options.initial_uncertainty;
+  const Isometry3d guess =
+      PoseVectorToIsometry(problem.anchor.ToGlobal(initial_local));
+  const Isometry3d result =
+      PoseVectorToIsometry(problem.anchor.ToGlobal(xi_local));
+  return TranslationErrorM(guess, result) > u.translation_m ||
+         RotationErrorRad(guess, result) > u.rotation_deg * kDegToRad;
+}
+
+// The schedule from the start layer and, when a guess with an uncertainty
+// was given and the result left it, the last layer alone from the guess:
+// the lower final score wins, so that a good guess is never made worse.
+Attempt SolveKeepingTheGuess(const RegistrationOptions& options,
+                             const Problem& problem,
+                             const Vector6d& initial_local,
+                             double start_time_s,
+                             int* attempts) {
+  *attempts = 1;
+  const int n = problem.map.num_layers();
+  Attempt best = Solve(options,
+                       problem,
+                       StartLayer(options, problem),
+                       initial_local,
+                       start_time_s);
+  if (!options.initial_uncertainty.given || best.start_layer == n ||
+      best.schedule.termination_type == TerminationType::FAILURE ||
+      !LeftTheUncertainty(options, problem, initial_local, best.xi_local)) {
+    return best;
+  }
+  ++*attempts;
+  Attempt finest = Solve(options, problem, n, initial_local, start_time_s);
+  if (finest.schedule.termination_type != TerminationType::FAILURE &&
+      finest.final_score < best.final_score) {
+    return finest;
+  }
+  return best;
+}
+
+// 2 H^-1 (the Laplace approximation for whitened residuals of unit
+// variance), infinite along the degenerate directions (scaled frame of
+// `constraints`) and the inverse on the rest.
+Matrix6d CovarianceFromHessian(const Matrix6d& hessian,
+                               const ConstraintAnalysis& constraints) {
+  if (constraints.degenerate_directions.empty()) {
+    const Eigen::FullPivLU<Matrix6d> lu(hessian);
+    if (lu.isInvertible()) return 2.0 * lu.inverse();
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(hessian);
+  const double largest = std::max(solver.eigenvalues()(5), 0.0);
+  Matrix6d covariance = Matrix6d::Zero();
+  Vector6d unconstrained = Vector6d::Zero();
+  for (int i = 0; i < 6; ++i) {
+    const double lambda = solver.eigenvalues()(i);
+    const Vector6d v = solver.eigenvectors().col(i);
+    if (lambda > 1e-12 * largest && largest > 0.0) {
+      covariance += (2.0 / lambda) * v * v.transpose();
+    } else {
+      unconstrained = unconstrained.cwiseMax(v.cwiseAbs());
+    }
+  }
+  for (const Vector6d& d : constraints.degenerate_directions) {
+    unconstrained = unconstrained.cwiseMax(d.cwiseAbs());
+  }
+  for (int i = 0; i < 6; ++i) {
+    if (unconstrained(i) > 0.1) {
+      covariance(i, i) = std::numeric_limits<double>::infinity();
+    }
+  }
+  return covariance;
+}
+
+// The pose, score, counts, fit, constraints, Hessian and covariance at the
+// attempt's solution, on the last layer, in the input frame's
+// parametrisation (Eq. 11).
 void ReportSolution(const RegistrationOptions& options,
-                    const NdtLayer& last,
-                    const std::vector<Eigen::Vector3d>& points,
-                    const Vector6d& xi,
+                    const Problem& problem,
+                    const Attempt& attempt,
                     RegistrationSummary* summary) {
+  const Vector6d& local = attempt.xi_local;
   const ScoreEvaluation final =
-      EvaluateScore(last, points, xi, options.objective);
-  summary->reference_from_input_xi = xi;
-  summary->reference_from_input = PoseVectorToIsometry(xi);
+      EvaluateScore(problem.last(), problem.points, local, options.objective);
+  // xi = f(xi_local): H = J^-T H_local J^-1, C = J C_local J^T.
+  const Matrix6d j = problem.anchor.Jacobian(local);
+  const Matrix6d j_inverse = j.inverse();
+  summary->constraints =
+      AnalyseConstraints(final.hessian,
+                         problem.rms_range_m,
+                         options.quality_check.min_constraint_ratio);
+  const Matrix6d local_covariance =
+      CovarianceFromHessian(final.hessian, summary->constraints);
+  summary->reference_from_input =
+      PoseVectorToIsometry(problem.anchor.ToGlobal(local));
+  // Angles wrapped to (-pi, pi] by the round trip.
+  summary->reference_from_input_xi =
+      IsometryToPoseVector(summary->reference_from_input);
   summary->final_score = final.score;
   summary->matched_points = final.matched;
   summary->unmatched_points = final.unmatched;
-  summary->hessian = final.hessian;
-  const Eigen::FullPivLU<Matrix6d> lu(final.hessian);
-  summary->covariance =
-      lu.isInvertible() ? Matrix6d(2.0 * lu.inverse()) : Matrix6d::Zero();
-  summary->quality =
-      EvaluateFitQuality(last, points, xi, options.objective, 3.0);
+  summary->hessian = j_inverse.transpose() * final.hessian * j_inverse;
+  summary->covariance = local_covariance.allFinite()
+                            ? Matrix6d(j * local_covariance * j.transpose())
+                            : local_covariance;
+  summary->quality = EvaluateFitQuality(problem.last(),
+                                        problem.points,
+                                        local,
+                                        options.objective,
+                                        options.quality_check.inlier_gate);
+}
+
+// The attempt's trace with its poses in the input frame's parametrisation.
+std::vector<IterationRecord> GlobalTrace(const Attempt& attempt,
+                                         const internal::InputAnchor& anchor) {
+  std::vector<IterationRecord> trace = attempt.schedule.trace;
+  for (IterationRecord& record : trace) {
+    record.reference_from_input_xi =
+        anchor.ToGlobal(record.reference_from_input_xi);
+  }
+  return trace;
+}
+
+// The verdict: the solver's termination, then the matched-fraction and
+// quality checks.
+void Judge(const RegistrationOptions& options,
+           const Attempt& attempt,
+           RegistrationSummary* summary) {
+  summary->termination_type = attempt.schedule.termination_type;
+  summary->message = attempt.schedule.message;
+  if (!std::isfinite(summary->final_score) ||
+      !summary->reference_from_input.matrix().allFinite()) {
+    return Fail("the solution is not finite (score " +
+                    std::to_string(summary->final_score) + ")",
+                summary);
+  }
+  const std::string unmatched =
+      internal::CheckMatchedFraction(options.min_matched_fraction, *summary);
+  if (!unmatched.empty()) return Fail(unmatched, summary);
+  std::string why;
+  const TerminationType verdict = CheckQuality(options.quality_check,
+                                               summary->termination_type,
+                                               summary->quality,
+                                               summary->constraints,
+                                               &why);
+  if (verdict != summary->termination_type) {
+    summary->termination_type = verdict;
+    summary->message = why + " (solver: " + summary->message + ")";
+  }
+}
+
+// Sampled points relative to their centroid, and that centroid.
+std::vector<Eigen::Vector3d> CentredPoints(const PointCloud& sampled,
+                                           Eigen::Vector3d* centre,
+                                           double* rms_range_m) {
+  *centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : sampled.points()) *centre += p;
+  *centre /= static_cast<double>(sampled.size());
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(sampled.size());
+  double squares = 0.0;
+  for (const Eigen::Vector3d& p : sampled.points()) {
+    points.push_back(p - *centre);
+    squares += points.back().squaredNorm();
+  }
+  *rms_range_m = std::sqrt(squares / static_cast<double>(sampled.size()));
+  return points;
 }
 
 // The whole ML-NDT registration after the map exists (Table 1); times are
@@ -49,7 +257,7 @@ void RegisterOnMap(const RegistrationOptions& options,
                    double start_time_s,
                    RegistrationSummary* summary) {
   std::string error;
-  if (reference_map.empty()) return Fail("the reference map is empty", summary);
+  if (!internal::CheckMap(reference_map, &error)) return Fail(error, summary);
   std::unique_ptr<Backend> backend = CreateBackend(options.backend, &error);
   if (!backend) return Fail(error, summary);
   PointCloud sampled;
@@ -62,44 +270,39 @@ void RegisterOnMap(const RegistrationOptions& options,
                              &error)) {
     return Fail(error, summary);
   }
-
+  Eigen::Vector3d centre;
+  double rms_range_m = 0.0;
+  const std::vector<Eigen::Vector3d> points =
+      CentredPoints(sampled, &centre, &rms_range_m);
+  const internal::InputAnchor anchor(centre);
+  const Problem problem{
+      reference_map, points, anchor, backend.get(), rms_range_m};
   const Vector6d initial_xi =
       IsometryToPoseVector(initial_reference_from_input);
-  const NdtLayer& last = reference_map.layer(reference_map.num_layers());
+  const Vector6d initial_local = anchor.ToLocal(initial_xi);
   summary->initial_reference_from_input_xi = initial_xi;
   internal::DescribeMap(reference_map, summary);
-  summary->start_layer =
-      ResolveStartLayer(options.schedule, reference_map.num_layers());
-  summary->initial_score =
-      EvaluateScore(last, sampled.points(), initial_xi, options.objective)
-          .score;
+  summary->initial_score = EvaluateScore(problem.last(),
+                                         points,
+                                         initial_local,
+                                         options.objective,
+                                         HessianType::NONE)
+                               .score;
 
   const double t0 = NowSeconds();
-  backend->SetProblem(sampled.points(), options.objective, options.num_threads);
-  Vector6d xi = initial_xi;
-  ScheduleSummary schedule;
-  RunLayerSchedule(options.schedule,
-                   reference_map,
-                   start_time_s,
-                   backend.get(),
-                   &xi,
-                   &schedule);
+  backend->SetProblem(points, options.objective, options.num_threads);
+  const Attempt attempt = SolveKeepingTheGuess(
+      options, problem, initial_local, start_time_s, &summary->attempts);
   summary->solve_time_s = NowSeconds() - t0;
-  summary->trace = schedule.trace;
-  summary->iterations_per_layer = schedule.iterations_per_layer;
-  summary->num_iterations = static_cast<int>(schedule.trace.size());
-  if (schedule.termination_type == TerminationType::FAILURE) {
-    return Fail(schedule.message, summary);
+  summary->start_layer = attempt.start_layer;
+  summary->trace = GlobalTrace(attempt, anchor);
+  summary->iterations_per_layer = attempt.schedule.iterations_per_layer;
+  summary->num_iterations = static_cast<int>(attempt.schedule.trace.size());
+  if (attempt.schedule.termination_type == TerminationType::FAILURE) {
+    return Fail(attempt.schedule.message, summary);
   }
-  if (!xi.allFinite()) {
-    return Fail("the solver returned a non-finite pose", summary);
-  }
-  ReportSolution(options, last, sampled.points(), xi, summary);
-  summary->termination_type = schedule.termination_type;
-  summary->message = schedule.message;
-  const std::string unmatched =
-      internal::CheckMatchedFraction(options.min_matched_fraction, *summary);
-  if (!unmatched.empty()) Fail(unmatched, summary);
+  ReportSolution(options, problem, attempt, summary);
+  Judge(options, attempt, summary);
 }
 
 }  // namespace

@@ -4,8 +4,15 @@
 
 namespace mlndt {
 
+bool InitialGuessUncertainty::IsValid(std::string* error) const {
+  MLNDT_OPTION_IN_RANGE(translation_m, 0.0, 1e4);
+  MLNDT_OPTION_IN_RANGE(rotation_deg, 0.0, 180.0);
+  return true;
+}
+
 bool RegistrationOptions::IsValid(std::string* error) const {
-  if (!range_filter.IsValid(error) || !grid.IsValid(error) ||
+  if (!quality_check.IsValid(error) || !initial_uncertainty.IsValid(error) ||
+      !range_filter.IsValid(error) || !grid.IsValid(error) ||
       !sampling.IsValid(error) || !schedule.IsValid(error) ||
       !objective.IsValid(error) || !backend.IsValid(error)) {
     return false;

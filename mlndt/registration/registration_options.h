@@ -11,11 +11,26 @@
 #include "mlndt/cloud/range_filter.h"
 #include "mlndt/cost/objective_options.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/registration/quality_check.h"
 #include "mlndt/sampling/point_sampler.h"
 #include "mlndt/schedule/layer_scheduler.h"
 #include "mlndt/solvers/backend_factory.h"
 
 namespace mlndt {
+
+// How far the initial guess may be from the truth, when the caller knows
+// (odometry, a constant-velocity prediction, a prior map pose). It picks the
+// start layer (Section 5.3's guideline: the better the guess, the finer the
+// start) and bounds how far the result may move from the guess before it is
+// checked against a finest-layer-only run from the guess.
+struct InitialGuessUncertainty {
+  // False: nothing is known about the guess (schedule.start_layer applies).
+  bool given = false;
+  double translation_m = 0.0;  // In [0, 1e4].
+  double rotation_deg = 0.0;   // In [0, 180].
+
+  bool IsValid(std::string* error) const;
+};
 
 struct RegistrationOptions {
   // Returns of the raw scans that are not measurements (at the sensor, at a
@@ -40,6 +55,10 @@ struct RegistrationOptions {
   // The result is reported as FAILURE when fewer than this fraction of the
   // sampled points are matched to a cell at the solution. In [0, 1].
   double min_matched_fraction = 0.05;
+  // Whether the result can be trusted (quality_check.h).
+  QualityCheckOptions quality_check;
+  // How good the initial guess is (see above).
+  InitialGuessUncertainty initial_uncertainty;
 
   bool IsValid(std::string* error) const;
 };

@@ -10,6 +10,7 @@
 
 #include "mlndt/common/types.h"
 #include "mlndt/cost/fit_quality.h"
+#include "mlndt/registration/quality_check.h"
 #include "mlndt/solvers/backend.h"
 
 namespace mlndt {
@@ -27,7 +28,10 @@ struct RegistrationSummary {
 
   std::vector<IterationRecord> trace;
   std::vector<int> iterations_per_layer;  // Index i - 1 for layer i.
-  int num_iterations = 0;
+  int num_iterations = 0;  // Of the reported solution (trace.size()).
+  // Schedule runs: 2 when a finest-layer run from a guess with a known
+  // uncertainty was compared with the schedule's result.
+  int attempts = 0;
   int start_layer = 0;
   int num_layers = 0;
   double finest_cell_size_m = 0.0;  // Cell edge of the last layer [m].
@@ -44,8 +48,10 @@ struct RegistrationSummary {
   double solve_time_s = 0.0;
   double total_time_s = 0.0;  // Everything after the clouds were loaded.
 
-  // The fit at the solution on the last layer (fit_quality.h).
+  // The fit at the solution on the last layer (fit_quality.h), and how well
+  // it constrains the pose (quality_check.h): the verdict's evidence.
   FitQuality quality;
+  ConstraintAnalysis constraints;
 
   size_t map_occupied_cells = 0;  // Over all layers of the reference map.
   size_t map_bytes = 0;           // LayeredGrid::MemoryBytes() of the map.
@@ -59,14 +65,17 @@ struct RegistrationSummary {
   // for whitened residuals of unit variance; zero when H is singular).
   // NDT: the full Newton Hessian of the Gaussian score (Magnusson Eq. 6.13),
   // and H^-1 as the covariance (zero unless H is positive definite).
-  // Units m and rad.
+  // Units m and rad. Along degenerate directions the variances are
+  // infinite.
   Matrix6d hessian = Matrix6d::Zero();
   Matrix6d covariance = Matrix6d::Zero();
 
   std::string BriefReport() const;
   std::string FullReport() const;
+  // CONVERGENCE or NO_CONVERGENCE: the pose passed the quality check.
   bool IsSolutionUsable() const {
-    return termination_type != TerminationType::FAILURE;
+    return termination_type == TerminationType::CONVERGENCE ||
+           termination_type == TerminationType::NO_CONVERGENCE;
   }
 };
 

@@ -33,6 +33,7 @@ bool LayerScheduleOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_IN_RANGE(step_tolerance, 1e-12, 1.0);
   MLNDT_OPTION_IN_RANGE(coarse_step_tolerance, 0.0, 1.0);
   MLNDT_OPTION_IN_RANGE(max_coarse_point_stride, 1, 1024);
+  MLNDT_OPTION_IN_RANGE(cells_per_uncertainty, 0.5, 100.0);
   return true;
 }
 
@@ -50,7 +51,18 @@ int ResolveStartLayer(const LayerScheduleOptions& options, int num_layers) {
   return std::clamp(s, 1, num_layers);
 }
 
+int StartLayerForUncertainty(const LayerScheduleOptions& options,
+                             const LayeredGrid& map,
+                             double displacement_m) {
+  const double needed = options.cells_per_uncertainty * displacement_m;
+  for (int layer = map.num_layers(); layer > 1; --layer) {
+    if (map.layer(layer).cell_size() >= needed) return layer;
+  }
+  return 1;
+}
+
 void RunLayerSchedule(const LayerScheduleOptions& options,
+                      int start_layer,
                       const LayeredGrid& reference_map,
                       double start_time_s,
                       Backend* backend,
@@ -61,7 +73,8 @@ void RunLayerSchedule(const LayerScheduleOptions& options,
   *summary = ScheduleSummary();
   const int n = reference_map.num_layers();
   summary->iterations_per_layer.assign(static_cast<size_t>(n), 0);
-  for (int layer = ResolveStartLayer(options, n); layer <= n; ++layer) {
+  CHECK(start_layer >= 1 && start_layer <= n) << "start layer " << start_layer;
+  for (int layer = start_layer; layer <= n; ++layer) {
     const double stage_start_s = NowSeconds() - start_time_s;
     StageSummary stage;
     backend->SolveStage(reference_map.layer(layer),

@@ -39,6 +39,11 @@ struct LayerScheduleOptions {
   // a cell twice as large needs fewer points to be located. 1 uses every
   // sampled point on every layer, as the paper. In [1, 1024].
   int max_coarse_point_stride = 8;
+  // With a known initial-guess uncertainty (the guess may be off by up to d
+  // metres at the input points), the schedule starts on the finest layer
+  // whose cell edge is at least this times d, instead of start_layer: the
+  // paper's guideline (Section 5.3), finer for better guesses. In [0.5, 100].
+  double cells_per_uncertainty = 2.0;
 
   bool IsValid(std::string* error) const;
 };
@@ -50,6 +55,12 @@ LayerScheduleOptions PaperLayerScheduleOptions();
 // The 1-based start layer `options.start_layer` resolves to on n layers.
 int ResolveStartLayer(const LayerScheduleOptions& options, int num_layers);
 
+// The finest layer of `map` whose cell edge is at least
+// options.cells_per_uncertainty * displacement_m (layer 1 if none is).
+int StartLayerForUncertainty(const LayerScheduleOptions& options,
+                             const LayeredGrid& map,
+                             double displacement_m);
+
 struct ScheduleSummary {
   TerminationType termination_type = TerminationType::FAILURE;
   std::string message;
@@ -57,10 +68,11 @@ struct ScheduleSummary {
   std::vector<int> iterations_per_layer;  // Index i - 1 for layer i.
 };
 
-// Runs the stages on `backend`, whose SetProblem has been called. Trace
-// times count from `start_time_s` (NowSeconds() at the registration's
-// start).
+// Runs the stages from `start_layer` (1-based) on `backend`, whose
+// SetProblem has been called. Trace times count from `start_time_s`
+// (NowSeconds() at the registration's start).
 void RunLayerSchedule(const LayerScheduleOptions& options,
+                      int start_layer,
                       const LayeredGrid& reference_map,
                       double start_time_s,
                       Backend* backend,

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "tests/testing/objective.h"
@@ -41,7 +42,12 @@ TEST(EvaluateFitQuality, CountsOverlapInliersAndDistances) {
   EXPECT_DOUBLE_EQ(q.own_cell_fraction, 0.75);
   EXPECT_DOUBLE_EQ(q.inlier_fraction, 0.5);  // Distances 0 and 2 < 3.
   EXPECT_NEAR(q.median_distance, 2.0, 1e-12);
-  EXPECT_NEAR(q.mean_score, (0.0 + 4.0 + 25.0) / 3.0, 1e-12);  // No loss.
+  // Cauchy at the gate, whatever the objective's loss: 9 log(1 + s / 9).
+  EXPECT_NEAR(
+      q.mean_score,
+      9.0 * (std::log1p(0.0) + std::log1p(4.0 / 9.0) + std::log1p(25.0 / 9.0)) /
+          3.0,
+      1e-12);
 
   // A tighter gate, and the pose moving every point by 0.2 m along x.
   EXPECT_DOUBLE_EQ(
@@ -64,7 +70,7 @@ TEST(EvaluateFitQuality, CountsOverlapInliersAndDistances) {
   EXPECT_NEAR(moved.median_distance, 4.0, 1e-12);
 }
 
-TEST(EvaluateFitQuality, UsesTheObjectivesLossAndPolicy) {
+TEST(EvaluateFitQuality, UsesTheObjectivesPolicyNotItsLoss) {
   const NdtLayer layer = OneCell();
   // Just past the cell's +x face: no own cell, the nearest cell is the one.
   const std::vector<Eigen::Vector3d> points = {Eigen::Vector3d(2.05, 1, 1)};
@@ -80,7 +86,7 @@ TEST(EvaluateFitQuality, UsesTheObjectivesLossAndPolicy) {
       layer,
       points,
       Vector6d::Zero(),
-      testing::Objective(UnmatchedPolicy::NEAREST_CELL, LossType::CAUCHY, 3.0),
+      testing::Objective(UnmatchedPolicy::NEAREST_CELL, LossType::HUBER, 0.5),
       3.0);
   EXPECT_EQ(nearest.own_cell_fraction, 0.0);
   EXPECT_NEAR(nearest.median_distance, 10.5, 1e-9);

@@ -117,7 +117,13 @@ ScheduleSummary RunSchedule(const LayerScheduleOptions& options,
                             Vector6d* xi,
                             double start_time_s = NowSeconds()) {
   ScheduleSummary summary;
-  RunLayerSchedule(options, Map(), start_time_s, backend, xi, &summary);
+  RunLayerSchedule(options,
+                   ResolveStartLayer(options, Map().num_layers()),
+                   Map(),
+                   start_time_s,
+                   backend,
+                   xi,
+                   &summary);
   return summary;
 }
 

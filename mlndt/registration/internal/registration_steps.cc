@@ -36,6 +36,20 @@ bool SampleInput(const RangeFilterOptions& range_filter,
     *error = "the initial guess is not finite";
     return false;
   }
+  const Eigen::Matrix3d r = initial_reference_from_input.linear();
+  const double orthogonality =
+      (r.transpose() * r - Eigen::Matrix3d::Identity()).norm();
+  const Eigen::RowVector4d last_row =
+      initial_reference_from_input.matrix().row(3);
+  if (orthogonality > 1e-6 || r.determinant() < 0.0 ||
+      (last_row - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-12) {
+    std::ostringstream message;
+    message << "the initial guess is not a rigid transform (|R^T R - I| = "
+            << orthogonality << ", det R = " << r.determinant()
+            << "): give a rotation, not a reflection or a scaled matrix";
+    *error = message.str();
+    return false;
+  }
   const double t0 = NowSeconds();
   RangeFilterSummary filter_summary;
   const PointCloud kept = FilterByRange(range_filter, input, &filter_summary);
@@ -68,6 +82,18 @@ bool FilterReference(const RangeFilterOptions& range_filter,
   *filtered = FilterByRange(range_filter, reference, nullptr);
   if (filtered->empty() && !reference.empty()) {
     *error = "the range filter dropped every reference point";
+    return false;
+  }
+  return true;
+}
+
+bool CheckMap(const LayeredGrid& map, std::string* error) {
+  if (map.empty()) {
+    *error = "the reference map is empty";
+    return false;
+  }
+  if (map.layer(map.num_layers()).cells().empty()) {
+    *error = "the reference map has no occupied cell on its last layer";
     return false;
   }
   return true;

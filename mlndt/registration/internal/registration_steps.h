@@ -20,8 +20,9 @@ void Fail(const char* entry_point,
           const std::string& message,
           RegistrationSummary* summary);
 
-// Checks the input and the initial guess, drops the returns the range filter
-// rejects and samples the rest (Section 4.3), filling the counts and the
+// Checks the input and that the initial guess is finite and rigid (a
+// rotation, not a reflection or a scaled matrix), drops the returns the range
+// filter rejects and samples the rest (Section 4.3), filling the counts and the
 // sampling time. False (and the message in *error) when nothing usable is
 // left.
 bool SampleInput(const RangeFilterOptions& range_filter,
@@ -38,6 +39,9 @@ bool FilterReference(const RangeFilterOptions& range_filter,
                      const PointCloud& reference,
                      PointCloud* filtered,
                      std::string* error);
+
+// False with *error for a map without layers or occupied cells.
+bool CheckMap(const LayeredGrid& map, std::string* error);
 
 // Fills the map's layer count, finest cell, occupied cells and bytes.
 void DescribeMap(const LayeredGrid& map, RegistrationSummary* summary);
