@@ -414,7 +414,7 @@ int Run() {
       FLAGS_reference.c_str(),
       TrajectoryFormatToString(reference_format),
       reference.size(),
-      TrajectoryAlignmentToString(flags.alignment),
+      FLAGS_alignment.c_str(),
       FLAGS_delta);
   std::printf(
       "| estimate | format | pairs | length [m] | ATE rmse [m] | ATE mean [m] "
