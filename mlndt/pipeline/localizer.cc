@@ -1,0 +1,121 @@
+#include "mlndt/pipeline/localizer.h"
+
+#include <glog/logging.h>
+
+#include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/timer.h"
+
+namespace mlndt {
+
+const char* MotionModelToString(MotionModel model) {
+  switch (model) {
+    case MotionModel::CONSTANT_POSE:
+      return "CONSTANT_POSE";
+    case MotionModel::CONSTANT_VELOCITY:
+      return "CONSTANT_VELOCITY";
+  }
+  return "UNKNOWN";
+}
+
+bool StringToMotionModel(std::string value, MotionModel* result) {
+  UpperCase(&value);
+  MLNDT_STRING_TO_ENUM(CONSTANT_POSE, MotionModel);
+  MLNDT_STRING_TO_ENUM(CONSTANT_VELOCITY, MotionModel);
+  return false;
+}
+
+bool LocalizerOptions::IsValid(std::string* error) const {
+  if (!registration.IsValid(error)) return false;
+  MLNDT_OPTION_ENUM(motion_model, MotionModelToString);
+  return true;
+}
+
+Localizer::Localizer(const LocalizerOptions& options,
+                     const LayeredGrid& map,
+                     const Isometry3d& first_map_from_scan)
+    : options_(options), map_(map), first_map_from_scan_(first_map_from_scan) {
+  std::string error;
+  CHECK(options_.IsValid(&error)) << error;
+  CHECK(!map_.empty()) << "the map is empty";
+}
+
+Isometry3d Localizer::PredictNext() const {
+  if (num_localized_ == 0) return first_map_from_scan_;
+  if (options_.motion_model == MotionModel::CONSTANT_POSE) {
+    return last_map_from_scan_;
+  }
+  return last_map_from_scan_ * last_motion_;
+}
+
+void Localizer::Localize(const PointCloud& scan,
+                         LocalizationResult* result,
+                         RegistrationSummary* summary) {
+  CHECK(result != nullptr);
+  RegistrationSummary local_summary;
+  RegistrationSummary& s = summary != nullptr ? *summary : local_summary;
+  const Isometry3d predicted = PredictNext();
+  Register(options_.registration, map_, scan, predicted, &s);
+
+  result->index = num_localized_;
+  result->predicted_map_from_scan = predicted;
+  result->termination_type = s.termination_type;
+  result->message = s.message;
+  result->quality = s.quality;
+  result->iterations = s.num_iterations;
+  result->input_points = s.input_points;
+  result->sampled_points = s.sampled_points;
+  result->matched_points = s.matched_points;
+  result->final_score = s.final_score;
+  result->sampling_time_s = s.sampling_time_s;
+  result->solve_time_s = s.solve_time_s;
+  result->registration_time_s = s.total_time_s;
+  result->map_from_scan =
+      s.IsSolutionUsable() ? s.reference_from_input : predicted;
+
+  if (s.IsSolutionUsable()) {
+    if (num_localized_ > 0) {
+      last_motion_ = last_map_from_scan_.inverse() * result->map_from_scan;
+    }
+    last_map_from_scan_ = result->map_from_scan;
+  } else {
+    // Dead reckoning: the prediction stands in for the pose, the motion is
+    // kept.
+    last_map_from_scan_ = predicted;
+  }
+  ++num_localized_;
+}
+
+bool LocalizeScans(const LocalizerOptions& options,
+                   const LayeredGrid& map,
+                   const Isometry3d& first_map_from_scan,
+                   size_t num_scans,
+                   const ScanLoader& load_scan,
+                   const LocalizationCallback& on_result,
+                   std::vector<LocalizationResult>* results,
+                   std::string* error) {
+  CHECK(results != nullptr);
+  CHECK(error != nullptr);
+  CHECK(load_scan);
+  results->clear();
+  if (!options.IsValid(error)) return false;
+  if (map.empty()) {
+    *error = "the map is empty";
+    return false;
+  }
+  Localizer localizer(options, map, first_map_from_scan);
+  PointCloud scan;
+  results->reserve(num_scans);
+  for (size_t k = 0; k < num_scans; ++k) {
+    const double start = NowSeconds();
+    if (!load_scan(k, &scan, error)) return false;
+    LocalizationResult result;
+    result.load_time_s = NowSeconds() - start;
+    localizer.Localize(scan, &result, nullptr);
+    results->push_back(result);
+    if (on_result) on_result(results->back());
+  }
+  return true;
+}
+
+}  // namespace mlndt

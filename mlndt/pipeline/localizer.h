@@ -1,0 +1,129 @@
+#pragma once
+
+// Localisation against a prebuilt map: every scan of a sequence is
+// registered onto the same layered map (ML-NDT, registration.h), starting
+// from a prediction of its pose.
+//
+//   Localizer localizer(options, map, first_map_from_scan);
+//   for (each scan) {
+//     LocalizationResult result;
+//     localizer.Localize(scan, &result, nullptr);
+//   }
+//
+// Prediction (LocalizerOptions::motion_model): the first scan starts from
+// the pose given to the constructor; with CONSTANT_VELOCITY scan k starts
+// from pose_{k-1} * (pose_{k-2}^-1 * pose_{k-1}), the previous pose moved
+// by the last relative motion (identity motion until two poses exist); with
+// CONSTANT_POSE from pose_{k-1}. A registration that fails (FAILURE: no
+// usable solution) gets its prediction as its pose and leaves the motion
+// unchanged, so the next prediction dead-reckons through it.
+//
+// LocalizeScans runs the loop over a scan source that loads one scan at a
+// time: the map and the current scan are the only clouds held.
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mlndt/cloud/point_cloud.h"
+#include "mlndt/common/types.h"
+#include "mlndt/grid/layered_grid.h"
+#include "mlndt/registration/registration.h"
+
+namespace mlndt {
+
+enum class MotionModel {
+  CONSTANT_POSE,      // Scan k starts from pose_{k-1}.
+  CONSTANT_VELOCITY,  // ... moved by the last relative motion.
+};
+
+const char* MotionModelToString(MotionModel model);
+// Case-insensitive: "constant_pose", "constant_velocity".
+bool StringToMotionModel(std::string value, MotionModel* model);
+
+struct LocalizerOptions {
+  // The registration of each scan onto the map; `registration.grid` does not
+  // apply (the map is built beforehand).
+  RegistrationOptions registration;
+  MotionModel motion_model = MotionModel::CONSTANT_VELOCITY;
+
+  bool IsValid(std::string* error) const;
+};
+
+// One scan's localisation.
+struct LocalizationResult {
+  size_t index = 0;  // 0-based position of the scan in the sequence.
+  // The initial guess (the prediction) and the estimate; on FAILURE the
+  // estimate is the prediction.
+  Isometry3d predicted_map_from_scan = Isometry3d::Identity();
+  Isometry3d map_from_scan = Isometry3d::Identity();
+  TerminationType termination_type = TerminationType::FAILURE;
+  std::string message;
+  FitQuality quality;  // At the solution (registration_summary.h).
+  int iterations = 0;
+  size_t input_points = 0;
+  size_t sampled_points = 0;
+  size_t matched_points = 0;
+  double final_score = 0.0;
+  double load_time_s = 0.0;      // Reading the scan (LocalizeScans).
+  double sampling_time_s = 0.0;  // Of the registration.
+  double solve_time_s = 0.0;
+  double registration_time_s = 0.0;  // RegistrationSummary::total_time_s.
+
+  bool IsSolutionUsable() const {
+    return termination_type != TerminationType::FAILURE;
+  }
+};
+
+class Localizer {
+ public:
+  // `map` is not copied and must outlive the localizer. CHECK-fails on
+  // invalid options or an empty map (check options.IsValid first).
+  Localizer(const LocalizerOptions& options,
+            const LayeredGrid& map,
+            const Isometry3d& first_map_from_scan);
+
+  // The initial guess of the next scan.
+  Isometry3d PredictNext() const;
+
+  // Registers `scan` (in its sensor frame) from PredictNext(), fills
+  // *result (its load_time_s is left as it is) and updates the motion
+  // model. `summary` may be null; else it receives the registration's full
+  // summary.
+  void Localize(const PointCloud& scan,
+                LocalizationResult* result,
+                RegistrationSummary* summary);
+
+  size_t num_localized() const { return num_localized_; }
+
+ private:
+  LocalizerOptions options_;
+  const LayeredGrid& map_;
+  Isometry3d first_map_from_scan_;
+  Isometry3d last_map_from_scan_ = Isometry3d::Identity();
+  // Last relative motion pose_{k-2}^-1 pose_{k-1} (identity at first).
+  Isometry3d last_motion_ = Isometry3d::Identity();
+  size_t num_localized_ = 0;
+};
+
+// Loads scan `index` (in its sensor frame) into *scan; false with *error.
+using ScanLoader =
+    std::function<bool(size_t index, PointCloud* scan, std::string* error)>;
+// Receives each result as soon as it is computed.
+using LocalizationCallback = std::function<void(const LocalizationResult&)>;
+
+// Localises scans 0..num_scans-1 in order, loading each one when its turn
+// comes into one reused cloud. `on_result` may be empty; `results` gets
+// every result (cleared first). False with *error on invalid options, an
+// empty map or a scan that cannot be loaded (the results so far are kept).
+bool LocalizeScans(const LocalizerOptions& options,
+                   const LayeredGrid& map,
+                   const Isometry3d& first_map_from_scan,
+                   size_t num_scans,
+                   const ScanLoader& load_scan,
+                   const LocalizationCallback& on_result,
+                   std::vector<LocalizationResult>* results,
+                   std::string* error);
+
+}  // namespace mlndt

@@ -1,0 +1,92 @@
+#pragma once
+
+// Builds a layered NDT map of a place from many scans: each scan is read in
+// turn, cropped by range in its own sensor frame, moved into the world frame
+// with its world_from_scan pose and appended; the merged cloud is
+// voxel-filtered (VoxelDownsample, one centroid per voxel) and the map is
+// built from it (LayeredGrid::Build). Or from one cloud already in the
+// world frame.
+//
+// Memory is checked before each large allocation against
+// MapBuildOptions::max_memory_bytes: the merged cloud before it grows, the
+// voxel filter's tables (an upper bound: 12 bytes a point and 88 a voxel,
+// at most one voxel a point), and the map build (EstimateMapMemory,
+// grid/map_memory.h). A build that would not fit fails with a message that
+// says how much it needs, before allocating it.
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mlndt/cloud/cloud_filters.h"
+#include "mlndt/cloud/point_cloud.h"
+#include "mlndt/common/types.h"
+#include "mlndt/grid/layered_grid.h"
+#include "mlndt/grid/map_memory.h"
+
+namespace mlndt {
+
+// 8 GB: what one build may hold by default (10^9 bytes a GB).
+constexpr size_t kDefaultMapMemoryLimitBytes = size_t{8000000000};
+
+struct MapBuildOptions {
+  // The map (cell sizes, q, min points per cell, regularisation).
+  LayeredGridOptions grid;
+  // Crop of every scan by range from its sensor (BuildMapFromScans only).
+  RangeCrop crop;
+  // Voxel edge of the filter of the merged cloud [m]; 0 = no filter.
+  // 0, or in [1e-3, 1e3].
+  double voxel_size_m = 0.0;
+  // Memory the build may hold at once [bytes]: the merged cloud plus the
+  // voxel filter's or the map build's working memory; 0 = no limit.
+  size_t max_memory_bytes = kDefaultMapMemoryLimitBytes;
+  // Threads of LayeredGrid::Build. In [1, 256].
+  int num_threads = 1;
+
+  bool IsValid(std::string* error) const;
+};
+
+struct MapBuildSummary {
+  size_t scans = 0;           // Scans merged.
+  size_t input_points = 0;    // Finite points read (or given).
+  size_t cropped_points = 0;  // Removed by the range crop.
+  size_t merged_points = 0;   // In the merged cloud.
+  size_t map_points = 0;      // After the voxel filter: the map's input.
+  MapMemoryEstimate memory;   // Of the map build (map_memory.h).
+  size_t map_bytes = 0;       // LayeredGrid::MemoryBytes() of the map.
+  double read_time_s = 0.0;   // Reading, cropping and moving the scans.
+  double voxel_time_s = 0.0;
+  double estimate_time_s = 0.0;  // EstimateMapMemory.
+  double build_time_s = 0.0;     // LayeredGrid::Build.
+  double total_time_s = 0.0;
+};
+
+// Called after each scan is merged: scans done, scans in all.
+using MapBuildProgress = std::function<void(size_t done, size_t total)>;
+
+// Reads scan_paths[k] (any format ReadPointCloud reads), crops it, maps it
+// with world_from_scan[k] and merges it, for every k; then filters and
+// builds. world_from_scan needs a pose for every scan (extra poses are
+// ignored). `on_scan` may be empty. False with *error (naming the file, the
+// option or the memory needed) on invalid options, a scan that cannot be
+// read, no points left, or what exceeds the memory limit; *map is then
+// unchanged.
+bool BuildMapFromScans(const MapBuildOptions& options,
+                       const std::vector<std::string>& scan_paths,
+                       const std::vector<Isometry3d>& world_from_scan,
+                       const MapBuildProgress& on_scan,
+                       LayeredGrid* map,
+                       MapBuildSummary* summary,
+                       std::string* error);
+
+// The same from one cloud already in the world frame (a merged map cloud):
+// filters and builds. options.crop must be off (a merged cloud has no
+// sensor origin).
+bool BuildMapFromCloud(const MapBuildOptions& options,
+                       PointCloud cloud,
+                       LayeredGrid* map,
+                       MapBuildSummary* summary,
+                       std::string* error);
+
+}  // namespace mlndt

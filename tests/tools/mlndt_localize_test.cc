@@ -1,0 +1,314 @@
+// Runs the built mlndt_localize on the bundled KITTI frames against a map
+// built by mlndt_map from the poses chained from reference_pairs.json
+// (mlndt_eval chain), started 10 m and 45 degrees off: every scan must land
+// within 0.2 m and 1 degree of its chained reference. Also its outputs
+// (trajectories, scans.csv, summary.json, the plot), the other ways to give
+// the first pose, scan lists, the missing-gnuplot exit, and every flag it
+// refuses.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/eval/trajectory_io.h"
+#include "tests/testing/run_tool.h"
+#include "tests/testing/test_data.h"
+
+namespace mlndt {
+namespace {
+
+using testing::ToolRun;
+const auto& Quote = testing::ShellQuote;
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+std::string TestDir() {
+  const std::string dir =
+      ::testing::TempDir() + "mlndt_localize_test_" +
+      ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string KittiPcd() { return testing::BundledDataPath("kitti/pcd"); }
+
+bool GnuplotInstalled() {
+  return std::system("gnuplot --version >/dev/null 2>&1") == 0;
+}
+
+// The chained reference poses and the map built from them, in `dir`.
+struct KittiMap {
+  std::string poses;
+  std::string map;
+};
+
+KittiMap BuildKittiMap(const std::string& dir) {
+  KittiMap m{dir + "/chained.txt", dir + "/kitti.mlndt"};
+  const ToolRun chain = testing::RunTool(
+      "mlndt_eval",
+      "chain " + Quote(testing::BundledDataPath("kitti/reference_pairs.json")) +
+          " " + Quote(m.poses));
+  EXPECT_EQ(chain.exit_code, 0) << chain.err;
+  const ToolRun map = testing::RunTool(
+      "mlndt_map",
+      "--scans=" + Quote(KittiPcd()) + " --poses=" + Quote(m.poses) +
+          " --min_range=3 --max_range=80 --voxel_size=0.2 --output=" +
+          Quote(m.map));
+  EXPECT_EQ(map.exit_code, 0) << map.err;
+  return m;
+}
+
+std::vector<Isometry3d> ReadPoses(const std::string& path) {
+  std::vector<Isometry3d> poses;
+  std::string error;
+  EXPECT_TRUE(ReadKittiPoses(path, &poses, &error)) << error;
+  return poses;
+}
+
+// scans.csv as rows of named fields (the message column is last and may be
+// quoted; it is not parsed).
+std::vector<std::map<std::string, std::string>> ReadCsv(
+    const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream stream(line);
+    std::string field;
+    while (std::getline(stream, field, ',')) fields.push_back(field);
+    if (header.empty()) {
+      header = fields;
+      continue;
+    }
+    std::map<std::string, std::string> row;
+    for (size_t k = 0; k + 1 < header.size() && k < fields.size(); ++k) {
+      row[header[k]] = fields[k];
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Every scan of `trajectory` within 0.2 m and 1 degree of `reference`.
+void ExpectWithinReference(const std::vector<Isometry3d>& trajectory,
+                           const std::vector<Isometry3d>& reference) {
+  ASSERT_EQ(trajectory.size(), reference.size());
+  for (size_t k = 0; k < trajectory.size(); ++k) {
+    const double t = TranslationErrorM(reference[k], trajectory[k]);
+    const double r = RotationErrorRad(reference[k], trajectory[k]) * kRadToDeg;
+    EXPECT_LT(t, 0.2) << "scan " << k;
+    EXPECT_LT(r, 1.0) << "scan " << k;
+  }
+}
+
+// The acceptance run: all 8 scans, 10 m and 45 degrees off.
+TEST(MlndtLocalize, KittiScansFromTenMetresAndFortyFiveDegreesOff) {
+  const std::string dir = TestDir();
+  const KittiMap kitti = BuildKittiMap(dir);
+  const std::string out = dir + "/out";
+  const bool plots = GnuplotInstalled();
+  const ToolRun run = testing::RunTool(
+      "mlndt_localize",
+      "--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
+          " --initial_guess=10,0,0,0,0,45 --output_dir=" + Quote(out) +
+          (plots ? "" : " --plots=false"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("mlndt_localize 8/8 000007.pcd CONVERGENCE"),
+            std::string::npos)
+      << run.err;  // Progress.
+  EXPECT_NE(run.out.find("scans: 8, usable 8"), std::string::npos) << run.out;
+
+  const std::vector<Isometry3d> reference = ReadPoses(kitti.poses);
+  const std::vector<Isometry3d> estimate =
+      ReadPoses(out + "/trajectory_kitti.txt");
+  ExpectWithinReference(estimate, reference);
+  // The first guess really is 10 m and 45 degrees from the first pose.
+  const Isometry3d first_guess =
+      PoseVectorToIsometry(PoseVectorFromDegrees(10, 0, 0, 0, 0, 45));
+  EXPECT_NEAR(TranslationErrorM(reference[0], first_guess), 10.0, 0.05);
+  EXPECT_NEAR(
+      RotationErrorRad(reference[0], first_guess) * kRadToDeg, 45.0, 0.5);
+
+  // TUM: the same poses at times 0, 1, 2, ...
+  Trajectory tum;
+  std::string error;
+  ASSERT_TRUE(ReadTrajectory(
+      out + "/trajectory_tum.txt", TrajectoryFormat::TUM, &tum, &error))
+      << error;
+  ASSERT_EQ(tum.size(), 8u);
+  for (size_t k = 0; k < tum.size(); ++k) {
+    EXPECT_EQ(tum.timestamp_s(k), static_cast<double>(k));
+    EXPECT_TRUE(tum.world_from_sensor(k).isApprox(estimate[k], 1e-9));
+  }
+
+  // scans.csv: a row per scan with verdict, quality, pose and times.
+  const auto rows = ReadCsv(out + "/scans.csv");
+  ASSERT_EQ(rows.size(), 8u);
+  for (size_t k = 0; k < rows.size(); ++k) {
+    SCOPED_TRACE("row " + std::to_string(k));
+    const auto& row = rows[k];
+    EXPECT_EQ(row.at("index"), std::to_string(k));
+    EXPECT_EQ(row.at("file"), "00000" + std::to_string(k) + ".pcd");
+    EXPECT_EQ(row.at("termination"), "CONVERGENCE");
+    EXPECT_GT(std::stod(row.at("inlier_fraction")), 0.9);
+    EXPECT_GT(std::stod(row.at("own_cell_fraction")), 0.9);
+    EXPECT_GT(std::stod(row.at("registration_ms")), 0.0);
+    EXPECT_GE(std::stod(row.at("load_ms")), 0.0);
+    EXPECT_NEAR(std::stod(row.at("tx_m")), estimate[k].translation().x(), 1e-6);
+  }
+  // Scan 0 was corrected by the whole offset.
+  EXPECT_NEAR(std::stod(rows[0].at("correction_m")), 10.0, 0.05);
+  EXPECT_NEAR(std::stod(rows[0].at("correction_deg")), 45.0, 0.5);
+
+  std::ifstream json_file(out + "/summary.json");
+  Json summary;
+  json_file >> summary;
+  EXPECT_EQ(summary["scans"].get<int>(), 8);
+  EXPECT_EQ(summary["terminations"]["CONVERGENCE"].get<int>(), 8);
+  EXPECT_EQ(summary["motion_model"].get<std::string>(), "CONSTANT_VELOCITY");
+  EXPECT_EQ(summary["first_guess"][5].get<double>(), 45.0);
+  EXPECT_GT(summary["registration_ms"]["mean"].get<double>(), 0.0);
+  EXPECT_EQ(fs::exists(out + "/trajectory_xy.png"), plots);
+}
+
+// The first pose from a pose file (its first line) with the constant-pose
+// model; the scans from a list of three.
+TEST(MlndtLocalize, FirstPoseFromAFileAndAScanList) {
+  const std::string dir = TestDir();
+  const KittiMap kitti = BuildKittiMap(dir);
+  {
+    std::ofstream list(dir + "/scans.txt");
+    for (int k = 0; k < 3; ++k) {
+      list << KittiPcd() << "/00000" << k << ".pcd\n";
+    }
+  }
+  const std::string out = dir + "/out";
+  const ToolRun run = testing::RunTool(
+      "mlndt_localize",
+      "--map=" + Quote(kitti.map) + " --scan_list=" +
+          Quote(dir + "/scans.txt") + " --initial_poses=" + Quote(kitti.poses) +
+          " --motion_model=constant_pose --plots=false --output_dir=" +
+          Quote(out));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::vector<Isometry3d> reference = ReadPoses(kitti.poses);
+  reference.resize(3);
+  ExpectWithinReference(ReadPoses(out + "/trajectory_kitti.txt"), reference);
+  // From the reference itself, scan 0 barely moves.
+  const auto rows = ReadCsv(out + "/scans.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_LT(std::stod(rows[0].at("correction_m")), 0.05);
+
+  // The same from a 12-number matrix, two scans.
+  const ToolRun matrix = testing::RunTool(
+      "mlndt_localize",
+      "--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
+          " --max_scans=2 --initial_matrix=1,0,0,0.5,0,1,0,0,0,0,1,0 "
+          "--plots=false --output_dir=" +
+          Quote(out));
+  ASSERT_EQ(matrix.exit_code, 0) << matrix.err;
+  reference.resize(2);
+  ExpectWithinReference(ReadPoses(out + "/trajectory_kitti.txt"), reference);
+}
+
+// Plots requested without gnuplot: exit 1, saying so, with the other
+// outputs written.
+TEST(MlndtLocalize, MissingGnuplotFailsAfterWritingTheRest) {
+  const std::string dir = TestDir();
+  const KittiMap kitti = BuildKittiMap(dir);
+  const std::string out = dir + "/out";
+  const ToolRun run = testing::RunTool(
+      "mlndt_localize",
+      "--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
+          " --max_scans=1 --gnuplot=/nonexistent/gnuplot --output_dir=" +
+          Quote(out));
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("gnuplot ('/nonexistent/gnuplot') not found"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("--plots=false"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out + "/trajectory_kitti.txt"));
+  EXPECT_TRUE(fs::exists(out + "/scans.csv"));
+  EXPECT_FALSE(fs::exists(out + "/trajectory_xy.png"));
+}
+
+// Every misconfiguration: exit code 1, a message naming the flag, and no
+// work (no output folder).
+TEST(MlndtLocalize, RefusesBadFlags) {
+  const std::string dir = TestDir();
+  const KittiMap kitti = BuildKittiMap(dir);
+  const std::string out = dir + "/never";
+  const std::string base = "--map=" + Quote(kitti.map) +
+                           " --scans=" + Quote(KittiPcd()) +
+                           " --output_dir=" + Quote(out);
+  struct Case {
+    std::string args;
+    std::string message;
+  } cases[] = {
+      {"", "give --map=FILE, --scans=DIR"},
+      {"--map=" + Quote(kitti.map) + " --output_dir=" + Quote(out),
+       "give --map=FILE, --scans=DIR"},
+      {"--scans=" + Quote(KittiPcd()) + " --output_dir=" + Quote(out),
+       "give --map=FILE"},
+      {"--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()),
+       "--output_dir=DIR"},
+      {"--map=/nonexistent.mlndt --scans=" + Quote(KittiPcd()) +
+           " --output_dir=" + Quote(out),
+       "--map=/nonexistent.mlndt: no such file"},
+      {base + " --max_scans=-1", "--max_scans must be >= 0"},
+      {base + " --plot_max_cells=-1", "--plot_max_cells must be >= 0"},
+      {base + " --initial_guess=1,2", "--initial_guess=1,2: expected 6"},
+      {base + " --initial_guess=0,0,0,0,0,0 --initial_matrix=1",
+       "give one of --initial_guess, --initial_matrix and --initial_poses"},
+      {base +
+           " --initial_guess=0,0,0,0,0,0 --initial_poses=" + Quote(kitti.poses),
+       "give one of"},
+      {base + " --initial_matrix=1,2,3", "--initial_matrix: expected 12"},
+      {base + " --initial_matrix=2,0,0,0,0,1,0,0,0,0,1,0",
+       "--initial_matrix: the 3x3 part is not a rotation"},
+      {base + " --initial_poses=/nonexistent.txt",
+       "--initial_poses: /nonexistent.txt"},
+      {base + " --initial_poses=" + Quote(kitti.poses) +
+           " --initial_poses_format=csv",
+       "--initial_poses_format=csv: expected auto, kitti or tum"},
+      {base + " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")),
+       "--calib converts --initial_poses"},
+      {base + " --motion_model=kalman",
+       "--motion_model=kalman: expected constant_velocity or constant_pose"},
+      {base + " --finest_cell_size=1",
+       "--finest_cell_size does not apply to mlndt_localize"},
+      {base + " --min_points_per_cell=6",
+       "--min_points_per_cell does not apply to mlndt_localize"},
+      {base + " --division_constant=27", "--division_constant does not apply"},
+      {base + " --method=ndt", "this tool runs ML-NDT only"},
+      {base + " --backend=simplex", "--backend=simplex: expected ceres"},
+      {base + " --threads=0", "threads"},
+      {base + " --scan_list=x.txt",
+       "give --scans=DIR or --scan_list=FILE, not both"},
+      {"--map=" + Quote(kitti.map) +
+           " --scans=/nonexistent --output_dir=" + Quote(out),
+       "--scans: /nonexistent"},
+      {base + " stray", "unexpected argument 'stray'"},
+  };
+  for (const Case& c : cases) {
+    const ToolRun run = testing::RunTool("mlndt_localize", c.args);
+    EXPECT_EQ(run.exit_code, 1) << c.args;
+    EXPECT_NE(run.err.find(c.message), std::string::npos)
+        << c.args << "\nstderr: " << run.err;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+  }
+}
+
+}  // namespace
+}  // namespace mlndt

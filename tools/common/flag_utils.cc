@@ -1,0 +1,27 @@
+#include "tools/common/flag_utils.h"
+
+#include <gflags/gflags.h>
+
+namespace mlndt {
+namespace tools {
+
+bool FlagGiven(const std::string& name) {
+  gflags::CommandLineFlagInfo info;
+  return gflags::GetCommandLineFlagInfo(name.c_str(), &info) &&
+         !info.is_default;
+}
+
+bool RefuseGivenFlags(const std::vector<std::string>& flags,
+                      const std::string& reason,
+                      std::string* error) {
+  for (const std::string& flag : flags) {
+    if (FlagGiven(flag)) {
+      *error = "--" + flag + " " + reason;
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt

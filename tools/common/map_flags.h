@@ -1,0 +1,32 @@
+#pragma once
+
+// Flags of the map tools (mlndt_map, mlndt_localize): the layered-map
+// options from the shared registration flags (registration_flags.h), and
+// refusals of the shared flags a tool does not read, so that a flag given
+// on the command line is never silently ignored.
+
+#include <string>
+#include <vector>
+
+#include "mlndt/grid/layered_grid.h"
+#include "tools/common/flag_utils.h"
+
+namespace mlndt {
+namespace tools {
+
+// The map options of --preset (default | paper) and the map flags given:
+// --finest_cell_size, --num_layers, --division_constant,
+// --min_points_per_cell, --min_eigenvalue, --min_eigenvalue_ratio. False
+// with *error naming the flag for a bad value, for --num_layers with
+// --finest_cell_size > 0, and for any other registration flag given
+// (`tool` names the tool in the message).
+bool GridOptionsFromFlags(const std::string& tool,
+                          LayeredGridOptions* grid,
+                          std::string* error);
+
+// False with *error naming the first of the map flags above given on the
+// command line: a tool that loads a map file cannot change its cells.
+bool RefuseMapFlags(const std::string& tool, std::string* error);
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,138 @@
+#include "tools/common/map_inputs.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/eval/dataset.h"
+#include "tools/common/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+
+bool ReadScanList(const std::string& path,
+                  std::vector<std::string>* paths,
+                  std::string* error) {
+  namespace fs = std::filesystem;
+  paths->clear();
+  std::ifstream in(path);
+  if (!in) {
+    *error = path + ": cannot open the scan list";
+    return false;
+  }
+  const fs::path folder = fs::path(path).parent_path();
+  std::string line;
+  while (std::getline(in, line)) {
+    const size_t begin = line.find_first_not_of(" \t\r");
+    if (begin == std::string::npos || line[begin] == '#') continue;
+    const size_t end = line.find_last_not_of(" \t\r");
+    const fs::path entry = line.substr(begin, end - begin + 1);
+    paths->push_back(
+        (entry.is_absolute() ? entry : folder / entry).lexically_normal());
+  }
+  if (paths->empty()) {
+    *error = path + ": the scan list names no scans";
+    return false;
+  }
+  return true;
+}
+
+bool ScanPathsFromFlags(const std::string& scans_dir,
+                        const std::string& scan_list,
+                        const std::vector<std::string>& exclude,
+                        size_t max_scans,
+                        std::vector<std::string>* paths,
+                        std::string* error) {
+  if (!scans_dir.empty() && !scan_list.empty()) {
+    *error = "give --scans=DIR or --scan_list=FILE, not both";
+    return false;
+  }
+  if (!scan_list.empty()) {
+    if (!ReadScanList(scan_list, paths, error)) {
+      *error = "--scan_list: " + *error;
+      return false;
+    }
+  } else if (!ListScanFiles(scans_dir, exclude, paths, error)) {
+    *error = "--scans: " + *error;
+    return false;
+  }
+  if (max_scans > 0 && paths->size() > max_scans) paths->resize(max_scans);
+  return true;
+}
+
+bool ParseTrajectoryFormatFlag(const std::string& flag,
+                               const std::string& value,
+                               bool* detect,
+                               TrajectoryFormat* format,
+                               std::string* error) {
+  *detect = value == "auto";
+  if (*detect || StringToTrajectoryFormat(value, format)) return true;
+  *error = "--" + flag + "=" + value + ": expected auto, kitti or tum";
+  return false;
+}
+
+bool ReadPoseFile(const std::string& path,
+                  bool detect,
+                  TrajectoryFormat format,
+                  const std::string& calib,
+                  std::vector<Isometry3d>* poses,
+                  std::string* error) {
+  Trajectory trajectory;
+  const bool ok = detect ? ReadTrajectory(path, &trajectory, error)
+                         : ReadTrajectory(path, format, &trajectory, error);
+  if (!ok) return false;
+  *poses = trajectory.poses();
+  if (calib.empty()) return true;
+  Isometry3d cam0_from_velo;
+  if (!ReadKittiCalibTr(calib, &cam0_from_velo, error)) return false;
+  *poses = CameraToVelodynePoses(*poses, cam0_from_velo);
+  return true;
+}
+
+bool ParseInitialPose(const std::string& guess,
+                      const std::string& matrix,
+                      Isometry3d* pose,
+                      bool* given,
+                      std::string* error) {
+  *pose = Isometry3d::Identity();
+  *given = !guess.empty() || !matrix.empty();
+  if (!guess.empty() && !matrix.empty()) {
+    *error = "give --initial_guess or --initial_matrix, not both";
+    return false;
+  }
+  std::vector<double> v;
+  if (!guess.empty()) {
+    if (!ParseNumberList(guess, &v) || v.size() != 6) {
+      *error = "--initial_guess=" + guess +
+               ": expected 6 comma-separated numbers tx,ty,tz,alpha,beta,gamma "
+               "(m, deg)";
+      return false;
+    }
+    *pose = PoseVectorToIsometry(
+        PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]));
+    return true;
+  }
+  if (!matrix.empty()) {
+    if (!ParseNumberList(matrix, &v) || v.size() != 12) {
+      *error =
+          "--initial_matrix: expected 12 comma-separated numbers "
+          "(row-major 3x4)";
+      return false;
+    }
+    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+    for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[static_cast<size_t>(i)];
+    const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
+    if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-3 ||
+        r.determinant() < 0) {
+      *error = "--initial_matrix: the 3x3 part is not a rotation";
+      return false;
+    }
+    pose->matrix() = m;
+    pose->linear() = Eigen::Quaterniond(r).normalized().toRotationMatrix();
+  }
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt

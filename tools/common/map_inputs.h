@@ -1,0 +1,62 @@
+#pragma once
+
+// Inputs of the map tools (mlndt_map, mlndt_localize): the scans of a
+// folder or a list file, pose files in KITTI or TUM format, and an initial
+// pose given on the command line.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "mlndt/common/types.h"
+#include "mlndt/eval/trajectory_io.h"
+
+namespace mlndt {
+namespace tools {
+
+// A scan list: one path per line; blank lines and lines starting with '#'
+// are skipped; relative paths are relative to the list file's folder.
+bool ReadScanList(const std::string& path,
+                  std::vector<std::string>* paths,
+                  std::string* error);
+
+// The scans of --scans=DIR (ListScanFiles: the cloud files in DIR sorted by
+// name, without the files in `exclude`) or of --scan_list=FILE, exactly one
+// of them; the first `max_scans` when > 0. Messages name the flags.
+bool ScanPathsFromFlags(const std::string& scans_dir,
+                        const std::string& scan_list,
+                        const std::vector<std::string>& exclude,
+                        size_t max_scans,
+                        std::vector<std::string>* paths,
+                        std::string* error);
+
+// "auto" (DetectTrajectoryFormat), "kitti" or "tum", for --*_format flags.
+// False with *error naming `flag` for another value.
+bool ParseTrajectoryFormatFlag(const std::string& flag,
+                               const std::string& value,
+                               bool* detect,
+                               TrajectoryFormat* format,
+                               std::string* error);
+
+// Reads world_from_sensor poses from a KITTI or TUM file, in file order
+// (TUM timestamps are not used). With a non-empty `calib` (KITTI
+// calib.txt), they are KITTI camera poses and are converted into the
+// Velodyne frame (CameraToVelodynePoses).
+bool ReadPoseFile(const std::string& path,
+                  bool detect,
+                  TrajectoryFormat format,
+                  const std::string& calib,
+                  std::vector<Isometry3d>* poses,
+                  std::string* error);
+
+// An initial pose from --initial_guess=tx,ty,tz,alpha,beta,gamma (m, deg,
+// R = Rx Ry Rz) or --initial_matrix= 12 numbers (row-major 3x4, the rotation
+// re-orthonormalised); at most one of them. *given tells whether one was.
+bool ParseInitialPose(const std::string& guess,
+                      const std::string& matrix,
+                      Isometry3d* pose,
+                      bool* given,
+                      std::string* error);
+
+}  // namespace tools
+}  // namespace mlndt

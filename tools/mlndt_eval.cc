@@ -1,0 +1,511 @@
+// mlndt_eval: evaluates trajectories against a reference trajectory, with
+// mlndt/eval: the absolute trajectory error (ATE) after an alignment, the
+// relative pose error (RPE) over --delta frames, and the KITTI odometry
+// devkit's segment errors (translation % and rotation deg/m over 100-800 m
+// segments, reported for the lengths the trajectory is long enough for).
+//
+//   mlndt_eval --reference=gt.txt --estimate=a.txt[,b.tum,...]
+//              [--alignment=se3|sim3|first_pose|none] [--delta=1]
+//              [--output_json=eval.json]
+//   mlndt_eval chain reference_pairs.json poses.txt
+//
+// Files are KITTI (12 numbers a line, the line index is the frame) or TUM
+// ("t tx ty tz qx qy qz qw"); the format is detected (extension .kitti /
+// .tum, else the first line) or given (--format for the estimates,
+// --reference_format). Poses are paired by index (KITTI, the devkit's
+// convention) or, when both files are TUM, by timestamp within
+// --max_time_difference (--association). --reference_calib converts a
+// KITTI camera (cam0) reference into the Velodyne frame with the Tr line.
+//
+// `chain PAIRS OUT` writes the KITTI pose file of the chained consecutive
+// pairs of a reference_pairs.json (eval/reference_pairs.h): pose 0 is the
+// identity and pose i+1 = pose i * reference_from_input of pair "i_(i+1)",
+// from the smallest reference index for as long as the next pair exists.
+//
+// Exit code 1 on a bad flag (before any work) or unreadable files.
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include <fstream>
+#include <iostream>
+#include <map>
+
+#include "mlndt/cloud/pose_io.h"
+#include "mlndt/eval/kitti_segment_errors.h"
+#include "mlndt/eval/reference_pairs.h"
+#include "mlndt/eval/trajectory_association.h"
+#include "mlndt/eval/trajectory_io.h"
+#include "mlndt/eval/trajectory_metrics.h"
+#include "tools/common/flag_utils.h"
+#include "tools/common/json_writer.h"
+#include "tools/common/map_inputs.h"
+#include "tools/common/tool_utils.h"
+
+// clang-format off
+DEFINE_string(reference, "", "The reference trajectory (KITTI or TUM)");
+DEFINE_string(estimate, "", "Comma-separated trajectory files to evaluate (KITTI or TUM)");
+DEFINE_string(format, "auto", "Format of the --estimate files: auto | kitti | tum");
+DEFINE_string(reference_format, "auto", "Format of --reference: auto | kitti | tum");
+DEFINE_string(reference_calib, "", "KITTI calib.txt: --reference holds camera (cam0) poses, "
+              "converted into the Velodyne frame with its Tr line");
+DEFINE_string(alignment, "se3", "ATE alignment: se3 | sim3 | first_pose | none");
+DEFINE_int32(delta, 1, "RPE: frames (associated poses) between the two poses of a motion, >= 1");
+DEFINE_string(association, "auto", "auto (timestamp when both files are TUM, else index) | "
+              "index | timestamp");
+DEFINE_double(max_time_difference, 0.02, "Timestamp association: largest |dt| [s], > 0");
+DEFINE_string(segment_lengths, "100,200,300,400,500,600,700,800",
+              "KITTI segment lengths [m], comma-separated, each > 0");
+DEFINE_int32(segment_step, 10, "KITTI segments: a first frame every this many frames, >= 1");
+DEFINE_string(output_json, "", "Also write the results as JSON to this file");
+// clang-format on
+
+namespace mlndt {
+namespace {
+
+constexpr char kTool[] = "mlndt_eval";
+
+int Fail(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return 1;
+}
+
+const std::vector<std::string> kEvalFlags = {"reference",
+                                             "estimate",
+                                             "format",
+                                             "reference_format",
+                                             "reference_calib",
+                                             "alignment",
+                                             "delta",
+                                             "association",
+                                             "max_time_difference",
+                                             "segment_lengths",
+                                             "segment_step",
+                                             "output_json"};
+
+// ---- chain --------------------------------------------------------------
+
+int Chain(const std::string& pairs_path, const std::string& output) {
+  std::string error;
+  if (!tools::RefuseGivenFlags(
+          kEvalFlags, "does not apply to 'mlndt_eval chain'", &error)) {
+    return Fail(error);
+  }
+  std::map<std::string, ReferencePair> pairs;
+  if (!ReadReferencePairs(pairs_path, &pairs, &error)) return Fail(error);
+  int64_t first = -1;
+  for (const auto& [key, pair] : pairs) {
+    if (pair.input_index == pair.reference_index + 1 &&
+        (first < 0 || pair.reference_index < first)) {
+      first = pair.reference_index;
+    }
+  }
+  if (first < 0) {
+    return Fail(pairs_path + ": no consecutive pair \"i_(i+1)\" to chain");
+  }
+  std::vector<Isometry3d> poses = {Isometry3d::Identity()};
+  for (int64_t i = first;; ++i) {
+    const auto it = pairs.find(ReferencePairKey(i, i + 1));
+    if (it == pairs.end()) break;
+    poses.push_back(poses.back() * it->second.reference_from_input);
+  }
+  if (!WriteKittiPoses(output, poses, &error)) return Fail(error);
+  std::printf("chained %zu poses (scans %lld..%lld) from %s -> %s\n",
+              poses.size(),
+              static_cast<long long>(first),
+              static_cast<long long>(first + poses.size() - 1),
+              pairs_path.c_str(),
+              output.c_str());
+  return 0;
+}
+
+// ---- evaluation -----------------------------------------------------------
+
+struct EvalFlags {
+  bool detect_estimate = true;
+  TrajectoryFormat estimate_format = TrajectoryFormat::KITTI;
+  bool detect_reference = true;
+  TrajectoryFormat reference_format = TrajectoryFormat::KITTI;
+  TrajectoryAlignment alignment = TrajectoryAlignment::SE3;
+  enum class Association {
+    AUTO,
+    INDEX,
+    TIMESTAMP
+  } association = Association::AUTO;
+  KittiSegmentOptions segments;
+  std::vector<std::string> estimates;
+};
+
+bool ParseFlags(EvalFlags* flags, std::string* error) {
+  if (FLAGS_reference.empty() || FLAGS_estimate.empty()) {
+    *error =
+        "give --reference=FILE and --estimate=FILE[,FILE...]. Usage: "
+        "mlndt_eval --reference=gt.txt --estimate=traj.txt | mlndt_eval "
+        "chain PAIRS.json OUT.txt";
+    return false;
+  }
+  std::stringstream list(FLAGS_estimate);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    if (item.empty()) {
+      *error = "--estimate=" + FLAGS_estimate + ": an empty file name";
+      return false;
+    }
+    flags->estimates.push_back(item);
+  }
+  if (!tools::ParseTrajectoryFormatFlag("format",
+                                        FLAGS_format,
+                                        &flags->detect_estimate,
+                                        &flags->estimate_format,
+                                        error) ||
+      !tools::ParseTrajectoryFormatFlag("reference_format",
+                                        FLAGS_reference_format,
+                                        &flags->detect_reference,
+                                        &flags->reference_format,
+                                        error)) {
+    return false;
+  }
+  if (!StringToTrajectoryAlignment(FLAGS_alignment, &flags->alignment)) {
+    *error = "--alignment=" + FLAGS_alignment +
+             ": expected se3, sim3, first_pose or none";
+    return false;
+  }
+  if (FLAGS_delta < 1) {
+    *error = "--delta must be >= 1";
+    return false;
+  }
+  if (FLAGS_association == "auto") {
+    flags->association = EvalFlags::Association::AUTO;
+  } else if (FLAGS_association == "index") {
+    flags->association = EvalFlags::Association::INDEX;
+  } else if (FLAGS_association == "timestamp") {
+    flags->association = EvalFlags::Association::TIMESTAMP;
+  } else {
+    *error = "--association=" + FLAGS_association +
+             ": expected auto, index or timestamp";
+    return false;
+  }
+  if (!(FLAGS_max_time_difference > 0.0)) {
+    *error = "--max_time_difference must be > 0 [s]";
+    return false;
+  }
+  std::vector<double> lengths;
+  if (!tools::ParseNumberList(FLAGS_segment_lengths, &lengths) ||
+      lengths.empty() ||
+      std::any_of(lengths.begin(), lengths.end(), [](double l) {
+        return !(l > 0.0);
+      })) {
+    *error = "--segment_lengths=" + FLAGS_segment_lengths +
+             ": expected comma-separated lengths > 0 [m]";
+    return false;
+  }
+  std::vector<double> sorted = lengths;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    *error = "--segment_lengths=" + FLAGS_segment_lengths +
+             ": a length is given twice";
+    return false;
+  }
+  flags->segments.lengths_m = lengths;
+  if (FLAGS_segment_step < 1) {
+    *error = "--segment_step must be >= 1";
+    return false;
+  }
+  flags->segments.first_frame_step = FLAGS_segment_step;
+  return true;
+}
+
+bool ReadOne(const std::string& path,
+             bool detect,
+             TrajectoryFormat given,
+             const std::string& calib,
+             Trajectory* trajectory,
+             TrajectoryFormat* format,
+             std::string* error) {
+  *format = given;
+  if (detect && !DetectTrajectoryFormat(path, format, error)) return false;
+  if (!ReadTrajectory(path, *format, trajectory, error)) return false;
+  if (calib.empty()) return true;
+  Isometry3d cam0_from_velo;
+  if (!ReadKittiCalibTr(calib, &cam0_from_velo, error)) return false;
+  Trajectory converted;
+  for (size_t k = 0; k < trajectory->size(); ++k) {
+    converted.Add(trajectory->timestamp_s(k),
+                  cam0_from_velo.inverse() * trajectory->world_from_sensor(k) *
+                      cam0_from_velo);
+  }
+  *trajectory = converted;
+  return true;
+}
+
+struct EstimateResult {
+  std::string path;
+  TrajectoryFormat format = TrajectoryFormat::KITTI;
+  std::string association;
+  size_t poses = 0;
+  size_t pairs = 0;
+  double path_length_m = 0.0;  // Of the reference over the pairs.
+  AteSummary ate;
+  RpeSummary rpe;
+  size_t rpe_pairs = 0;
+  KittiSegmentSummary kitti;
+};
+
+bool Evaluate(const EvalFlags& flags,
+              const Trajectory& reference,
+              TrajectoryFormat reference_format,
+              const std::string& path,
+              EstimateResult* result,
+              std::string* error) {
+  result->path = path;
+  Trajectory estimate;
+  if (!ReadOne(path,
+               flags.detect_estimate,
+               flags.estimate_format,
+               "",
+               &estimate,
+               &result->format,
+               error)) {
+    return false;
+  }
+  result->poses = estimate.size();
+  bool by_time = false;
+  switch (flags.association) {
+    case EvalFlags::Association::AUTO:
+      by_time = result->format == TrajectoryFormat::TUM &&
+                reference_format == TrajectoryFormat::TUM;
+      break;
+    case EvalFlags::Association::INDEX:
+      break;
+    case EvalFlags::Association::TIMESTAMP:
+      by_time = true;
+      break;
+  }
+  result->association = by_time ? "timestamp" : "index";
+  const AssociatedPoses pairs =
+      by_time
+          ? AssociateByTimestamp(reference, estimate, FLAGS_max_time_difference)
+          : AssociateByIndex(reference, estimate);
+  result->pairs = pairs.size();
+  if (pairs.size() == 0) {
+    *error = path + ": no pose pairs with the reference (" +
+             result->association + " association)";
+    return false;
+  }
+  const std::vector<double> distances = PathDistancesM(pairs.reference);
+  result->path_length_m = distances.back();
+  AteOptions ate;
+  ate.alignment = flags.alignment;
+  if (!ComputeAte(ate, pairs.reference, pairs.estimate, &result->ate, error)) {
+    *error = path + ": " + *error;
+    return false;
+  }
+  RpeOptions rpe;
+  rpe.delta = FLAGS_delta;
+  if (pairs.size() > static_cast<size_t>(FLAGS_delta)) {
+    if (!ComputeRpe(
+            rpe, pairs.reference, pairs.estimate, &result->rpe, error)) {
+      *error = path + ": " + *error;
+      return false;
+    }
+    result->rpe_pairs = pairs.size() - static_cast<size_t>(FLAGS_delta);
+  }
+  if (!ComputeKittiSegmentErrors(flags.segments,
+                                 pairs.reference,
+                                 pairs.estimate,
+                                 &result->kitti,
+                                 error)) {
+    *error = path + ": " + *error;
+    return false;
+  }
+  return true;
+}
+
+std::string ResultJson(const EstimateResult& r) {
+  std::string lengths = "[";
+  for (size_t i = 0; i < r.kitti.lengths.size(); ++i) {
+    const KittiLengthErrors& l = r.kitti.lengths[i];
+    lengths +=
+        (i ? ", " : "") +
+        tools::JsonObject()
+            .AddNumber("length_m", l.length_m)
+            .AddNumber("segments", static_cast<double>(l.num_segments))
+            .AddNumber("translation_error_percent", l.translation_error_percent)
+            .AddNumber("rotation_error_deg_per_m", l.rotation_error_deg_per_m)
+            .str();
+  }
+  lengths += "]";
+  const bool has_rpe = r.rpe_pairs > 0;
+  const double nan = std::nan("");
+  return tools::JsonObject()
+      .AddString("file", r.path)
+      .AddString("format", TrajectoryFormatToString(r.format))
+      .AddString("association", r.association)
+      .AddNumber("poses", static_cast<double>(r.poses))
+      .AddNumber("pairs", static_cast<double>(r.pairs))
+      .AddNumber("path_length_m", r.path_length_m)
+      .Add("ate",
+           tools::JsonObject()
+               .AddNumber("rmse_m", r.ate.rmse_m)
+               .AddNumber("mean_m", r.ate.errors.mean)
+               .AddNumber("median_m", r.ate.errors.median)
+               .AddNumber("max_m", r.ate.errors.max)
+               .AddNumber("scale", r.ate.reference_from_estimate.scale)
+               .str())
+      .Add("rpe",
+           tools::JsonObject()
+               .AddNumber("pairs", static_cast<double>(r.rpe_pairs))
+               .AddNumber("translation_rmse_m",
+                          has_rpe ? r.rpe.translation_rmse_m : nan)
+               .AddNumber("translation_mean_m",
+                          has_rpe ? r.rpe.translation_m.mean : nan)
+               .AddNumber("translation_max_m",
+                          has_rpe ? r.rpe.translation_m.max : nan)
+               .AddNumber("rotation_rmse_deg",
+                          has_rpe ? r.rpe.rotation_rmse_deg : nan)
+               .AddNumber("rotation_mean_deg",
+                          has_rpe ? r.rpe.rotation_deg.mean : nan)
+               .AddNumber("rotation_max_deg",
+                          has_rpe ? r.rpe.rotation_deg.max : nan)
+               .str())
+      .Add("kitti",
+           tools::JsonObject()
+               .AddNumber("segments",
+                          static_cast<double>(r.kitti.segments.size()))
+               .AddNumber("translation_error_percent",
+                          r.kitti.translation_error_percent)
+               .AddNumber("rotation_error_deg_per_m",
+                          r.kitti.rotation_error_deg_per_m)
+               .Add("lengths", lengths)
+               .str())
+      .str();
+}
+
+int Run() {
+  EvalFlags flags;
+  std::string error;
+  if (!ParseFlags(&flags, &error)) return Fail(error);
+  Trajectory reference;
+  TrajectoryFormat reference_format;
+  if (!ReadOne(FLAGS_reference,
+               flags.detect_reference,
+               flags.reference_format,
+               FLAGS_reference_calib,
+               &reference,
+               &reference_format,
+               &error)) {
+    return Fail("--reference: " + error);
+  }
+  std::vector<EstimateResult> results(flags.estimates.size());
+  for (size_t i = 0; i < flags.estimates.size(); ++i) {
+    if (!Evaluate(flags,
+                  reference,
+                  reference_format,
+                  flags.estimates[i],
+                  &results[i],
+                  &error)) {
+      return Fail(error);
+    }
+  }
+
+  std::printf(
+      "reference: %s (%s, %zu poses); ATE after %s alignment, RPE "
+      "over %d frame(s)\n",
+      FLAGS_reference.c_str(),
+      TrajectoryFormatToString(reference_format),
+      reference.size(),
+      FLAGS_alignment.c_str(),
+      FLAGS_delta);
+  std::printf(
+      "| estimate | format | pairs | length [m] | ATE rmse [m] | ATE mean [m] "
+      "| ATE max [m] | RPE t rmse [m] | RPE r rmse [deg] | KITTI t [%%] | "
+      "KITTI r [deg/m] |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const EstimateResult& r : results) {
+    const bool has_rpe = r.rpe_pairs > 0;
+    std::printf("| %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+                r.path.c_str(),
+                TrajectoryFormatToString(r.format),
+                r.pairs,
+                tools::Fmt(r.path_length_m, 2).c_str(),
+                tools::Fmt(r.ate.rmse_m, 4).c_str(),
+                tools::Fmt(r.ate.errors.mean, 4).c_str(),
+                tools::Fmt(r.ate.errors.max, 4).c_str(),
+                tools::Fmt(has_rpe ? r.rpe.translation_rmse_m : NAN, 4).c_str(),
+                tools::Fmt(has_rpe ? r.rpe.rotation_rmse_deg : NAN, 4).c_str(),
+                tools::Fmt(r.kitti.translation_error_percent, 3).c_str(),
+                tools::Fmt(r.kitti.rotation_error_deg_per_m, 5).c_str());
+  }
+  for (const EstimateResult& r : results) {
+    if (r.kitti.lengths.empty()) {
+      std::printf(
+          "%s: KITTI segments: none (the reference path is %.1f m, shorter "
+          "than %g m)\n",
+          r.path.c_str(),
+          r.path_length_m,
+          *std::min_element(flags.segments.lengths_m.begin(),
+                            flags.segments.lengths_m.end()));
+      continue;
+    }
+    std::printf("%s: KITTI segments by length:", r.path.c_str());
+    for (const KittiLengthErrors& l : r.kitti.lengths) {
+      std::printf(" %g m (%zu): %.3f %% %.5f deg/m;",
+                  l.length_m,
+                  l.num_segments,
+                  l.translation_error_percent,
+                  l.rotation_error_deg_per_m);
+    }
+    std::printf("\n");
+  }
+  if (!FLAGS_output_json.empty()) {
+    std::string estimates = "[";
+    for (size_t i = 0; i < results.size(); ++i) {
+      estimates += (i ? ", " : "") + ResultJson(results[i]);
+    }
+    estimates += "]";
+    std::ofstream out(FLAGS_output_json);
+    out << tools::JsonObject()
+               .AddString("tool", kTool)
+               .AddString("reference", FLAGS_reference)
+               .AddString("reference_format",
+                          TrajectoryFormatToString(reference_format))
+               .AddNumber("reference_poses",
+                          static_cast<double>(reference.size()))
+               .AddString("alignment",
+                          TrajectoryAlignmentToString(flags.alignment))
+               .AddNumber("delta", FLAGS_delta)
+               .Add("estimates", estimates)
+               .str()
+        << "\n";
+    if (!out) return Fail(FLAGS_output_json + ": cannot write");
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace mlndt
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "Evaluates trajectories (KITTI or TUM) against a reference: ATE, RPE, "
+      "KITTI segment errors.\n"
+      "  mlndt_eval --reference=FILE --estimate=FILE[,FILE...] "
+      "[--alignment=se3]\n"
+      "  mlndt_eval chain reference_pairs.json poses.txt");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  FLAGS_logtostderr = true;
+  if (argc > 1 && std::string(argv[1]) == "chain") {
+    if (argc != 4) {
+      std::cerr << "mlndt_eval: usage: mlndt_eval chain PAIRS.json OUT.txt\n";
+      return 1;
+    }
+    return mlndt::Chain(argv[2], argv[3]);
+  }
+  if (argc > 1) {
+    std::cerr << "mlndt_eval: unexpected argument '" << argv[1]
+              << "' (flags are --name=value; the one subcommand is 'chain "
+                 "PAIRS OUT')\n";
+    return 1;
+  }
+  return mlndt::Run();
+}

@@ -1,0 +1,506 @@
+// mlndt_localize: registers every scan of a folder (or a list file) onto a
+// saved layered map (mlndt_map) with ML-NDT, one scan at a time.
+//
+//   mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT
+//                  [--initial_guess=tx,ty,tz,a,b,g | --initial_matrix=...
+//                   | --initial_poses=FILE [--calib=calib.txt]]
+//                  [--motion_model=constant_velocity|constant_pose]
+//                  [--plots=false] [any registration flag of mlndt_align]
+//
+// The first scan starts from --initial_guess (metres and degrees, R = Rx Ry
+// Rz), --initial_matrix (12 numbers, row-major 3x4) or the first pose of
+// --initial_poses (KITTI or TUM; with --calib KITTI camera poses), else the
+// identity; map_from_scan. Each next scan starts from the previous pose
+// moved by the last relative motion (constant velocity; Localizer in
+// mlndt/pipeline/localizer.h). The map and the current scan are the only
+// clouds in memory: each scan is read when its turn comes.
+//
+// Writes into --output_dir: trajectory_kitti.txt and trajectory_tum.txt
+// (map_from_scan of every scan; TUM timestamps are the scan indices),
+// scans.csv (per scan: verdict, fit quality, pose, correction from the
+// prediction, times), summary.json, and with --plots (default) the top view
+// trajectory_xy.png of the map's finest cells (subsampled to
+// --plot_max_cells) and the trajectory (gnuplot; data and script in
+// plot_data/). Exit code 1 on a bad flag (before any work), unreadable data,
+// and when plots were requested but gnuplot is missing (the other files are
+// still written).
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "mlndt/cloud/io.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/common/timer.h"
+#include "mlndt/eval/statistics.h"
+#include "mlndt/eval/trajectory_io.h"
+#include "mlndt/grid/grid_io.h"
+#include "mlndt/grid/map_memory.h"
+#include "mlndt/pipeline/localizer.h"
+#include "tools/common/gnuplot.h"
+#include "tools/common/json_writer.h"
+#include "tools/common/map_flags.h"
+#include "tools/common/map_inputs.h"
+#include "tools/common/progress.h"
+#include "tools/common/registration_flags.h"
+#include "tools/common/tool_utils.h"
+
+// clang-format off
+DEFINE_string(map, "", "The map file (mlndt_map --output)");
+DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
+DEFINE_string(scan_list, "", "Text file of scan paths, one a line (relative to the file's folder)");
+DEFINE_int32(max_scans, 0, "Localise only the first N scans (0 = all)");
+DEFINE_string(initial_guess, "", "First scan's map_from_scan: tx,ty,tz,alpha,beta,gamma (m, deg, "
+              "R = Rx Ry Rz)");
+DEFINE_string(initial_matrix, "", "First scan's map_from_scan: 12 comma-separated numbers "
+              "(row-major 3x4)");
+DEFINE_string(initial_poses, "", "Pose file (KITTI or TUM) whose first pose is the first scan's "
+              "map_from_scan");
+DEFINE_string(initial_poses_format, "auto", "auto | kitti | tum");
+DEFINE_string(calib, "", "KITTI calib.txt: --initial_poses are camera (cam0) poses");
+DEFINE_string(motion_model, "constant_velocity",
+              "Initial guess of scan k > 0: constant_velocity (previous pose x last motion) | "
+              "constant_pose (previous pose)");
+DEFINE_string(output_dir, "", "Folder for the trajectories, scans.csv, summary.json and the plot");
+DEFINE_bool(plots, true, "Write trajectory_xy.png with gnuplot (exit 1 when gnuplot is missing)");
+DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
+DEFINE_int32(plot_max_cells, 20000, "Finest-layer cell means drawn in the top view (subsampled), "
+             ">= 0");
+// clang-format on
+
+namespace mlndt {
+namespace {
+
+constexpr char kTool[] = "mlndt_localize";
+
+int Fail(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return 1;
+}
+
+std::string CommandLine() {
+  std::string line;
+  for (const std::string& arg : gflags::GetArgvs()) {
+    line += (line.empty() ? "" : " ") + arg;
+  }
+  return line;
+}
+
+// Every flag is checked here, before the map or any scan is read.
+bool CheckFlags(LocalizerOptions* options,
+                std::vector<std::string>* paths,
+                std::string* error) {
+  if (FLAGS_map.empty() || FLAGS_output_dir.empty() ||
+      (FLAGS_scans.empty() && FLAGS_scan_list.empty())) {
+    *error =
+        "give --map=FILE, --scans=DIR (or --scan_list=FILE) and "
+        "--output_dir=DIR. Usage: mlndt_localize --map=map.mlndt --scans=DIR "
+        "--output_dir=OUT [--initial_guess=tx,ty,tz,a,b,g]";
+    return false;
+  }
+  if (!std::filesystem::is_regular_file(FLAGS_map)) {
+    *error = "--map=" + FLAGS_map + ": no such file";
+    return false;
+  }
+  if (FLAGS_max_scans < 0) {
+    *error = "--max_scans must be >= 0";
+    return false;
+  }
+  if (FLAGS_plot_max_cells < 0) {
+    *error = "--plot_max_cells must be >= 0";
+    return false;
+  }
+  const int given = !FLAGS_initial_guess.empty() +
+                    !FLAGS_initial_matrix.empty() +
+                    !FLAGS_initial_poses.empty();
+  if (given > 1) {
+    *error =
+        "give one of --initial_guess, --initial_matrix and --initial_poses";
+    return false;
+  }
+  if (!FLAGS_calib.empty() && FLAGS_initial_poses.empty()) {
+    *error = "--calib converts --initial_poses; give it with --initial_poses";
+    return false;
+  }
+  if (!StringToMotionModel(FLAGS_motion_model, &options->motion_model)) {
+    *error = "--motion_model=" + FLAGS_motion_model +
+             ": expected constant_velocity or constant_pose";
+    return false;
+  }
+  if (!tools::RefuseMapFlags(kTool, error) ||
+      !tools::RegistrationOptionsFromFlags(&options->registration, error)) {
+    return false;
+  }
+  if (!options->IsValid(error)) return false;
+  return tools::ScanPathsFromFlags(
+      FLAGS_scans,
+      FLAGS_scan_list,
+      {FLAGS_map, FLAGS_initial_poses, FLAGS_calib},
+      static_cast<size_t>(FLAGS_max_scans),
+      paths,
+      error);
+}
+
+bool FirstPose(Isometry3d* map_from_scan, std::string* error) {
+  bool given = false;
+  if (!tools::ParseInitialPose(FLAGS_initial_guess,
+                               FLAGS_initial_matrix,
+                               map_from_scan,
+                               &given,
+                               error)) {
+    return false;
+  }
+  if (FLAGS_initial_poses.empty()) return true;
+  bool detect = true;
+  TrajectoryFormat format = TrajectoryFormat::KITTI;
+  std::vector<Isometry3d> poses;
+  if (!tools::ParseTrajectoryFormatFlag("initial_poses_format",
+                                        FLAGS_initial_poses_format,
+                                        &detect,
+                                        &format,
+                                        error) ||
+      !tools::ReadPoseFile(
+          FLAGS_initial_poses, detect, format, FLAGS_calib, &poses, error)) {
+    *error = "--initial_poses: " + *error;
+    return false;
+  }
+  *map_from_scan = poses.front();
+  return true;
+}
+
+// tx, ty, tz [m], alpha, beta, gamma [deg] of a pose (R = Rx Ry Rz).
+std::vector<double> PoseNumbers(const Isometry3d& pose) {
+  const Vector6d xi = IsometryToPoseVector(pose);
+  std::vector<double> v(xi.data(), xi.data() + 6);
+  for (int a = 3; a < 6; ++a) v[static_cast<size_t>(a)] *= kRadToDeg;
+  return v;
+}
+
+std::string PoseColumns(const Isometry3d& pose) {
+  std::string out;
+  for (const double v : PoseNumbers(pose)) {
+    out += (out.empty() ? "" : ",") + tools::JsonNumber(v);
+  }
+  return out;
+}
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char c : text)
+    out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+bool WriteScansCsv(const std::string& path,
+                   const std::vector<std::string>& files,
+                   const std::vector<LocalizationResult>& results,
+                   std::string* error) {
+  std::ofstream out(path);
+  out << "index,file,termination,iterations,input_points,sampled_points,"
+         "matched_points,score,own_cell_fraction,inlier_fraction,mean_score,"
+         "median_distance,tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,"
+         "correction_m,correction_deg,load_ms,sampling_ms,solve_ms,"
+         "registration_ms,message\n";
+  for (const LocalizationResult& r : results) {
+    out << r.index << ","
+        << CsvField(std::filesystem::path(files[r.index]).filename().string())
+        << "," << TerminationTypeToString(r.termination_type) << ","
+        << r.iterations << "," << r.input_points << "," << r.sampled_points
+        << "," << r.matched_points << "," << tools::JsonNumber(r.final_score)
+        << "," << tools::JsonNumber(r.quality.own_cell_fraction) << ","
+        << tools::JsonNumber(r.quality.inlier_fraction) << ","
+        << tools::JsonNumber(r.quality.mean_score) << ","
+        << tools::JsonNumber(r.quality.median_distance) << ","
+        << PoseColumns(r.map_from_scan) << ","
+        << tools::JsonNumber(
+               TranslationErrorM(r.predicted_map_from_scan, r.map_from_scan))
+        << ","
+        << tools::JsonNumber(
+               RotationErrorRad(r.predicted_map_from_scan, r.map_from_scan) *
+               kRadToDeg)
+        << "," << tools::JsonNumber(r.load_time_s * 1e3) << ","
+        << tools::JsonNumber(r.sampling_time_s * 1e3) << ","
+        << tools::JsonNumber(r.solve_time_s * 1e3) << ","
+        << tools::JsonNumber(r.registration_time_s * 1e3) << ","
+        << CsvField(r.message) << "\n";
+  }
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+std::string StatsJson(const Stats& s) {
+  return tools::JsonObject()
+      .AddNumber("mean", s.mean)
+      .AddNumber("median", s.median)
+      .AddNumber("min", s.min)
+      .AddNumber("max", s.max)
+      .str();
+}
+
+std::string SummaryJson(const LocalizerOptions& options,
+                        const LayeredGrid& map,
+                        const Isometry3d& first_guess,
+                        const std::vector<LocalizationResult>& results,
+                        double map_load_s,
+                        double total_s) {
+  size_t converged = 0, no_convergence = 0, failed = 0;
+  std::vector<double> registration_ms, inliers, own;
+  for (const LocalizationResult& r : results) {
+    converged += r.termination_type == TerminationType::CONVERGENCE;
+    no_convergence += r.termination_type == TerminationType::NO_CONVERGENCE;
+    failed += r.termination_type == TerminationType::FAILURE;
+    registration_ms.push_back(r.registration_time_s * 1e3);
+    inliers.push_back(r.quality.inlier_fraction);
+    own.push_back(r.quality.own_cell_fraction);
+  }
+  size_t cells = 0;
+  for (int i = 1; i <= map.num_layers(); ++i) {
+    cells += map.layer(i).cells().size();
+  }
+  return tools::JsonObject()
+      .AddString("tool", kTool)
+      .AddString("command", CommandLine())
+      .AddString("map", FLAGS_map)
+      .Add("map_info",
+           tools::JsonObject()
+               .AddNumber("layers", map.num_layers())
+               .AddNumber("cells", static_cast<double>(cells))
+               .AddNumber("bytes", static_cast<double>(map.MemoryBytes()))
+               .AddNumber("finest_cell_size_m",
+                          map.layer(map.num_layers()).cell_size())
+               .str())
+      .AddNumber("scans", static_cast<double>(results.size()))
+      .AddString("motion_model", MotionModelToString(options.motion_model))
+      .AddString("backend",
+                 BackendTypeToString(options.registration.backend.type))
+      .Add("first_guess", tools::JsonArray(PoseNumbers(first_guess)))
+      .Add("terminations",
+           tools::JsonObject()
+               .AddNumber("CONVERGENCE", static_cast<double>(converged))
+               .AddNumber("NO_CONVERGENCE", static_cast<double>(no_convergence))
+               .AddNumber("FAILURE", static_cast<double>(failed))
+               .str())
+      .Add("inlier_fraction", StatsJson(ComputeStats(inliers)))
+      .Add("own_cell_fraction", StatsJson(ComputeStats(own)))
+      .Add("registration_ms", StatsJson(ComputeStats(registration_ms)))
+      .AddNumber("map_load_s", map_load_s)
+      .AddNumber("total_s", total_s)
+      .AddNumber("peak_resident_bytes", tools::PeakResidentBytes())
+      .str();
+}
+
+// trajectory_xy.png: the finest layer's cell means (every k-th, at most
+// --plot_max_cells) and the trajectory, seen from above.
+bool WritePlot(const std::string& dir,
+               const LayeredGrid& map,
+               const std::vector<LocalizationResult>& results,
+               std::string* error) {
+  const std::string data_dir = dir + "/plot_data";
+  std::error_code ec;
+  std::filesystem::create_directories(data_dir, ec);
+  if (ec) {
+    *error = data_dir + ": " + ec.message();
+    return false;
+  }
+  const std::vector<NdtCell>& cells = map.layer(map.num_layers()).cells();
+  const size_t max_cells = static_cast<size_t>(FLAGS_plot_max_cells);
+  const size_t stride =
+      max_cells == 0
+          ? 0
+          : std::max<size_t>(1, (cells.size() + max_cells - 1) / max_cells);
+  {
+    std::ofstream out(data_dir + "/map_cells.dat");
+    out << "# x_m y_m z_m (finest-layer cell means, every " << stride
+        << "-th)\n";
+    for (size_t c = 0; stride > 0 && c < cells.size(); c += stride) {
+      out << cells[c].mean.x() << " " << cells[c].mean.y() << " "
+          << cells[c].mean.z() << "\n";
+    }
+    std::ofstream trajectory(data_dir + "/trajectory.dat");
+    trajectory << "# x_m y_m converged(1/0)\n";
+    for (const LocalizationResult& r : results) {
+      trajectory << r.map_from_scan.translation().x() << " "
+                 << r.map_from_scan.translation().y() << " "
+                 << (r.termination_type == TerminationType::CONVERGENCE)
+                 << "\n";
+    }
+    if (!out || !trajectory) {
+      *error = data_dir + ": cannot write the plot data";
+      return false;
+    }
+  }
+  std::ostringstream script;
+  script << tools::GnuplotPngHeader(1000, 800) << "set output "
+         << tools::GnuplotQuote(dir + "/trajectory_xy.png")
+         << "\nset title 'Map (finest cell means) and trajectory, top view'\n"
+         << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
+         << "plot " << tools::GnuplotQuote(data_dir + "/map_cells.dat")
+         << " using 1:2 with points pt 7 ps 0.3 lc rgb '#a0a0a0' title 'map "
+            "cells', "
+         << tools::GnuplotQuote(data_dir + "/trajectory.dat")
+         << " using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#c00000' "
+            "title 'trajectory'\n";
+  return tools::RunGnuplot(
+      FLAGS_gnuplot, data_dir + "/plot.gp", script.str(), error);
+}
+
+int Run() {
+  const double start = NowSeconds();
+  LocalizerOptions options;
+  std::vector<std::string> paths;
+  std::string error;
+  if (!CheckFlags(&options, &paths, &error)) return Fail(error);
+  Isometry3d first_guess;
+  if (!FirstPose(&first_guess, &error)) return Fail(error);
+  std::error_code ec;
+  std::filesystem::create_directories(FLAGS_output_dir, ec);
+  if (ec) return Fail("--output_dir=" + FLAGS_output_dir + ": " + ec.message());
+  const bool gnuplot_ok =
+      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
+  if (!gnuplot_ok) {
+    std::cerr << kTool << ": gnuplot ('" << FLAGS_gnuplot
+              << "') not found: the plot will be skipped (install "
+                 "gnuplot-nox, or pass --plots=false)\n";
+  }
+
+  LayeredGrid map;
+  if (!LoadLayeredGrid(FLAGS_map, &map, &error)) return Fail(error);
+  const double map_load_s = NowSeconds() - start;
+  std::printf("map: %s, %d layers, finest cell %.3f m, %s\n",
+              FLAGS_map.c_str(),
+              map.num_layers(),
+              map.layer(map.num_layers()).cell_size(),
+              FormatBytes(static_cast<double>(map.MemoryBytes())).c_str());
+
+  tools::Progress progress(kTool, paths.size());
+  const ScanLoader load = [&](size_t k, PointCloud* scan, std::string* e) {
+    return ReadPointCloud(paths[k], scan, nullptr, e);
+  };
+  const LocalizationCallback report = [&](const LocalizationResult& r) {
+    char detail[200];
+    std::snprintf(detail,
+                  sizeof(detail),
+                  "%s %s, inliers %.3f, %d it, %.0f ms",
+                  std::filesystem::path(paths[r.index]).filename().c_str(),
+                  TerminationTypeToString(r.termination_type),
+                  r.quality.inlier_fraction,
+                  r.iterations,
+                  r.registration_time_s * 1e3);
+    progress.Update(r.index + 1, detail);
+  };
+  std::vector<LocalizationResult> results;
+  const bool ok = LocalizeScans(
+      options, map, first_guess, paths.size(), load, report, &results, &error);
+  progress.Finish();
+  if (!ok) return Fail(error);
+
+  const std::string out = FLAGS_output_dir + "/";
+  Trajectory trajectory;
+  for (const LocalizationResult& r : results) {
+    trajectory.Add(static_cast<double>(r.index), r.map_from_scan);
+  }
+  if (!WriteTrajectory(out + "trajectory_kitti.txt",
+                       TrajectoryFormat::KITTI,
+                       trajectory,
+                       &error) ||
+      !WriteTrajectory(out + "trajectory_tum.txt",
+                       TrajectoryFormat::TUM,
+                       trajectory,
+                       &error) ||
+      !WriteScansCsv(out + "scans.csv", paths, results, &error)) {
+    return Fail(error);
+  }
+  {
+    std::ofstream json(out + "summary.json");
+    json << SummaryJson(options,
+                        map,
+                        first_guess,
+                        results,
+                        map_load_s,
+                        NowSeconds() - start)
+         << "\n";
+    if (!json) return Fail(out + "summary.json: cannot write");
+  }
+
+  std::printf("%-5s %-24s %-15s %5s %8s %8s %10s %10s %10s %9s %9s\n",
+              "scan",
+              "file",
+              "termination",
+              "iters",
+              "own",
+              "inliers",
+              "x [m]",
+              "y [m]",
+              "yaw [deg]",
+              "load [ms]",
+              "reg [ms]");
+  std::vector<double> registration_ms;
+  size_t usable = 0;
+  for (const LocalizationResult& r : results) {
+    const Vector6d xi = IsometryToPoseVector(r.map_from_scan);
+    std::printf(
+        "%-5zu %-24s %-15s %5d %8.3f %8.3f %10.3f %10.3f %10.3f %9.1f "
+        "%9.1f\n",
+        r.index,
+        std::filesystem::path(paths[r.index]).filename().c_str(),
+        TerminationTypeToString(r.termination_type),
+        r.iterations,
+        r.quality.own_cell_fraction,
+        r.quality.inlier_fraction,
+        xi(0),
+        xi(1),
+        xi(5) * kRadToDeg,
+        r.load_time_s * 1e3,
+        r.registration_time_s * 1e3);
+    registration_ms.push_back(r.registration_time_s * 1e3);
+    usable += r.IsSolutionUsable();
+  }
+  const Stats t = ComputeStats(registration_ms);
+  std::printf(
+      "scans: %zu, usable %zu; registration [ms]: mean %.1f, median %.1f, "
+      "max %.1f; peak memory %s\n",
+      results.size(),
+      usable,
+      t.mean,
+      t.median,
+      t.max,
+      FormatBytes(tools::PeakResidentBytes()).c_str());
+  std::printf("output: %s\n", FLAGS_output_dir.c_str());
+  if (FLAGS_plots) {
+    if (!gnuplot_ok) {
+      return Fail("plot skipped: gnuplot ('" + FLAGS_gnuplot +
+                  "') not found; the other outputs are written. Install "
+                  "gnuplot-nox or pass --plots=false");
+    }
+    if (!WritePlot(FLAGS_output_dir, map, results, &error)) return Fail(error);
+    std::printf("plot: trajectory_xy.png\n");
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace mlndt
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "Registers every scan of a folder onto a saved map (mlndt_map).\n"
+      "  mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT "
+      "[--initial_guess=tx,ty,tz,a,b,g]");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  FLAGS_logtostderr = true;
+  if (argc > 1) {
+    std::cerr << "mlndt_localize: unexpected argument '" << argv[1]
+              << "' (flags are --name=value)\n";
+    return 1;
+  }
+  return mlndt::Run();
+}
