@@ -39,6 +39,7 @@
 #include "mlndt/eval/trajectory_metrics.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/json_writer.h"
+#include "tools/common/list_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/tool_utils.h"
 

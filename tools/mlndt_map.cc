@@ -57,8 +57,6 @@ DEFINE_string(calib, "", "KITTI calib.txt: --poses are camera (cam0) poses, conv
               "line (V = Tr^-1 P Tr)");
 DEFINE_string(cloud, "", "One cloud already in the world frame, instead of --scans and --poses");
 DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
-DEFINE_double(min_range, 0.0, "Drop scan points nearer to the sensor than this [m]");
-DEFINE_double(max_range, 0.0, "Drop scan points farther from the sensor than this [m] (0 = keep all)");
 DEFINE_double(voxel_size, 0.0, "Voxel filter of the merged cloud: voxel edge [m], 0 = none, else "
               "in [0.001, 1000]");
 DEFINE_double(max_memory_gb, 8.0, "Refuse a build that needs more than this many GB (10^9 bytes) "
@@ -87,6 +85,7 @@ const std::vector<std::string> kBuildFlags = {"scans",
                                               "max_scans",
                                               "min_range",
                                               "max_range",
+                                              "saturated_range_fraction",
                                               "voxel_size",
                                               "max_memory_gb",
                                               "output",
@@ -192,7 +191,8 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
            "calib",
            "max_scans",
            "min_range",
-           "max_range"},
+           "max_range",
+           "saturated_range_fraction"},
           "does not apply to --cloud (one cloud in the world frame, no "
           "sensor origin)",
           error)) {
@@ -208,16 +208,9 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
     *error = "--max_scans must be >= 0";
     return false;
   }
-  if (!(FLAGS_min_range >= 0.0) || !std::isfinite(FLAGS_min_range)) {
-    *error = "--min_range must be a finite number >= 0";
+  if (!tools::RangeFilterOptionsFromFlags(&options->range_filter, error)) {
     return false;
   }
-  if (FLAGS_max_range != 0.0 &&
-      !(FLAGS_max_range > FLAGS_min_range && std::isfinite(FLAGS_max_range))) {
-    *error = "--max_range must be 0 (no limit) or finite and > --min_range";
-    return false;
-  }
-  options->crop = RangeCrop{FLAGS_min_range, FLAGS_max_range};
   if (FLAGS_voxel_size != 0.0 &&
       !(FLAGS_voxel_size >= 1e-3 && FLAGS_voxel_size <= 1e3)) {
     *error = "--voxel_size must be 0 (no filter) or in [0.001, 1000] m";
@@ -273,8 +266,8 @@ std::string SummaryJson(const MapBuildOptions& options,
       .AddNumber("cropped_points", static_cast<double>(s.cropped_points))
       .AddNumber("merged_points", static_cast<double>(s.merged_points))
       .AddNumber("map_points", static_cast<double>(s.map_points))
-      .AddNumber("min_range_m", options.crop.min_range_m)
-      .AddNumber("max_range_m", options.crop.max_range_m)
+      .AddNumber("min_range_m", options.range_filter.min_range_m)
+      .AddNumber("max_range_m", options.range_filter.max_range_m)
       .AddNumber("voxel_size_m", options.voxel_size_m)
       .Add("extent_m",
            tools::JsonArray(std::vector<double>{

@@ -41,7 +41,7 @@ bool FilterAndBuild(const MapBuildOptions& options,
   if (cloud.empty()) {
     *error = "no points left to build the map from" +
              std::string(summary->cropped_points > 0
-                             ? " (the range crop removed every point)"
+                             ? " (the range filter removed every point)"
                              : "");
     return false;
   }
@@ -81,7 +81,7 @@ bool FilterAndBuild(const MapBuildOptions& options,
 }  // namespace
 
 bool MapBuildOptions::IsValid(std::string* error) const {
-  if (!grid.IsValid(error) || !crop.IsValid(error)) return false;
+  if (!grid.IsValid(error) || !range_filter.IsValid(error)) return false;
   if (voxel_size_m != 0.0) MLNDT_OPTION_IN_RANGE(voxel_size_m, 1e-3, 1e3);
   MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
   return true;
@@ -116,7 +116,9 @@ bool BuildMapFromScans(const MapBuildOptions& options,
   for (size_t k = 0; k < scan_paths.size(); ++k) {
     if (!ReadPointCloud(scan_paths[k], &scan, nullptr, error)) return false;
     summary->input_points += scan.size();
-    summary->cropped_points += CropByRange(options.crop, &scan);
+    const size_t read = scan.size();
+    scan = FilterByRange(options.range_filter, scan, nullptr);
+    summary->cropped_points += read - scan.size();
     // Grow the merged cloud by doubling, refusing a growth that would not
     // fit (the old and the new buffer and this scan are alive together).
     const size_t needed = merged.size() + scan.size();
@@ -159,12 +161,6 @@ bool BuildMapFromCloud(const MapBuildOptions& options,
   const double start = NowSeconds();
   *summary = MapBuildSummary();
   if (!options.IsValid(error)) return false;
-  if (!options.crop.IsIdentity()) {
-    *error =
-        "a range crop needs scans in their sensor frames; a merged cloud has "
-        "no sensor origin";
-    return false;
-  }
   summary->input_points = cloud.size();
   const bool ok =
       FilterAndBuild(options, std::move(cloud), map, summary, error);

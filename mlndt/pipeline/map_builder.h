@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/cloud/cloud_filters.h"
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/cloud/range_filter.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/grid/map_memory.h"
@@ -33,8 +33,9 @@ constexpr size_t kDefaultMapMemoryLimitBytes = size_t{8000000000};
 struct MapBuildOptions {
   // The map (cell sizes, q, min points per cell, regularisation).
   LayeredGridOptions grid;
-  // Crop of every scan by range from its sensor (BuildMapFromScans only).
-  RangeCrop crop;
+  // Returns of every scan dropped by range from its sensor (range_filter.h;
+  // BuildMapFromScans only: a merged cloud has no sensor origin).
+  RangeFilterOptions range_filter;
   // Voxel edge of the filter of the merged cloud [m]; 0 = no filter.
   // 0, or in [1e-3, 1e3].
   double voxel_size_m = 0.0;

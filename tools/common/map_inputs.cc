@@ -6,6 +6,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/dataset.h"
+#include "tools/common/list_flags.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {

@@ -273,6 +273,20 @@ bool MatcherOptionsFromFlags(MatcherOptions* options, std::string* error) {
              : ParseMlNdt(&options->mlndt, error);
 }
 
+bool RangeFilterOptionsFromFlags(RangeFilterOptions* filter,
+                                 std::string* error) {
+  ParseRangeFilter(filter);
+  if (filter->IsValid(error)) return true;
+  for (const char* flag :
+       {"saturated_range_fraction", "min_range", "max_range"}) {
+    if (error->find(flag) != std::string::npos) {
+      *error = std::string("--") + flag + ": " + *error;
+      break;
+    }
+  }
+  return false;
+}
+
 bool RegistrationOptionsFromFlags(RegistrationOptions* options,
                                   std::string* error) {
   MatcherOptions matcher;

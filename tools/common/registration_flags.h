@@ -56,6 +56,11 @@ namespace tools {
 // would be silently ignored (e.g. --backend with --method=ndt).
 bool MatcherOptionsFromFlags(MatcherOptions* options, std::string* error);
 
+// The range filter of --min_range, --max_range and
+// --saturated_range_fraction; false with *error naming the flag.
+bool RangeFilterOptionsFromFlags(RangeFilterOptions* filter,
+                                 std::string* error);
+
 // The registration options of --preset and the ML-NDT flags (ML-NDT only;
 // false with *error for --method=ndt).
 bool RegistrationOptionsFromFlags(RegistrationOptions* options,
