@@ -35,12 +35,14 @@ struct Moments {
     sum += other.sum;
     outer += other.outer;
   }
-  // Scales the moments so that the cell weighs 1 whatever its point count.
-  void WeighAsOne() {
+  // Scales the moments so that the cell weighs min(count, cap): as many
+  // points as it has up to the cap, the cap beyond.
+  void WeighCapped(int64_t cap) {
     const double n = static_cast<double>(count);
-    sum /= n;
-    outer /= n;
-    weight = 1.0;
+    const double w = static_cast<double>(std::min(count, cap));
+    sum *= w / n;
+    outer *= w / n;
+    weight = w;
   }
 };
 
@@ -251,8 +253,8 @@ NdtLayer FinishLayer(const RawLayer& raw,
     Eigen::Vector3d mean;
     Eigen::Matrix3d covariance;
     if (raw.weighted) {
-      // The mixture of the finest cells, each weighing 1; n / (n - 1) makes
-      // it Eq. (3) when one finest cell fills the cell.
+      // The mixture of the finest cells, weighted as WeighCapped says;
+      // n / (n - 1) makes it Eq. (3) when one finest cell fills the cell.
       mean = m.sum / m.weight;
       covariance =
           (outer / m.weight - mean * mean.transpose()) * (n / (n - 1.0));
@@ -468,7 +470,8 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
     } else {
       if (options.coarse_weighting == CoarseWeighting::FINEST_CELLS &&
           !raw.weighted) {
-        for (Moments& m : raw.moments) m.WeighAsOne();
+        for (Moments& m : raw.moments)
+          m.WeighCapped(options.min_points_per_cell);
         raw.weighted = true;
       }
       raw = Aggregate(raw, geometry[l + 1], geometry[l], ratio);

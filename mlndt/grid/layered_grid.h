@@ -35,10 +35,12 @@ namespace mlndt {
 enum class CoarseWeighting {
   POINTS,  // Every point alike (Eqs. 2-3).
   // Every finest-layer cell alike: the coarse cell is the mixture of its
-  // finest cells' distributions. A scanner samples the ground near it far
-  // more densely than the scene farther out, and those points travel with
-  // it; weighting the finest cells alike keeps them from dominating the
-  // coarse cells. Needs nested layers (q a perfect cube); POINTS otherwise.
+  // finest cells' distributions, each weighing min(points,
+  // min_points_per_cell) (a sparse cell counts its few points). A scanner
+  // samples the ground near it far more densely than the scene farther out,
+  // and those points travel with it; weighting the finest cells alike keeps
+  // them from dominating the coarse cells. Needs nested layers (q a perfect
+  // cube); POINTS otherwise.
   FINEST_CELLS,
 };
 

@@ -10,6 +10,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/score.h"
+#include "mlndt/registration/internal/attempts.h"
 #include "mlndt/registration/internal/input_anchor.h"
 #include "mlndt/registration/internal/registration_steps.h"
 
@@ -22,103 +23,8 @@ void Fail(const std::string& message, RegistrationSummary* summary) {
   internal::Fail(kEntryPoint, message, summary);
 }
 
-// One run of the layer schedule from a start layer, in the anchor's frame.
-struct Attempt {
-  int start_layer = 1;
-  Vector6d xi_local = Vector6d::Zero();
-  ScheduleSummary schedule;
-  double final_score = 0.0;  // On the last layer.
-};
-
-// What the solve needs besides the options: the map, the sampled points
-// about their centroid, the anchor and the backend holding them.
-struct Problem {
-  const LayeredGrid& map;
-  const std::vector<Eigen::Vector3d>& points;  // About the anchor.
-  const internal::InputAnchor& anchor;
-  Backend* backend;
-  double rms_range_m;  // Of the points about the anchor.
-  const NdtLayer& last() const { return map.layer(map.num_layers()); }
-};
-
-Attempt Solve(const RegistrationOptions& options,
-              const Problem& problem,
-              int start_layer,
-              const Vector6d& initial_local,
-              double start_time_s) {
-  Attempt attempt;
-  attempt.start_layer = start_layer;
-  attempt.xi_local = initial_local;
-  RunLayerSchedule(options.schedule,
-                   start_layer,
-                   problem.map,
-                   start_time_s,
-                   problem.backend,
-                   &attempt.xi_local,
-                   &attempt.schedule);
-  attempt.final_score = EvaluateScore(problem.last(),
-                                      problem.points,
-                                      attempt.xi_local,
-                                      options.objective,
-                                      HessianType::NONE)
-                            .score;
-  return attempt;
-}
-
-// The start layer: from the guess's uncertainty when it is given (the
-// displacement it allows at the points' RMS range), else schedule's.
-int StartLayer(const RegistrationOptions& options, const Problem& problem) {
-  const InitialGuessUncertainty& u = options.initial_uncertainty;
-  if (!u.given) {
-    return ResolveStartLayer(options.schedule, problem.map.num_layers());
-  }
-  const double displacement =
-      u.translation_m + u.rotation_deg * kDegToRad * problem.rms_range_m;
-  return StartLayerForUncertainty(options.schedule, problem.map, displacement);
-}
-
-// True when `xi_local` is farther from the guess than its uncertainty says.
-bool LeftTheUncertainty(const RegistrationOptions& options,
-                        const Problem& problem,
-                        const Vector6d& initial_local,
-                        const Vector6d& xi_local) {
-  const InitialGuessUncertainty& u = options.initial_uncertainty;
-  const Isometry3d guess =
-      PoseVectorToIsometry(problem.anchor.ToGlobal(initial_local));
-  const Isometry3d result =
-      PoseVectorToIsometry(problem.anchor.ToGlobal(xi_local));
-  return TranslationErrorM(guess, result) > u.translation_m ||
-         RotationErrorRad(guess, result) > u.rotation_deg * kDegToRad;
-}
-
-// The schedule from the start layer and, when a guess with an uncertainty
-// was given and the result left it, the last layer alone from the guess:
-// the lower final score wins, so that a good guess is never made worse.
-Attempt SolveKeepingTheGuess(const RegistrationOptions& options,
-                             const Problem& problem,
-                             const Vector6d& initial_local,
-                             double start_time_s,
-                             int* attempts) {
-  *attempts = 1;
-  const int n = problem.map.num_layers();
-  Attempt best = Solve(options,
-                       problem,
-                       StartLayer(options, problem),
-                       initial_local,
-                       start_time_s);
-  if (!options.initial_uncertainty.given || best.start_layer == n ||
-      best.schedule.termination_type == TerminationType::FAILURE ||
-      !LeftTheUncertainty(options, problem, initial_local, best.xi_local)) {
-    return best;
-  }
-  ++*attempts;
-  Attempt finest = Solve(options, problem, n, initial_local, start_time_s);
-  if (finest.schedule.termination_type != TerminationType::FAILURE &&
-      finest.final_score < best.final_score) {
-    return finest;
-  }
-  return best;
-}
+using internal::Attempt;
+using internal::Problem;
 
 // 2 H^-1 (the Laplace approximation for whitened residuals of unit
 // variance), infinite along the degenerate directions (scaled frame of
@@ -166,10 +72,8 @@ void ReportSolution(const RegistrationOptions& options,
   // xi = f(xi_local): H = J^-T H_local J^-1, C = J C_local J^T.
   const Matrix6d j = problem.anchor.Jacobian(local);
   const Matrix6d j_inverse = j.inverse();
-  summary->constraints =
-      AnalyseConstraints(final.hessian,
-                         problem.rms_range_m,
-                         options.quality_check.min_constraint_ratio);
+  summary->constraints = attempt.constraints;
+  summary->quality = attempt.fit;
   const Matrix6d local_covariance =
       CovarianceFromHessian(final.hessian, summary->constraints);
   summary->reference_from_input =
@@ -184,11 +88,6 @@ void ReportSolution(const RegistrationOptions& options,
   summary->covariance = local_covariance.allFinite()
                             ? Matrix6d(j * local_covariance * j.transpose())
                             : local_covariance;
-  summary->quality = EvaluateFitQuality(problem.last(),
-                                        problem.points,
-                                        local,
-                                        options.objective,
-                                        options.quality_check.inlier_gate);
 }
 
 // The attempt's trace with its poses in the input frame's parametrisation.
@@ -218,15 +117,10 @@ void Judge(const RegistrationOptions& options,
   const std::string unmatched =
       internal::CheckMatchedFraction(options.min_matched_fraction, *summary);
   if (!unmatched.empty()) return Fail(unmatched, summary);
-  std::string why;
-  const TerminationType verdict = CheckQuality(options.quality_check,
-                                               summary->termination_type,
-                                               summary->quality,
-                                               summary->constraints,
-                                               &why);
-  if (verdict != summary->termination_type) {
-    summary->termination_type = verdict;
-    summary->message = why + " (solver: " + summary->message + ")";
+  if (attempt.verdict != summary->termination_type) {
+    summary->termination_type = attempt.verdict;
+    summary->message =
+        attempt.verdict_message + " (solver: " + summary->message + ")";
   }
 }
 
@@ -291,7 +185,7 @@ void RegisterOnMap(const RegistrationOptions& options,
 
   const double t0 = NowSeconds();
   backend->SetProblem(points, options.objective, options.num_threads);
-  const Attempt attempt = SolveKeepingTheGuess(
+  const Attempt attempt = internal::SolveAttempts(
       options, problem, initial_local, start_time_s, &summary->attempts);
   summary->solve_time_s = NowSeconds() - t0;
   summary->start_layer = attempt.start_layer;

@@ -7,6 +7,7 @@
 // configuration, for reproducing Section 5.
 
 #include <string>
+#include <vector>
 
 #include "mlndt/cloud/range_filter.h"
 #include "mlndt/cost/objective_options.h"
@@ -28,6 +29,18 @@ struct InitialGuessUncertainty {
   bool given = false;
   double translation_m = 0.0;  // In [0, 1e4].
   double rotation_deg = 0.0;   // In [0, 180].
+
+  bool IsValid(std::string* error) const;
+};
+
+// Runs again when the result fails the quality check (a wrong local
+// minimum, most often a rotation beyond the coarse layers' basin): from the
+// guess turned by each yaw seed about the input's centroid, in order, until
+// one passes. Costs nothing when the first run passes. With a known guess
+// uncertainty only the seeds within its rotation are tried.
+struct RetryOptions {
+  // Yaw turns [deg], each in [-180, 180]; at most 36. Empty: no retry.
+  std::vector<double> yaw_seeds_deg = {45, -45, 90, -90, 135, -135, 180};
 
   bool IsValid(std::string* error) const;
 };
@@ -59,6 +72,8 @@ struct RegistrationOptions {
   QualityCheckOptions quality_check;
   // How good the initial guess is (see above).
   InitialGuessUncertainty initial_uncertainty;
+  // Runs from turned guesses when the first fails the quality check.
+  RetryOptions retry;
 
   bool IsValid(std::string* error) const;
 };

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mlndt/common/internal/enum_strings.h"
+#include "tools/common/list_flags.h"
 
 // clang-format off
 DEFINE_string(preset, "default",
@@ -74,6 +75,23 @@ DEFINE_int32(threads, 1,
              "threads for newton and lm); with > 1 on a loaded machine set "
              "OMP_WAIT_POLICY=passive");
 DEFINE_uint64(seed, mlndt::SamplingOptions().seed, "Sampling seed");
+DEFINE_string(initial_uncertainty, "",
+              "How far the initial guess may be off: translation_m,rotation_deg (e.g. 0.5,5); "
+              "picks the start layer, and a guess is never made worse; empty = unknown");
+DEFINE_bool(quality_check, mlndt::QualityCheckOptions().enabled,
+            "Report LOW_QUALITY/DEGENERATE instead of CONVERGENCE when the fit at the "
+            "solution fails the check");
+DEFINE_double(min_inlier_fraction, mlndt::QualityCheckOptions().min_inlier_fraction,
+              "Quality check: least share of inliers (Mahalanobis distance < --inlier_gate)");
+DEFINE_double(max_mean_score, mlndt::QualityCheckOptions().max_mean_score,
+              "Quality check: largest mean score per matched point");
+DEFINE_double(inlier_gate, mlndt::QualityCheckOptions().inlier_gate,
+              "Quality check: Mahalanobis distance of an inlier");
+DEFINE_double(min_constraint_ratio, mlndt::QualityCheckOptions().min_constraint_ratio,
+              "Quality check: DEGENERATE below this weakest/strongest information ratio");
+DEFINE_string(retry_yaw_seeds, "45,-45,90,-90,135,-135,180",
+              "Yaw turns [deg] of the guess tried, in order, until a result converges and "
+              "passes the quality check; empty = no retry");
 // clang-format on
 
 namespace mlndt {
@@ -176,6 +194,37 @@ bool ParseSchedule(LayerScheduleOptions* schedule) {
   return true;
 }
 
+bool ParseTrust(RegistrationOptions* options, std::string* error) {
+  QualityCheckOptions& check = options->quality_check;
+  if (Given("quality_check")) check.enabled = FLAGS_quality_check;
+  if (Given("min_inlier_fraction")) {
+    check.min_inlier_fraction = FLAGS_min_inlier_fraction;
+  }
+  if (Given("max_mean_score")) check.max_mean_score = FLAGS_max_mean_score;
+  if (Given("inlier_gate")) check.inlier_gate = FLAGS_inlier_gate;
+  if (Given("min_constraint_ratio")) {
+    check.min_constraint_ratio = FLAGS_min_constraint_ratio;
+  }
+  if (Given("retry_yaw_seeds") &&
+      !ParseNumberList(FLAGS_retry_yaw_seeds, &options->retry.yaw_seeds_deg)) {
+    *error = "--retry_yaw_seeds=" + FLAGS_retry_yaw_seeds +
+             ": expected comma-separated angles [deg]";
+    return false;
+  }
+  if (!FLAGS_initial_uncertainty.empty()) {
+    std::vector<double> v;
+    if (!ParseNumberList(FLAGS_initial_uncertainty, &v) || v.size() != 2) {
+      *error = "--initial_uncertainty=" + FLAGS_initial_uncertainty +
+               ": expected translation_m,rotation_deg";
+      return false;
+    }
+    options->initial_uncertainty.given = true;
+    options->initial_uncertainty.translation_m = v[0];
+    options->initial_uncertainty.rotation_deg = v[1];
+  }
+  return true;
+}
+
 bool ParseMlNdt(RegistrationOptions* options, std::string* error) {
   if (FLAGS_preset == "paper") {
     *options = PaperRegistrationOptions();
@@ -201,7 +250,8 @@ bool ParseMlNdt(RegistrationOptions* options, std::string* error) {
     return false;
   }
   if (Given("loss_scale")) options->objective.loss_scale = FLAGS_loss_scale;
-  if (!ParseCeres(&options->backend.ceres, error) ||
+  if (!ParseTrust(options, error) ||
+      !ParseCeres(&options->backend.ceres, error) ||
       !ParseSampling(&options->sampling, error) ||
       !ParseSchedule(&options->schedule)) {
     return false;

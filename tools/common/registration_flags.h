@@ -46,6 +46,13 @@ DECLARE_string(linear_solver);
 DECLARE_string(trust_region);
 DECLARE_int32(threads);
 DECLARE_uint64(seed);
+DECLARE_string(initial_uncertainty);
+DECLARE_bool(quality_check);
+DECLARE_double(min_inlier_fraction);
+DECLARE_double(max_mean_score);
+DECLARE_double(inlier_gate);
+DECLARE_double(min_constraint_ratio);
+DECLARE_string(retry_yaw_seeds);
 // clang-format on
 
 namespace mlndt {

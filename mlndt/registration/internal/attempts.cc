@@ -1,0 +1,148 @@
+#include "mlndt/registration/internal/attempts.h"
+
+#include "mlndt/common/pose.h"
+#include "mlndt/cost/score.h"
+
+namespace mlndt {
+namespace internal {
+namespace {
+
+// The fit, constraints and verdict of the attempt's solution.
+void Assess(const RegistrationOptions& options,
+            const Problem& problem,
+            Attempt* attempt) {
+  const ScoreEvaluation evaluation = EvaluateScore(
+      problem.last(), problem.points, attempt->xi_local, options.objective);
+  attempt->final_score = evaluation.score;
+  attempt->fit = EvaluateFitQuality(problem.last(),
+                                    problem.points,
+                                    attempt->xi_local,
+                                    options.objective,
+                                    options.quality_check.inlier_gate);
+  attempt->constraints =
+      AnalyseConstraints(evaluation.hessian,
+                         problem.rms_range_m,
+                         options.quality_check.min_constraint_ratio);
+  attempt->verdict = CheckQuality(options.quality_check,
+                                  attempt->schedule.termination_type,
+                                  attempt->fit,
+                                  attempt->constraints,
+                                  &attempt->verdict_message);
+}
+
+Attempt Solve(const RegistrationOptions& options,
+              const Problem& problem,
+              int start_layer,
+              const Vector6d& initial_local,
+              double start_time_s) {
+  Attempt attempt;
+  attempt.start_layer = start_layer;
+  attempt.xi_local = initial_local;
+  RunLayerSchedule(options.schedule,
+                   start_layer,
+                   problem.map,
+                   start_time_s,
+                   problem.backend,
+                   &attempt.xi_local,
+                   &attempt.schedule);
+  if (attempt.schedule.termination_type != TerminationType::FAILURE) {
+    Assess(options, problem, &attempt);
+  }
+  return attempt;
+}
+
+// The start layer: from the guess's uncertainty when it is given (the
+// displacement it allows at the points' RMS range), else schedule's.
+int StartLayer(const RegistrationOptions& options, const Problem& problem) {
+  const InitialGuessUncertainty& u = options.initial_uncertainty;
+  if (!u.given) {
+    return ResolveStartLayer(options.schedule, problem.map.num_layers());
+  }
+  const double displacement =
+      u.translation_m + u.rotation_deg * kDegToRad * problem.rms_range_m;
+  return StartLayerForUncertainty(options.schedule, problem.map, displacement);
+}
+
+// True when `xi_local` is farther from the guess than its uncertainty says.
+bool LeftTheUncertainty(const RegistrationOptions& options,
+                        const Problem& problem,
+                        const Vector6d& initial_local,
+                        const Vector6d& xi_local) {
+  const InitialGuessUncertainty& u = options.initial_uncertainty;
+  const Isometry3d guess =
+      PoseVectorToIsometry(problem.anchor.ToGlobal(initial_local));
+  const Isometry3d result =
+      PoseVectorToIsometry(problem.anchor.ToGlobal(xi_local));
+  return TranslationErrorM(guess, result) > u.translation_m ||
+         RotationErrorRad(guess, result) > u.rotation_deg * kDegToRad;
+}
+
+// Verdicts from worst to best: a converged, checked pose is what a retry
+// looks for; an unconverged one passing the check comes next.
+int Rank(const Attempt& attempt) {
+  if (attempt.schedule.termination_type == TerminationType::FAILURE) return 0;
+  switch (attempt.verdict) {
+    case TerminationType::CONVERGENCE:
+      return 3;
+    case TerminationType::NO_CONVERGENCE:
+      return 2;
+    default:
+      return 1;
+  }
+}
+
+// `candidate` replaces `best` when its verdict ranks higher, or ranks alike
+// and more of its points are inliers. (Not the lower score: points that
+// leave the map score nothing, so a pose off the map can score lower.)
+void KeepBetter(Attempt candidate, Attempt* best) {
+  const int rank = Rank(candidate), best_rank = Rank(*best);
+  if (rank > best_rank ||
+      (rank == best_rank && rank > 0 &&
+       candidate.fit.inlier_fraction > best->fit.inlier_fraction)) {
+    *best = std::move(candidate);
+  }
+}
+
+// The guess turned by `yaw_deg` about the z axis at the input's centroid.
+Vector6d TurnedGuess(const Vector6d& initial_local, double yaw_deg) {
+  Isometry3d turned = PoseVectorToIsometry(initial_local);
+  turned.linear() =
+      Eigen::AngleAxisd(yaw_deg * kDegToRad, Eigen::Vector3d::UnitZ()) *
+      turned.linear();
+  return IsometryToPoseVector(turned);
+}
+
+}  // namespace
+
+Attempt SolveAttempts(const RegistrationOptions& options,
+                      const Problem& problem,
+                      const Vector6d& initial_local,
+                      double start_time_s,
+                      int* attempts) {
+  const int n = problem.map.num_layers();
+  const int start = StartLayer(options, problem);
+  Attempt best = Solve(options, problem, start, initial_local, start_time_s);
+  *attempts = 1;
+  if (best.schedule.termination_type == TerminationType::FAILURE) return best;
+  const InitialGuessUncertainty& u = options.initial_uncertainty;
+  if (u.given && start < n &&
+      LeftTheUncertainty(options, problem, initial_local, best.xi_local)) {
+    ++*attempts;
+    KeepBetter(Solve(options, problem, n, initial_local, start_time_s), &best);
+  }
+  for (const double yaw_deg : options.retry.yaw_seeds_deg) {
+    if (best.verdict == TerminationType::CONVERGENCE) break;
+    if (u.given && std::abs(yaw_deg) > u.rotation_deg) continue;
+    ++*attempts;
+    KeepBetter(Solve(options,
+                     problem,
+                     start,
+                     TurnedGuess(initial_local, yaw_deg),
+                     start_time_s),
+               &best);
+  }
+  return best;
+}
+
+}  // namespace internal
+}  // namespace mlndt

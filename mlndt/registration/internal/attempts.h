@@ -1,0 +1,61 @@
+#pragma once
+
+// The runs of the layer schedule one registration makes (Table 1), and how
+// the reported one is chosen:
+//  1. the schedule from the start layer (schedule.start_layer, or the layer
+//     the initial guess's uncertainty needs);
+//  2. with an uncertainty given, when the result left it: the last layer
+//     alone from the guess; the better fit wins, so a good guess is never
+//     made worse;
+//  3. until a result converges and passes the quality check: the schedule
+//     again from the guess turned about the input's centroid by each yaw
+//     seed (retry); the best verdict wins, then the most inliers (every
+//     attempt scores the same points on the same last layer).
+
+#include <vector>
+
+#include "mlndt/grid/layered_grid.h"
+#include "mlndt/registration/internal/input_anchor.h"
+#include "mlndt/registration/registration_options.h"
+#include "mlndt/schedule/layer_scheduler.h"
+#include "mlndt/solvers/backend.h"
+
+namespace mlndt {
+namespace internal {
+
+// What the runs need besides the options: the map, the sampled points about
+// their centroid, the anchor and the backend holding the points.
+struct Problem {
+  const LayeredGrid& map;
+  const std::vector<Eigen::Vector3d>& points;  // About the anchor.
+  const InputAnchor& anchor;
+  Backend* backend;
+  double rms_range_m;  // Of the points about the anchor.
+  const NdtLayer& last() const { return map.layer(map.num_layers()); }
+};
+
+// One run of the schedule, in the anchor's frame, with its assessment.
+struct Attempt {
+  int start_layer = 1;
+  Vector6d xi_local = Vector6d::Zero();
+  ScheduleSummary schedule;
+  double final_score = 0.0;  // On the last layer.
+  FitQuality fit;
+  ConstraintAnalysis constraints;
+  TerminationType verdict = TerminationType::FAILURE;  // CheckQuality's.
+  std::string verdict_message;
+  bool usable() const {
+    return verdict == TerminationType::CONVERGENCE ||
+           verdict == TerminationType::NO_CONVERGENCE;
+  }
+};
+
+// Runs 1-3 above; *attempts counts the runs.
+Attempt SolveAttempts(const RegistrationOptions& options,
+                      const Problem& problem,
+                      const Vector6d& initial_local,
+                      double start_time_s,
+                      int* attempts);
+
+}  // namespace internal
+}  // namespace mlndt
