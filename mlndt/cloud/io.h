@@ -73,11 +73,13 @@ bool ReadPointCloud(const std::string& path,
                     ReadCloudInfo* info,
                     std::string* error);
 
-// Writes PCD or PLY, chosen by extension (see above). The data goes to a
-// temporary file in the same folder that is then renamed onto `path`, so a
-// failure never leaves a half-written file (and never damages an existing
-// file at `path`). Returns false with *error for other extensions and for
-// I/O failures.
+// Writes PCD or PLY, chosen by extension (see above), with
+// WriteFileAtomically (mlndt/common/atomic_file.h): a temporary file in the
+// same folder, fsynced and renamed onto `path`, so a failure (a full disk
+// included) never leaves a half-written file and never damages an existing
+// file at `path`; an existing file keeps its mode; a symbolic link, FIFO,
+// device or directory at `path` is refused. Returns false with *error for
+// other extensions and for I/O failures (naming `path` and the OS reason).
 bool WritePointCloud(const std::string& path,
                      const PointCloud& cloud,
                      std::string* error);
