@@ -43,6 +43,12 @@
 //    separated by whitespace and/or commas (extra columns ignored), metres.
 //    Blank lines and lines starting with '#' are skipped.
 //
+// Empty files: a PCD or PLY file whose header declares 0 points reads as an
+// empty cloud (WritePointCloud writes such a file for an empty cloud). A
+// file without any point in a format that has no header to declare a count
+// (.bin, .3d, .xyz/.txt: 0 bytes, or only blank and comment lines) is an
+// error, "no points", and so is a 0-byte file in any format.
+//
 // Formats written: PCD (DATA binary, FIELDS x y z, float32) and PLY
 // (binary_little_endian, float x y z). Coordinates are stored as float32, so
 // about 7 significant digits survive a round trip.

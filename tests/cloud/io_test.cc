@@ -560,6 +560,26 @@ TEST(ReadPcd, BinaryCompressedDropsNaN) {
 // ---- PCD errors
 // ---------------------------------------------------------------
 
+// A header that declares 0 points is a valid, empty cloud (WritePointCloud
+// writes such files for an empty cloud); 0 bytes is not a PCD/PLY file.
+TEST(ReadPcd, HeaderWithZeroPointsIsAnEmptyCloud) {
+  for (const char* data : {"ascii", "binary"}) {
+    ReadCloudInfo info;
+    EXPECT_TRUE(
+        ReadOk(WriteFile(
+                   std::string("zero_") + data + ".pcd",
+                   PcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 0, 1, data)),
+               &info)
+            .empty());
+    EXPECT_EQ(info.points_in_file, 0u);
+  }
+  EXPECT_TRUE(ReadOk(WriteFile("zero.ply",
+                               "ply\nformat ascii 1.0\nelement vertex 0\n"
+                               "property float x\nproperty float y\n"
+                               "property float z\nend_header\n"))
+                  .empty());
+}
+
 TEST(ReadPcdErrors, EmptyFile) {
   ExpectReadFails(WriteFile("empty.pcd", ""), "empty file");
 }
@@ -1072,8 +1092,8 @@ TEST(ReadKittiBin, RecordsOfFourFloats) {
   EXPECT_EQ(info.dropped_non_finite, 1u);
 }
 
-TEST(ReadKittiBin, EmptyFileIsAnEmptyCloud) {
-  EXPECT_TRUE(ReadOk(WriteFile("empty.bin", "")).empty());
+TEST(ReadKittiBinErrors, EmptyFileHasNoPoints) {
+  ExpectReadFails(WriteFile("empty.bin", ""), "no points");
 }
 
 TEST(ReadKittiBinErrors, SizeNotMultipleOf16) {
@@ -1114,6 +1134,12 @@ TEST(ReadUos3dErrors, UnparsableLineNamesLineNumber) {
                   "line 2: cannot parse point");
 }
 
+TEST(ReadUos3dErrors, FilesWithoutPointsFail) {
+  for (const char* text : {"", "\n", "1200 x 68\n"}) {
+    ExpectReadFails(WriteFile("empty.3d", text), "no points");
+  }
+}
+
 // ---- Plain xyz text
 // -----------------------------------------------------------
 
@@ -1134,6 +1160,13 @@ TEST(ReadXyz, WhitespaceCommasCommentsAndExtraColumns) {
   EXPECT_EQ(info.points_in_file, 4u);
   EXPECT_EQ(info.dropped_non_finite, 1u);
   EXPECT_EQ(ReadOk(WriteFile("points.txt", text)).size(), 3u);
+}
+
+TEST(ReadXyzErrors, FilesWithoutPointsFail) {
+  for (const char* text : {"", "\n\n", "# x y z\n# nothing else\n"}) {
+    ExpectReadFails(WriteFile("empty.xyz", text), "no points");
+    ExpectReadFails(WriteFile("empty.txt", text), "no points");
+  }
 }
 
 TEST(ReadXyzErrors, UnparsableLineNamesLineNumber) {
