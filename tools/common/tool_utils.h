@@ -18,18 +18,24 @@
 namespace mlndt {
 namespace tools {
 
-// Parses "a,b,c" into numbers; false when any item is not a finite number.
+// Parses "a,b,c" into numbers; false when any item is not a finite number,
+// including empty items ("1,,2", a leading or a trailing comma: "1,2,").
+// Spaces around a number are allowed. "" gives no numbers (callers check the
+// count they need).
 inline bool ParseNumberList(const std::string& text,
                             std::vector<double>* values) {
   values->clear();
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  if (text.empty()) return true;
+  size_t begin = 0;
+  while (true) {
+    const size_t comma = text.find(',', begin);
+    const std::string item = text.substr(
+        begin, comma == std::string::npos ? std::string::npos : comma - begin);
+    if (item.find_first_not_of(" \t") == std::string::npos) return false;
     try {
       size_t used = 0;
       const double v = std::stod(item, &used);
-      if (used != item.size() &&
-          item.find_first_not_of(" \t", used) != std::string::npos) {
+      if (item.find_first_not_of(" \t", used) != std::string::npos) {
         return false;
       }
       if (!std::isfinite(v)) return false;
@@ -37,8 +43,9 @@ inline bool ParseNumberList(const std::string& text,
     } catch (...) {
       return false;
     }
+    if (comma == std::string::npos) return true;
+    begin = comma + 1;
   }
-  return true;
 }
 
 // Reads 12 or 16 whitespace-separated numbers (row-major 3x4 or 4x4).
