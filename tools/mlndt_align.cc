@@ -245,9 +245,9 @@ int Run() {
       json.AddNumber("translation_error_m", translation_error)
           .AddNumber("rotation_error_deg", rotation_error_deg);
     }
-    std::ofstream out(FLAGS_output_json);
-    out << json.str() << "\n";
-    if (!out) return Fail(FLAGS_output_json + ": cannot write");
+    if (!WriteFileAtomically(FLAGS_output_json, json.str() + "\n", &error)) {
+      return Fail(error);
+    }
   }
   if (!FLAGS_output_cloud.empty() &&
       !WritePointCloud(FLAGS_output_cloud,

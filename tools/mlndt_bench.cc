@@ -620,11 +620,12 @@ int Run() {
   if (!ParseConfigurations(&configurations, &error)) return Fail(error);
   std::vector<ScanPair> pairs;
   if (!LoadPairs(sets, &pairs, &error)) return Fail(error);
-  std::ofstream csv;
-  if (!FLAGS_output_csv.empty()) {
-    csv.open(FLAGS_output_csv);
-    if (!csv) return Fail(FLAGS_output_csv + ": cannot write");
+  // The CSV is written at the end (atomically); fail now if it cannot be.
+  const bool write_csv = !FLAGS_output_csv.empty();
+  if (write_csv && !CheckWritableFilePath(FLAGS_output_csv, &error)) {
+    return Fail(error);
   }
+  std::ostringstream csv;
 
   // Methods: the configurations, then PCL (when compared).
   const size_t num_configurations = configurations.size();
@@ -706,7 +707,7 @@ int Run() {
                                            "success",
                                            "pcl/ours"};
   std::vector<std::vector<std::string>> table = {header};
-  if (csv.is_open()) {
+  if (write_csv) {
     csv << "pairs,method,backend,sampling,start_layer,linear_solver,trust_"
            "region,threads,runs,"
            "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_"
@@ -788,7 +789,7 @@ int Run() {
            std::to_string(s.successes) + "/" + std::to_string(s.runs) + " (" +
                Format("%.0f", 100.0 * success_rate) + "%)",
            Format("%.2f", ratio)});
-      if (csv.is_open()) {
+      if (write_csv) {
         auto number = [](double v) {
           std::ostringstream out;
           out.precision(6);
@@ -846,9 +847,8 @@ int Run() {
                  "single-threaded\n";
   }
   for (const std::string& note : notes) std::cout << "- " << note << "\n";
-  if (csv.is_open()) {
-    csv.close();
-    if (!csv) return Fail(FLAGS_output_csv + ": cannot write");
+  if (write_csv && !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
+    return Fail(error);
   }
   return 0;
 }

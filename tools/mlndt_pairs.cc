@@ -103,9 +103,13 @@ int Run() {
     if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
       return Fail(error);
   }
-  std::ofstream csv;
-  if (!FLAGS_output_csv.empty()) {
-    csv.open(FLAGS_output_csv);
+  // The CSV is written at the end (atomically); fail now if it cannot be.
+  const bool write_csv = !FLAGS_output_csv.empty();
+  if (write_csv && !CheckWritableFilePath(FLAGS_output_csv, &error)) {
+    return Fail(error);
+  }
+  std::ostringstream csv;
+  if (write_csv) {
     csv << "reference,input,gap,perturbation,translation_error_m,rotation_"
            "error_deg,success,"
            "termination,iterations,time_ms\n";
@@ -163,7 +167,7 @@ int Run() {
                     ok ? "yes" : "NO",
                     summary.num_iterations,
                     summary.total_time_s * 1e3);
-        if (csv.is_open()) {
+        if (write_csv) {
           csv << i << "," << j << "," << gap << ",\"" << label << "\"," << et
               << "," << er << "," << ok << ","
               << TerminationTypeToString(summary.termination_type) << ","
@@ -178,6 +182,9 @@ int Run() {
               total,
               100.0 * successes / std::max(1, total),
               Median(times));
+  if (write_csv && !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
+    return Fail(error);
+  }
   return 0;
 }
 

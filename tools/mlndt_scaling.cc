@@ -310,7 +310,7 @@ bool WriteCsv(const std::string& path,
               const std::vector<SizeResult>& results,
               std::string* error) {
   using tools::Num;
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_"
          "layer_cells,"
          "num_layers,iterations,termination,translation_error_m,rotation_error_"
@@ -323,11 +323,7 @@ bool WriteCsv(const std::string& path,
         << Num(r.translation_error_m) << "," << Num(r.rotation_error_deg) << ","
         << (r.ok ? 1 : 0) << "\n";
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 // scaling.gp / scaling.png: log-log time against N, read from scaling.csv.

@@ -267,10 +267,10 @@ int Run() {
   } else {
     header.AddNumber("start_layer_flag", FLAGS_start_layer);
   }
-  {
-    std::ofstream json(out + "summary.json");
-    json << tools::SummaryJson(header, results) << "\n";
-    if (!json) return Fail(out + "summary.json: cannot write");
+  if (!WriteFileAtomically(out + "summary.json",
+                           tools::SummaryJson(header, results) + "\n",
+                           &error)) {
+    return Fail(error);
   }
   if (!WriteKittiPoses(out + "trajectory.txt",
                        tools::ChainTrajectory(results, options.step, false),

@@ -1,15 +1,22 @@
 // The tools' shared helpers (tools/common/tool_utils.h): number lists from
-// flags, and one end-to-end check that mlndt_align turns a malformed list
-// into a clear error and exit code 1.
+// flags and atomic output files, with end-to-end checks on mlndt_align: a
+// malformed list, a full disk and a symbolic link as --output_json are clear
+// errors with exit code 1, and an earlier output survives them.
 
 #include "tools/common/tool_utils.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "tests/testing/run_tool.h"
+#include "tests/testing/small_file_system.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -50,16 +57,51 @@ TEST(ParseNumberList, RejectsNonNumbersAndNonFinite) {
   }
 }
 
-TEST(MlndtAlign, TrailingCommaInInitialMatrixIsAnError) {
+std::string AlignPair() {
   const std::string koide3 = testing::BundledDataPath("koide3/");
+  return "--reference=" + testing::ShellQuote(koide3 + "251370668.pcd") +
+         " --input=" + testing::ShellQuote(koide3 + "251371071.pcd");
+}
+
+TEST(MlndtAlign, TrailingCommaInInitialMatrixIsAnError) {
   const testing::ToolRun run = testing::RunTool(
       "mlndt_align",
-      "--reference=" + testing::ShellQuote(koide3 + "251370668.pcd") +
-          " --input=" + testing::ShellQuote(koide3 + "251371071.pcd") +
-          " --initial_matrix=1,0,0,0,0,1,0,0,0,0,1,0,");
+      AlignPair() + " --initial_matrix=1,0,0,0,0,1,0,0,0,0,1,0,");
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_NE(run.err.find("--initial_matrix needs 12"), std::string::npos)
       << run.err;
+}
+
+TEST(MlndtAlign, FullDiskKeepsThePreviousJsonAndExitsWithOne) {
+  testing::SmallFileSystem fs;
+  MLNDT_MOUNT_SMALL_FS_OR_SKIP(fs, 64 * 1024);
+  const std::string json = fs.path() + "/result.json";
+  std::ofstream(json) << "{\"previous\": true}\n";
+  fs.Fill();
+  const testing::ToolRun run = testing::RunTool(
+      "mlndt_align",
+      AlignPair() + " --output_json=" + testing::ShellQuote(json));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find(json), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(std::strerror(ENOSPC)), std::string::npos) << run.err;
+  EXPECT_EQ(testing::ReadWholeFile(json), "{\"previous\": true}\n");
+}
+
+TEST(MlndtAlign, RefusesASymlinkAsOutputJson) {
+  const std::string folder = ::testing::TempDir() + "mlndt_tool_utils_link";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::string victim = folder + "/victim.txt";
+  std::ofstream(victim) << "victim";
+  const std::string link = folder + "/result.json";
+  ASSERT_EQ(::symlink(victim.c_str(), link.c_str()), 0);
+  const testing::ToolRun run = testing::RunTool(
+      "mlndt_align",
+      AlignPair() + " --output_json=" + testing::ShellQuote(link));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("symbolic link"), std::string::npos) << run.err;
+  EXPECT_EQ(testing::ReadWholeFile(victim), "victim");
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
 }
 
 }  // namespace

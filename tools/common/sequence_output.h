@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_writer.h"
@@ -49,7 +50,7 @@ inline bool WritePairsCsv(const std::string& path,
                           const ScanStore& store,
                           const std::vector<PairResult>& results,
                           std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "reference,input,reference_file,input_file,"
          "err_tx_cm,err_ty_cm,err_tz_cm,err_alpha_deg,err_beta_deg,err_gamma_"
          "deg,"
@@ -86,18 +87,14 @@ inline bool WritePairsCsv(const std::string& path,
       out << "," << Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
     out << "\n";
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 // trace.csv: every iteration of every pair.
 inline bool WriteTraceCsv(const std::string& path,
                           const std::vector<PairResult>& results,
                           std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "reference,input,iteration,layer,score,step_norm,step_is_successful,"
          "tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,time_ms\n";
   for (const PairResult& r : results) {
@@ -112,11 +109,7 @@ inline bool WriteTraceCsv(const std::string& path,
       out << "," << Num(it.time_s * 1e3) << "\n";
     }
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 inline std::string StatsJson(const Stats& s, bool with_quantiles) {
@@ -208,7 +201,7 @@ inline bool WriteSequencePlots(const std::string& gnuplot,
   const std::string title_step = "step " + std::to_string(step);
 
   if (has_truth) {
-    std::ofstream errors(data_dir + "/errors.dat");
+    std::ostringstream errors;
     errors << "# input tx_cm ty_cm tz_cm alpha_deg beta_deg gamma_deg\n";
     for (const PairResult& r : results) {
       errors << r.input;
@@ -217,6 +210,9 @@ inline bool WriteSequencePlots(const std::string& gnuplot,
                << Num(r.error.components(k) * (k < 3 ? 100.0 : kRadToDeg));
       }
       errors << "\n";
+    }
+    if (!WriteFileAtomically(data_dir + "/errors.dat", errors.str(), error)) {
+      return false;
     }
     const std::string data = GnuplotQuote(data_dir + "/errors.dat");
     script << "set output " << GnuplotQuote(dir + "/errors_translation.png")
@@ -240,7 +236,7 @@ inline bool WriteSequencePlots(const std::string& gnuplot,
   }
 
   {
-    std::ofstream trajectory(data_dir + "/trajectory.dat");
+    std::ostringstream trajectory;
     trajectory << "# x_m y_m (estimate) [x_gt_m y_gt_m]\n";
     const std::vector<Isometry3d> estimate =
         ChainTrajectory(results, step, false);
@@ -255,6 +251,10 @@ inline bool WriteSequencePlots(const std::string& gnuplot,
                    << Num(truth[k].translation().y());
       }
       trajectory << "\n";
+    }
+    if (!WriteFileAtomically(
+            data_dir + "/trajectory.dat", trajectory.str(), error)) {
+      return false;
     }
     // Equal scales on both axes around the union of both paths.
     Eigen::AlignedBox2d box;
@@ -288,7 +288,7 @@ inline bool WriteSequencePlots(const std::string& gnuplot,
     traced.push_back(count == 1 ? 0 : k * (results.size() - 1) / (count - 1));
   }
   if (!traced.empty()) {
-    std::ofstream trace(data_dir + "/trace.dat");
+    std::ostringstream trace;
     trace << "# blocks per pair: iteration layer score_per_point "
              "translation_error_cm\n";
     for (size_t index : traced) {
@@ -306,6 +306,9 @@ inline bool WriteSequencePlots(const std::string& gnuplot,
               << Num(it.score / points) << " " << Num(error_cm) << "\n";
       }
       trace << "\n\n";
+    }
+    if (!WriteFileAtomically(data_dir + "/trace.dat", trace.str(), error)) {
+      return false;
     }
     const std::string data = GnuplotQuote(data_dir + "/trace.dat");
     script << "set output " << GnuplotQuote(dir + "/score_vs_iteration.png")

@@ -1,7 +1,9 @@
 #pragma once
 
 // Small helpers shared by the tools: number lists from flags, 4x4 matrix
-// text files, peak memory.
+// text files, peak memory. Tools write every output file with
+// WriteFileAtomically (mlndt/common/atomic_file.h, included here): the text
+// is built in memory, then replaces the file in one step.
 
 #include <sys/resource.h>
 
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/types.h"
 
 namespace mlndt {
