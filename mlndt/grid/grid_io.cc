@@ -192,6 +192,24 @@ bool CheckLayerHeader(const LayerHeader& h,
   return true;
 }
 
+// The mean of a cell's points lies in the cell (up to rounding: a
+// thousandth of the cell edge).
+bool MeanInsideCell(const LayerHeader& h,
+                    int64_t key,
+                    const Eigen::Vector3d& mean) {
+  const int64_t ijk[3] = {key % h.dims.x(),
+                          key / h.dims.x() % h.dims.y(),
+                          key / (int64_t{h.dims.x()} * h.dims.y())};
+  const double slack = 1e-3 * h.cell_size;
+  for (int a = 0; a < 3; ++a) {
+    const double low = h.origin(a) + static_cast<double>(ijk[a]) * h.cell_size;
+    if (!(mean(a) >= low - slack && mean(a) <= low + h.cell_size + slack)) {
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 bool SaveLayeredGrid(const std::string& path,
@@ -391,6 +409,8 @@ bool LoadLayeredGrid(const std::string& path,
       } else if (points_in_cells > num_points) {
         cell_problem = "the cells hold more points than the map's " +
                        std::to_string(num_points) + " points";
+      } else if (!MeanInsideCell(h, key, mean)) {
+        cell_problem = "mean outside its cell";
       } else if (!MakeNdtCell(count, mean, covariance, regularization, &cell)) {
         cell_problem = "no usable mean and covariance";
       }

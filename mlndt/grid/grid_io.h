@@ -48,7 +48,8 @@
 //     most 3 * 64 MiB together; Build's layers grow by a factor q >= 2, so
 //     its maps need at most 2 * 64 MiB;
 //   - per cell: key inside the grid and unique, count >= 1, the counts of a
-//     layer at most the map's number of points, a usable covariance.
+//     layer at most the map's number of points, the mean inside the cell
+//     (to 1/1000 of its edge), a usable covariance.
 // So a crafted file allocates at most its own size a few times over (cells,
 // keys) plus the bounded dense indexes, and fails with an error naming the
 // file, the layer and the problem.

@@ -20,7 +20,10 @@
 #include <thread>
 #include <vector>
 
+#include "mlndt/cloud/io.h"
+#include "mlndt/registration/registration.h"
 #include "tests/testing/small_file_system.h"
+#include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
@@ -72,6 +75,32 @@ TEST(GridIo, RoundTripKeepsEveryCell) {
   }
   // The map is far smaller than the 20000-point cloud (24 bytes a point).
   EXPECT_LT(ReadAll(path).size(), 20000u * 24u);
+}
+
+// A real map: the registration defaults (5 layers, 2 m finest cells) on a
+// bundled KITTI frame, saved and loaded with every check of the loader.
+TEST(GridIo, KittiFrameMapRoundTrips) {
+  PointCloud cloud;
+  std::string error;
+  ASSERT_TRUE(ReadPointCloud(testing::BundledDataPath("kitti/pcd/000000.pcd"),
+                             &cloud,
+                             nullptr,
+                             &error))
+      << error;
+  LayeredGrid grid;
+  ASSERT_TRUE(LayeredGrid::Build(
+      DefaultRegistrationGridOptions(), cloud, &grid, &error))
+      << error;
+  const std::string path = ::testing::TempDir() + "grid_kitti.mlndtmap";
+  ASSERT_TRUE(SaveLayeredGrid(path, grid, &error)) << error;
+  LayeredGrid loaded;
+  ASSERT_TRUE(LoadLayeredGrid(path, &loaded, &error)) << error;
+  ASSERT_EQ(loaded.num_layers(), grid.num_layers());
+  for (int i = 1; i <= grid.num_layers(); ++i) {
+    EXPECT_EQ(loaded.layer(i).keys(), grid.layer(i).keys());
+    EXPECT_EQ(loaded.layer(i).dims(), grid.layer(i).dims());
+  }
+  EXPECT_EQ(loaded.num_points(), grid.num_points());
 }
 
 TEST(GridIo, CorruptTruncatedAndForeignFilesFailCleanly) {
@@ -384,6 +413,12 @@ TEST(GridIo, CraftedHeadersFailFastWithSmallMemory) {
     Cell(0, 10, Eigen::Vector3d(0.5, 0.5, 0.5), &b);
     Cell(1, 10, Eigen::Vector3d(1.5, 0.5, 0.5), &b);
     cases.push_back({"counts_beyond_points", b.WithChecksum(), "points"});
+  }
+  {  // A cell whose mean lies two cells away from it.
+    LeBytes b = MapHeader(1, 1.0, 100);
+    LayerHeader(1.0, 2, 1, &b);
+    Cell(0, 10, Eigen::Vector3d(2.5, 0.5, 0.5), &b);
+    cases.push_back({"mean_outside_cell", b.WithChecksum(), "mean outside"});
   }
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
