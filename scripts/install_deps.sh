@@ -2,6 +2,9 @@
 # Installs the Debian 12 packages mlndt needs, only those that are missing.
 #   scripts/install_deps.sh [--with-pcl]
 # --with-pcl also installs libpcl-dev (large), for -DMLNDT_WITH_PCL=ON.
+# clang, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) and
+# libomp-dev (OpenMP for clang) are for .ci/fuzz; g++'s own ASan, UBSan and
+# TSan runtimes (.ci/sanitize) come with g++.
 set -euo pipefail
 
 packages=(
@@ -9,6 +12,7 @@ packages=(
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev nlohmann-json3-dev
   gnuplot-nox clang-format ccache
+  clang libclang-rt-14-dev libomp-dev
 )
 
 for arg in "$@"; do

@@ -408,7 +408,7 @@ bool LongRange(Context* c, std::string* error) {
     // Data + figure: strict (left) and 50 cm (right) success rates.
     const std::string name =
         rotation ? "long_range_rotation" : "long_range_translation";
-    std::ofstream dat(c->data + name + ".dat");
+    std::ostringstream dat;
     dat << "# offset, then per family and variant: strict_percent "
            "loose_percent\n";
     for (size_t v = 0; v < values.size(); ++v) {
@@ -420,6 +420,9 @@ bool LongRange(Context* c, std::string* error) {
         }
       }
       dat << "\n";
+    }
+    if (!WriteFileAtomically(c->data + name + ".dat", dat.str(), error)) {
+      return false;
     }
     c->script
         << "set output " << tools::GnuplotQuote(c->out + name + ".png") << "\n"
@@ -558,7 +561,7 @@ bool Optimizers(Context* c, std::string* error) {
   size_t done = 0;
   for (const Start& start : starts) {
     const std::string dat_path = c->data + "optimizers_" + start.key + ".dat";
-    std::ofstream dat(dat_path);
+    std::ostringstream dat;
     dat << "# blocks per optimiser: iteration layer score_per_point "
            "translation_error_cm\n";
     for (const Optimizer& variant : variants) {
@@ -602,6 +605,7 @@ bool Optimizers(Context* c, std::string* error) {
         << TerminationTypeToString(summary.termination_type) << " |\n";
       progress.Update(++done, start.key + " " + variant.name);
     }
+    if (!WriteFileAtomically(dat_path, dat.str(), error)) return false;
     const std::string name = "optimizers_" + start.key;
     c->script << "set output " << tools::GnuplotQuote(c->out + name + ".png")
               << "\n"
@@ -845,7 +849,7 @@ bool Sampling(Context* c, std::string* error) {
     << Fmt(totals[0].errors[6].mean, 1) << " cm | 94 % | 98 % |\n\n";
 
   // Figure: translation error per pair (seed 1), like Fig. 17.
-  std::ofstream dat(c->data + "sampling.dat");
+  std::ostringstream dat;
   dat << "# pair_index label";
   for (const Config& config : configs) dat << " '" << config.name << "'";
   dat << "\n";
@@ -856,6 +860,9 @@ bool Sampling(Context* c, std::string* error) {
       dat << " " << tools::Num(first_runs[k][p].error.translation_m * 100.0);
     }
     dat << "\n";
+  }
+  if (!WriteFileAtomically(c->data + "sampling.dat", dat.str(), error)) {
+    return false;
   }
   c->script << "set output " << tools::GnuplotQuote(c->out + "sampling.png")
             << "\n"
@@ -968,7 +975,7 @@ bool Table9(Context* c, std::string* error) {
        "error [cm] | paper: layers | paper fail | paper time [s] | paper err. "
        "[cm] |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::ofstream dat(c->data + "table9.dat");
+  std::ostringstream dat;
   dat << "# blocks per fraction: start_layer diverged_percent time_ms error_cm "
          "gt_fail_percent\n";
   for (double fraction : fractions) {
@@ -1029,6 +1036,9 @@ bool Table9(Context* c, std::string* error) {
     dat << "\n\n";
   }
   progress.Finish();
+  if (!WriteFileAtomically(c->data + "table9.dat", dat.str(), error)) {
+    return false;
+  }
   c->script << "set output " << tools::GnuplotQuote(c->out + "table9.png")
             << "\n"
             << "set multiplot layout 1,2 title 'Start layer x initialisation "
@@ -1295,7 +1305,7 @@ int Run() {
          "therefore dominated by "
          "this bias, not by the matcher; rotation errors are not affected.\n\n";
   {
-    std::ofstream md(c.out + "REPORT.md");
+    std::ostringstream md;
     md << header.str() << c.report.str()
        << "## Notes\n\n"
           "- Times are wall-clock on this machine, single-threaded, with C++ "
@@ -1308,7 +1318,10 @@ int Run() {
           "- Figures are drawn with gnuplot from the data in plot_data/ "
           "(script: "
           "plot_data/experiments.gp).\n";
-    if (!md) return Fail(c.out + "REPORT.md: cannot write");
+    std::string error;
+    if (!WriteFileAtomically(c.out + "REPORT.md", md.str(), &error)) {
+      return Fail(error);
+    }
   }
   if (FLAGS_plots) {
     if (!gnuplot_ok) {

@@ -43,6 +43,12 @@
 //    separated by whitespace and/or commas (extra columns ignored), metres.
 //    Blank lines and lines starting with '#' are skipped.
 //
+// Empty files: a PCD or PLY file whose header declares 0 points reads as an
+// empty cloud (WritePointCloud writes such a file for an empty cloud). A
+// file without any point in a format that has no header to declare a count
+// (.bin, .3d, .xyz/.txt: 0 bytes, or only blank and comment lines) is an
+// error, "no points", and so is a 0-byte file in any format.
+//
 // Formats written: PCD (DATA binary, FIELDS x y z, float32) and PLY
 // (binary_little_endian, float x y z). Coordinates are stored as float32, so
 // about 7 significant digits survive a round trip.
@@ -73,11 +79,13 @@ bool ReadPointCloud(const std::string& path,
                     ReadCloudInfo* info,
                     std::string* error);
 
-// Writes PCD or PLY, chosen by extension (see above). The data goes to a
-// temporary file in the same folder that is then renamed onto `path`, so a
-// failure never leaves a half-written file (and never damages an existing
-// file at `path`). Returns false with *error for other extensions and for
-// I/O failures.
+// Writes PCD or PLY, chosen by extension (see above), with
+// WriteFileAtomically (mlndt/common/atomic_file.h): a temporary file in the
+// same folder, fsynced and renamed onto `path`, so a failure (a full disk
+// included) never leaves a half-written file and never damages an existing
+// file at `path`; an existing file keeps its mode; a symbolic link, FIFO,
+// device or directory at `path` is refused. Returns false with *error for
+// other extensions and for I/O failures (naming `path` and the OS reason).
 bool WritePointCloud(const std::string& path,
                      const PointCloud& cloud,
                      std::string* error);

@@ -15,6 +15,10 @@ bool ParseKittiBin(const std::string& data,
                    std::vector<Eigen::Vector3d>* points,
                    std::string* error) {
   constexpr size_t kRecordBytes = 16;
+  if (data.empty()) {
+    *error = "empty file: no points (KITTI .bin records are 16 bytes each)";
+    return false;
+  }
   if (data.size() % kRecordBytes != 0) {
     *error = "file size " + std::to_string(data.size()) +
              " bytes is not a multiple of 16 (KITTI .bin records are float32 "

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
@@ -105,7 +106,7 @@ bool WriteKittiPoses(const std::string& path,
     }
     text += '\n';
   }
-  return internal::WriteFileAtomically(path, text, error);
+  return WriteFileAtomically(path, text, error);
 }
 
 bool ReadKittiCalibTr(const std::string& path,

@@ -24,7 +24,8 @@ bool ReadKittiPoses(const std::string& path,
                     std::vector<Eigen::Isometry3d>* poses,
                     std::string* error);
 // Writes the same layout with 17 significant digits, so reading it back gives
-// exactly the same doubles. Atomic like WritePointCloud (io.h).
+// exactly the same doubles. Written with WriteFileAtomically
+// (mlndt/common/atomic_file.h), like WritePointCloud (io.h).
 bool WriteKittiPoses(const std::string& path,
                      const std::vector<Eigen::Isometry3d>& poses,
                      std::string* error);

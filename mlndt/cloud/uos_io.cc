@@ -56,6 +56,11 @@ bool ParseUos3d(const std::string& data,
     }
     points->push_back(Convert3dtkPoint(point_3dtk));
   }
+  if (points->empty()) {
+    *error = data.empty() ? "empty file: no points"
+                          : "no points (only blank lines or the size header)";
+    return false;
+  }
   return true;
 }
 

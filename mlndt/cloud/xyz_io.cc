@@ -37,6 +37,11 @@ bool ParseXyzText(const std::string& data,
     }
     points->push_back(point);
   }
+  if (points->empty()) {
+    *error = data.empty() ? "empty file: no points"
+                          : "no points (only blank or '#' comment lines)";
+    return false;
+  }
   return true;
 }
 

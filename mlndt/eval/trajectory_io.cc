@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/internal/cloud_readers.h"
 
@@ -24,7 +25,7 @@ constexpr int kTumNumbers = 8;
 bool WriteTextFile(const std::string& path,
                    const std::string& text,
                    std::string* error) {
-  return internal::WriteFileAtomically(path, text, error);
+  return WriteFileAtomically(path, text, error);
 }
 
 bool IsCommentOrBlank(std::string_view line) {

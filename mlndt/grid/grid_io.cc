@@ -1,10 +1,17 @@
 #include "mlndt/grid/grid_io.h"
 
-#include <cstdio>
+#include <glog/logging.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
-#include <type_traits>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "mlndt/common/atomic_file.h"
+#include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace {
@@ -12,42 +19,101 @@ namespace {
 constexpr char kMagic[8] = {'M', 'L', 'N', 'D', 'T', 'M', 'A', 'P'};
 constexpr uint32_t kVersion = 1;
 
-uint64_t Fnv1a(const std::string& bytes) {
+// Byte counts of the fixed parts (grid_io.h).
+constexpr size_t kHeaderBytes = 8 + 4 + 3 * 4 + 2 * 8 + 6 * 8 + 8;  // 96
+constexpr size_t kLayerHeaderBytes = 3 * 8 + 8 + 3 * 4 + 8;         // 52
+constexpr size_t kCellBytes = 8 + 4 + 3 * 8 + 6 * 8;                // 84
+constexpr size_t kChecksumBytes = 8;
+static_assert(kHeaderBytes == 96 && kLayerHeaderBytes == 52 && kCellBytes == 84,
+              "the layout documented in grid_io.h");
+
+// Limits a map must respect (grid_io.h).
+constexpr int kMaxLayers = 16;
+constexpr int32_t kMaxDimsPerAxis = 1000000;
+constexpr int64_t kMaxDenseIndexCells = 3 * CellIndex::kMaxDenseCells;
+
+uint64_t Fnv1a(const char* bytes, size_t size) {
   uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : bytes) {
-    hash ^= c;
+  for (size_t i = 0; i < size; ++i) {
+    hash ^= static_cast<unsigned char>(bytes[i]);
     hash *= 1099511628211ull;
   }
   return hash;
 }
 
+// Appends fields in little-endian byte order, whatever the host's.
 class Writer {
  public:
-  template <typename T>
-  void Put(const T& value) {
-    static_assert(std::is_trivially_copyable<T>::value, "plain data only");
-    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
+  void Raw(const char* bytes, size_t size) { bytes_.append(bytes, size); }
+  void U32(uint32_t value) { Unsigned(value, 4); }
+  void I32(int32_t value) { Unsigned(static_cast<uint32_t>(value), 4); }
+  void U64(uint64_t value) { Unsigned(value, 8); }
+  void I64(int64_t value) { Unsigned(static_cast<uint64_t>(value), 8); }
+  // IEEE 754 binary64, the bits in little-endian order.
+  void F64(double value) {
+    uint64_t bits;
+    std::memcpy(&bits, &value, sizeof(bits));
+    Unsigned(bits, 8);
   }
-  std::string* bytes() { return &bytes_; }
+  const std::string& bytes() const { return bytes_; }
 
  private:
+  void Unsigned(uint64_t value, int size) {
+    for (int i = 0; i < size; ++i) {
+      bytes_.push_back(static_cast<char>((value >> (8 * i)) & 0xff));
+    }
+  }
   std::string bytes_;
 };
 
+// Reads little-endian fields from [data, data + size); every getter returns
+// false (and reads nothing) when fewer bytes are left than it needs.
 class Reader {
  public:
-  explicit Reader(const std::string& bytes) : bytes_(bytes) {}
-  template <typename T>
-  bool Get(T* value) {
-    if (bytes_.size() - offset_ < sizeof(T)) return false;
-    std::memcpy(value, bytes_.data() + offset_, sizeof(T));
-    offset_ += sizeof(T);
+  Reader(const char* data, size_t size) : data_(data), size_(size) {}
+  bool U32(uint32_t* value) {
+    uint64_t v;
+    if (!Unsigned(4, &v)) return false;
+    *value = static_cast<uint32_t>(v);
     return true;
   }
-  size_t remaining() const { return bytes_.size() - offset_; }
+  bool I32(int32_t* value) {
+    uint32_t v;
+    if (!U32(&v)) return false;
+    *value = static_cast<int32_t>(v);
+    return true;
+  }
+  bool U64(uint64_t* value) { return Unsigned(8, value); }
+  bool I64(int64_t* value) {
+    uint64_t v;
+    if (!Unsigned(8, &v)) return false;
+    *value = static_cast<int64_t>(v);
+    return true;
+  }
+  bool F64(double* value) {
+    uint64_t bits;
+    if (!Unsigned(8, &bits)) return false;
+    std::memcpy(value, &bits, sizeof(bits));
+    return true;
+  }
+  // Skips `bytes`; false when fewer are left.
+  bool Skip(uint64_t bytes) {
+    if (remaining() < bytes) return false;
+    offset_ += static_cast<size_t>(bytes);
+    return true;
+  }
+  size_t remaining() const { return size_ - offset_; }
 
  private:
-  const std::string& bytes_;
+  bool Unsigned(int size, uint64_t* value) {
+    if (remaining() < static_cast<size_t>(size)) return false;
+    *value =
+        internal::LoadUnsigned(data_ + offset_, size, /*big_endian=*/false);
+    offset_ += static_cast<size_t>(size);
+    return true;
+  }
+  const char* data_;
+  size_t size_;
   size_t offset_ = 0;
 };
 
@@ -58,179 +124,328 @@ bool Fail(const std::string& path,
   return false;
 }
 
+std::string Str(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// One layer's header as read, checked against the map header and the bytes
+// left before anything is allocated for it.
+struct LayerHeader {
+  Eigen::Vector3d origin;
+  double cell_size = 0.0;
+  Eigen::Vector3i dims;
+  uint64_t num_cells = 0;
+  int64_t grid_cells = 0;
+};
+
+bool CheckLayerHeader(const LayerHeader& h,
+                      const Eigen::AlignedBox3d& bounds,
+                      double coarser_cell_size,
+                      size_t bytes_left,
+                      std::string* problem) {
+  if (!h.origin.allFinite() || !std::isfinite(h.cell_size) ||
+      !(h.cell_size > 0.0)) {
+    *problem = "origin or cell size not finite and positive";
+    return false;
+  }
+  if ((h.dims.array() < 1).any() || (h.dims.array() > kMaxDimsPerAxis).any()) {
+    *problem = "dims outside 1.." + std::to_string(kMaxDimsPerAxis);
+    return false;
+  }
+  if (coarser_cell_size > 0.0 && !(h.cell_size < coarser_cell_size)) {
+    *problem = "cell size " + Str(h.cell_size) +
+               " m is not smaller than the coarser layer's " +
+               Str(coarser_cell_size) + " m";
+    return false;
+  }
+  // The grid covers the bounding box from its min corner with at most one
+  // spare cell per axis (LayeredGrid::Build: origin = min corner, dims =
+  // floor(extent / cell size) + 1).
+  const Eigen::Vector3d extent = bounds.sizes();
+  for (int a = 0; a < 3; ++a) {
+    const double slack =
+        1e-6 * (std::abs(bounds.min()(a)) + extent(a) + h.cell_size);
+    const double covered = h.dims(a) * h.cell_size;
+    if (std::abs(h.origin(a) - bounds.min()(a)) > slack ||
+        covered < extent(a) - slack ||
+        (h.dims(a) - 2) * h.cell_size > extent(a) + slack) {
+      *problem = "dims " + std::to_string(h.dims(a)) + " of " +
+                 Str(h.cell_size) + " m cells on axis " + std::to_string(a) +
+                 " do not fit the " + Str(extent(a)) + " m bounding box";
+      return false;
+    }
+  }
+  if (h.num_cells > static_cast<uint64_t>(h.grid_cells)) {
+    *problem = std::to_string(h.num_cells) + " cells in a grid of " +
+               std::to_string(h.grid_cells) + " cells";
+    return false;
+  }
+  if (h.num_cells > bytes_left / kCellBytes) {
+    *problem = std::to_string(h.num_cells) + " cells need " +
+               std::to_string(h.num_cells) + " * " +
+               std::to_string(kCellBytes) + " bytes, the file has " +
+               std::to_string(bytes_left) + " left";
+    return false;
+  }
+  return true;
+}
+
+// The mean of a cell's points lies in the cell (up to rounding: a
+// thousandth of the cell edge).
+bool MeanInsideCell(const LayerHeader& h,
+                    int64_t key,
+                    const Eigen::Vector3d& mean) {
+  const int64_t ijk[3] = {key % h.dims.x(),
+                          key / h.dims.x() % h.dims.y(),
+                          key / (int64_t{h.dims.x()} * h.dims.y())};
+  const double slack = 1e-3 * h.cell_size;
+  for (int a = 0; a < 3; ++a) {
+    const double low = h.origin(a) + static_cast<double>(ijk[a]) * h.cell_size;
+    if (!(mean(a) >= low - slack && mean(a) <= low + h.cell_size + slack)) {
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 bool SaveLayeredGrid(const std::string& path,
                      const LayeredGrid& grid,
                      std::string* error) {
+  CHECK(error != nullptr);
   Writer w;
-  w.bytes()->append(kMagic, sizeof(kMagic));
-  w.Put(kVersion);
+  w.Raw(kMagic, sizeof(kMagic));
+  w.U32(kVersion);
   const LayeredGridOptions& o = grid.options();
-  w.Put(int32_t{o.division_constant});
-  w.Put(int32_t{grid.num_layers()});
-  w.Put(int32_t{o.min_points_per_cell});
-  w.Put(o.regularization.min_eigenvalue_ratio);
-  w.Put(o.regularization.min_eigenvalue_m2);
-  for (int a = 0; a < 3; ++a) w.Put(grid.bounds().min()(a));
-  for (int a = 0; a < 3; ++a) w.Put(grid.bounds().max()(a));
-  w.Put(uint64_t{grid.num_points()});
+  w.I32(o.division_constant);
+  w.I32(grid.num_layers());
+  w.I32(o.min_points_per_cell);
+  w.F64(o.regularization.min_eigenvalue_ratio);
+  w.F64(o.regularization.min_eigenvalue_m2);
+  for (int a = 0; a < 3; ++a) w.F64(grid.bounds().min()(a));
+  for (int a = 0; a < 3; ++a) w.F64(grid.bounds().max()(a));
+  w.U64(grid.num_points());
   for (int i = 1; i <= grid.num_layers(); ++i) {
     const NdtLayer& layer = grid.layer(i);
-    for (int a = 0; a < 3; ++a) w.Put(layer.origin()(a));
-    w.Put(layer.cell_size());
-    for (int a = 0; a < 3; ++a) w.Put(int32_t{layer.dims()(a)});
-    w.Put(uint64_t{layer.cells().size()});
+    for (int a = 0; a < 3; ++a) w.F64(layer.origin()(a));
+    w.F64(layer.cell_size());
+    for (int a = 0; a < 3; ++a) w.I32(layer.dims()(a));
+    w.U64(layer.cells().size());
     for (size_t c = 0; c < layer.cells().size(); ++c) {
       const NdtCell& cell = layer.cells()[c];
-      w.Put(int64_t{layer.keys()[c]});
-      w.Put(int32_t{cell.count});
-      for (int a = 0; a < 3; ++a) w.Put(cell.mean(a));
+      w.I64(layer.keys()[c]);
+      w.I32(cell.count);
+      for (int a = 0; a < 3; ++a) w.F64(cell.mean(a));
       for (int r = 0; r < 3; ++r) {
-        for (int s = r; s < 3; ++s) w.Put(cell.covariance(r, s));
+        for (int s = r; s < 3; ++s) w.F64(cell.covariance(r, s));
       }
     }
   }
-  w.Put(Fnv1a(*w.bytes()));
-
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) return Fail(path, "cannot open for writing", error);
-    out.write(w.bytes()->data(),
-              static_cast<std::streamsize>(w.bytes()->size()));
-    if (!out) {
-      std::remove(temporary.c_str());
-      return Fail(path, "write failed", error);
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    return Fail(path, "cannot rename the temporary file into place", error);
-  }
-  return true;
+  w.U64(Fnv1a(w.bytes().data(), w.bytes().size()));
+  return WriteFileAtomically(path, w.bytes(), error);
 }
 
 bool LoadLayeredGrid(const std::string& path,
                      LayeredGrid* grid,
                      std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return Fail(
-        path, "cannot open the map file (missing or unreadable)", error);
-  const std::string bytes((std::istreambuf_iterator<char>(in)),
-                          std::istreambuf_iterator<char>());
+  CHECK(grid != nullptr);
+  CHECK(error != nullptr);
+  std::string bytes;
+  if (!internal::ReadFileToString(path, &bytes, error)) return false;
   if (bytes.size() < sizeof(kMagic) ||
       std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
     return Fail(path, "not an mlndt map file (bad magic)", error);
   }
-  if (bytes.size() < sizeof(kMagic) + sizeof(uint32_t) + sizeof(uint64_t)) {
+  if (bytes.size() < sizeof(kMagic) + 4 + kChecksumBytes) {
     return Fail(path, "truncated map file", error);
   }
-  const std::string body = bytes.substr(0, bytes.size() - sizeof(uint64_t));
-  uint64_t stored_checksum = 0;
-  std::memcpy(&stored_checksum, bytes.data() + body.size(), sizeof(uint64_t));
-
-  Reader r(body);
-  char magic[8];
-  for (char& c : magic) r.Get(&c);
+  const size_t body_size = bytes.size() - kChecksumBytes;
+  Reader r(bytes.data() + sizeof(kMagic), body_size - sizeof(kMagic));
   uint32_t version = 0;
-  r.Get(&version);
+  r.U32(&version);
   if (version != kVersion) {
     return Fail(path,
                 "unsupported map version " + std::to_string(version) +
                     " (this build reads " + std::to_string(kVersion) + ")",
                 error);
   }
-  if (Fnv1a(body) != stored_checksum) {
+  const uint64_t stored_checksum = internal::LoadUnsigned(
+      bytes.data() + body_size, kChecksumBytes, /*big_endian=*/false);
+  if (Fnv1a(bytes.data(), body_size) != stored_checksum) {
     return Fail(
         path, "checksum mismatch: the map file is corrupt or truncated", error);
   }
-  // The file stores n itself, not the finest cell it was derived from.
+
+  // Map header. The file stores n itself, not the finest cell it was
+  // derived from.
   LayeredGridOptions options = PaperLayeredGridOptions();
   int32_t q = 0, n = 0, min_points = 0;
   CellRegularization& regularization = options.regularization;
   Eigen::Vector3d lo, hi;
   uint64_t num_points = 0;
-  bool ok = r.Get(&q) && r.Get(&n) && r.Get(&min_points) &&
-            r.Get(&regularization.min_eigenvalue_ratio) &&
-            r.Get(&regularization.min_eigenvalue_m2);
-  for (int a = 0; a < 3; ++a) ok = ok && r.Get(&lo(a));
-  for (int a = 0; a < 3; ++a) ok = ok && r.Get(&hi(a));
-  ok = ok && r.Get(&num_points);
+  bool ok = r.I32(&q) && r.I32(&n) && r.I32(&min_points) &&
+            r.F64(&regularization.min_eigenvalue_ratio) &&
+            r.F64(&regularization.min_eigenvalue_m2);
+  for (int a = 0; a < 3; ++a) ok = ok && r.F64(&lo(a));
+  for (int a = 0; a < 3; ++a) ok = ok && r.F64(&hi(a));
+  ok = ok && r.U64(&num_points);
+  if (!ok) return Fail(path, "truncated map header", error);
+  if (n < 1 || n > kMaxLayers) {
+    return Fail(path,
+                "bad map header: " + std::to_string(n) + " layers (1 to " +
+                    std::to_string(kMaxLayers) + " allowed)",
+                error);
+  }
   options.division_constant = q;
   options.num_layers = n;
-  options.max_num_layers = 16;
+  options.max_num_layers = kMaxLayers;
   options.min_points_per_cell = min_points;
   std::string option_error;
-  if (!ok || !options.IsValid(&option_error)) {
-    return Fail(path, "bad map header " + option_error, error);
+  if (!options.IsValid(&option_error)) {
+    return Fail(path, "bad map header: " + option_error, error);
+  }
+  if (!lo.allFinite() || !hi.allFinite() || (lo.array() > hi.array()).any()) {
+    return Fail(
+        path, "bad map header: bounding box not finite or inverted", error);
+  }
+  if (r.remaining() / kLayerHeaderBytes < static_cast<size_t>(n)) {
+    return Fail(path,
+                "truncated map file: " + std::to_string(n) +
+                    " layers need at least " +
+                    std::to_string(n * kLayerHeaderBytes) + " bytes, " +
+                    std::to_string(r.remaining()) + " left",
+                error);
+  }
+  const Eigen::AlignedBox3d bounds(lo, hi);
+
+  // Pass 1: every layer header, checked, before anything is allocated (the
+  // cells of each layer are skipped; their bytes were checked to exist).
+  const Reader cells_start = r;
+  std::vector<LayerHeader> headers(static_cast<size_t>(n));
+  double coarser_cell_size = 0.0;
+  int64_t dense_index_cells = 0;
+  for (int i = 1; i <= n; ++i) {
+    const std::string layer_tag = "layer " + std::to_string(i);
+    LayerHeader& h = headers[static_cast<size_t>(i - 1)];
+    for (int a = 0; a < 3; ++a) ok = ok && r.F64(&h.origin(a));
+    ok = ok && r.F64(&h.cell_size);
+    for (int a = 0; a < 3; ++a) ok = ok && r.I32(&h.dims(a));
+    ok = ok && r.U64(&h.num_cells);
+    if (!ok) return Fail(path, "truncated header of " + layer_tag, error);
+    std::string problem;
+    h.grid_cells = 0;
+    if ((h.dims.array() >= 1).all() &&
+        (h.dims.array() <= kMaxDimsPerAxis).all()) {
+      h.grid_cells = int64_t{h.dims.x()} * h.dims.y() * h.dims.z();
+    }
+    if (!CheckLayerHeader(
+            h, bounds, coarser_cell_size, r.remaining(), &problem)) {
+      return Fail(path, "bad header of " + layer_tag + ": " + problem, error);
+    }
+    // Layers of at most CellIndex::kMaxDenseCells grid cells get a dense
+    // index of 4 bytes a grid cell when built (ndt_layer.h); bound the sum.
+    if (h.grid_cells <= CellIndex::kMaxDenseCells) {
+      dense_index_cells += h.grid_cells;
+      if (dense_index_cells > kMaxDenseIndexCells) {
+        return Fail(path,
+                    "bad header of " + layer_tag +
+                        ": the dense cell index of the layers so far would "
+                        "take " +
+                        std::to_string(dense_index_cells * 4 / (1 << 20)) +
+                        " MiB (at most " +
+                        std::to_string(kMaxDenseIndexCells * 4 / (1 << 20)) +
+                        " MiB allowed)",
+                    error);
+      }
+    }
+    coarser_cell_size = h.cell_size;
+    r.Skip(h.num_cells * kCellBytes);  // Cannot fail: checked above.
+  }
+  if (r.remaining() != 0) {
+    return Fail(
+        path,
+        std::to_string(r.remaining()) + " trailing bytes after the last layer",
+        error);
   }
 
+  // Pass 2: the cells.
+  r = cells_start;
   std::vector<NdtLayer> layers;
   std::vector<LayerInfo> info;
   for (int i = 1; i <= n; ++i) {
-    Eigen::Vector3d origin;
-    double cell_size = 0;
-    Eigen::Vector3i dims;
-    uint64_t num_cells = 0;
-    for (int a = 0; a < 3; ++a) ok = ok && r.Get(&origin(a));
-    ok = ok && r.Get(&cell_size);
-    for (int a = 0; a < 3; ++a) ok = ok && r.Get(&dims(a));
-    ok = ok && r.Get(&num_cells);
-    constexpr size_t kCellBytes =
-        sizeof(int64_t) + sizeof(int32_t) + 9 * sizeof(double);
-    if (!ok || !origin.allFinite() || !(cell_size > 0) ||
-        (dims.array() < 1).any() || (dims.array() > 1000000).any() ||
-        num_cells > r.remaining() / kCellBytes) {
-      return Fail(path, "bad header of layer " + std::to_string(i), error);
-    }
-    const int64_t grid_cells = int64_t{dims.x()} * dims.y() * dims.z();
+    const std::string layer_tag = "layer " + std::to_string(i);
+    const LayerHeader& h = headers[static_cast<size_t>(i - 1)];
+    r.Skip(kLayerHeaderBytes);
+    // Cells: bounded by the bytes of the file (checked in pass 1).
     std::vector<NdtCell> cells;
     std::vector<int64_t> keys;
-    CellIndex seen(grid_cells);
-    for (uint64_t c = 0; c < num_cells; ++c) {
+    cells.reserve(h.num_cells);
+    keys.reserve(h.num_cells);
+    uint64_t points_in_cells = 0;
+    for (uint64_t c = 0; c < h.num_cells; ++c) {
       int64_t key = 0;
       int32_t count = 0;
       Eigen::Vector3d mean;
       Eigen::Matrix3d covariance;
-      ok = r.Get(&key) && r.Get(&count);
-      for (int a = 0; a < 3; ++a) ok = ok && r.Get(&mean(a));
+      ok = r.I64(&key) && r.I32(&count);
+      for (int a = 0; a < 3; ++a) ok = ok && r.F64(&mean(a));
       for (int a = 0; a < 3; ++a) {
         for (int b = a; b < 3; ++b) {
-          ok = ok && r.Get(&covariance(a, b));
+          ok = ok && r.F64(&covariance(a, b));
           covariance(b, a) = covariance(a, b);
         }
       }
+      points_in_cells += count > 0 ? static_cast<uint64_t>(count) : 0;
       NdtCell cell;
-      if (!ok || key < 0 || key >= grid_cells ||
-          seen.FindOrInsert(key, static_cast<int32_t>(c)) !=
-              static_cast<int32_t>(c) ||
-          !MakeNdtCell(count, mean, covariance, regularization, &cell)) {
-        return Fail(
-            path,
-            "bad cell " + std::to_string(c) + " in layer " + std::to_string(i),
-            error);
+      std::string cell_problem;
+      if (!ok) {
+        cell_problem = "truncated";
+      } else if (key < 0 || key >= h.grid_cells) {
+        cell_problem = "key " + std::to_string(key) + " outside the grid";
+      } else if (count < 1) {
+        cell_problem = "point count " + std::to_string(count);
+      } else if (points_in_cells > num_points) {
+        cell_problem = "the cells hold more points than the map's " +
+                       std::to_string(num_points) + " points";
+      } else if (!MeanInsideCell(h, key, mean)) {
+        cell_problem = "mean outside its cell";
+      } else if (!MakeNdtCell(count, mean, covariance, regularization, &cell)) {
+        cell_problem = "no usable mean and covariance";
+      }
+      if (!cell_problem.empty()) {
+        return Fail(path,
+                    "bad cell " + std::to_string(c) + " in " + layer_tag +
+                        ": " + cell_problem,
+                    error);
       }
       cells.push_back(cell);
       keys.push_back(key);
     }
+    // Unique keys (NdtLayer CHECKs it); sorting a copy costs 8 bytes a cell,
+    // not a table over the whole grid.
+    std::vector<int64_t> sorted = keys;
+    std::sort(sorted.begin(), sorted.end());
+    const auto duplicate = std::adjacent_find(sorted.begin(), sorted.end());
+    if (duplicate != sorted.end()) {
+      return Fail(path,
+                  "bad cells in " + layer_tag + ": key " +
+                      std::to_string(*duplicate) + " appears twice",
+                  error);
+    }
     LayerInfo layer_info;
     layer_info.layer = i;
-    layer_info.cell_size_m = cell_size;
-    layer_info.dims = dims;
+    layer_info.cell_size_m = h.cell_size;
+    layer_info.dims = h.dims;
     layer_info.occupied_cells = cells.size();
     info.push_back(layer_info);
     layers.emplace_back(
-        origin, cell_size, dims, std::move(cells), std::move(keys));
+        h.origin, h.cell_size, h.dims, std::move(cells), std::move(keys));
   }
-  if (r.remaining() != 0)
-    return Fail(path, "trailing bytes after the last layer", error);
-  *grid = LayeredGrid(options,
-                      Eigen::AlignedBox3d(lo, hi),
-                      num_points,
-                      std::move(layers),
-                      std::move(info));
+  *grid = LayeredGrid(
+      options, bounds, num_points, std::move(layers), std::move(info));
   return true;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 
 // Internals of the cloud and pose file I/O (mlndt/cloud/io.h, pose_io.h):
-// one parser per format, the two encoders, whole-file read / atomic write,
-// and the small text and byte helpers the parsers share. Not public API.
+// one parser per format, the two encoders, whole-file reads (writes go
+// through mlndt/common/atomic_file.h) and the small text and byte helpers
+// the parsers share. Not public API.
 //
 // Parser contract: `data` is the whole file. The parser appends every point of
 // the file, in file order and in metres, to *points (non-finite ones too: the
@@ -61,12 +62,6 @@ std::string EncodePlyBinary(const PointCloud& cloud);
 bool ReadFileToString(const std::string& path,
                       std::string* data,
                       std::string* error);
-// Writes `bytes` to a new file next to `path`, flushes it to disk and renames
-// it onto `path`, so readers never see a half-written file. On failure the
-// temporary file is removed, `path` is untouched and *error names `path`.
-bool WriteFileAtomically(const std::string& path,
-                         const std::string& bytes,
-                         std::string* error);
 
 // ---- Text helpers. ----------------------------------------------------------
 

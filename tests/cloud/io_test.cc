@@ -1,6 +1,9 @@
 #include "mlndt/cloud/io.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +15,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/testing/small_file_system.h"
 
 namespace mlndt {
 namespace {
@@ -227,7 +232,9 @@ TEST(WritePointCloud, ReplacesExistingFileAndLeavesNoTemporaryFile) {
   int files = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(::testing::TempDir())) {
-    if (entry.path().filename().string().rfind(prefix, 0) == 0) ++files;
+    // Temporary files are ".<name>.tmp.XXXXXX" (atomic_file.h).
+    if (entry.path().filename().string().find(prefix) != std::string::npos)
+      ++files;
   }
   EXPECT_EQ(files, 1);
 }
@@ -272,9 +279,107 @@ TEST(WritePointCloud, FailedRenameRemovesTemporaryFileAndKeepsTarget) {
       std::filesystem::path(path).filename().string() + ".tmp";
   for (const auto& entry :
        std::filesystem::directory_iterator(::testing::TempDir())) {
-    EXPECT_NE(entry.path().filename().string().rfind(prefix, 0), 0u)
+    EXPECT_EQ(entry.path().filename().string().find(prefix), std::string::npos)
         << entry.path();
   }
+}
+
+// ---- Atomic writes: special targets, file modes, a full disk ---------------
+
+// A fresh, empty folder for one test.
+std::string FreshFolder(const std::string& name) {
+  const std::string path = TempPath(name);
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path);
+  return path;
+}
+
+std::vector<std::string> FolderEntries(const std::string& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+mode_t CurrentUmask() {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return mask;
+}
+
+TEST(WritePointCloud, RefusesSymlinkFifoAndDeviceTargetsAndLeavesThemAlone) {
+  const std::string folder = FreshFolder("special");
+  const std::string victim = folder + "/victim.pcd";
+  std::ofstream(victim) << "victim";
+  const std::string link = folder + "/link.pcd";
+  ASSERT_EQ(::symlink(victim.c_str(), link.c_str()), 0);
+  const std::string fifo = folder + "/fifo.pcd";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  // A copy of /dev/null (needs root; otherwise that case is left out).
+  const std::string device = folder + "/device.ply";
+  const bool have_device =
+      ::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0;
+
+  std::string error;
+  EXPECT_FALSE(WritePointCloud(link, PointCloud(kPoints), &error));
+  EXPECT_TRUE(Contains(error, link));
+  EXPECT_TRUE(Contains(error, "symbolic link"));
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(ReadBytes(victim), "victim");
+
+  EXPECT_FALSE(WritePointCloud(fifo, PointCloud(kPoints), &error));
+  EXPECT_TRUE(Contains(error, fifo));
+  EXPECT_TRUE(Contains(error, "FIFO"));
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+
+  if (have_device) {
+    EXPECT_FALSE(WritePointCloud(device, PointCloud(kPoints), &error));
+    EXPECT_TRUE(Contains(error, device));
+    EXPECT_TRUE(Contains(error, "device"));
+    EXPECT_TRUE(std::filesystem::is_character_file(device));
+  }
+  std::vector<std::string> expected = {"fifo.pcd", "link.pcd", "victim.pcd"};
+  if (have_device) expected.insert(expected.begin(), "device.ply");
+  EXPECT_EQ(FolderEntries(folder), expected);  // No temporary file left.
+}
+
+TEST(WritePointCloud, ReplacingKeepsTheFileModeAndNewFilesGet0644) {
+  const std::string folder = FreshFolder("mode");
+  const std::string path = folder + "/private.pcd";
+  std::string error;
+  ASSERT_TRUE(WritePointCloud(path, PointCloud(kPoints), &error)) << error;
+  struct stat status;
+  ASSERT_EQ(::stat(path.c_str(), &status), 0);
+  EXPECT_EQ(status.st_mode & 07777, 0644 & ~CurrentUmask());
+
+  ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
+  ASSERT_TRUE(WritePointCloud(path, PointCloud(), &error)) << error;
+  ASSERT_EQ(::stat(path.c_str(), &status), 0);
+  EXPECT_EQ(status.st_mode & 07777, 0600u);
+  EXPECT_TRUE(ReadOk(path).empty());
+}
+
+TEST(WritePointCloud, FullFileSystemKeepsThePreviousFile) {
+  testing::SmallFileSystem fs;
+  MLNDT_MOUNT_SMALL_FS_OR_SKIP(fs, 64 * 1024);
+  const size_t free_at_start = fs.FreeBytes();
+  for (const char* name : {"cloud.pcd", "cloud.ply"}) {
+    const std::string path = fs.path() + "/" + name;
+    std::string error;
+    ASSERT_TRUE(WritePointCloud(path, PointCloud(kPoints), &error)) << error;
+    const std::string before = ReadBytes(path);
+    // 20000 points = 240 kB of float32 data: far more than the 64 kB disk.
+    std::vector<Eigen::Vector3d> many(20000, Eigen::Vector3d(1, 2, 3));
+    EXPECT_FALSE(WritePointCloud(path, PointCloud(many), &error));
+    EXPECT_TRUE(Contains(error, path)) << error;
+    EXPECT_TRUE(Contains(error, std::strerror(ENOSPC))) << error;
+    EXPECT_EQ(ReadBytes(path), before) << name;
+    EXPECT_EQ(FolderEntries(fs.path()), std::vector<std::string>{name});
+    ASSERT_EQ(::unlink(path.c_str()), 0);
+  }
+  EXPECT_EQ(fs.FreeBytes(), free_at_start);  // Nothing leaked.
 }
 
 // ---- PCD --------------------------------------------------------------------
@@ -454,6 +559,26 @@ TEST(ReadPcd, BinaryCompressedDropsNaN) {
 
 // ---- PCD errors
 // ---------------------------------------------------------------
+
+// A header that declares 0 points is a valid, empty cloud (WritePointCloud
+// writes such files for an empty cloud); 0 bytes is not a PCD/PLY file.
+TEST(ReadPcd, HeaderWithZeroPointsIsAnEmptyCloud) {
+  for (const char* data : {"ascii", "binary"}) {
+    ReadCloudInfo info;
+    EXPECT_TRUE(
+        ReadOk(WriteFile(
+                   std::string("zero_") + data + ".pcd",
+                   PcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 0, 1, data)),
+               &info)
+            .empty());
+    EXPECT_EQ(info.points_in_file, 0u);
+  }
+  EXPECT_TRUE(ReadOk(WriteFile("zero.ply",
+                               "ply\nformat ascii 1.0\nelement vertex 0\n"
+                               "property float x\nproperty float y\n"
+                               "property float z\nend_header\n"))
+                  .empty());
+}
 
 TEST(ReadPcdErrors, EmptyFile) {
   ExpectReadFails(WriteFile("empty.pcd", ""), "empty file");
@@ -967,8 +1092,8 @@ TEST(ReadKittiBin, RecordsOfFourFloats) {
   EXPECT_EQ(info.dropped_non_finite, 1u);
 }
 
-TEST(ReadKittiBin, EmptyFileIsAnEmptyCloud) {
-  EXPECT_TRUE(ReadOk(WriteFile("empty.bin", "")).empty());
+TEST(ReadKittiBinErrors, EmptyFileHasNoPoints) {
+  ExpectReadFails(WriteFile("empty.bin", ""), "no points");
 }
 
 TEST(ReadKittiBinErrors, SizeNotMultipleOf16) {
@@ -1009,6 +1134,12 @@ TEST(ReadUos3dErrors, UnparsableLineNamesLineNumber) {
                   "line 2: cannot parse point");
 }
 
+TEST(ReadUos3dErrors, FilesWithoutPointsFail) {
+  for (const char* text : {"", "\n", "1200 x 68\n"}) {
+    ExpectReadFails(WriteFile("empty.3d", text), "no points");
+  }
+}
+
 // ---- Plain xyz text
 // -----------------------------------------------------------
 
@@ -1029,6 +1160,13 @@ TEST(ReadXyz, WhitespaceCommasCommentsAndExtraColumns) {
   EXPECT_EQ(info.points_in_file, 4u);
   EXPECT_EQ(info.dropped_non_finite, 1u);
   EXPECT_EQ(ReadOk(WriteFile("points.txt", text)).size(), 3u);
+}
+
+TEST(ReadXyzErrors, FilesWithoutPointsFail) {
+  for (const char* text : {"", "\n\n", "# x y z\n# nothing else\n"}) {
+    ExpectReadFails(WriteFile("empty.xyz", text), "no points");
+    ExpectReadFails(WriteFile("empty.txt", text), "no points");
+  }
 }
 
 TEST(ReadXyzErrors, UnparsableLineNamesLineNumber) {

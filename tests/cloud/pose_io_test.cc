@@ -1,12 +1,20 @@
 #include "mlndt/cloud/pose_io.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
 #include <vector>
+
+#include "tests/testing/small_file_system.h"
 
 namespace mlndt {
 namespace {
@@ -76,6 +84,56 @@ TEST(WriteKittiPoses, RoundTripIsExact) {
   for (size_t i = 0; i < poses.size(); ++i) {
     EXPECT_EQ(read[i].matrix(), poses[i].matrix()) << "pose " << i;
   }
+}
+
+TEST(WriteKittiPoses, RefusesASymlinkAndKeepsItsTarget) {
+  const std::string victim = WriteFile("victim.txt", "victim");
+  const std::string link = TempPath("link.txt");
+  std::remove(link.c_str());
+  ASSERT_EQ(::symlink(victim.c_str(), link.c_str()), 0);
+  std::string error;
+  EXPECT_FALSE(WriteKittiPoses(
+      link,
+      std::vector<Eigen::Isometry3d>(2, Eigen::Isometry3d::Identity()),
+      &error));
+  EXPECT_TRUE(Contains(error, link));
+  EXPECT_TRUE(Contains(error, "symbolic link"));
+  struct stat status;
+  ASSERT_EQ(::lstat(link.c_str(), &status), 0);
+  EXPECT_TRUE(S_ISLNK(status.st_mode));
+  std::ifstream in(victim);
+  std::string text((std::istreambuf_iterator<char>(in)),
+                   std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "victim");
+}
+
+TEST(WriteKittiPoses, FullFileSystemKeepsThePreviousFile) {
+  testing::SmallFileSystem fs;
+  MLNDT_MOUNT_SMALL_FS_OR_SKIP(fs, 64 * 1024);
+  const std::string path = fs.path() + "/trajectory.txt";
+  std::string error;
+  ASSERT_TRUE(WriteKittiPoses(
+      path,
+      std::vector<Eigen::Isometry3d>(3, Eigen::Isometry3d::Identity()),
+      &error))
+      << error;
+  std::vector<Eigen::Isometry3d> read;
+  ASSERT_TRUE(ReadKittiPoses(path, &read, &error)) << error;
+  // 2000 poses of 12 numbers with 17 digits: about 500 kB.
+  Eigen::Isometry3d odd = Eigen::Isometry3d::Identity();
+  odd.translation() = Eigen::Vector3d(M_PI, M_E, -M_SQRT2);
+  EXPECT_FALSE(
+      WriteKittiPoses(path, std::vector<Eigen::Isometry3d>(2000, odd), &error));
+  EXPECT_TRUE(Contains(error, path));
+  EXPECT_TRUE(Contains(error, std::strerror(ENOSPC))) << error;
+  ASSERT_TRUE(ReadKittiPoses(path, &read, &error)) << error;
+  EXPECT_EQ(read.size(), 3u);
+  size_t entries = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(fs.path())) {
+    EXPECT_EQ(entry.path().filename(), "trajectory.txt");
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1u);
 }
 
 TEST(ReadKittiPosesErrors, MissingFile) {

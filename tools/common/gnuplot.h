@@ -6,8 +6,9 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
+
+#include "mlndt/common/atomic_file.h"
 
 namespace mlndt {
 namespace tools {
@@ -65,14 +66,7 @@ inline bool RunGnuplot(const std::string& gnuplot,
                        const std::string& script_path,
                        const std::string& script,
                        std::string* error) {
-  {
-    std::ofstream out(script_path);
-    out << script;
-    if (!out) {
-      *error = script_path + ": cannot write";
-      return false;
-    }
-  }
+  if (!WriteFileAtomically(script_path, script, error)) return false;
   const std::string log_path = script_path + ".log";
   const std::string command = ShellQuote(gnuplot) + " " +
                               ShellQuote(script_path) + " >" +

@@ -3,11 +3,12 @@
 // A minimal JSON writer for the tools' one-object outputs.
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "mlndt/common/atomic_file.h"
 
 namespace mlndt {
 namespace tools {
@@ -88,13 +89,7 @@ class JsonObject {
 inline bool WriteJsonFile(const std::string& path,
                           const std::string& json,
                           std::string* error) {
-  std::ofstream out(path);
-  out << json << "\n";
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, json + "\n", error);
 }
 
 }  // namespace tools

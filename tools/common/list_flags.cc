@@ -21,9 +21,14 @@ bool SplitList(const std::string& text, std::vector<std::string>* items) {
 
 bool ParseNumberList(const std::string& text, std::vector<double>* values) {
   values->clear();
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  if (text.empty()) return true;
+  size_t begin = 0;
+  while (true) {
+    const size_t comma = text.find(',', begin);
+    const std::string item = text.substr(
+        begin, comma == std::string::npos ? std::string::npos : comma - begin);
+    // An empty item: "1,,2", a leading or a trailing comma.
+    if (item.find_first_not_of(" \t") == std::string::npos) return false;
     try {
       size_t used = 0;
       const double v = std::stod(item, &used);
@@ -35,8 +40,9 @@ bool ParseNumberList(const std::string& text, std::vector<double>* values) {
     } catch (...) {
       return false;
     }
+    if (comma == std::string::npos) return true;
+    begin = comma + 1;
   }
-  return true;
 }
 
 bool ParseIntList(const std::string& text, std::vector<int>* values) {

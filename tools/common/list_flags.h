@@ -13,8 +13,10 @@ namespace tools {
 // item is empty (including a trailing comma).
 bool SplitList(const std::string& text, std::vector<std::string>* items);
 
-// Parses "a,b,c" into finite numbers; false when an item is not one. An
-// empty text is an empty list (callers that need items check for it).
+// Parses "a,b,c" into finite numbers; false when an item is not one,
+// including empty items ("1,,2", a leading or a trailing comma). Spaces
+// around a number are allowed. An empty text is an empty list (callers that
+// need items check for it).
 bool ParseNumberList(const std::string& text, std::vector<double>* values);
 
 // Parses "a,b,c" into integers (SplitList items); false on anything else.
