@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/cost/cell_match.h"
 
 namespace mlndt {
 
@@ -18,39 +20,71 @@ bool QualityCheckOptions::IsValid(std::string* error) const {
   return true;
 }
 
-ConstraintAnalysis AnalyseConstraints(const Matrix6d& hessian,
-                                      double rms_range_m,
-                                      double min_constraint_ratio) {
+ConstraintAnalysis AnalyseConstraints(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const Vector6d& reference_from_input_xi,
+    const ObjectiveOptions& objective,
+    double rms_range_m,
+    double min_constraint_ratio) {
   ConstraintAnalysis analysis;
-  Vector6d scale = Vector6d::Ones();
-  scale.tail<3>().setConstant(1.0 / std::max(rms_range_m, 1e-3));
-  const Matrix6d scaled = scale.asDiagonal() * hessian * scale.asDiagonal();
-  if (!scaled.allFinite()) return analysis;
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(
-      0.5 * (scaled + scaled.transpose()));
+  const Isometry3d pose = PoseVectorToIsometry(reference_from_input_xi);
+  const double inverse_lever = 1.0 / std::max(rms_range_m, 1e-3);
+  Matrix6d information = Matrix6d::Zero();
+  for (const Eigen::Vector3d& p : input_points) {
+    const Eigen::Vector3d turned = pose.linear() * p;  // R p.
+    const NdtCell* cell = MatchCell(
+        layer, turned + pose.translation(), objective.unmatched_policy);
+    if (cell == nullptr) continue;
+    // Row k of W is v_k^T / sqrt(lambda_k) (ndt_cell.h).
+    const Eigen::Vector3d inverse_variances =
+        cell->whitening.rowwise().squaredNorm();
+    const double largest_variance = 1.0 / inverse_variances.minCoeff();
+    for (int k = 0; k < 3; ++k) {
+      if (1.0 / inverse_variances(k) >= kThinCellDirection * largest_variance) {
+        continue;
+      }
+      const Eigen::Vector3d v = cell->whitening.row(k).transpose().normalized();
+      Vector6d row;
+      row << v, turned.cross(v) * inverse_lever;
+      information.selfadjointView<Eigen::Lower>().rankUpdate(row);
+    }
+  }
+  information = information.selfadjointView<Eigen::Lower>();
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(information);
   const Vector6d lambda = solver.eigenvalues();  // Ascending.
   const double largest = lambda(5);
-  if (!(largest > 0.0)) {
-    for (int i = 0; i < 6; ++i) {
-      analysis.degenerate_directions.push_back(solver.eigenvectors().col(i));
-    }
-    return analysis;
-  }
-  analysis.constraint_ratio = std::max(0.0, lambda(0)) / largest;
   for (int i = 0; i < 6; ++i) {
-    if (lambda(i) < min_constraint_ratio * largest) {
+    if (!(lambda(i) >= min_constraint_ratio * largest) || !(largest > 0.0)) {
       analysis.degenerate_directions.push_back(solver.eigenvectors().col(i));
     }
+  }
+  if (largest > 0.0) {
+    analysis.constraint_ratio = std::max(0.0, lambda(0)) / largest;
   }
   return analysis;
 }
 
+namespace {
+
+// To two decimals, without a "-0.00".
+Eigen::Vector3d Rounded(const Eigen::Vector3d& v) {
+  return ((v * 100.0).array().round() / 100.0 + 0.0).matrix();
+}
+
+}  // namespace
+
 std::string DescribeDirection(const Vector6d& direction) {
-  const Vector6d d = direction.normalized();
+  // A direction and its opposite are the same: show the largest component
+  // positive, and no "-0.00".
+  Vector6d d = direction.normalized();
+  Eigen::Index largest = 0;
+  d.cwiseAbs().maxCoeff(&largest);
+  if (d(largest) < 0.0) d = -d;
   const double translation = d.head<3>().norm();
   char text[160];
   if (translation >= d.tail<3>().norm()) {
-    const Eigen::Vector3d t = d.head<3>() / translation;
+    const Eigen::Vector3d t = Rounded(d.head<3>() / translation);
     std::snprintf(text,
                   sizeof(text),
                   "translation along (%.2f, %.2f, %.2f)",
@@ -58,10 +92,10 @@ std::string DescribeDirection(const Vector6d& direction) {
                   t.y(),
                   t.z());
   } else {
-    const Eigen::Vector3d r = d.tail<3>().normalized();
+    const Eigen::Vector3d r = Rounded(d.tail<3>().normalized());
     std::snprintf(text,
                   sizeof(text),
-                  "rotation about (%.2f, %.2f, %.2f) (alpha, beta, gamma)",
+                  "rotation about (%.2f, %.2f, %.2f)",
                   r.x(),
                   r.y(),
                   r.z());

@@ -9,15 +9,22 @@
 //    pose leaves most points far from their cells (docs/trust.md shows the
 //    measures of right and wrong results on the shared suite, and how the
 //    thresholds were chosen);
-//  - constraint: the Gauss-Newton Hessian, with rotations scaled to metres
-//    at the points' RMS range, constrains every direction; a plane or a
-//    corridor leaves directions along which the pose slides.
+//  - constraint: the surfaces the points lie on constrain every direction of
+//    the pose. Each matched point's cell contributes the directions it is
+//    thin in (its plane's normal, or the two across a line) as rows
+//    [v; (R p) x v / L] (point-to-plane, with rotations scaled to metres at
+//    the points' RMS range L); the Hessian itself does not tell, since the
+//    covariance regularisation gives every cell some in-plane information.
+//    A plane leaves its in-plane translations and the turn about its normal
+//    free, a corridor its length.
 
 #include <string>
 #include <vector>
 
 #include "mlndt/common/types.h"
 #include "mlndt/cost/fit_quality.h"
+#include "mlndt/cost/objective_options.h"
+#include "mlndt/grid/ndt_layer.h"
 
 namespace mlndt {
 
@@ -31,29 +38,38 @@ struct QualityCheckOptions {
   double min_inlier_fraction = 0.25;
   // LOW_QUALITY above this mean score per matched point. In (0, 1e6].
   double max_mean_score = 11.0;
-  // DEGENERATE when the weakest direction of the scaled Hessian carries less
-  // than this fraction of the strongest one's information. In [0, 1).
-  double min_constraint_ratio = 1e-3;
+  // DEGENERATE when the weakest direction of the pose gets less than this
+  // fraction of the strongest one's constraint (ConstraintAnalysis). In
+  // [0, 1).
+  double min_constraint_ratio = 0.01;
 
   bool IsValid(std::string* error) const;
 };
 
-// How well the pose is constrained (from the Hessian at the solution).
+// How well the pose is constrained at a solution.
 struct ConstraintAnalysis {
-  // lambda_min / lambda_max of S H S, S = diag(1, 1, 1, 1/L, 1/L, 1/L) with
-  // L the RMS range of the input points: 1 for an isotropic fit, 0 for a
-  // direction with no information.
+  // lambda_min / lambda_max of the sum of the rows above: 1 when every
+  // direction is constrained alike, 0 for a direction with no information.
   double constraint_ratio = 0.0;
-  // Unit directions of the pose vector (tx, ty, tz, alpha, beta, gamma;
-  // angles scaled as above) whose ratio is below the threshold.
+  // Unit directions (translation [m]; rotation vector scaled by L) whose
+  // eigenvalue is below min_constraint_ratio times the largest.
   std::vector<Vector6d> degenerate_directions;
 };
 
-// Analyses `hessian` (d2 score / d xi2) for input points of RMS range
-// `rms_range_m` (> 0).
-ConstraintAnalysis AnalyseConstraints(const Matrix6d& hessian,
-                                      double rms_range_m,
-                                      double min_constraint_ratio);
+// A cell direction counts as thin when its variance is below this fraction
+// of the cell's largest.
+constexpr double kThinCellDirection = 0.1;
+
+// Analyses the fit of `input_points` moved by xi onto `layer` (cells as the
+// objective's policy matches them); rotations about the input points' own
+// origin, scaled by `rms_range_m` (> 0).
+ConstraintAnalysis AnalyseConstraints(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const Vector6d& reference_from_input_xi,
+    const ObjectiveOptions& objective,
+    double rms_range_m,
+    double min_constraint_ratio);
 
 // CONVERGENCE/NO_CONVERGENCE stay when both checks pass; otherwise
 // LOW_QUALITY or DEGENERATE, with the reason in *message.

@@ -20,7 +20,10 @@ void Assess(const RegistrationOptions& options,
                                     options.objective,
                                     options.quality_check.inlier_gate);
   attempt->constraints =
-      AnalyseConstraints(evaluation.hessian,
+      AnalyseConstraints(problem.last(),
+                         problem.points,
+                         attempt->xi_local,
+                         options.objective,
                          problem.rms_range_m,
                          options.quality_check.min_constraint_ratio);
   attempt->verdict = CheckQuality(options.quality_check,

@@ -1,0 +1,108 @@
+// The initial guess: it must be rigid; with an uncertainty it picks the
+// start layer (the better the guess, the finer the start), and the result
+// is never worse than a last-layer run from the guess. On the bundled
+// koide3 pair against its five-peer reference.
+
+#include <gtest/gtest.h>
+
+#include "mlndt/cloud/io.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/eval/reference_pairs.h"
+#include "mlndt/registration/registration.h"
+#include "tests/testing/test_data.h"
+
+namespace mlndt {
+namespace {
+
+struct Koide3 {
+  PointCloud reference, input;
+  Isometry3d truth = Isometry3d::Identity();
+};
+
+const Koide3& Pair() {
+  static const Koide3* pair = [] {
+    auto* p = new Koide3;
+    std::string error;
+    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251370668.pcd"),
+                         &p->reference,
+                         nullptr,
+                         &error))
+        << error;
+    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251371071.pcd"),
+                         &p->input,
+                         nullptr,
+                         &error))
+        << error;
+    std::map<std::string, ReferencePair> references;
+    CHECK(ReadReferencePairs(
+        testing::BundledDataPath("koide3/reference_pairs.json"),
+        &references,
+        &error))
+        << error;
+    p->truth = references.at("251370668_251371071").reference_from_input;
+    return p;
+  }();
+  return *pair;
+}
+
+RegistrationSummary RegisterFrom(const Isometry3d& guess,
+                                 const RegistrationOptions& options) {
+  RegistrationSummary summary;
+  Register(options, Pair().reference, Pair().input, guess, &summary);
+  return summary;
+}
+
+TEST(InitialGuess, ANonRigidGuessIsRefused) {
+  Isometry3d reflection = Isometry3d::Identity();
+  reflection.linear() = Eigen::Vector3d(1, 1, -1).asDiagonal();
+  Isometry3d scaled = Isometry3d::Identity();
+  scaled.linear() *= 2.0;
+  Isometry3d sheared = Isometry3d::Identity();
+  sheared.linear()(0, 1) = 0.3;
+  for (const Isometry3d& guess : {reflection, scaled, sheared}) {
+    const RegistrationSummary s = RegisterFrom(guess, RegistrationOptions());
+    EXPECT_EQ(s.termination_type, TerminationType::FAILURE);
+    EXPECT_NE(s.message.find("not a rigid transform"), std::string::npos)
+        << s.message;
+  }
+}
+
+TEST(InitialGuess, AKnownUncertaintyStartsFinerAndLandsOnTheReference) {
+  const Isometry3d guess =
+      PoseVectorToIsometry(PoseVectorFromDegrees(0.3, -0.2, 0.05, 0, 0, 2)) *
+      Pair().truth;
+  const RegistrationSummary without =
+      RegisterFrom(guess, RegistrationOptions());
+  RegistrationOptions options;
+  options.initial_uncertainty.given = true;
+  options.initial_uncertainty.translation_m = 0.5;
+  options.initial_uncertainty.rotation_deg = 5.0;
+  const RegistrationSummary with = RegisterFrom(guess, options);
+  ASSERT_TRUE(with.IsSolutionUsable()) << with.message;
+  EXPECT_EQ(without.start_layer, 1);
+  // Cells at least 2 x (0.5 m + 5 deg at the points' RMS range) wide.
+  EXPECT_GT(with.start_layer, 1);
+  EXPECT_LT(with.start_layer, with.num_layers);
+  EXPECT_LT(with.num_iterations, without.num_iterations);
+  EXPECT_LT(TranslationErrorM(Pair().truth, with.reference_from_input), 0.05);
+  EXPECT_LT(
+      RotationErrorRad(Pair().truth, with.reference_from_input) * kRadToDeg,
+      0.5);
+}
+
+TEST(InitialGuess, AGoodGuessIsNotMadeWorse) {
+  // From the reference itself with a tight uncertainty: the last layer only,
+  // and the result stays within the references' own spread (3.3 cm).
+  RegistrationOptions options;
+  options.initial_uncertainty.given = true;
+  options.initial_uncertainty.translation_m = 0.02;
+  options.initial_uncertainty.rotation_deg = 0.2;
+  const RegistrationSummary s = RegisterFrom(Pair().truth, options);
+  ASSERT_EQ(s.termination_type, TerminationType::CONVERGENCE) << s.message;
+  EXPECT_EQ(s.start_layer, s.num_layers);
+  EXPECT_EQ(s.attempts, 1);
+  EXPECT_LT(TranslationErrorM(Pair().truth, s.reference_from_input), 0.033);
+}
+
+}  // namespace
+}  // namespace mlndt

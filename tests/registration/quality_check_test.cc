@@ -1,0 +1,166 @@
+// The verdict (quality_check.h) on scenes whose answer is known: a plane, a
+// corridor and a line leave directions free and are DEGENERATE (with an
+// infinite covariance along them); a street scene is constrained; a pose
+// far from the truth fails the fit check; the rules by hand.
+
+#include "mlndt/registration/quality_check.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "mlndt/common/pose.h"
+#include "mlndt/registration/registration.h"
+#include "tests/testing/synthetic_scene.h"
+
+namespace mlndt {
+namespace {
+
+// Uniform samples of a box's extent with noise along the thin axes.
+PointCloud Slab(const Eigen::Vector3d& low,
+                const Eigen::Vector3d& high,
+                int n,
+                uint32_t seed) {
+  std::mt19937 rng(seed);
+  PointCloud cloud;
+  for (int i = 0; i < n; ++i) {
+    Eigen::Vector3d p;
+    for (int a = 0; a < 3; ++a) {
+      p(a) = std::uniform_real_distribution<double>(low(a), high(a))(rng);
+    }
+    cloud.Add(p);
+  }
+  return cloud;
+}
+
+PointCloud Merge(std::initializer_list<PointCloud> clouds) {
+  PointCloud merged;
+  for (const PointCloud& c : clouds) {
+    for (const Eigen::Vector3d& p : c.points()) merged.Add(p);
+  }
+  return merged;
+}
+
+RegistrationSummary RegisterShifted(const PointCloud& reference,
+                                    const PointCloud& second_sample,
+                                    const Eigen::Vector3d& shift) {
+  Isometry3d truth = Isometry3d::Identity();
+  truth.translation() = shift;
+  RegistrationSummary summary;
+  Register(RegistrationOptions(),
+           reference,
+           TransformCloud(truth.inverse(), second_sample),
+           Isometry3d::Identity(),
+           &summary);
+  return summary;
+}
+
+TEST(QualityCheck, APlaneIsDegenerateAlongItself) {
+  const Eigen::Vector3d low(-20, -20, -0.01), high(20, 20, 0.01);
+  const RegistrationSummary s = RegisterShifted(
+      Slab(low, high, 40000, 1), Slab(low, high, 40000, 2), {0.5, 0.3, 0.1});
+  EXPECT_EQ(s.termination_type, TerminationType::DEGENERATE) << s.message;
+  EXPECT_FALSE(s.IsSolutionUsable());
+  EXPECT_LT(s.constraints.constraint_ratio, 0.01);
+  // Free: x, y and the turn about z; the covariance says so.
+  EXPECT_EQ(s.constraints.degenerate_directions.size(), 3u) << s.message;
+  EXPECT_TRUE(std::isinf(s.covariance(0, 0)));
+  EXPECT_TRUE(std::isinf(s.covariance(1, 1)));
+  EXPECT_TRUE(std::isinf(s.covariance(5, 5)));
+  EXPECT_TRUE(std::isfinite(s.covariance(2, 2)));  // Height is constrained.
+  EXPECT_NE(s.message.find("degenerate"), std::string::npos) << s.message;
+  EXPECT_NE(s.FullReport().find("inf"), std::string::npos) << s.FullReport();
+}
+
+TEST(QualityCheck, ACorridorIsDegenerateAlongItsLength) {
+  const auto corridor = [](uint32_t seed) {
+    return Merge({Slab({-30, -2.01, 0}, {30, -1.99, 3}, 15000, seed),
+                  Slab({-30, 1.99, 0}, {30, 2.01, 3}, 15000, seed + 10),
+                  Slab({-30, -2, -0.01}, {30, 2, 0.01}, 15000, seed + 20)});
+  };
+  const RegistrationSummary s =
+      RegisterShifted(corridor(1), corridor(2), {1.0, 0.2, 0.0});
+  EXPECT_EQ(s.termination_type, TerminationType::DEGENERATE) << s.message;
+  // Free: the corridor's axis, x (the roll about it, with a 2 m lever
+  // against a 17 m RMS range, is weak too).
+  ASSERT_GE(s.constraints.degenerate_directions.size(), 1u) << s.message;
+  EXPECT_GT(std::abs(s.constraints.degenerate_directions[0](0)), 0.99);
+  EXPECT_NE(s.message.find("translation along (1.00, 0.00, 0.00)"),
+            std::string::npos)
+      << s.message;
+  EXPECT_TRUE(std::isinf(s.covariance(0, 0)));
+  EXPECT_TRUE(std::isfinite(s.covariance(1, 1)));
+}
+
+TEST(QualityCheck, AStreetSceneIsConstrainedAndConverges) {
+  const RegistrationSummary s =
+      RegisterShifted(testing::StreetScene(60000, 0.02, 1),
+                      testing::StreetScene(60000, 0.02, 2),
+                      {0.4, 0.2, 0.0});
+  EXPECT_EQ(s.termination_type, TerminationType::CONVERGENCE) << s.message;
+  EXPECT_GT(s.constraints.constraint_ratio, 0.05);
+  EXPECT_TRUE(s.constraints.degenerate_directions.empty());
+  EXPECT_TRUE(s.covariance.allFinite());
+  EXPECT_LT(s.reference_from_input.translation().x() - 0.4, 0.02);
+}
+
+TEST(QualityCheck, RulesByHand) {
+  QualityCheckOptions options;
+  ConstraintAnalysis constrained;
+  constrained.constraint_ratio = 0.2;
+  FitQuality good;
+  good.inlier_fraction = 0.6;
+  good.mean_score = 7.0;
+  std::string message;
+  EXPECT_EQ(CheckQuality(options,
+                         TerminationType::NO_CONVERGENCE,
+                         good,
+                         constrained,
+                         &message),
+            TerminationType::NO_CONVERGENCE);
+  FitQuality few = good;
+  few.inlier_fraction = options.min_inlier_fraction - 0.01;
+  EXPECT_EQ(
+      CheckQuality(
+          options, TerminationType::CONVERGENCE, few, constrained, &message),
+      TerminationType::LOW_QUALITY);
+  EXPECT_NE(message.find("inliers"), std::string::npos) << message;
+  FitQuality far = good;
+  far.mean_score = options.max_mean_score + 0.1;
+  EXPECT_EQ(
+      CheckQuality(
+          options, TerminationType::CONVERGENCE, far, constrained, &message),
+      TerminationType::LOW_QUALITY);
+  EXPECT_NE(message.find("mean score"), std::string::npos) << message;
+  ConstraintAnalysis free = constrained;
+  free.degenerate_directions.push_back(Vector6d::Unit(5));
+  EXPECT_EQ(
+      CheckQuality(options, TerminationType::CONVERGENCE, good, free, &message),
+      TerminationType::DEGENERATE);
+  EXPECT_NE(message.find("rotation about (0.00, 0.00, 1.00)"),
+            std::string::npos)
+      << message;
+  options.enabled = false;
+  EXPECT_EQ(
+      CheckQuality(options, TerminationType::CONVERGENCE, far, free, &message),
+      TerminationType::CONVERGENCE);
+}
+
+TEST(QualityCheckOptions, RangesAreChecked) {
+  std::string error;
+  EXPECT_TRUE(QualityCheckOptions().IsValid(&error)) << error;
+  QualityCheckOptions options;
+  options.inlier_gate = 0.0;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("inlier_gate"), std::string::npos);
+  options = QualityCheckOptions();
+  options.max_mean_score = std::nan("");
+  EXPECT_FALSE(options.IsValid(&error));
+  options = QualityCheckOptions();
+  options.min_constraint_ratio = 1.0;
+  EXPECT_FALSE(options.IsValid(&error));
+}
+
+}  // namespace
+}  // namespace mlndt
