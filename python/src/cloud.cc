@@ -18,18 +18,23 @@ namespace mlndt {
 namespace python {
 namespace {
 
-// The extension decides the format; an unknown one is a bad argument.
-void CheckFormat(const std::string& path) {
+// The extension decides the format; an unknown one (or, for writing, one
+// the library does not write: io.h writes PCD and PLY) is a bad argument.
+void CheckFormat(const std::string& path, bool writing) {
   CloudFormat format;
   std::string error;
   if (!CloudFormatFromPath(path, &format, &error)) {
     throw py::value_error(error);
   }
+  if (writing && format != CloudFormat::PCD && format != CloudFormat::PLY) {
+    throw py::value_error(path + ": writing " + CloudFormatToString(format) +
+                          " is not supported (write .pcd or .ply)");
+  }
 }
 
 py::array_t<double> ReadCloud(const py::object& path_like) {
   const std::string path = PathString(path_like);
-  CheckFormat(path);
+  CheckFormat(path, false);
   PointCloud cloud;
   std::string error;
   bool ok = false;
@@ -37,13 +42,13 @@ py::array_t<double> ReadCloud(const py::object& path_like) {
     py::gil_scoped_release release;
     ok = ReadPointCloud(path, &cloud, nullptr, &error);
   }
-  if (!ok) ThrowFileError(path, error);
+  if (!ok) ThrowReadError(path, error);
   return PointsToPython(std::move(cloud));
 }
 
 void WriteCloud(const py::object& path_like, const py::object& points) {
   const std::string path = PathString(path_like);
-  CheckFormat(path);
+  CheckFormat(path, true);
   const PointCloud cloud = PointsFromPython(points, "points", true);
   std::string error;
   bool ok = false;
@@ -51,7 +56,7 @@ void WriteCloud(const py::object& path_like, const py::object& points) {
     py::gil_scoped_release release;
     ok = WritePointCloud(path, cloud, &error);
   }
-  if (!ok) ThrowFileError(path, error);
+  if (!ok) ThrowWriteError(path, error);
 }
 
 py::array_t<double> FilterRange(const py::object& points,

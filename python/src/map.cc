@@ -56,7 +56,7 @@ class LayeredMap {
       py::gil_scoped_release release;
       ok = LoadLayeredGrid(path, grid.get(), &error);
     }
-    if (!ok) ThrowFileError(path, error);
+    if (!ok) ThrowReadError(path, error);
     return LayeredMap(std::move(grid));
   }
 
@@ -68,7 +68,7 @@ class LayeredMap {
       py::gil_scoped_release release;
       ok = SaveLayeredGrid(path, *grid_, &error);
     }
-    if (!ok) ThrowFileError(path, error);
+    if (!ok) ThrowWriteError(path, error);
   }
 
   py::object Register(const py::object& input,
