@@ -9,6 +9,8 @@ packages=(
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev nlohmann-json3-dev
   gnuplot-nox clang-format ccache
+  # The Python module (python/) and its tests, for Debian's /usr/bin/python3.
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 
 for arg in "$@"; do
