@@ -2,6 +2,7 @@
 
 #include <glog/logging.h>
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -141,6 +142,20 @@ Vector3d RandomUnitVector(std::mt19937_64* rng) {
     const Vector3d v(normal(*rng), normal(*rng), normal(*rng));
     if (v.norm() > 1e-9) return v.normalized();
   }
+}
+
+// `transform` with its rotation replaced by the nearest rotation (SVD):
+// the files print 6-9 significant digits, too few for the registration's
+// rigidity check of the initial guess.
+Isometry3d NearestRigid(const Isometry3d& transform) {
+  const Eigen::JacobiSVD<Matrix3d> svd(
+      transform.linear(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Matrix3d u = svd.matrixU();
+  if ((u * svd.matrixV().transpose()).determinant() < 0.0) u.col(2) *= -1.0;
+  Isometry3d rigid = Isometry3d::Identity();
+  rigid.linear() = u * svd.matrixV().transpose();
+  rigid.translation() = transform.translation();
+  return rigid;
 }
 
 // Pairs kept by the steps filter and the cap, sorted by (reference, input).
@@ -419,8 +434,13 @@ std::vector<SuiteRun> PlanDatasetRuns(
     for (const StartKind kind : options.starts) {
       base.kind = kind;
       base.start = StartKindToString(kind);
+      const size_t first = runs.size();
       if (!AppendStartRuns(options, dataset_name, pairs, *pair, base, &runs)) {
         ++(*skips)[kind];
+      }
+      for (size_t k = first; k < runs.size(); ++k) {
+        runs[k].initial_reference_from_input =
+            NearestRigid(runs[k].initial_reference_from_input);
       }
     }
   }

@@ -168,7 +168,10 @@ using SuiteSkips = std::map<StartKind, size_t>;
 // The runs of one data set in run order: pairs by reference index, then
 // input index (so each reference map serves its pairs in a row), and per
 // pair the starts in the order of options.starts (offsets in their order,
-// perturbed 0 .. count-1). `dataset_name` seeds the perturbations.
+// perturbed 0 .. count-1). `dataset_name` seeds the perturbations. Every
+// start is made rigid (its rotation replaced by the nearest rotation): the
+// files' 6-9 significant digits leave |R^T R - I| near 1e-6, which the
+// registration refuses in an initial guess.
 std::vector<SuiteRun> PlanDatasetRuns(
     const SuitePlanOptions& options,
     size_t dataset,

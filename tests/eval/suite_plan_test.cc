@@ -333,6 +333,38 @@ TEST(PlanDatasetRuns, RunsPairsInOrderWithTheStartsInOrder) {
       runs[3].initial_reference_from_input));
 }
 
+TEST(PlanDatasetRuns, StartsAreRigidWhenTheFileIsNot) {
+  // Matrices printed with 6 digits: |R^T R - I| ~ 1e-6.
+  std::map<std::string, ReferencePair> pairs = Chain();
+  for (auto& [key, pair] : pairs) {
+    pair.reference_from_input.linear()(0, 1) += 3e-6;
+    pair.reference_from_input.linear()(2, 0) -= 2e-6;
+    if (pair.prior_from_input) pair.prior_from_input->linear()(1, 2) += 4e-6;
+  }
+  SuitePlanOptions options;
+  options.starts = {StartKind::PRIOR,
+                    StartKind::OFFSETS,
+                    StartKind::PERTURBED,
+                    StartKind::CONSTANT_VELOCITY};
+  std::string error;
+  ASSERT_TRUE(ParseStartOffsets("x:2;yaw:30", &options.offsets, &error));
+  SuiteSkips skips;
+  const std::vector<SuiteRun> runs =
+      PlanDatasetRuns(options, 0, "set", pairs, &skips);
+  ASSERT_EQ(runs.size(), 4u + 10u + 5u + 2u);  // prior, offsets, ..., cv.
+  for (const SuiteRun& run : runs) {
+    const Matrix3d r = run.initial_reference_from_input.linear();
+    EXPECT_LT((r.transpose() * r - Matrix3d::Identity()).norm(), 1e-12)
+        << run.pair_key << " " << run.start;
+    EXPECT_NEAR(r.determinant(), 1.0, 1e-12);
+  }
+  // Made rigid, not moved: the prior start is within 1e-5 of the file's.
+  EXPECT_LT((runs[0].initial_reference_from_input.matrix() -
+             pairs.at("0_1").prior_from_input->matrix())
+                .norm(),
+            1e-5);
+}
+
 TEST(PlanDatasetRuns, SelectsPairsByStepAndCap) {
   SuitePlanOptions options;
   options.steps = {2};
