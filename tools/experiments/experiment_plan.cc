@@ -81,12 +81,20 @@ std::vector<Configuration> AccuracyConfigurations(const ExperimentPlan& plan) {
   const Configuration ndt = NdtConfiguration();
   const Configuration paper = PaperConfiguration();
   const Configuration defaults = DefaultConfiguration();
+  Configuration known = defaults;
+  known.key = "defaults_known";
+  known.label = "defaults, prior uncertainty given";
+  InitialGuessUncertainty& u = known.options.mlndt.initial_uncertainty;
+  u.given = true;
+  u.translation_m = plan.prior_uncertainty_m;
+  u.rotation_deg = plan.prior_uncertainty_deg;
   return {ndt,
           WithRandomSampling(ndt, plan.random_fraction),
           paper,
           WithRandomSampling(paper, plan.random_fraction),
           defaults,
-          WithRandomSampling(defaults, plan.random_fraction)};
+          WithRandomSampling(defaults, plan.random_fraction),
+          known};
 }
 
 std::vector<Job> MakeJobs(const ExperimentPlan& plan,

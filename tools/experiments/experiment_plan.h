@@ -33,6 +33,11 @@ struct ExperimentPlan {
   std::vector<double> table9_c = {0.9, 0.6, 0.3, 0.0};
   std::vector<int> table9_start_layers = {-2, -1, 0};  // n-2, n-1, n.
   double random_fraction = 0.15;  // accuracy: the random-sampling runs.
+  // accuracy: the bound of the priors' error passed to the defaults as the
+  // initial uncertainty in one more configuration (the largest prior error
+  // of the shared references is 0.73 m / 1.8 deg).
+  double prior_uncertainty_m = 1.0;
+  double prior_uncertainty_deg = 2.0;
 };
 
 // The full plan, or the quick one (fewer pairs, offsets and fractions).
@@ -42,7 +47,8 @@ ExperimentPlan MakePlan(bool quick);
 std::string StartLayerLabel(int start_layer);
 
 // The configurations of the accuracy experiment, in table order: NDT, NDT
-// random, paper, paper random, defaults, defaults random.
+// random, paper, paper random, defaults, defaults random, and the defaults
+// told the priors' uncertainty.
 std::vector<Configuration> AccuracyConfigurations(const ExperimentPlan& plan);
 
 std::vector<Job> MakeJobs(const ExperimentPlan& plan,

@@ -179,27 +179,31 @@ std::string ReachSection(const ReportContext& c) {
   const double paper_x = Reach(c, "", "paper", "x");
   const double defaults_x = Reach(c, "", "defaults", "x");
   const double ndt_x = Reach(c, "", "ndt", "x");
-  std::string biggest;
-  double gain = -1.0;
-  for (size_t i = 2; i < configs.size(); ++i) {
-    const double before = Reach(c, "", configs[i - 1].key, "x");
-    const double after = Reach(c, "", configs[i].key, "x");
-    if (after - before > gain) {
-      gain = after - before;
-      biggest = configs[i].label;
+  // "none" reads as "no offset" in the sentence.
+  const auto phrase = [](double reach, const std::string& unit) {
+    const std::string text = ReachText(reach, unit);
+    return text == "none" ? std::string("no offset") : text;
+  };
+  // The ablation as a chain: "paper preset no offset → +Cauchy loss 1 m ...".
+  const auto chain = [&](const std::string& family, const std::string& unit) {
+    std::string text;
+    for (size_t i = 1; i < configs.size(); ++i) {
+      text += (i > 1 ? " → " : "") + configs[i].label + " " +
+              phrase(Reach(c, "", configs[i].key, family), unit);
     }
-  }
+    return text;
+  };
   out +=
       "**Conclusion (this run):** pooled over every data set, ML-NDT "
       "reaches " +
-      ReachText(paper_x, "m") + " along x and " +
-      ReachText(Reach(c, "", "paper", "yaw"), "deg") +
-      " in yaw under the paper preset, " + ReachText(defaults_x, "m") +
-      " and " + ReachText(Reach(c, "", "defaults", "yaw"), "deg") +
-      " under the defaults, and NDT " + ReachText(ndt_x, "m") + " and " +
-      ReachText(Reach(c, "", "ndt", "yaw"), "deg") +
-      "; the ablation step that adds the most reach along x is " +
-      (gain > 0 ? biggest : std::string("none")) + ".\n\n";
+      phrase(paper_x, "m") + " along x and " +
+      phrase(Reach(c, "", "paper", "yaw"), "deg") +
+      " in yaw under the paper preset, " + phrase(defaults_x, "m") + " and " +
+      phrase(Reach(c, "", "defaults", "yaw"), "deg") +
+      " under the defaults, and NDT " + phrase(ndt_x, "m") + " and " +
+      phrase(Reach(c, "", "ndt", "yaw"), "deg") +
+      "; the pooled reach along x steps " + chain("x", "m") + ", in yaw " +
+      chain("yaw", "deg") + ".\n\n";
   return out;
 }
 

@@ -79,7 +79,8 @@ std::string SamplingSection(const ReportContext& c) {
       "set title 'Runs within tolerance against the sampled fraction (all "
       "data sets)'\nset xlabel 'input sampled at random [%]'\n"
       "set ylabel 'runs within tolerance [%]'\nset logscale x\n"
-      "set yrange [0:105]\nset xtics (1, 2, 5, 10, 20, 30)\n"
+      "set xrange [0.8:40]\nset yrange [0:105]\n"
+      "set xtics (1, 2, 5, 10, 20, 30)\n"
       "plot for [i=2:4] 'csv/sampling_curve.csv' using 1:i with "
       "linespoints lw 2 dt 1, for [i=5:7] 'csv/sampling_curve.csv' using "
       "1:i with linespoints lw 2 dt 2\n";

@@ -98,7 +98,8 @@ std::string TraceSections(const ReportContext& c, const TraceExperiment& t) {
          " (the paper: NDT needs small offsets and becomes unstable "
          "otherwise).\n\n";
 
-  out += "## Fig. 11: NDT score against iteration\n\n" + setup;
+  const std::string same = "Same pair and start as Fig. 10.\n\n";
+  out += "## Fig. 11: NDT score against iteration\n\n" + same;
   out += "![Fig. 11](" +
          c.files->AddFigure(
              "fig11",
@@ -118,7 +119,7 @@ std::string TraceSections(const ReportContext& c, const TraceExperiment& t) {
          std::to_string(ndt->points.back().iteration) +
          " iterations (the paper: steady after 25).\n\n";
 
-  out += "## Fig. 12: ML-NDT (LM) parameters against iteration\n\n" + setup;
+  out += "## Fig. 12: ML-NDT (LM) parameters against iteration\n\n" + same;
   out += "![Fig. 12](" +
          c.files->AddFigure("fig12",
                             1200,
