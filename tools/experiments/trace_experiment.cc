@@ -6,6 +6,7 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/pipeline/matcher.h"
+#include "mlndt/solvers/levenberg_marquardt_backend.h"
 #include "tools/common/tool_utils.h"
 #include "tools/experiments/configurations.h"
 #include "tools/experiments/paper_axes.h"
@@ -25,6 +26,17 @@ Configuration WithBackend(Configuration c,
   c.options.mlndt.backend.type = type;
   c.key = key;
   c.label = label;
+  return c;
+}
+
+// The paper's literal LM (scalar residual s_k, Eqs. 18-20).
+Configuration PaperScalarLm(const Configuration& paper) {
+  Configuration c = WithBackend(paper,
+                                BackendType::LEVENBERG_MARQUARDT,
+                                "paper_lm_scalar",
+                                "ML-NDT LM with scalar s_k, paper preset");
+  c.options.mlndt.backend.levenberg_marquardt.residual =
+      LmResidual::SCALAR_SCORE;
   return c;
 }
 
@@ -77,6 +89,7 @@ bool RunTraceExperiment(const std::vector<ExperimentDataset>& datasets,
                   BackendType::LEVENBERG_MARQUARDT,
                   "paper_lm",
                   "ML-NDT LM, paper preset"),
+      PaperScalarLm(paper),
       WithBackend(defaults,
                   BackendType::NEWTON,
                   "defaults_newton",
