@@ -84,6 +84,19 @@ const std::vector<std::pair<std::string, Getter>>& ComparedOptions() {
            [](const RegistrationOptions& o) {
              return Text(o.grid.min_points_per_cell);
            }},
+          {"grid.coarse_weighting",
+           [](const RegistrationOptions& o) {
+             return std::string(
+                 CoarseWeightingToString(o.grid.coarse_weighting));
+           }},
+          {"sampling.gbs_cell_size_m",
+           [](const RegistrationOptions& o) {
+             return Text(o.sampling.gbs_cell_size_m);
+           }},
+          {"min_matched_fraction",
+           [](const RegistrationOptions& o) {
+             return Text(o.min_matched_fraction);
+           }},
           {"backend.type",
            [](const RegistrationOptions& o) {
              return std::string(BackendTypeToString(o.backend.type));
