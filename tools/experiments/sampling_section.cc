@@ -75,7 +75,7 @@ std::string SamplingSection(const ReportContext& c) {
   c.files->Add("csv/sampling_curve.csv", CsvTable(curve_header, curve));
   out += MarkdownTable(header, rows);
   const std::string body =
-      "set key autotitle columnheader\nset key bottom right inside\n"
+      "set key autotitle columnheader\n"
       "set title 'Runs within tolerance against the sampled fraction (all "
       "data sets)'\nset xlabel 'input sampled at random [%]'\n"
       "set ylabel 'runs within tolerance [%]'\nset logscale x\n"
@@ -84,7 +84,7 @@ std::string SamplingSection(const ReportContext& c) {
       "plot for [i=2:4] 'csv/sampling_curve.csv' using 1:i with "
       "linespoints lw 2 dt 1, for [i=5:7] 'csv/sampling_curve.csv' using "
       "1:i with linespoints lw 2 dt 2\n";
-  out += "![sampling](" + c.files->AddFigure("sampling", 1000, 500, body) +
+  out += "![sampling](" + c.files->AddFigure("sampling", 1200, 500, body) +
          ")\n\n";
   // The smallest fraction at which each ML-NDT configuration is within 5
   // points of its best, from the prior.
