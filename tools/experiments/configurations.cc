@@ -60,6 +60,10 @@ const std::vector<std::pair<std::string, Getter>>& ComparedOptions() {
            [](const RegistrationOptions& o) {
              return Text(o.schedule.max_final_iterations);
            }},
+          {"schedule.step_tolerance",
+           [](const RegistrationOptions& o) {
+             return Text(o.schedule.step_tolerance);
+           }},
           {"schedule.coarse_step_tolerance",
            [](const RegistrationOptions& o) {
              return Text(o.schedule.coarse_step_tolerance);
