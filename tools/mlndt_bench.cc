@@ -117,7 +117,13 @@ using tools::ScanPair;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_bench: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_bench: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 BenchRun Evaluate(const Isometry3d& truth,
@@ -318,17 +324,17 @@ int Report(const std::vector<std::string>& sets,
 }
 
 int Run() {
-  if (FLAGS_repetitions < 1) return Fail("--repetitions must be >= 1");
+  if (FLAGS_repetitions < 1) return Refuse("--repetitions must be >= 1");
 #ifndef MLNDT_WITH_PCL
   if (FLAGS_compare_pcl) {
-    return Fail(
+    return Refuse(
         "--compare_pcl: this build has no PCL; configure with "
         "-DMLNDT_WITH_PCL=ON");
   }
 #endif
   std::vector<std::string> sets;
   std::string error;
-  if (!tools::ParseBenchSets(FLAGS_pairs, &sets, &error)) return Fail(error);
+  if (!tools::ParseBenchSets(FLAGS_pairs, &sets, &error)) return Refuse(error);
   const tools::BenchGridFlags grid{FLAGS_backends,
                                    FLAGS_samplings,
                                    FLAGS_gbs_cell_sizes,
@@ -339,16 +345,16 @@ int Run() {
                                    FLAGS_seed};
   std::vector<tools::BenchConfiguration> configurations;
   if (!tools::ParseBenchConfigurations(grid, &configurations, &error))
-    return Fail(error);
+    return Refuse(error);
   std::vector<ScanPair> pairs;
   if (!tools::LoadBenchPairs(
           FLAGS_data_dir, sets, FLAGS_kitti_gaps, &pairs, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   std::ofstream csv;
   if (!FLAGS_output_csv.empty()) {
     csv.open(FLAGS_output_csv);
-    if (!csv) return Fail(FLAGS_output_csv + ": cannot write");
+    if (!csv) return Refuse(FLAGS_output_csv + ": cannot write");
   }
 
   // Methods: the configurations, then PCL (when compared).
@@ -389,7 +395,7 @@ int main(int argc, char** argv) {
           true,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

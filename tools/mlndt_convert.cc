@@ -11,6 +11,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/sampling/point_sampler.h"
+#include "tools/common/tool_main.h"
 
 DEFINE_string(input, "", "Input cloud (any format mlndt reads)");
 DEFINE_string(output, "", "Output cloud (.pcd or .ply)");
@@ -19,17 +20,20 @@ DEFINE_double(voxel_size,
               "When > 0, keep one centroid per voxel of this edge [m]");
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Converts a point cloud: mlndt_convert --input=A --output=B");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  if (FLAGS_input.empty() || FLAGS_output.empty() || argc > 1) {
+  if (!mlndt::tools::StartTool(
+          "Converts a point cloud: mlndt_convert --input=A --output=B",
+          true,
+          &argc,
+          &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
+  if (FLAGS_input.empty() || FLAGS_output.empty()) {
     std::cerr << "mlndt_convert: give --input=FILE and --output=FILE\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   if (!(FLAGS_voxel_size >= 0.0)) {
     std::cerr << "mlndt_convert: --voxel_size must be >= 0\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   mlndt::PointCloud cloud;
   mlndt::ReadCloudInfo info;

@@ -79,7 +79,13 @@ using tools::StartResult;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_covariance: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_covariance: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // Registers input onto reference from the perturbed starts.
@@ -219,17 +225,18 @@ bool RunKoide3(const RegistrationOptions& options,
 }
 
 int Main() {
-  if (FLAGS_starts < 2) return Fail("--starts must be >= 2");
+  if (FLAGS_starts < 2) return Refuse("--starts must be >= 2");
   if (!(FLAGS_max_translation >= 0.0) || !(FLAGS_max_rotation >= 0.0)) {
-    return Fail("--max_translation and --max_rotation must be >= 0");
+    return Refuse("--max_translation and --max_rotation must be >= 0");
   }
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Fail(error);
+    return Refuse(error);
   std::vector<std::string> datasets;
   if (!tools::SplitList(FLAGS_datasets, &datasets)) {
-    return Fail("--datasets: expected a comma-separated list of kitti, koide3");
+    return Refuse(
+        "--datasets: expected a comma-separated list of kitti, koide3");
   }
   std::ofstream csv;
   if (!FLAGS_output_csv.empty()) {
@@ -309,7 +316,7 @@ int main(int argc, char** argv) {
           false,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Main();
 }

@@ -41,6 +41,7 @@
 #include "tools/common/json_writer.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -68,7 +69,13 @@ constexpr char kTool[] = "mlndt_eval";
 
 int Fail(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 const std::vector<std::string> kEvalFlags = {"reference",
@@ -90,10 +97,10 @@ int Chain(const std::string& pairs_path, const std::string& output) {
   std::string error;
   if (!tools::RefuseGivenFlags(
           kEvalFlags, "does not apply to 'mlndt_eval chain'", &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   std::map<std::string, ReferencePair> pairs;
-  if (!ReadReferencePairs(pairs_path, &pairs, &error)) return Fail(error);
+  if (!ReadReferencePairs(pairs_path, &pairs, &error)) return Refuse(error);
   int64_t first = -1;
   for (const auto& [key, pair] : pairs) {
     if (pair.input_index == pair.reference_index + 1 &&
@@ -252,23 +259,13 @@ struct EstimateResult {
   KittiSegmentSummary kitti;
 };
 
+// `estimate` was read from result->path in result->format.
 bool Evaluate(const EvalFlags& flags,
               const Trajectory& reference,
               TrajectoryFormat reference_format,
-              const std::string& path,
+              const Trajectory& estimate,
               EstimateResult* result,
               std::string* error) {
-  result->path = path;
-  Trajectory estimate;
-  if (!ReadOne(path,
-               flags.detect_estimate,
-               flags.estimate_format,
-               "",
-               &estimate,
-               &result->format,
-               error)) {
-    return false;
-  }
   result->poses = estimate.size();
   bool by_time = false;
   switch (flags.association) {
@@ -289,7 +286,7 @@ bool Evaluate(const EvalFlags& flags,
           : AssociateByIndex(reference, estimate);
   result->pairs = pairs.size();
   if (pairs.size() == 0) {
-    *error = path + ": no pose pairs with the reference (" +
+    *error = result->path + ": no pose pairs with the reference (" +
              result->association + " association)";
     return false;
   }
@@ -298,7 +295,7 @@ bool Evaluate(const EvalFlags& flags,
   AteOptions ate;
   ate.alignment = flags.alignment;
   if (!ComputeAte(ate, pairs.reference, pairs.estimate, &result->ate, error)) {
-    *error = path + ": " + *error;
+    *error = result->path + ": " + *error;
     return false;
   }
   RpeOptions rpe;
@@ -306,7 +303,7 @@ bool Evaluate(const EvalFlags& flags,
   if (pairs.size() > static_cast<size_t>(FLAGS_delta)) {
     if (!ComputeRpe(
             rpe, pairs.reference, pairs.estimate, &result->rpe, error)) {
-      *error = path + ": " + *error;
+      *error = result->path + ": " + *error;
       return false;
     }
     result->rpe_pairs = pairs.size() - static_cast<size_t>(FLAGS_delta);
@@ -316,7 +313,7 @@ bool Evaluate(const EvalFlags& flags,
                                  pairs.estimate,
                                  &result->kitti,
                                  error)) {
-    *error = path + ": " + *error;
+    *error = result->path + ": " + *error;
     return false;
   }
   return true;
@@ -385,7 +382,7 @@ std::string ResultJson(const EstimateResult& r) {
 int Run() {
   EvalFlags flags;
   std::string error;
-  if (!ParseFlags(&flags, &error)) return Fail(error);
+  if (!ParseFlags(&flags, &error)) return Refuse(error);
   Trajectory reference;
   TrajectoryFormat reference_format;
   if (!ReadOne(FLAGS_reference,
@@ -395,14 +392,27 @@ int Run() {
                &reference,
                &reference_format,
                &error)) {
-    return Fail("--reference: " + error);
+    return Refuse("--reference: " + error);
   }
   std::vector<EstimateResult> results(flags.estimates.size());
+  std::vector<Trajectory> estimates(flags.estimates.size());
+  for (size_t i = 0; i < flags.estimates.size(); ++i) {
+    results[i].path = flags.estimates[i];
+    if (!ReadOne(results[i].path,
+                 flags.detect_estimate,
+                 flags.estimate_format,
+                 "",
+                 &estimates[i],
+                 &results[i].format,
+                 &error)) {
+      return Refuse(error);
+    }
+  }
   for (size_t i = 0; i < flags.estimates.size(); ++i) {
     if (!Evaluate(flags,
                   reference,
                   reference_format,
-                  flags.estimates[i],
+                  estimates[i],
                   &results[i],
                   &error)) {
       return Fail(error);
@@ -486,19 +496,19 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Evaluates trajectories (KITTI or TUM) against a reference: ATE, RPE, "
       "KITTI segment errors.\n"
       "  mlndt_eval --reference=FILE --estimate=FILE[,FILE...] "
       "[--alignment=se3]\n"
-      "  mlndt_eval chain reference_pairs.json poses.txt");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+      "  mlndt_eval chain reference_pairs.json poses.txt";
+  if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
   if (argc > 1 && std::string(argv[1]) == "chain") {
     if (argc != 4) {
       std::cerr << "mlndt_eval: usage: mlndt_eval chain PAIRS.json OUT.txt\n";
-      return 1;
+      return mlndt::tools::kExitUsage;
     }
     return mlndt::Chain(argv[2], argv[3]);
   }
@@ -506,7 +516,7 @@ int main(int argc, char** argv) {
     std::cerr << "mlndt_eval: unexpected argument '" << argv[1]
               << "' (flags are --name=value; the one subcommand is 'chain "
                  "PAIRS OUT')\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

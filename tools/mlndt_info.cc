@@ -25,6 +25,7 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
 #include "tools/common/json_writer.h"
+#include "tools/common/tool_main.h"
 
 DEFINE_bool(layers,
             false,
@@ -159,32 +160,32 @@ int Run(const std::vector<std::string>& files) {
   std::string error;
   if (!GridOptionsFromFlags(&grid_options, &error)) {
     PrintError(error);
-    return 1;
+    return tools::kExitUsage;
   }
   bool all_ok = true;
   for (const std::string& file : files) {
     all_ok = DescribeFile(file, grid_options) && all_ok;
   }
-  return all_ok ? 0 : 1;
+  return all_ok ? tools::kExitOk : tools::kExitFailed;
 }
 
 }  // namespace
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Prints one JSON line per point-cloud file: format, point count, "
       "bounding box and, with "
       "--layers, the layers of its ML-NDT map.\n"
       "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]] "
-      "FILE...");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+      "FILE...";
+  if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
   if (argc < 2) {
     std::cerr << "mlndt_info: no input files\n"
               << gflags::ProgramUsage() << "\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run(std::vector<std::string>(argv + 1, argv + argc));
 }

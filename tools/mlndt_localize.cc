@@ -47,6 +47,7 @@
 #include "tools/common/map_inputs.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -79,7 +80,13 @@ constexpr char kTool[] = "mlndt_localize";
 
 int Fail(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 std::string CommandLine() {
@@ -357,12 +364,13 @@ int Run() {
   LocalizerOptions options;
   std::vector<std::string> paths;
   std::string error;
-  if (!CheckFlags(&options, &paths, &error)) return Fail(error);
+  if (!CheckFlags(&options, &paths, &error)) return Refuse(error);
   Isometry3d first_guess;
-  if (!FirstPose(&first_guess, &error)) return Fail(error);
+  if (!FirstPose(&first_guess, &error)) return Refuse(error);
   std::error_code ec;
   std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec) return Fail("--output_dir=" + FLAGS_output_dir + ": " + ec.message());
+  if (ec)
+    return Refuse("--output_dir=" + FLAGS_output_dir + ": " + ec.message());
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {
@@ -372,7 +380,7 @@ int Run() {
   }
 
   LayeredGrid map;
-  if (!LoadLayeredGrid(FLAGS_map, &map, &error)) return Fail(error);
+  if (!LoadLayeredGrid(FLAGS_map, &map, &error)) return Refuse(error);
   const double map_load_s = NowSeconds() - start;
   std::printf("map: %s, %d layers, finest cell %.3f m, %s\n",
               FLAGS_map.c_str(),
@@ -490,17 +498,12 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Registers every scan of a folder onto a saved map (mlndt_map).\n"
       "  mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT "
-      "[--initial_guess=tx,ty,tz,a,b,g]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_localize: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
-    return 1;
+      "[--initial_guess=tx,ty,tz,a,b,g]";
+  if (!mlndt::tools::StartTool(usage, true, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

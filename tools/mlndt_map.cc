@@ -45,6 +45,7 @@
 #include "tools/common/map_inputs.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -72,7 +73,13 @@ constexpr char kTool[] = "mlndt_map";
 
 int Fail(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // The flags of this file (the build's), for refusing them with `info`.
@@ -145,10 +152,10 @@ int Info(const std::string& path) {
   std::string error;
   if (!tools::RefuseGivenFlags(
           kBuildFlags, "does not apply to 'mlndt_map info'", &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   LayeredGrid map;
-  if (!LoadLayeredGrid(path, &map, &error)) return Fail(error);
+  if (!LoadLayeredGrid(path, &map, &error)) return Refuse(error);
   std::error_code ec;
   const auto file_bytes = std::filesystem::file_size(path, ec);
   std::printf("map: %s (%llu bytes on disk)\n",
@@ -299,12 +306,12 @@ std::string SummaryJson(const MapBuildOptions& options,
 int Build() {
   MapBuildOptions options;
   std::string error;
-  if (!CheckFlags(&options, &error)) return Fail(error);
+  if (!CheckFlags(&options, &error)) return Refuse(error);
   bool detect = true;
   TrajectoryFormat format = TrajectoryFormat::KITTI;
   if (!tools::ParseTrajectoryFormatFlag(
           "poses_format", FLAGS_poses_format, &detect, &format, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
 
   LayeredGrid map;
@@ -312,7 +319,7 @@ int Build() {
   if (!FLAGS_cloud.empty()) {
     PointCloud cloud;
     if (!ReadPointCloud(FLAGS_cloud, &cloud, nullptr, &error)) {
-      return Fail(error);
+      return Refuse(error);
     }
     if (!BuildMapFromCloud(options, std::move(cloud), &map, &summary, &error))
       return Fail(error);
@@ -324,17 +331,17 @@ int Build() {
                                    static_cast<size_t>(FLAGS_max_scans),
                                    &paths,
                                    &error)) {
-      return Fail(error);
+      return Refuse(error);
     }
     std::vector<Isometry3d> poses;
     if (!tools::ReadPoseFile(
             FLAGS_poses, detect, format, FLAGS_calib, &poses, &error)) {
-      return Fail("--poses: " + error);
+      return Refuse("--poses: " + error);
     }
     if (poses.size() < paths.size()) {
-      return Fail("--poses=" + FLAGS_poses + " has " +
-                  std::to_string(poses.size()) + " poses for " +
-                  std::to_string(paths.size()) + " scans");
+      return Refuse("--poses=" + FLAGS_poses + " has " +
+                    std::to_string(poses.size()) + " poses for " +
+                    std::to_string(paths.size()) + " scans");
     }
     tools::Progress progress(kTool, paths.size());
     const bool ok = BuildMapFromScans(
@@ -395,19 +402,19 @@ int Build() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Builds a layered NDT map from scans and poses (or one cloud), or "
       "describes one.\n"
       "  mlndt_map --scans=DIR --poses=FILE [--calib=FILE] --output=MAP\n"
       "  mlndt_map --cloud=FILE --output=MAP\n"
-      "  mlndt_map info MAP");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+      "  mlndt_map info MAP";
+  if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
   if (argc > 1 && std::string(argv[1]) == "info") {
     if (argc != 3) {
       std::cerr << "mlndt_map: usage: mlndt_map info MAP (one map file)\n";
-      return 1;
+      return mlndt::tools::kExitUsage;
     }
     return mlndt::Info(argv[2]);
   }
@@ -415,7 +422,7 @@ int main(int argc, char** argv) {
     std::cerr << "mlndt_map: unexpected argument '" << argv[1]
               << "' (flags are --name=value; the one subcommand is 'info "
                  "MAP')\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Build();
 }

@@ -49,7 +49,13 @@ namespace {
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_pairs: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_pairs: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // ';'-separated tx,ty,tz,alpha,beta,gamma offsets [m, deg].
@@ -130,33 +136,33 @@ bool RegisterAndPrint(const RegistrationOptions& options,
 
 int Run() {
   if (FLAGS_scans.empty() || FLAGS_gt_poses.empty())
-    return Fail("--scans and --gt_poses are required");
+    return Refuse("--scans and --gt_poses are required");
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Fail(error);
+    return Refuse(error);
 
   std::vector<std::string> paths;
   if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   std::vector<Isometry3d> poses;
-  if (!ReadKittiPoses(FLAGS_gt_poses, &poses, &error)) return Fail(error);
+  if (!ReadKittiPoses(FLAGS_gt_poses, &poses, &error)) return Refuse(error);
   if (poses.size() < paths.size()) {
-    return Fail(FLAGS_gt_poses + " has " + std::to_string(poses.size()) +
-                " poses for " + std::to_string(paths.size()) + " scans");
+    return Refuse(FLAGS_gt_poses + " has " + std::to_string(poses.size()) +
+                  " poses for " + std::to_string(paths.size()) + " scans");
   }
   std::vector<double> gaps;
   if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty())
-    return Fail("bad --gaps");
+    return Refuse("bad --gaps");
   std::vector<Vector6d> perturbations;
   if (!ParsePerturbations(FLAGS_perturbations, &perturbations, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   std::vector<PointCloud> scans(paths.size());
   for (size_t i = 0; i < paths.size(); ++i) {
     if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
-      return Fail(error);
+      return Refuse(error);
   }
   std::ofstream csv;
   if (!FLAGS_output_csv.empty()) {
@@ -211,7 +217,7 @@ int main(int argc, char** argv) {
           false,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

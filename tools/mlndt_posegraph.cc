@@ -74,7 +74,13 @@ namespace {
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_posegraph: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_posegraph: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // A world_from_scan pose in the layout Ceres optimises.
@@ -293,29 +299,30 @@ std::vector<Isometry3d> ChainRegistrations(const RegistrationOptions& options,
 }
 
 int Run() {
-  if (FLAGS_scans.empty()) return Fail("--scans is required");
-  if (FLAGS_neighbors < 1) return Fail("--neighbors must be >= 1");
+  if (FLAGS_scans.empty()) return Refuse("--scans is required");
+  if (FLAGS_neighbors < 1) return Refuse("--neighbors must be >= 1");
   if (FLAGS_joint_layers < 1 || FLAGS_joint_layers > 2)
-    return Fail("--joint_layers: 1 or 2");
+    return Refuse("--joint_layers: 1 or 2");
   if (FLAGS_joint_max_iterations < 1)
-    return Fail("--joint_max_iterations must be >= 1");
+    return Refuse("--joint_max_iterations must be >= 1");
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error)) {
-    return Fail(error + " (the joint problem is built from ML-NDT residuals)");
+    return Refuse(error +
+                  " (the joint problem is built from ML-NDT residuals)");
   }
 
   std::vector<std::string> paths;
   if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
-  if (paths.size() < 2) return Fail(FLAGS_scans + ": fewer than 2 scans");
+  if (paths.size() < 2) return Refuse(FLAGS_scans + ": fewer than 2 scans");
   std::vector<Isometry3d> truth;
   if (!FLAGS_gt_poses.empty()) {
-    if (!ReadKittiPoses(FLAGS_gt_poses, &truth, &error)) return Fail(error);
+    if (!ReadKittiPoses(FLAGS_gt_poses, &truth, &error)) return Refuse(error);
     if (truth.size() < paths.size()) {
-      return Fail(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
-                  " poses for " + std::to_string(paths.size()) + " scans");
+      return Refuse(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
+                    " poses for " + std::to_string(paths.size()) + " scans");
     }
     truth.resize(paths.size());
   }
@@ -379,7 +386,7 @@ int main(int argc, char** argv) {
           false,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

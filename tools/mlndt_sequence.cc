@@ -94,7 +94,13 @@ namespace {
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_sequence: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_sequence: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
@@ -326,15 +332,15 @@ int WritePlots(const SequenceOptions& options,
 int Run() {
   SequenceOptions options;
   std::string error;
-  if (!SequenceOptionsFromFlags(&options, &error)) return Fail(error);
+  if (!SequenceOptionsFromFlags(&options, &error)) return Refuse(error);
   std::vector<std::string> paths;
   std::vector<Isometry3d> truth, odometry;
   if (!ReadScansAndPoses(options, &paths, &truth, &odometry, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   std::error_code ec;
   std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
+  if (ec) return Refuse(FLAGS_output_dir + ": " + ec.message());
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {
@@ -378,7 +384,7 @@ int main(int argc, char** argv) {
           true,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

@@ -370,7 +370,7 @@ TEST(MlndtEval, RefusesBadFlags) {
   };
   for (const Case& c : cases) {
     const ToolRun run = testing::RunTool("mlndt_eval", c.args);
-    EXPECT_EQ(run.exit_code, 1) << c.args;
+    EXPECT_EQ(run.exit_code, 2) << c.args;
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
   }

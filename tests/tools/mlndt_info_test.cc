@@ -200,7 +200,7 @@ TEST(MlndtInfo, MissingFileFailsButOtherFilesAreDescribed) {
 
 TEST(MlndtInfo, NoArgumentsPrintsUsage) {
   const ToolRun run = RunInfo("");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(run.lines.empty());
   EXPECT_NE(run.err.find("mlndt_info"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("FILE"), std::string::npos) << run.err;
@@ -288,7 +288,7 @@ TEST(MlndtInfo, RejectsBadFlagCombinations) {
         "--layers --num_layers=0"}) {
     SCOPED_TRACE(flags);
     const ToolRun run = RunInfo(flags + " " + reference);
-    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(run.exit_code, 2);
     EXPECT_TRUE(run.lines.empty());
     EXPECT_FALSE(run.err.empty());
   }

@@ -303,7 +303,7 @@ TEST(MlndtLocalize, RefusesBadFlags) {
   };
   for (const Case& c : cases) {
     const ToolRun run = testing::RunTool("mlndt_localize", c.args);
-    EXPECT_EQ(run.exit_code, 1) << c.args;
+    EXPECT_EQ(run.exit_code, 2) << c.args;
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;

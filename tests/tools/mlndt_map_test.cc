@@ -379,7 +379,7 @@ TEST(MlndtMap, RefusesBadFlags) {
   };
   for (const Case& c : cases) {
     const ToolRun run = RunMap(c.args);
-    EXPECT_EQ(run.exit_code, 1) << c.args;
+    EXPECT_EQ(run.exit_code, 2) << c.args;
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;
@@ -393,7 +393,7 @@ TEST(MlndtMap, RefusesBadFlags) {
   }
   const ToolRun few = RunMap("--scans=" + Quote(KittiPcd()) +
                              " --poses=" + Quote(dir + "/three.txt") + to);
-  EXPECT_EQ(few.exit_code, 1);
+  EXPECT_EQ(few.exit_code, 2);
   EXPECT_NE(few.err.find("has 3 poses for 8 scans"), std::string::npos)
       << few.err;
 }

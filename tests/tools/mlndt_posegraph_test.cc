@@ -131,7 +131,7 @@ TEST(MlndtPosegraph, WithoutGroundTruthThereAreNoMetrics) {
   EXPECT_EQ(run.out.find("rpe_"), std::string::npos) << run.out;
 }
 
-TEST(MlndtPosegraph, BadFlagsExitWithOne) {
+TEST(MlndtPosegraph, BadFlagsExitWithTwo) {
   const std::string dir = TempDir("bad_flags");
   const std::string scans =
       " --scans=" + Quote(testing::BundledDataPath("kitti/pcd"));
@@ -163,7 +163,7 @@ TEST(MlndtPosegraph, BadFlagsExitWithOne) {
        }) {
     SCOPED_TRACE(args);
     const ToolRun run = RunPosegraph(args, dir);
-    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(run.exit_code, 2);
     EXPECT_NE(run.err.find("mlndt_posegraph"), std::string::npos) << run.err;
     EXPECT_TRUE(run.out.empty()) << run.out;
   }

@@ -478,7 +478,7 @@ TEST(MlndtSequence, AdaptiveStartLayerFollowsTheRunningFailRate) {
   EXPECT_EQ(summary.String("adaptive_start_layer"), "true");
 }
 
-TEST(MlndtSequence, BadFlagsExitOne) {
+TEST(MlndtSequence, BadFlagsExitTwo) {
   const std::string dir = TestDir();
   const std::string kitti = KittiArgs(dir);
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -504,7 +504,7 @@ TEST(MlndtSequence, BadFlagsExitOne) {
   };
   for (const auto& [args, message] : cases) {
     const ToolRun run = RunSequence(args);
-    EXPECT_EQ(run.exit_code, 1) << args << "\n" << run.err;
+    EXPECT_EQ(run.exit_code, 2) << args << "\n" << run.err;
     EXPECT_NE(run.err.find(message), std::string::npos) << args << "\n"
                                                         << run.err;
   }
