@@ -16,6 +16,7 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -153,8 +154,17 @@ int Run() {
                   " poses for " + std::to_string(paths.size()) + " scans");
   }
   std::vector<double> gaps;
-  if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty())
-    return Refuse("bad --gaps");
+  if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty()) {
+    return Refuse("--gaps=" + FLAGS_gaps +
+                  ": expected comma-separated frame gaps (e.g. 1,2,5)");
+  }
+  for (const double gap : gaps) {
+    // A gap of 0 would register every scan onto itself.
+    if (!(gap >= 1.0) || gap != std::floor(gap)) {
+      return Refuse("--gaps=" + FLAGS_gaps +
+                    ": a gap is a whole number of frames >= 1");
+    }
+  }
   std::vector<Vector6d> perturbations;
   if (!ParsePerturbations(FLAGS_perturbations, &perturbations, &error)) {
     return Refuse(error);
