@@ -274,7 +274,7 @@ TEST(MlndtLocalize, RefusesBadFlags) {
       {base +
            " --initial_guess=0,0,0,0,0,0 --initial_poses=" + Quote(kitti.poses),
        "give one of"},
-      {base + " --initial_matrix=1,2,3", "--initial_matrix: expected 12"},
+      {base + " --initial_matrix=1,2,3", "--initial_matrix needs 12"},
       {base + " --initial_matrix=2,0,0,0,0,1,0,0,0,0,1,0",
        "--initial_matrix: the 3x3 part is not a rotation"},
       {base + " --initial_poses=/nonexistent.txt",
