@@ -45,6 +45,7 @@
 #include "tools/common/json_writer.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/output_files.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
@@ -367,10 +368,12 @@ int Run() {
   if (!CheckFlags(&options, &paths, &error)) return Refuse(error);
   Isometry3d first_guess;
   if (!FirstPose(&first_guess, &error)) return Refuse(error);
-  std::error_code ec;
-  std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec)
-    return Refuse("--output_dir=" + FLAGS_output_dir + ": " + ec.message());
+  if (!tools::PrepareOutputDir("output_dir",
+                               FLAGS_output_dir,
+                               {"scans.csv", "summary.json"},
+                               &error)) {
+    return Refuse(error);
+  }
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {

@@ -50,6 +50,7 @@
 #include "mlndt/cost/robust_loss.h"
 #include "mlndt/eval/dataset.h"
 #include "tools/common/json_writer.h"
+#include "tools/common/output_files.h"
 #include "tools/common/posegraph_metrics.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
@@ -312,6 +313,14 @@ int Run() {
                   " (the joint problem is built from ML-NDT residuals)");
   }
 
+  if (!FLAGS_output_dir.empty() &&
+      !tools::PrepareOutputDir(
+          "output_dir",
+          FLAGS_output_dir,
+          {"trajectory_chained.txt", "trajectory_joint.txt"},
+          &error)) {
+    return Refuse(error);
+  }
   std::vector<std::string> paths;
   if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
     return Refuse(error);

@@ -61,6 +61,7 @@
 #include "mlndt/pipeline/scan_store.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/output_files.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scaling_measure.h"
@@ -280,9 +281,10 @@ int Run() {
     return Refuse(error);
   }
   if (!FLAGS_output_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(FLAGS_output_dir, ec);
-    if (ec) return Refuse(FLAGS_output_dir + ": " + ec.message());
+    if (!tools::PrepareOutputDir(
+            "output_dir", FLAGS_output_dir, {"scaling.csv"}, &error)) {
+      return Refuse(error);
+    }
   }
   const bool gnuplot_ok =
       FLAGS_output_dir.empty() || tools::GnuplotAvailable(FLAGS_gnuplot);

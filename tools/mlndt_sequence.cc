@@ -60,6 +60,7 @@
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_writer.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/output_files.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/sequence_output.h"
@@ -338,9 +339,12 @@ int Run() {
   if (!ReadScansAndPoses(options, &paths, &truth, &odometry, &error)) {
     return Refuse(error);
   }
-  std::error_code ec;
-  std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec) return Refuse(FLAGS_output_dir + ": " + ec.message());
+  if (!tools::PrepareOutputDir("output_dir",
+                               FLAGS_output_dir,
+                               {"pairs.csv", "summary.json"},
+                               &error)) {
+    return Refuse(error);
+  }
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {

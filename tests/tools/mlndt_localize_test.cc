@@ -243,7 +243,7 @@ TEST(MlndtLocalize, MissingGnuplotFailsAfterWritingTheRest) {
   EXPECT_FALSE(fs::exists(out + "/trajectory_xy.png"));
 }
 
-// Every misconfiguration: exit code 1, a message naming the flag, and no
+// Every misconfiguration: exit code 2, a message naming the flag, and no
 // work (no output folder).
 TEST(MlndtLocalize, RefusesBadFlags) {
   const std::string dir = TestDir();
@@ -266,6 +266,9 @@ TEST(MlndtLocalize, RefusesBadFlags) {
       {"--map=/nonexistent.mlndt --scans=" + Quote(KittiPcd()) +
            " --output_dir=" + Quote(out),
        "--map=/nonexistent.mlndt: no such file"},
+      {"--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
+           " --output_dir=" + Quote(kitti.map + "/out"),
+       "--output_dir=" + kitti.map + "/out: cannot create the folder"},
       {base + " --max_scans=-1", "--max_scans must be >= 0"},
       {base + " --plot_max_cells=-1", "--plot_max_cells must be >= 0"},
       {base + " --initial_guess=1,2", "--initial_guess=1,2: expected 6"},

@@ -160,6 +160,8 @@ TEST(MlndtPosegraph, BadFlagsExitWithTwo) {
            scans + " --gt_poses=" + Quote(short_gt),  // Too few poses.
            " --scans=" + Quote(dir + "/missing"),     // No folder.
            " --scans=" + Quote(one_scan),             // Fewer than 2 scans.
+           scans + " --output_dir=" +
+               Quote(short_gt + "/out"),  // A file as the folder's parent.
        }) {
     SCOPED_TRACE(args);
     const ToolRun run = RunPosegraph(args, dir);

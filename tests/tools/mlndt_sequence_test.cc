@@ -478,6 +478,20 @@ TEST(MlndtSequence, AdaptiveStartLayerFollowsTheRunningFailRate) {
   EXPECT_EQ(summary.String("adaptive_start_layer"), "true");
 }
 
+// An --output_dir that cannot be created is refused before any pair is
+// registered.
+TEST(MlndtSequence, UnwritableOutputFolderIsRefusedBeforeAnyWork) {
+  const std::string dir = TestDir();
+  { std::ofstream file(dir + "/file"); }
+  const std::string out = dir + "/file/out";
+  const ToolRun run = RunSequence(KittiArgs(out));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--output_dir=" + out + ": cannot create the folder"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(run.err.find("pair 0->1"), std::string::npos) << run.err;
+}
+
 TEST(MlndtSequence, BadFlagsExitTwo) {
   const std::string dir = TestDir();
   const std::string kitti = KittiArgs(dir);
