@@ -3,16 +3,17 @@
 //
 //   mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT
 //                  [--initial_guess=tx,ty,tz,a,b,g | --initial_matrix=...
-//                   | --initial_poses=FILE [--calib=calib.txt]]
+//                   | --initial_poses=FILE [--poses_are_camera
+//                   --calib=calib.txt]]
 //                  [--motion_model=constant_velocity|constant_pose]
 //                  [--plots=false] [any registration flag of mlndt_align]
 //
 // The first scan starts from --initial_guess (metres and degrees, R = Rx Ry
 // Rz), --initial_matrix (12 numbers, row-major 3x4) or the first pose of
-// --initial_poses (KITTI or TUM; with --calib KITTI camera poses), else the
-// identity; map_from_scan. Each next scan starts from the previous pose
-// moved by the last relative motion (constant velocity; Localizer in
-// mlndt/pipeline/localizer.h). The map and the current scan are the only
+// --initial_poses (KITTI or TUM; with --poses_are_camera --calib KITTI camera
+// poses), else the identity; map_from_scan. Each next scan starts from the
+// previous pose moved by the last relative motion (constant velocity; Localizer
+// in mlndt/pipeline/localizer.h). The map and the current scan are the only
 // clouds in memory: each scan is read when its turn comes.
 //
 // Writes into --output_dir: trajectory_kitti.txt and trajectory_tum.txt
@@ -46,6 +47,7 @@
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
@@ -63,7 +65,6 @@ DEFINE_string(initial_matrix, "", "First scan's map_from_scan: 12 comma-separate
 DEFINE_string(initial_poses, "", "Pose file (KITTI or TUM) whose first pose is the first scan's "
               "map_from_scan");
 DEFINE_string(initial_poses_format, "auto", "auto | kitti | tum");
-DEFINE_string(calib, "", "KITTI calib.txt: --initial_poses are camera (cam0) poses");
 DEFINE_string(motion_model, "constant_velocity",
               "Initial guess of scan k > 0: constant_velocity (previous pose x last motion) | "
               "constant_pose (previous pose)");
@@ -130,8 +131,8 @@ bool CheckFlags(LocalizerOptions* options,
         "give one of --initial_guess, --initial_matrix and --initial_poses";
     return false;
   }
-  if (!FLAGS_calib.empty() && FLAGS_initial_poses.empty()) {
-    *error = "--calib converts --initial_poses; give it with --initial_poses";
+  if (!tools::CheckCameraPoseFlags(
+          "--initial_poses", !FLAGS_initial_poses.empty(), error)) {
     return false;
   }
   if (!StringToMotionModel(FLAGS_motion_model, &options->motion_model)) {

@@ -2,7 +2,8 @@
 // (SaveLayeredGrid), or describes a saved map.
 //
 //   mlndt_map --scans=DIR --poses=poses.txt --output=map.mlndt
-//             [--calib=calib.txt] [--min_range=3 --max_range=80]
+//             [--poses_are_camera --calib=calib.txt] [--min_range=3
+//             --max_range=80]
 //             [--voxel_size=0.2] [--finest_cell_size=2 ...]
 //   mlndt_map --scan_list=scans.txt --poses=poses.tum --output=map.mlndt
 //   mlndt_map --cloud=merged.pcd --output=map.mlndt [--voxel_size=0.2]
@@ -13,9 +14,9 @@
 // cropped by range from its sensor (--min_range, --max_range), moved into
 // the world frame by its pose and merged; pose k of --poses (KITTI
 // 12-number lines or TUM lines, format detected or --poses_format;
-// world_from_scan) belongs to scan k; with --calib they are KITTI camera
-// poses, converted with its Tr line. Or --cloud: one cloud already in the
-// world frame. The merged cloud is voxel-filtered (--voxel_size, one
+// world_from_scan) belongs to scan k; with --poses_are_camera --calib they are
+// KITTI camera poses, converted with its Tr line. Or --cloud: one cloud already
+// in the world frame. The merged cloud is voxel-filtered (--voxel_size, one
 // centroid per voxel) and the map is built with the shared map flags
 // (--preset, --finest_cell_size, --num_layers, --division_constant,
 // --min_points_per_cell, --min_eigenvalue, --min_eigenvalue_ratio,
@@ -43,6 +44,7 @@
 #include "tools/common/json_writer.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
@@ -54,8 +56,6 @@ DEFINE_string(scan_list, "", "Text file of scan paths, one a line (relative to t
 DEFINE_string(poses, "", "world_from_scan of every scan, in scan order: KITTI (12 numbers a line) "
               "or TUM (t tx ty tz qx qy qz qw) lines");
 DEFINE_string(poses_format, "auto", "auto (by extension, then by the first line) | kitti | tum");
-DEFINE_string(calib, "", "KITTI calib.txt: --poses are camera (cam0) poses, converted with its Tr "
-              "line (V = Tr^-1 P Tr)");
 DEFINE_string(cloud, "", "One cloud already in the world frame, instead of --scans and --poses");
 DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
 DEFINE_double(voxel_size, 0.0, "Voxel filter of the merged cloud: voxel edge [m], 0 = none, else "
@@ -88,6 +88,7 @@ const std::vector<std::string> kBuildFlags = {"scans",
                                               "poses",
                                               "poses_format",
                                               "calib",
+                                              "poses_are_camera",
                                               "cloud",
                                               "max_scans",
                                               "min_range",
@@ -196,6 +197,7 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
           {"poses",
            "poses_format",
            "calib",
+           "poses_are_camera",
            "max_scans",
            "min_range",
            "max_range",
@@ -209,6 +211,9 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
     *error =
         "--scans and --scan_list need --poses (world_from_scan of every "
         "scan)";
+    return false;
+  }
+  if (!tools::CheckCameraPoseFlags("--poses", !FLAGS_poses.empty(), error)) {
     return false;
   }
   if (FLAGS_max_scans < 0) {
@@ -405,7 +410,8 @@ int main(int argc, char** argv) {
   const char* usage =
       "Builds a layered NDT map from scans and poses (or one cloud), or "
       "describes one.\n"
-      "  mlndt_map --scans=DIR --poses=FILE [--calib=FILE] --output=MAP\n"
+      "  mlndt_map --scans=DIR --poses=FILE [--poses_are_camera --calib=FILE] "
+      "--output=MAP\n"
       "  mlndt_map --cloud=FILE --output=MAP\n"
       "  mlndt_map info MAP";
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {

@@ -3,7 +3,7 @@
 // reports per-pair errors and totals in the layout of the paper's Tables 2-4.
 //
 //   mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=poses.txt
-//   [--calib=calib.txt]]
+//   [--poses_are_camera --calib=calib.txt]]
 //                  [--step=1]
 //                  [--init=zero|gt_fraction:c|constant_velocity|poses:FILE]
 //                  [--adaptive_start_layer] [any mlndt_align registration flag]
@@ -11,9 +11,9 @@
 // Scans are the point-cloud files in DIR (by extension), sorted by file
 // name; pose and calibration files given on the command line are left out
 // even when they sit in DIR. Ground-truth poses are KITTI lines, one per
-// scan, world_from_scan in the scans' own frame; with --calib they are KITTI
-// camera poses and are converted with the Tr line (V = Tr^-1 P Tr). --calib
-// applies to --init=poses:FILE too.
+// scan, world_from_scan in the scans' own frame; with --poses_are_camera
+// --calib they are KITTI camera poses and are converted with the Tr line
+// (V = Tr^-1 P Tr; pose_flags.h). --calib applies to --init=poses:FILE too.
 //
 // Initial guesses (reference_from_input):
 //   zero               identity (the paper's Z_i = 0),
@@ -61,6 +61,7 @@
 #include "tools/common/json_writer.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/sequence_output.h"
@@ -71,8 +72,6 @@
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
 DEFINE_string(gt_poses, "", "Optional KITTI poses, one line per scan (world_from_scan)");
-DEFINE_string(calib, "", "Optional KITTI calib.txt: pose files are camera poses, converted "
-              "with its Tr line (V = Tr^-1 P Tr)");
 DEFINE_int32(step, 1, "Register scan i + step onto scan i (>= 1)");
 DEFINE_string(init, "zero", "Initial guess: zero | gt_fraction:c | constant_velocity | poses:FILE");
 DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
@@ -160,11 +159,10 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
     *error = "--trace_plot_pairs must be >= 0";
     return false;
   }
-  if (!FLAGS_calib.empty() && FLAGS_gt_poses.empty() &&
-      options->init.mode != InitMode::POSES) {
-    *error =
-        "--calib converts pose files; give --gt_poses or --init=poses:FILE "
-        "with it";
+  if (!tools::CheckCameraPoseFlags(
+          "--gt_poses or --init=poses:FILE",
+          !FLAGS_gt_poses.empty() || options->init.mode == InitMode::POSES,
+          error)) {
     return false;
   }
   return true;

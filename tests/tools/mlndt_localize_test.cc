@@ -285,8 +285,11 @@ TEST(MlndtLocalize, RefusesBadFlags) {
       {base + " --initial_poses=" + Quote(kitti.poses) +
            " --initial_poses_format=csv",
        "--initial_poses_format=csv: expected auto, kitti or tum"},
-      {base + " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")),
-       "--calib converts --initial_poses"},
+      {base + " --poses_are_camera --calib=" +
+           Quote(testing::BundledDataPath("kitti/calib.txt")),
+       "--calib converts pose files; give it with --initial_poses"},
+      {base + " --initial_poses=" + Quote(kitti.poses) + " --poses_are_camera",
+       "--poses_are_camera needs --calib=calib.txt"},
       {base + " --motion_model=kalman",
        "--motion_model=kalman: expected constant_velocity or constant_pose"},
       {base + " --finest_cell_size=1",

@@ -174,7 +174,8 @@ TEST(MlndtMap, BuildsTheKittiMapFromChainedPoses) {
   EXPECT_EQ(json["map_bytes"].get<size_t>(), here.MemoryBytes());
 }
 
-// The same poses as a TUM file, and as KITTI camera poses with --calib,
+// The same poses as a TUM file, and as KITTI camera poses with
+// --poses_are_camera --calib,
 // give the same map; --scan_list gives the same map as --scans. (The
 // chained rotations are orthonormal only to ~5e-6, as the 9-digit pairs
 // are; TUM's quaternions are exact rotations, so points 80 m out move by
@@ -224,8 +225,9 @@ TEST(MlndtMap, TumPosesCameraPosesAndScanLists) {
   const ToolRun camera =
       RunMap("--scans=" + Quote(KittiPcd()) + " --poses=" +
              Quote(testing::BundledDataPath("kitti/poses_cam0.txt")) +
-             " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")) +
-             common + "--output=" + Quote(dir + "/camera.mlndt"));
+             " --poses_are_camera --calib=" +
+             Quote(testing::BundledDataPath("kitti/calib.txt")) + common +
+             "--output=" + Quote(dir + "/camera.mlndt"));
   ASSERT_EQ(velo.exit_code, 0) << velo.err;
   ASSERT_EQ(camera.exit_code, 0) << camera.err;
   ExpectSameMap(
@@ -338,6 +340,13 @@ TEST(MlndtMap, RefusesBadFlags) {
       {"--cloud=x.pcd --min_range=2" + to,
        "--min_range does not apply to --cloud"},
       {"--cloud=x.pcd --calib=c.txt" + to, "--calib does not apply to --cloud"},
+      {"--cloud=x.pcd --poses_are_camera" + to,
+       "--poses_are_camera does not apply to --cloud"},
+      {scans + " --poses_are_camera" + to,
+       "--poses_are_camera needs --calib=calib.txt"},
+      {scans + " --calib=" +
+           Quote(testing::BundledDataPath("kitti/calib.txt")) + to,
+       "--calib converts camera poses: give --poses_are_camera with it"},
       {scans + " --min_range=-1" + to, "--min_range: invalid option"},
       {scans + " --min_range=5 --max_range=4" + to,
        "--max_range: invalid option"},

@@ -424,8 +424,8 @@ TEST(MlndtSequence, CameraPosesWithCalibMatchVelodynePoses) {
   const ToolRun run = RunSequence(
       "--scans=" + Quote(data) +
       " --gt_poses=" + Quote(data + "/poses_cam0.txt") +
-      " --calib=" + Quote(data + "/calib.txt") + " --output_dir=" + Quote(dir) +
-      " --backend=lm --plots=false");
+      " --poses_are_camera --calib=" + Quote(data + "/calib.txt") +
+      " --output_dir=" + Quote(dir) + " --backend=lm --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const FlatJson summary(ReadFile(dir + "/summary.json"));
   EXPECT_EQ(summary.Number("scans"), 3.0);
@@ -498,6 +498,9 @@ TEST(MlndtSequence, BadFlagsExitTwo) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--output_dir=" + Quote(dir), "Usage"},
       {kitti + " --step=0", "--step"},
+      {kitti + " --poses_are_camera", "--poses_are_camera needs --calib"},
+      {kitti + " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")),
+       "give --poses_are_camera with it"},
       {kitti + " --step=8", "too few"},
       {kitti + " --init=bogus", "--init=bogus"},
       {kitti + " --init=gt_fraction:x", "gt_fraction"},
