@@ -27,11 +27,11 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include <fstream>
 #include <iostream>
 #include <map>
 
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/eval/kitti_segment_errors.h"
 #include "mlndt/eval/reference_pairs.h"
 #include "mlndt/eval/trajectory_association.h"
@@ -41,6 +41,7 @@
 #include "tools/common/json_writer.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/output_files.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
@@ -145,6 +146,9 @@ struct EvalFlags {
 };
 
 bool ParseFlags(EvalFlags* flags, std::string* error) {
+  if (!tools::CheckOutputFile("output_json", FLAGS_output_json, error)) {
+    return false;
+  }
   if (FLAGS_reference.empty() || FLAGS_estimate.empty()) {
     *error =
         "give --reference=FILE and --estimate=FILE[,FILE...]. Usage: "
@@ -473,21 +477,22 @@ int Run() {
       estimates += (i ? ", " : "") + ResultJson(results[i]);
     }
     estimates += "]";
-    std::ofstream out(FLAGS_output_json);
-    out << tools::JsonObject()
-               .AddString("tool", kTool)
-               .AddString("reference", FLAGS_reference)
-               .AddString("reference_format",
-                          TrajectoryFormatToString(reference_format))
-               .AddNumber("reference_poses",
-                          static_cast<double>(reference.size()))
-               .AddString("alignment",
-                          TrajectoryAlignmentToString(flags.alignment))
-               .AddNumber("delta", FLAGS_delta)
-               .Add("estimates", estimates)
-               .str()
-        << "\n";
-    if (!out) return Fail(FLAGS_output_json + ": cannot write");
+    const std::string json =
+        tools::JsonObject()
+            .AddString("tool", kTool)
+            .AddString("reference", FLAGS_reference)
+            .AddString("reference_format",
+                       TrajectoryFormatToString(reference_format))
+            .AddNumber("reference_poses", static_cast<double>(reference.size()))
+            .AddString("alignment",
+                       TrajectoryAlignmentToString(flags.alignment))
+            .AddNumber("delta", FLAGS_delta)
+            .Add("estimates", estimates)
+            .str() +
+        "\n";
+    if (!WriteFileAtomically(FLAGS_output_json, json, &error)) {
+      return Fail(error);
+    }
   }
   return 0;
 }

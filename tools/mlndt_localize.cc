@@ -30,11 +30,11 @@
 #include <glog/logging.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "mlndt/cloud/io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/eval/statistics.h"
@@ -209,7 +209,7 @@ bool WriteScansCsv(const std::string& path,
                    const std::vector<std::string>& files,
                    const std::vector<LocalizationResult>& results,
                    std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "index,file,termination,iterations,input_points,sampled_points,"
          "matched_points,score,own_cell_fraction,inlier_fraction,mean_score,"
          "median_distance,tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,"
@@ -238,11 +238,7 @@ bool WriteScansCsv(const std::string& path,
         << tools::JsonNumber(r.registration_time_s * 1e3) << ","
         << CsvField(r.message) << "\n";
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 std::string StatsJson(const Stats& s) {
@@ -326,14 +322,14 @@ bool WritePlot(const std::string& dir,
           ? 0
           : std::max<size_t>(1, (cells.size() + max_cells - 1) / max_cells);
   {
-    std::ofstream out(data_dir + "/map_cells.dat");
+    std::ostringstream out;
     out << "# x_m y_m z_m (finest-layer cell means, every " << stride
         << "-th)\n";
     for (size_t c = 0; stride > 0 && c < cells.size(); c += stride) {
       out << cells[c].mean.x() << " " << cells[c].mean.y() << " "
           << cells[c].mean.z() << "\n";
     }
-    std::ofstream trajectory(data_dir + "/trajectory.dat");
+    std::ostringstream trajectory;
     trajectory << "# x_m y_m converged(1/0)\n";
     for (const LocalizationResult& r : results) {
       trajectory << r.map_from_scan.translation().x() << " "
@@ -341,8 +337,9 @@ bool WritePlot(const std::string& dir,
                  << (r.termination_type == TerminationType::CONVERGENCE)
                  << "\n";
     }
-    if (!out || !trajectory) {
-      *error = data_dir + ": cannot write the plot data";
+    if (!WriteFileAtomically(data_dir + "/map_cells.dat", out.str(), error) ||
+        !WriteFileAtomically(
+            data_dir + "/trajectory.dat", trajectory.str(), error)) {
       return false;
     }
   }
@@ -430,16 +427,16 @@ int Run() {
       !WriteScansCsv(out + "scans.csv", paths, results, &error)) {
     return Fail(error);
   }
-  {
-    std::ofstream json(out + "summary.json");
-    json << SummaryJson(options,
-                        map,
-                        first_guess,
-                        results,
-                        map_load_s,
-                        NowSeconds() - start)
-         << "\n";
-    if (!json) return Fail(out + "summary.json: cannot write");
+  if (!WriteFileAtomically(out + "summary.json",
+                           SummaryJson(options,
+                                       map,
+                                       first_guess,
+                                       results,
+                                       map_load_s,
+                                       NowSeconds() - start) +
+                               "\n",
+                           &error)) {
+    return Fail(error);
   }
 
   std::printf("%-5s %-24s %-15s %5s %8s %8s %10s %10s %10s %9s %9s\n",

@@ -34,16 +34,17 @@
 #include <glog/logging.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "mlndt/cloud/io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/map_builder.h"
 #include "tools/common/json_writer.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
@@ -249,6 +250,10 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
              " does not exist";
     return false;
   }
+  if (!tools::CheckOutputFile("output", FLAGS_output, error) ||
+      !tools::CheckOutputFile("output_json", FLAGS_output_json, error)) {
+    return false;
+  }
   return options->IsValid(error);
 }
 
@@ -396,9 +401,11 @@ int Build() {
       summary.total_time_s);
   std::printf("map written to %s\n", FLAGS_output.c_str());
   if (!FLAGS_output_json.empty()) {
-    std::ofstream out(FLAGS_output_json);
-    out << SummaryJson(options, summary, map) << "\n";
-    if (!out) return Fail(FLAGS_output_json + ": cannot write");
+    if (!WriteFileAtomically(FLAGS_output_json,
+                             SummaryJson(options, summary, map) + "\n",
+                             &error)) {
+      return Fail(error);
+    }
   }
   return 0;
 }

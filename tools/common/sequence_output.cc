@@ -1,9 +1,10 @@
 #include "tools/common/sequence_output.h"
 
 #include <cstdio>
-#include <fstream>
 #include <map>
+#include <sstream>
 
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/tool_utils.h"
@@ -27,7 +28,7 @@ bool WritePairsCsv(const std::string& path,
                    const ScanStore& store,
                    const std::vector<PairResult>& results,
                    std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "reference,input,reference_file,input_file,"
          "err_tx_cm,err_ty_cm,err_tz_cm,err_alpha_deg,err_beta_deg,err_gamma_"
          "deg,"
@@ -64,18 +65,14 @@ bool WritePairsCsv(const std::string& path,
       out << "," << Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
     out << "\n";
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 // trace.csv: every iteration of every pair.
 bool WriteTraceCsv(const std::string& path,
                    const std::vector<PairResult>& results,
                    std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "reference,input,iteration,layer,score,step_norm,step_is_successful,"
          "tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,time_ms\n";
   for (const PairResult& r : results) {
@@ -90,11 +87,7 @@ bool WriteTraceCsv(const std::string& path,
       out << "," << Num(it.time_s * 1e3) << "\n";
     }
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 std::string StatsJson(const Stats& s, bool with_quantiles) {
