@@ -36,7 +36,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -45,12 +44,15 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/statistics.h"
 #include "tools/common/covariance_consistency.h"
 #include "tools/common/json_writer.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
+#include "tools/common/output_files.h"
+#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
 
@@ -88,15 +90,33 @@ int Refuse(const std::string& message) {
   return tools::kExitUsage;
 }
 
+// What every registration of the run shares: the start offsets' generator,
+// the --output_csv rows (written once at the end) and the progress bar.
+struct Campaign {
+  std::mt19937_64* rng;
+  std::ostringstream* csv;  // nullptr without --output_csv.
+  tools::Progress* progress;
+  size_t done = 0;
+};
+
+// The registrations of --datasets: --starts for each pair.
+size_t NumRegistrations(const std::vector<std::string>& datasets) {
+  size_t pairs = 0;
+  for (const std::string& dataset : datasets)
+    pairs += dataset == "kitti" ? 7 : 1;
+  return pairs * static_cast<size_t>(FLAGS_starts);
+}
+
 // Registers input onto reference from the perturbed starts.
 bool RunPair(const RegistrationOptions& base_options,
              const PointCloud& reference,
              const PointCloud& input,
              const Isometry3d& reference_from_input,
-             std::mt19937_64* rng,
-             std::ofstream* csv,
+             Campaign* campaign,
              PairRuns* pair,
              std::string* error) {
+  std::mt19937_64* rng = campaign->rng;
+  std::ostringstream* csv = campaign->csv;
   LayeredGrid map;
   if (!LayeredGrid::Build(base_options.grid, reference, &map, error))
     return false;
@@ -119,7 +139,11 @@ bool RunPair(const RegistrationOptions& base_options,
              &summary);
     const bool usable =
         summary.IsSolutionUsable() && !summary.covariance.isZero(0.0);
-    if (csv->is_open()) {
+    campaign->progress->Update(
+        ++campaign->done,
+        pair->dataset + " " + pair->name + " start " + std::to_string(k + 1) +
+            " " + TerminationTypeToString(summary.termination_type));
+    if (csv != nullptr) {
       *csv << pair->dataset << "," << pair->name << "," << k << "," << usable;
       for (int a = 0; a < 6; ++a)
         *csv << "," << summary.reference_from_input_xi(a);
@@ -159,8 +183,7 @@ bool RunPair(const RegistrationOptions& base_options,
 }
 
 bool RunKitti(const RegistrationOptions& options,
-              std::mt19937_64* rng,
-              std::ofstream* csv,
+              Campaign* campaign,
               std::vector<PairRuns>* pairs,
               std::string* error) {
   const std::string dir = FLAGS_data_dir + "/kitti";
@@ -182,8 +205,7 @@ bool RunKitti(const RegistrationOptions& options,
                  scans[i],
                  scans[i + 1],
                  poses[i].inverse() * poses[i + 1],
-                 rng,
-                 csv,
+                 campaign,
                  &pair,
                  error)) {
       return false;
@@ -194,8 +216,7 @@ bool RunKitti(const RegistrationOptions& options,
 }
 
 bool RunKoide3(const RegistrationOptions& options,
-               std::mt19937_64* rng,
-               std::ofstream* csv,
+               Campaign* campaign,
                std::vector<PairRuns>* pairs,
                std::string* error) {
   const std::string dir = FLAGS_data_dir + "/koide3";
@@ -214,8 +235,7 @@ bool RunKoide3(const RegistrationOptions& options,
                reference,
                input,
                reference_from_input,
-               rng,
-               csv,
+               campaign,
                &pair,
                error)) {
     return false;
@@ -238,25 +258,35 @@ int Main() {
     return Refuse(
         "--datasets: expected a comma-separated list of kitti, koide3");
   }
-  std::ofstream csv;
+  for (const std::string& dataset : datasets) {
+    if (dataset != "kitti" && dataset != "koide3") {
+      return Refuse("--datasets: unknown '" + dataset + "' (kitti, koide3)");
+    }
+  }
+  if (!tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
+      !tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
+    return Refuse(error);
+  }
+  std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
-    csv.open(FLAGS_output_csv);
     csv << "dataset,pair,start,usable,tx,ty,tz,alpha,beta,gamma,sd_tx,sd_ty,sd_"
            "tz,sd_alpha,"
            "sd_beta,sd_gamma,final_score,matched\n";
   }
   std::mt19937_64 rng(FLAGS_perturbation_seed);
+  tools::Progress progress("mlndt_covariance", NumRegistrations(datasets));
+  Campaign campaign{&rng, FLAGS_output_csv.empty() ? nullptr : &csv, &progress};
   std::vector<PairRuns> pairs;
   for (const std::string& dataset : datasets) {
-    bool ok = false;
-    if (dataset == "kitti") {
-      ok = RunKitti(options, &rng, &csv, &pairs, &error);
-    } else if (dataset == "koide3") {
-      ok = RunKoide3(options, &rng, &csv, &pairs, &error);
-    } else {
-      return Fail("--datasets: unknown '" + dataset + "' (kitti, koide3)");
-    }
+    const bool ok = dataset == "kitti"
+                        ? RunKitti(options, &campaign, &pairs, &error)
+                        : RunKoide3(options, &campaign, &pairs, &error);
     if (!ok) return Fail(error);
+  }
+  progress.Finish();
+  if (!FLAGS_output_csv.empty() &&
+      !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
+    return Fail(error);
   }
 
   tools::JsonObject json;
