@@ -37,7 +37,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -52,6 +51,7 @@
 #include "tools/common/json_writer.h"
 #include "tools/common/output_files.h"
 #include "tools/common/posegraph_metrics.h"
+#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
 
@@ -180,12 +180,40 @@ double CostAt(ceres::Problem* problem,
   return cost;
 }
 
+// The joint solve's iterations on a progress bar whose total is the
+// iteration cap of all stages (a stage that converges ends early).
+class JointProgress : public ceres::IterationCallback {
+ public:
+  // `progress` must outlive the callback.
+  JointProgress(tools::Progress* progress, size_t before, std::string stage)
+      : progress_(progress), before_(before), stage_(std::move(stage)) {}
+
+  ceres::CallbackReturnType operator()(
+      const ceres::IterationSummary& summary) override {
+    char cost[64];
+    std::snprintf(cost, sizeof(cost), " cost %.6g", summary.cost);
+    progress_->Update(before_ + static_cast<size_t>(summary.iteration),
+                      stage_ + cost);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  tools::Progress* progress_;
+  size_t before_;
+  std::string stage_;
+};
+
 JointResult SolveJointly(const std::vector<LayeredGrid>& maps,
                          const std::vector<PointCloud>& samples,
                          const RegistrationOptions& options,
                          std::vector<PoseBlocks>* poses) {
   JointResult result;
   const std::vector<PoseBlocks> chained = *poses;
+  const size_t stage_iterations =
+      static_cast<size_t>(FLAGS_joint_max_iterations);
+  tools::Progress progress(
+      "mlndt_posegraph joint",
+      static_cast<size_t>(FLAGS_joint_layers) * stage_iterations);
   for (int offset = FLAGS_joint_layers - 1; offset >= 0; --offset) {
     ceres::Problem problem;
     result.directed_pairs =
@@ -196,8 +224,14 @@ JointResult SolveJointly(const std::vector<LayeredGrid>& maps,
     ChooseLinearSolver(&solver_options);
     solver_options.max_num_iterations = FLAGS_joint_max_iterations;
     solver_options.num_threads = options.num_threads;
+    const size_t stage = static_cast<size_t>(FLAGS_joint_layers - 1 - offset);
+    JointProgress callback(&progress,
+                           stage * stage_iterations,
+                           "layer n-" + std::to_string(offset));
+    solver_options.callbacks.push_back(&callback);
     ceres::Solver::Summary summary;
     ceres::Solve(solver_options, &problem, &summary);
+    progress.Finish();
     LOG(INFO) << "joint stage, layer n-" << offset << ": "
               << summary.BriefReport();
     if (offset == FLAGS_joint_layers - 1)
