@@ -13,6 +13,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev nlohmann-json3-dev
   gnuplot-nox clang-format ccache
   clang libclang-rt-14-dev libomp-dev
+  # The Python module (python/) and its tests, for Debian's /usr/bin/python3.
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 
 for arg in "$@"; do

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # The README's second command: installs what is missing, builds, and runs the
-# whole test suite with ctest. Tests that need the larger shared LiDAR data
-# set read it from $MLNDT_DATA_DIR and skip, saying why, without it.
+# whole test suite with ctest: the GoogleTest tests and the pytest suite of
+# the Python module (python/tests, one ctest test per file). Tests that need
+# the larger shared LiDAR data set read it from $MLNDT_DATA_DIR and skip,
+# saying why, without it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_deps.sh
-scripts/build.sh
+# ON: install_deps.sh has installed pybind11 and Python's packages, and a
+# build folder configured before they were there would keep the module off.
+scripts/build.sh -DMLNDT_BUILD_PYTHON=ON
 ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"

@@ -1,7 +1,8 @@
-// mlndt_bench: times solver choices on real scan pairs with ground truth and
+// mlndt_bench: times solver choices on real scan pairs with references and
 // reports speed and accuracy per configuration.
 //
-//   mlndt_bench [--pairs=koide3,kitti] [--backends=ceres,newton,lm]
+//   mlndt_bench [--pairs=koide3,kitti] [--defaults=current]
+//               [--backends=ceres,newton,lm]
 //   [--samplings=gbs]
 //               [--gbs_cell_sizes=1]
 //               [--start_layers=1] [--linear_solvers=dense_normal_cholesky]
@@ -13,24 +14,23 @@
 // bundled KITTI frames), see tools/common/bench_pairs.h.
 // Every registration starts from the identity.
 //
-// The grid is backends x samplings (x GBS cell sizes for gbs) x start layers x
-// threads, and for the Ceres
-// backend also x linear solvers x trust regions. Each repetition round runs
-// every configuration once on every pair, alternating configurations pair by
-// pair and rotating their order from round to round, so that machine noise
-// hits all configurations alike. With --compare_pcl (built with
-// -DMLNDT_WITH_PCL=ON) pcl::NormalDistributionsTransform takes part in the
-// same rotation: a 0.1 m VoxelGrid on both clouds and 1.0 m cells as its
-// peers (PEERS.md 1a), at most 35 iterations, and the --pcl_* flags' defaults
-// step size 1.0 and transformation epsilon 1e-4, the PCL setting that reached
-// the pairs' answers in our sweep (docs/performance.md). The peers' and PCL
-// tutorial's step 0.1 and epsilon 0.01 are a different thing since PCL PR
-// #1724 (2017; Debian 12 has PCL 1.13): NDT compares epsilon with the step's
-// *squared* translation, so with steps capped at 0.1 m PCL stops after its
-// first step (0.41 m short on the koide3 pair); with epsilon 1e-4 and step 0.1
-// it stops after 5 steps, still 0.22 m short.
-// Its time covers filtering, setInputTarget and align, i.e. everything after
-// loading, like our time_ms.total.
+// The grid is defaults x backends x samplings (x GBS cell sizes for gbs) x
+// start layers x threads, and for the Ceres backend also x linear solvers x
+// trust regions. Each repetition round runs every configuration once on every
+// pair, alternating configurations pair by pair and rotating their order from
+// round to round, so that machine noise hits all configurations alike. With
+// --compare_pcl (built with -DMLNDT_WITH_PCL=ON)
+// pcl::NormalDistributionsTransform takes part in the same rotation: a 0.1 m
+// VoxelGrid on both clouds and 1.0 m cells as its peers (PEERS.md 1a), at most
+// 35 iterations, and the --pcl_* flags' defaults step size 1.0 and
+// transformation epsilon 1e-4, the PCL setting that reached the pairs' answers
+// in our sweep (docs/performance.md). The peers' and PCL tutorial's step 0.1
+// and epsilon 0.01 are a different thing since PCL PR #1724 (2017; Debian 12
+// has PCL 1.13): NDT compares epsilon with the step's *squared* translation, so
+// with steps capped at 0.1 m PCL stops after its first step (0.41 m short on
+// the koide3 pair); with epsilon 1e-4 and step 0.1 it stops after 5 steps,
+// still 0.22 m short. Its time covers filtering, setInputTarget and align, i.e.
+// everything after loading, like our time_ms.total.
 //
 // Per set of pairs and configuration: a round's time is the mean of
 // time_ms.total over the set's pairs; the table gives the median and min-max
@@ -74,6 +74,10 @@
 DEFINE_string(pairs, "koide3,kitti", "Comma-separated sets of pairs: koide3, kitti");
 DEFINE_string(data_dir, MLNDT_DATA_DIR, "Folder with koide3/ and kitti/ (the repository's data/)");
 DEFINE_string(kitti_gaps, "1", "Comma-separated frame gaps of the kitti pairs: i+gap onto i");
+DEFINE_string(defaults, "current",
+              "Comma-separated defaults the configurations start from: current "
+              "(RegistrationOptions()), previous (2 m finest cells, POINTS coarse weighting, "
+              "Cauchy scale 3: the defaults before the reach and precision change)");
 DEFINE_string(backends, "ceres,newton,lm", "Comma-separated backends: ceres, newton, lm");
 DEFINE_string(samplings, "gbs",
               "Comma-separated input sampling methods: gbs, random, all, voxel_centroid");
@@ -335,7 +339,8 @@ int Run() {
   std::vector<std::string> sets;
   std::string error;
   if (!tools::ParseBenchSets(FLAGS_pairs, &sets, &error)) return Refuse(error);
-  const tools::BenchGridFlags grid{FLAGS_backends,
+  const tools::BenchGridFlags grid{FLAGS_defaults,
+                                   FLAGS_backends,
                                    FLAGS_samplings,
                                    FLAGS_gbs_cell_sizes,
                                    FLAGS_start_layers,

@@ -15,6 +15,7 @@ ObjectiveOptions PaperObjectiveOptions() {
   ObjectiveOptions options;
   options.unmatched_policy = UnmatchedPolicy::ZERO_RESIDUAL;
   options.loss = LossType::NONE;
+  options.loss_scale = 3.0;  // Unused without a loss; the earlier default.
   return options;
 }
 

@@ -372,6 +372,7 @@ LayeredGridOptions PaperLayeredGridOptions() {
   LayeredGridOptions options;
   options.finest_cell_size_m = 0.0;
   options.num_layers = 4;
+  options.coarse_weighting = CoarseWeighting::POINTS;
   return options;
 }
 

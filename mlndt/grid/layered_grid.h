@@ -55,8 +55,8 @@ struct LayeredGridOptions {
   // finest_cell_size_m > 0.
   int num_layers = 4;
   // When > 0, n is the smallest number of layers whose finest cell edge is
-  // <= this [m] (docs/defaults.md: why 2 m). 0, or in [1e-3, 1e5].
-  double finest_cell_size_m = 2.0;
+  // <= this [m] (docs/defaults.md: why 1.5 m). 0, or in [1e-3, 1e5].
+  double finest_cell_size_m = 1.5;
   // When > 0, the map has one layer of cubic cells of exactly this edge [m]
   // (the conventional NDT grid) and q, n and finest_cell_size_m are ignored.
   // 0, or in [1e-3, 1e5].
@@ -71,7 +71,7 @@ struct LayeredGridOptions {
   CellRegularization regularization;
   // Weights of the points in the coarse layers' moments (the finest layer
   // always weighs every point alike).
-  CoarseWeighting coarse_weighting = CoarseWeighting::POINTS;
+  CoarseWeighting coarse_weighting = CoarseWeighting::FINEST_CELLS;
 
   bool IsValid(std::string* error) const;
 };

@@ -183,8 +183,8 @@ TEST(AddMlNdtResiduals, OneLossFromTheObjectiveOnEveryBlock) {
   ASSERT_NE(defaults.GetLossFunctionForResidualBlock(default_ids.front()),
             nullptr);
   defaults.GetLossFunctionForResidualBlock(default_ids.front())
-      ->Evaluate(9.0, rho);  // Cauchy, scale 3: 9 log(1 + 9 / 9).
-  EXPECT_DOUBLE_EQ(rho[0], 9.0 * std::log(2.0));
+      ->Evaluate(4.0, rho);  // Cauchy, scale 2: 4 log(1 + 4 / 4).
+  EXPECT_DOUBLE_EQ(rho[0], 4.0 * std::log(2.0));
 }
 
 TEST(AddMlNdtResidualsQuaternion, SetsEigenQuaternionManifoldOnRotationBlock) {

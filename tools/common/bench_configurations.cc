@@ -13,6 +13,7 @@ namespace {
 
 // The choices of every grid axis, parsed.
 struct GridAxes {
+  std::vector<BenchDefaults> defaults;
   std::vector<BackendType> backends;
   // (method, GBS cell size): one entry per GBS size, one for other methods.
   std::vector<std::pair<SamplingMethod, double>> samplings;
@@ -20,6 +21,27 @@ struct GridAxes {
   std::vector<ceres::LinearSolverType> linear_solvers;
   std::vector<ceres::TrustRegionStrategyType> trust_regions;
 };
+
+bool ParseDefaults(const std::string& text,
+                   std::vector<BenchDefaults>* defaults,
+                   std::string* error) {
+  std::vector<std::string> items;
+  if (!SplitList(text, &items)) {
+    *error = "--defaults: expected a comma-separated list of current, previous";
+    return false;
+  }
+  for (const std::string& item : items) {
+    if (item == "current") {
+      defaults->push_back(BenchDefaults::CURRENT);
+    } else if (item == "previous") {
+      defaults->push_back(BenchDefaults::PREVIOUS);
+    } else {
+      *error = "--defaults: '" + item + "' is not current or previous";
+      return false;
+    }
+  }
+  return true;
+}
 
 bool ParseBackends(const std::string& text,
                    std::vector<BackendType>* backends,
@@ -105,7 +127,8 @@ bool ParseCeresList(const std::string& text,
 }
 
 bool ParseAxes(const BenchGridFlags& flags, GridAxes* axes, std::string* e) {
-  if (!ParseBackends(flags.backends, &axes->backends, e) ||
+  if (!ParseDefaults(flags.defaults, &axes->defaults, e) ||
+      !ParseBackends(flags.backends, &axes->backends, e) ||
       !ParseSamplings(flags, &axes->samplings, e)) {
     return false;
   }
@@ -135,8 +158,17 @@ bool ParseAxes(const BenchGridFlags& flags, GridAxes* axes, std::string* e) {
 
 }  // namespace
 
+const char* BenchDefaultsName(BenchDefaults defaults) {
+  return defaults == BenchDefaults::CURRENT ? "current" : "previous";
+}
+
 RegistrationOptions BenchConfiguration::Options(uint64_t seed) const {
   RegistrationOptions options;
+  if (defaults == BenchDefaults::PREVIOUS) {
+    options.grid.finest_cell_size_m = 2.0;
+    options.grid.coarse_weighting = CoarseWeighting::POINTS;
+    options.objective.loss_scale = 3.0;
+  }
   options.backend.type = backend;
   options.sampling.method = sampling;
   options.sampling.gbs_cell_size_m = gbs_cell_size_m;
@@ -153,7 +185,7 @@ bool ParseBenchConfigurations(const BenchGridFlags& flags,
                               std::string* error) {
   GridAxes axes;
   if (!ParseAxes(flags, &axes, error)) return false;
-  configurations->clear();
+  std::vector<BenchConfiguration> grid;  // With the current defaults.
   for (const BackendType backend : axes.backends) {
     const bool ceres_backend = backend == BackendType::CERES;
     const size_t num_solvers = ceres_backend ? axes.linear_solvers.size() : 1;
@@ -179,11 +211,18 @@ bool ParseBenchConfigurations(const BenchGridFlags& flags,
                          std::to_string(thread_count) + "): " + *error;
                 return false;
               }
-              configurations->push_back(c);
+              grid.push_back(c);
             }
           }
         }
       }
+    }
+  }
+  configurations->clear();
+  for (const BenchDefaults defaults : axes.defaults) {
+    for (BenchConfiguration c : grid) {
+      c.defaults = defaults;
+      configurations->push_back(c);
     }
   }
   return true;

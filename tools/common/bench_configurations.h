@@ -1,8 +1,8 @@
 #pragma once
 
-// The grid of registration configurations mlndt_bench times: backends x
-// samplings (x GBS cell sizes for gbs) x start layers x threads, and for
-// the Ceres backend also x linear solvers x trust regions.
+// The grid of registration configurations mlndt_bench times: defaults x
+// backends x samplings (x GBS cell sizes for gbs) x start layers x threads,
+// and for the Ceres backend also x linear solvers x trust regions.
 
 #include <ceres/types.h>
 
@@ -15,8 +15,19 @@
 namespace mlndt {
 namespace tools {
 
+// Which defaults a configuration starts from.
+enum class BenchDefaults {
+  CURRENT,   // RegistrationOptions().
+  PREVIOUS,  // The defaults before 1.5 m finest cells, FINEST_CELLS
+             // weighting and Cauchy scale 2: 2 m, POINTS, scale 3.
+};
+
+// "current" or "previous".
+const char* BenchDefaultsName(BenchDefaults defaults);
+
 // One point of the grid. Ceres-only fields are unused by the other backends.
 struct BenchConfiguration {
+  BenchDefaults defaults = BenchDefaults::CURRENT;
   BackendType backend = BackendType::CERES;
   SamplingMethod sampling = SamplingMethod::GBS;
   double gbs_cell_size_m = 1.0;
@@ -25,12 +36,13 @@ struct BenchConfiguration {
   ceres::TrustRegionStrategyType trust_region = ceres::LEVENBERG_MARQUARDT;
   int threads = 1;
 
-  // The library's defaults with this point's choices; sampling `seed`.
+  // The `defaults` with this point's choices; sampling `seed`.
   RegistrationOptions Options(uint64_t seed) const;
 };
 
 // The comma-separated list flags that span the grid.
 struct BenchGridFlags {
+  std::string defaults;        // current, previous
   std::string backends;        // ceres, newton, lm
   std::string samplings;       // gbs, random, all, voxel_centroid
   std::string gbs_cell_sizes;  // [m]

@@ -2,36 +2,49 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 
 #include "mlndt/cloud/io.h"
-#include "mlndt/cloud/pose_io.h"
+#include "mlndt/eval/reference_pairs.h"
 #include "tools/common/list_flags.h"
-#include "tools/common/matrix_text.h"
 
 namespace mlndt {
 namespace tools {
 namespace {
 
+bool ReadReferences(const std::string& folder,
+                    std::map<std::string, ReferencePair>* references,
+                    std::string* error) {
+  return ReadReferencePairs(
+      folder + "/reference_pairs.json", references, error);
+}
+
 bool LoadKoide3(const std::string& dir,
                 std::vector<ScanPair>* pairs,
                 std::string* error) {
+  const std::string folder = dir + "/koide3";
+  std::map<std::string, ReferencePair> references;
+  if (!ReadReferences(folder, &references, error)) return false;
+  const auto reference = references.find("251370668_251371071");
+  if (reference == references.end()) {
+    *error = folder + "/reference_pairs.json: no entry 251370668_251371071";
+    return false;
+  }
   ScanPair pair;
   pair.set = "koide3";
   pair.label = "251370668<-251371071";
+  pair.reference_from_input_truth = reference->second.reference_from_input;
   if (!ReadPointCloud(
-          dir + "/koide3/251370668.pcd", &pair.reference, nullptr, error) ||
-      !ReadPointCloud(
-          dir + "/koide3/251371071.pcd", &pair.input, nullptr, error) ||
-      !ReadMatrixFile(dir + "/koide3/T_target_source.txt",
-                      &pair.reference_from_input_truth,
-                      error)) {
+          folder + "/251370668.pcd", &pair.reference, nullptr, error) ||
+      !ReadPointCloud(folder + "/251371071.pcd", &pair.input, nullptr, error)) {
     return false;
   }
   pairs->push_back(std::move(pair));
   return true;
 }
 
-// kitti/pcd/<j>.pcd onto <i>.pcd for j = i + gap, every gap in --kitti_gaps.
+// kitti/pcd/<j>.pcd onto <i>.pcd for j = i + gap, every gap in --kitti_gaps,
+// for the pairs that reference_pairs.json has.
 bool LoadKitti(const std::string& dir,
                const std::string& kitti_gaps,
                std::vector<ScanPair>* pairs,
@@ -42,35 +55,46 @@ bool LoadKitti(const std::string& dir,
     *error = "--kitti_gaps: expected comma-separated integers >= 1";
     return false;
   }
-  std::vector<Isometry3d> poses;
-  if (!ReadKittiPoses(dir + "/kitti/poses_velo.txt", &poses, error))
-    return false;
-  std::vector<PointCloud> scans(poses.size());
-  std::vector<std::string> names(poses.size());
-  for (size_t i = 0; i < poses.size(); ++i) {
+  const std::string folder = dir + "/kitti";
+  std::map<std::string, ReferencePair> references;
+  if (!ReadReferences(folder, &references, error)) return false;
+  std::map<int64_t, PointCloud> scans;
+  const auto scan = [&](int64_t index, PointCloud** cloud) {
+    auto [it, inserted] = scans.try_emplace(index);
+    *cloud = &it->second;
+    if (!inserted) return true;
     char name[32];
-    std::snprintf(name, sizeof(name), "%06zu", i);
-    names[i] = name;
-    if (!ReadPointCloud(
-            dir + "/kitti/pcd/" + names[i] + ".pcd", &scans[i], nullptr, error))
-      return false;
-  }
+    std::snprintf(name, sizeof(name), "%06lld", static_cast<long long>(index));
+    return ReadPointCloud(
+        folder + "/pcd/" + name + ".pcd", &it->second, nullptr, error);
+  };
   const size_t before = pairs->size();
   for (const int gap : gaps) {
-    for (size_t i = 0; i + static_cast<size_t>(gap) < scans.size(); ++i) {
-      const size_t j = i + static_cast<size_t>(gap);
+    for (const auto& [key, reference] : references) {
+      if (reference.input_index - reference.reference_index != gap) continue;
+      PointCloud *reference_scan = nullptr, *input_scan = nullptr;
+      if (!scan(reference.reference_index, &reference_scan) ||
+          !scan(reference.input_index, &input_scan)) {
+        return false;
+      }
+      char label[64];
+      std::snprintf(label,
+                    sizeof(label),
+                    "%06lld<-%06lld",
+                    static_cast<long long>(reference.reference_index),
+                    static_cast<long long>(reference.input_index));
       ScanPair pair;
       pair.set = "kitti";
-      pair.label = names[i] + "<-" + names[j];
-      pair.reference = scans[i];
-      pair.input = scans[j];
-      pair.reference_from_input_truth = poses[i].inverse() * poses[j];
+      pair.label = label;
+      pair.reference = *reference_scan;
+      pair.input = *input_scan;
+      pair.reference_from_input_truth = reference.reference_from_input;
       pairs->push_back(std::move(pair));
     }
   }
   if (pairs->size() == before) {
-    *error = "--kitti_gaps: no pair of the " + std::to_string(scans.size()) +
-             " KITTI scans is that far apart";
+    *error = "--kitti_gaps: " + folder +
+             "/reference_pairs.json has no pair that far apart";
     return false;
   }
   return true;

@@ -2,11 +2,11 @@
 
 // The scan pairs mlndt_bench registers (from --data_dir, the repository's
 // data/ by default):
-//   koide3  koide3/251371071.pcd onto koide3/251370668.pcd; truth:
-//           koide3/T_target_source.txt, the reference result shipped with the
-//           pair (there is no independent ground truth).
+//   koide3  koide3/251371071.pcd onto koide3/251370668.pcd;
 //   kitti   kitti/pcd/<j>.pcd onto kitti/pcd/<i>.pcd for j = i + gap, every
-//           gap in --kitti_gaps; truth V_i^-1 V_j from kitti/poses_velo.txt.
+//           gap in --kitti_gaps that reference_pairs.json has.
+// The truth of a pair is its consensus pose in <set>/reference_pairs.json
+// (KITTI's official poses for these frames are a constant-velocity fill).
 
 #include <string>
 #include <vector>
@@ -22,6 +22,7 @@ struct ScanPair {
   std::string label;  // e.g. "000000<-000001".
   PointCloud reference;
   PointCloud input;
+  // The consensus of reference_pairs.json.
   Isometry3d reference_from_input_truth = Isometry3d::Identity();
 };
 

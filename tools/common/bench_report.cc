@@ -94,6 +94,7 @@ BenchMethodLabels ConfigurationLabels(const BenchConfiguration& c) {
   BenchMethodLabels labels;
   labels.is_pcl = false;
   labels.method = "mlndt";
+  labels.defaults = BenchDefaultsName(c.defaults);
   labels.backend = BackendFlagName(c.backend);
   labels.sampling = LowerCase(SamplingMethodToString(c.sampling));
   if (c.sampling == SamplingMethod::GBS) {
@@ -124,6 +125,7 @@ std::string BenchFormat(const char* format, double value) {
 
 std::vector<std::string> BenchTableHeader() {
   return {"pairs",
+          "defaults",
           "method",
           "sampling",
           "start",
@@ -150,6 +152,7 @@ std::vector<std::string> BenchTableRow(const std::string& set,
   const double success_rate = static_cast<double>(s.successes) / s.runs;
   const std::string runs = std::to_string(s.runs);
   return {set,
+          Dash(labels.defaults),
           labels.is_pcl ? labels.method : labels.backend,
           labels.sampling,
           Dash(labels.start),
@@ -170,7 +173,8 @@ std::vector<std::string> BenchTableRow(const std::string& set,
 }
 
 std::string BenchCsvHeader() {
-  return "pairs,method,backend,sampling,start_layer,linear_solver,trust_"
+  return "pairs,defaults,method,backend,sampling,start_layer,linear_solver,"
+         "trust_"
          "region,threads,runs,"
          "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_"
          "score,"
@@ -187,6 +191,7 @@ std::string BenchCsvRow(const std::string& set,
   const RowTimes t = TimesOf(labels, s, pcl);
   const std::vector<std::string> values = {
       set,
+      labels.defaults,
       labels.method,
       labels.backend,
       labels.sampling,

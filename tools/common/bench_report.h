@@ -47,7 +47,7 @@ BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
 // How a row names its method (empty: does not apply).
 struct BenchMethodLabels {
   std::string method = "pcl_ndt";
-  std::string backend, sampling, start, solver, region;
+  std::string defaults, backend, sampling, start, solver, region;
   std::string threads = "1";
   bool is_pcl = true;
 };

@@ -44,7 +44,7 @@ DEFINE_double(min_eigenvalue, mlndt::CellRegularization().min_eigenvalue_m2,
               "Absolute floor on cell covariance eigenvalues [m^2]");
 DEFINE_double(min_eigenvalue_ratio, mlndt::CellRegularization().min_eigenvalue_ratio,
               "Cell eigenvalues are floored at this fraction of the largest (paper: 0.01)");
-DEFINE_string(coarse_weighting, "points",
+DEFINE_string(coarse_weighting, "finest_cells",
               "Weights in the coarse layers' moments: points | finest_cells (every finest "
               "cell alike)");
 DEFINE_double(min_range, mlndt::RangeFilterOptions().min_range_m,

@@ -1,0 +1,25 @@
+#pragma once
+
+// The parts of the mlndt Python module, one file each (module.cc puts them
+// together).
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+namespace mlndt {
+namespace python {
+
+namespace py = pybind11;
+
+void DefineCloud(py::module_& m);         // cloud.cc
+void DefineOptions(py::module_& m);       // options.cc
+void DefinePose(py::module_& m);          // pose.cc
+void DefineRegistration(py::module_& m);  // registration.cc
+void DefineMap(py::module_& m);           // map.cc
+
+// A str or os.PathLike as a path string (TypeError otherwise).
+std::string PathString(const py::object& path);
+
+}  // namespace python
+}  // namespace mlndt

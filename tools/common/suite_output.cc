@@ -1,0 +1,344 @@
+#include "tools/common/suite_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "mlndt/common/pose.h"
+#include "tools/common/gnuplot.h"
+#include "tools/common/json_writer.h"
+#include "tools/common/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+std::string CsvRow(const LoadedSuiteDataset& dataset,
+                   const SuiteRun& run,
+                   const SuiteRunResult& r) {
+  const SuiteOutcome& o = r.outcome;
+  const PoseError start = ComputePoseError(run.reference_from_input,
+                                           run.initial_reference_from_input);
+  const Vector6d& e = o.error.components;
+  std::vector<std::string> fields = {
+      CsvField(dataset.dataset.name),
+      run.pair_key,
+      std::to_string(run.reference_index),
+      std::to_string(run.input_index),
+      std::to_string(run.input_index - run.reference_index),
+      StartKindToString(run.kind),
+      CsvField(run.start),
+      Num(start.translation_m),
+      Num(start.rotation_deg()),
+      run.uncertainty.given ? Num(run.uncertainty.translation_m) : "",
+      run.uncertainty.given ? Num(run.uncertainty.rotation_deg) : "",
+      TerminationTypeToString(o.termination),
+      CsvField(r.message),
+      o.right ? "1" : "0",
+      Num(o.error.translation_m),
+      Num(o.error.rotation_deg()),
+      Num(o.along_track_m),
+      Num(e(0)),
+      Num(e(1)),
+      Num(e(2)),
+      Num(e(3) * kRadToDeg),
+      Num(e(4) * kRadToDeg),
+      Num(e(5) * kRadToDeg),
+      std::to_string(r.quality.points),
+      Num(r.quality.own_cell_fraction),
+      Num(r.quality.inlier_fraction),
+      Num(r.quality.mean_score),
+      Num(r.quality.median_distance),
+      Num(r.constraint_ratio),
+      std::to_string(r.attempts),
+      std::to_string(r.iterations),
+      Num(o.time_ms),
+      Num(r.times.total_ms),
+      Num(r.times.map_ms),
+      Num(r.times.sampling_ms),
+      Num(r.times.solve_ms)};
+  std::string line;
+  for (size_t k = 0; k < fields.size(); ++k) {
+    line += (k > 0 ? "," : "") + fields[k];
+  }
+  return line + "\n";
+}
+
+std::string ConfusionJson(const ConfusionTable& c) {
+  JsonObject counts;
+  for (const TerminationType type : c.types) {
+    counts.Add(TerminationTypeToString(type),
+               JsonObject()
+                   .AddNumber("right", double(c.Count(true, type)))
+                   .AddNumber("wrong", double(c.Count(false, type)))
+                   .str());
+  }
+  return JsonObject()
+      .Add("counts", counts.str())
+      .AddNumber("runs", double(c.total()))
+      .AddNumber("right", double(c.total_right()))
+      .AddNumber("success", c.Success())
+      .AddNumber("precision", c.Precision())
+      .AddNumber("recall", c.Recall())
+      .AddNumber("usable_precision", c.UsablePrecision())
+      .AddNumber("usable_recall", c.UsableRecall())
+      .str();
+}
+
+std::string RowsJson(const std::vector<std::string>& rows) {
+  std::string out = "[";
+  for (size_t k = 0; k < rows.size(); ++k) {
+    out += (k > 0 ? ", " : "") + rows[k];
+  }
+  return out + "]";
+}
+
+std::string StartsJson(const SuiteScore& score) {
+  std::vector<std::string> rows;
+  for (const SuiteStartRow& r : score.by_start) {
+    rows.push_back(
+        JsonObject()
+            .AddString("dataset", score.datasets.at(r.dataset))
+            .AddString("start", StartKindToString(r.kind))
+            .AddNumber("runs", double(r.runs))
+            .AddNumber("right", double(r.right))
+            .AddNumber("convergence", double(r.convergence))
+            .AddNumber("wrong_convergence", double(r.wrong_convergence))
+            .AddNumber("skipped_pairs", double(r.skipped_pairs))
+            .str());
+  }
+  return RowsJson(rows);
+}
+
+std::string AccuracyJson(const SuiteScore& score) {
+  std::vector<std::string> rows;
+  for (const SuiteAccuracyRow& r : score.accuracy) {
+    rows.push_back(JsonObject()
+                       .AddString("dataset", score.datasets.at(r.dataset))
+                       .AddString("start", StartKindToString(r.kind))
+                       .AddNumber("right", double(r.right))
+                       .AddNumber("rms_translation_m", r.rms_translation_m)
+                       .AddNumber("mean_along_track_m", r.mean_along_track_m)
+                       .AddNumber("rms_rotation_deg", r.rms_rotation_deg)
+                       .AddNumber("median_time_ms", r.median_time_ms)
+                       .str());
+  }
+  return RowsJson(rows);
+}
+
+std::string ShareJson(const SuiteShare& share) {
+  return JsonObject()
+      .AddNumber("runs", double(share.runs))
+      .AddNumber("right", double(share.right))
+      .str();
+}
+
+std::string ReachJson(const SuiteScore& score) {
+  std::vector<std::string> rows;
+  for (const SuiteReachRow& r : score.reach) {
+    const StartOffset& offset = score.offsets.at(size_t(r.offset_index));
+    JsonObject per_dataset;
+    for (size_t d = 0; d < r.per_dataset.size(); ++d) {
+      per_dataset.Add(score.datasets[d], ShareJson(r.per_dataset[d]));
+    }
+    rows.push_back(JsonObject()
+                       .AddString("offset", offset.label)
+                       .AddString("family", offset.family)
+                       .Add("datasets", per_dataset.str())
+                       .Add("all", ShareJson(r.all))
+                       .str());
+  }
+  const auto label = [&](int reach) {
+    if (reach < 0) return std::string(reach == -1 ? "\"none\"" : "null");
+    return JsonString(score.offsets.at(size_t(reach)).label);
+  };
+  std::vector<std::string> families;
+  for (const SuiteFamilyReach& f : score.family_reach) {
+    JsonObject per_dataset;
+    for (size_t d = 0; d < f.per_dataset.size(); ++d) {
+      per_dataset.Add(score.datasets[d], label(f.per_dataset[d]));
+    }
+    families.push_back(JsonObject()
+                           .AddString("family", f.family)
+                           .Add("datasets", per_dataset.str())
+                           .Add("all", label(f.all))
+                           .str());
+  }
+  return JsonObject()
+      .AddNumber("share", score.reach_share)
+      .Add("offsets", RowsJson(rows))
+      .Add("families", RowsJson(families))
+      .str();
+}
+
+// The sorted values of one measure of the right (or wrong) runs.
+std::vector<double> Measure(
+    const std::vector<std::vector<SuiteRunResult>>& results,
+    bool right,
+    double FitQuality::*field) {
+  std::vector<double> values;
+  for (const auto& set : results) {
+    for (const SuiteRunResult& r : set) {
+      const double v = r.quality.*field;
+      if (r.outcome.right == right && r.quality.points > 0 &&
+          std::isfinite(v)) {
+        values.push_back(v);
+      }
+    }
+  }
+  std::sort(values.begin(), values.end());
+  return values;
+}
+
+// "value share" lines of an empirical distribution curve.
+bool WriteCurve(const std::string& path,
+                const std::vector<double>& values,
+                std::string* error) {
+  std::ofstream out(path);
+  for (size_t k = 0; k < values.size(); ++k) {
+    out << Num(values[k]) << " " << Num(double(k + 1) / values.size()) << "\n";
+  }
+  if (values.empty()) out << "nan nan\n";
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string SuiteRunsCsvHeader() {
+  return "dataset,pair,reference,input,step,start_kind,start,"
+         "start_error_m,start_error_deg,uncertainty_m,uncertainty_deg,"
+         "termination,message,right,translation_error_m,rotation_error_deg,"
+         "along_track_error_m,error_tx_m,error_ty_m,error_tz_m,"
+         "error_alpha_deg,error_beta_deg,error_gamma_deg,fit_points,"
+         "own_cell_fraction,inlier_fraction,mean_score,median_distance,"
+         "constraint_ratio,attempts,iterations,registration_ms,total_ms,"
+         "map_ms,sampling_ms,solve_ms";
+}
+
+bool WriteSuiteRunsCsv(const std::string& path,
+                       const std::vector<LoadedSuiteDataset>& datasets,
+                       const std::vector<std::vector<SuiteRunResult>>& results,
+                       std::string* error) {
+  std::ofstream out(path);
+  out << SuiteRunsCsvHeader() << "\n";
+  for (size_t d = 0; d < datasets.size(); ++d) {
+    for (size_t k = 0; k < results.at(d).size(); ++k) {
+      out << CsvRow(datasets[d], datasets[d].runs.at(k), results[d][k]);
+    }
+  }
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+std::string SuiteSummaryJson(const SuiteScore& score,
+                             const SuiteRunInfo& info) {
+  std::vector<std::string> missed;
+  for (const std::string& m : info.missed_targets)
+    missed.push_back(JsonString(m));
+  std::vector<std::string> names;
+  for (const std::string& n : score.datasets) names.push_back(JsonString(n));
+  return JsonObject()
+      .AddString("command_line", info.command_line)
+      .AddString("method", info.method)
+      .AddNumber("wall_time_s", info.wall_time_s)
+      .Add("datasets", RowsJson(names))
+      .Add("confusion", ConfusionJson(score.confusion))
+      .Add("by_start", StartsJson(score))
+      .Add("accuracy", AccuracyJson(score))
+      .Add("reach", ReachJson(score))
+      .Add("missed_targets", RowsJson(missed))
+      .str();
+}
+
+bool WriteSuiteQualityPlot(
+    const std::string& gnuplot,
+    const std::string& dir,
+    const std::vector<std::vector<SuiteRunResult>>& results,
+    const QualityCheckOptions* check,
+    std::string* error) {
+  const std::string data = dir + "/plot_data";
+  std::error_code ec;
+  std::filesystem::create_directories(data, ec);
+  const auto path = [&](const char* name, bool right) {
+    return data + "/" + name + (right ? "_right" : "_wrong") + ".txt";
+  };
+  size_t counts[2] = {0, 0};
+  double score_min = check ? check->max_mean_score : 1.0;
+  double score_max = score_min;
+  for (const bool right : {true, false}) {
+    const std::vector<double> inliers =
+        Measure(results, right, &FitQuality::inlier_fraction);
+    const std::vector<double> scores =
+        Measure(results, right, &FitQuality::mean_score);
+    counts[right ? 0 : 1] = scores.size();
+    for (const double v : scores) {
+      if (v <= 0.0) continue;
+      score_min = std::min(score_min, v);
+      score_max = std::max(score_max, v);
+    }
+    if (!WriteCurve(path("inlier_fraction", right), inliers, error) ||
+        !WriteCurve(path("mean_score", right), scores, error)) {
+      return false;
+    }
+  }
+  const auto curve = [&](const char* name, bool right) {
+    const size_t n = counts[right ? 0 : 1];
+    return GnuplotQuote(path(name, right)) + " using 1:2 with steps lw 2 " +
+           "lc rgb '" + (right ? "#1a9850" : "#d73027") + "' title '" +
+           (right ? "right" : "wrong") + " (" + std::to_string(n) + ")'";
+  };
+  const auto threshold = [&](int id, double x) {
+    if (check == nullptr) return std::string();
+    return "set arrow " + std::to_string(id) + " from " + Num(x) +
+           ", graph 0 to " + Num(x) +
+           ", graph 1 nohead dt 2 lw 1.5 lc rgb 'black'\n";
+  };
+  std::string script = GnuplotPngHeader(1200, 500);
+  script += "set output " + GnuplotQuote(dir + "/quality.png") + "\n";
+  script +=
+      "set multiplot layout 1,2 title 'Fit at the solution of right "
+      "and wrong runs: share of runs at or below a value (dashed: the "
+      "quality check threshold)'\n";
+  script += "set yrange [0:1.02]\nset ylabel 'share of runs'\n";
+  script += "set key outside below horizontal\nset xrange [0:1]\n";
+  script +=
+      "set xlabel 'inlier fraction (Mahalanobis distance below the "
+      "gate)'\n";
+  if (check) script += threshold(1, check->min_inlier_fraction);
+  script += "plot " + curve("inlier_fraction", true) + ", " +
+            curve("inlier_fraction", false) + "\n";
+  script += "unset arrow 1\nset logscale x\nset xtics 2\n";
+  script += "set xrange [" + Num(score_min / 1.5) + ":" + Num(score_max * 1.5) +
+            "]\n";
+  script += "set xlabel 'mean score per matched point (Cauchy at the gate)'\n";
+  if (check) script += threshold(2, check->max_mean_score);
+  script += "plot " + curve("mean_score", true) + ", " +
+            curve("mean_score", false) + "\n";
+  script += "unset multiplot\n";
+  return RunGnuplot(gnuplot, data + "/quality.gp", script, error);
+}
+
+std::string FormatDuration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0.0) return "?";
+  const long s = std::lround(seconds);
+  char text[32];
+  if (s >= 3600) {
+    std::snprintf(text, sizeof(text), "%ldh%02ldm", s / 3600, (s / 60) % 60);
+  } else if (s >= 60) {
+    std::snprintf(text, sizeof(text), "%ldm%02lds", s / 60, s % 60);
+  } else {
+    std::snprintf(text, sizeof(text), "%lds", s);
+  }
+  return text;
+}
+
+}  // namespace tools
+}  // namespace mlndt

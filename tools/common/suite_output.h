@@ -1,0 +1,55 @@
+#pragma once
+
+// mlndt_suite's files: runs.csv (one row per run), summary.json (the
+// tables), quality.png (the verdict's measures of right and wrong runs),
+// and the progress line's ETA.
+
+#include <string>
+#include <vector>
+
+#include "mlndt/eval/suite_score.h"
+#include "mlndt/pipeline/suite_runner.h"
+#include "mlndt/registration/quality_check.h"
+#include "tools/common/suite_inputs.h"
+
+namespace mlndt {
+namespace tools {
+
+// The header of runs.csv (its columns, in order).
+std::string SuiteRunsCsvHeader();
+
+// Writes runs.csv: one row per run of every data set, in run order
+// (results[d][k] is the result of datasets[d].runs[k]).
+bool WriteSuiteRunsCsv(const std::string& path,
+                       const std::vector<LoadedSuiteDataset>& datasets,
+                       const std::vector<std::vector<SuiteRunResult>>& results,
+                       std::string* error);
+
+// The run's facts for summary.json.
+struct SuiteRunInfo {
+  std::string command_line;
+  std::string method;  // MethodToString.
+  double wall_time_s = 0.0;
+  std::vector<std::string> missed_targets;
+};
+
+// The scored tables as one JSON object.
+std::string SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info);
+
+// quality.png in `dir` (data and script in dir/plot_data): the share of
+// right and of wrong runs at or below each value of the inlier fraction and
+// of the mean score (empirical distribution curves), with the quality
+// check's thresholds as vertical lines (none when `check` is null: NDT).
+// Runs without a fit (no points evaluated) are left out.
+bool WriteSuiteQualityPlot(
+    const std::string& gnuplot,
+    const std::string& dir,
+    const std::vector<std::vector<SuiteRunResult>>& results,
+    const QualityCheckOptions* check,
+    std::string* error);
+
+// "1m05s" (or "12s", "1h02m") for the progress line; "?" before any run.
+std::string FormatDuration(double seconds);
+
+}  // namespace tools
+}  // namespace mlndt

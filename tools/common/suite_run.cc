@@ -1,0 +1,73 @@
+#include "tools/common/suite_run.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "tools/common/progress.h"
+#include "tools/common/suite_output.h"
+
+namespace mlndt {
+namespace tools {
+
+std::string SuitePlanText(const std::vector<LoadedSuiteDataset>& datasets) {
+  std::string out;
+  size_t total = 0;
+  for (const LoadedSuiteDataset& set : datasets) {
+    char line[1024];
+    std::snprintf(line,
+                  sizeof(line),
+                  "%s: %s, %zu reference pairs, %zu runs on %zu scans, right "
+                  "within %g m and %g deg\n",
+                  set.dataset.name.c_str(),
+                  set.dataset.dir.c_str(),
+                  set.pairs.size(),
+                  set.runs.size(),
+                  set.scan_paths.size(),
+                  set.dataset.criterion.max_translation_m,
+                  set.dataset.criterion.max_rotation_deg);
+    out += line;
+    total += set.runs.size();
+  }
+  return out + std::to_string(total) + " runs\n\n";
+}
+
+bool RunSuiteWithProgress(const MatcherOptions& options,
+                          const std::vector<LoadedSuiteDataset>& datasets,
+                          std::vector<std::vector<SuiteRunResult>>* results,
+                          std::string* error) {
+  size_t total = 0, done = 0;
+  for (const LoadedSuiteDataset& set : datasets) total += set.runs.size();
+  Progress progress("mlndt_suite", total);
+  const auto start = std::chrono::steady_clock::now();
+  results->clear();
+  for (const LoadedSuiteDataset& set : datasets) {
+    const auto callback = [&](const SuiteRun& run, const SuiteRunResult& r) {
+      ++done;
+      const double elapsed = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
+      progress.Update(done,
+                      set.dataset.name + " " + run.pair_key + " " + run.start +
+                          ": " +
+                          TerminationTypeToString(r.outcome.termination) +
+                          (r.outcome.right ? " right" : " wrong") + ", ETA " +
+                          FormatDuration(elapsed / done * (total - done)));
+    };
+    results->emplace_back();
+    if (!RunSuiteDataset(options,
+                         set.dataset.criterion,
+                         set.scan_paths,
+                         set.runs,
+                         callback,
+                         &results->back(),
+                         error)) {
+      *error = set.dataset.name + ": " + *error;
+      return false;
+    }
+  }
+  progress.Finish();
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,29 @@
+#pragma once
+
+// Running mlndt_suite's data sets one after the other with a progress line
+// (and its ETA) on stderr, and the lines that say what will run.
+
+#include <string>
+#include <vector>
+
+#include "mlndt/pipeline/matcher.h"
+#include "mlndt/pipeline/suite_runner.h"
+#include "tools/common/suite_inputs.h"
+
+namespace mlndt {
+namespace tools {
+
+// One line per data set (folder, pairs, runs, scans, tolerance) and the
+// total.
+std::string SuitePlanText(const std::vector<LoadedSuiteDataset>& datasets);
+
+// Runs every data set's runs (RunSuiteDataset) in order; (*results)[d]
+// holds data set d's results. False with *error naming the data set when
+// one cannot run (an unreadable scan).
+bool RunSuiteWithProgress(const MatcherOptions& options,
+                          const std::vector<LoadedSuiteDataset>& datasets,
+                          std::vector<std::vector<SuiteRunResult>>* results,
+                          std::string* error);
+
+}  // namespace tools
+}  // namespace mlndt
