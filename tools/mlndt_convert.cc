@@ -40,16 +40,16 @@ int main(int argc, char** argv) {
   std::string error;
   if (!mlndt::ReadPointCloud(FLAGS_input, &cloud, &info, &error)) {
     std::cerr << "mlndt_convert: " << error << "\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   if (FLAGS_voxel_size > 0.0)
     cloud = mlndt::VoxelDownsample(cloud, FLAGS_voxel_size);
   if (!mlndt::WritePointCloud(FLAGS_output, cloud, &error)) {
     std::cerr << "mlndt_convert: " << error << "\n";
-    return 1;
+    return mlndt::tools::kExitFailed;
   }
   std::cout << FLAGS_input << " (" << info.points_in_file << " points, "
             << info.dropped_non_finite << " non-finite dropped) -> "
             << FLAGS_output << " (" << cloud.size() << " points)\n";
-  return 0;
+  return mlndt::tools::kExitOk;
 }
