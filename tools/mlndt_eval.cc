@@ -31,14 +31,13 @@
 #include <map>
 
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/common/atomic_file.h"
 #include "mlndt/eval/kitti_segment_errors.h"
 #include "mlndt/eval/reference_pairs.h"
 #include "mlndt/eval/trajectory_association.h"
 #include "mlndt/eval/trajectory_io.h"
 #include "mlndt/eval/trajectory_metrics.h"
 #include "tools/common/flag_utils.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
@@ -323,64 +322,48 @@ bool Evaluate(const EvalFlags& flags,
   return true;
 }
 
-std::string ResultJson(const EstimateResult& r) {
-  std::string lengths = "[";
-  for (size_t i = 0; i < r.kitti.lengths.size(); ++i) {
-    const KittiLengthErrors& l = r.kitti.lengths[i];
-    lengths +=
-        (i ? ", " : "") +
-        tools::JsonObject()
-            .AddNumber("length_m", l.length_m)
-            .AddNumber("segments", static_cast<double>(l.num_segments))
-            .AddNumber("translation_error_percent", l.translation_error_percent)
-            .AddNumber("rotation_error_deg_per_m", l.rotation_error_deg_per_m)
-            .str();
+// One estimate's entry of --output_json (docs/json_schema.md, "mlndt_eval").
+tools::Json ResultJson(const EstimateResult& r) {
+  using tools::Number;
+  tools::Json lengths = tools::Json::array();
+  for (const KittiLengthErrors& l : r.kitti.lengths) {
+    lengths.push_back(
+        {{"length_m", Number(l.length_m)},
+         {"segments", l.num_segments},
+         {"translation_error_percent", Number(l.translation_error_percent)},
+         {"rotation_error_deg_per_m", Number(l.rotation_error_deg_per_m)}});
   }
-  lengths += "]";
   const bool has_rpe = r.rpe_pairs > 0;
   const double nan = std::nan("");
-  return tools::JsonObject()
-      .AddString("file", r.path)
-      .AddString("format", TrajectoryFormatToString(r.format))
-      .AddString("association", r.association)
-      .AddNumber("poses", static_cast<double>(r.poses))
-      .AddNumber("pairs", static_cast<double>(r.pairs))
-      .AddNumber("path_length_m", r.path_length_m)
-      .Add("ate",
-           tools::JsonObject()
-               .AddNumber("rmse_m", r.ate.rmse_m)
-               .AddNumber("mean_m", r.ate.errors.mean)
-               .AddNumber("median_m", r.ate.errors.median)
-               .AddNumber("max_m", r.ate.errors.max)
-               .AddNumber("scale", r.ate.reference_from_estimate.scale)
-               .str())
-      .Add("rpe",
-           tools::JsonObject()
-               .AddNumber("pairs", static_cast<double>(r.rpe_pairs))
-               .AddNumber("translation_rmse_m",
-                          has_rpe ? r.rpe.translation_rmse_m : nan)
-               .AddNumber("translation_mean_m",
-                          has_rpe ? r.rpe.translation_m.mean : nan)
-               .AddNumber("translation_max_m",
-                          has_rpe ? r.rpe.translation_m.max : nan)
-               .AddNumber("rotation_rmse_deg",
-                          has_rpe ? r.rpe.rotation_rmse_deg : nan)
-               .AddNumber("rotation_mean_deg",
-                          has_rpe ? r.rpe.rotation_deg.mean : nan)
-               .AddNumber("rotation_max_deg",
-                          has_rpe ? r.rpe.rotation_deg.max : nan)
-               .str())
-      .Add("kitti",
-           tools::JsonObject()
-               .AddNumber("segments",
-                          static_cast<double>(r.kitti.segments.size()))
-               .AddNumber("translation_error_percent",
-                          r.kitti.translation_error_percent)
-               .AddNumber("rotation_error_deg_per_m",
-                          r.kitti.rotation_error_deg_per_m)
-               .Add("lengths", lengths)
-               .str())
-      .str();
+  return {
+      {"file", r.path},
+      {"format", TrajectoryFormatToString(r.format)},
+      {"association", r.association},
+      {"poses", r.poses},
+      {"pairs", r.pairs},
+      {"path_length_m", Number(r.path_length_m)},
+      {"ate",
+       {{"rmse_m", Number(r.ate.rmse_m)},
+        {"mean_m", Number(r.ate.errors.mean)},
+        {"median_m", Number(r.ate.errors.median)},
+        {"max_m", Number(r.ate.errors.max)},
+        {"scale", Number(r.ate.reference_from_estimate.scale)}}},
+      {"rpe",
+       {{"pairs", r.rpe_pairs},
+        {"translation_rmse_m",
+         Number(has_rpe ? r.rpe.translation_rmse_m : nan)},
+        {"translation_mean_m",
+         Number(has_rpe ? r.rpe.translation_m.mean : nan)},
+        {"translation_max_m", Number(has_rpe ? r.rpe.translation_m.max : nan)},
+        {"rotation_rmse_deg", Number(has_rpe ? r.rpe.rotation_rmse_deg : nan)},
+        {"rotation_mean_deg", Number(has_rpe ? r.rpe.rotation_deg.mean : nan)},
+        {"rotation_max_deg", Number(has_rpe ? r.rpe.rotation_deg.max : nan)}}},
+      {"kitti",
+       {{"segments", r.kitti.segments.size()},
+        {"translation_error_percent",
+         Number(r.kitti.translation_error_percent)},
+        {"rotation_error_deg_per_m", Number(r.kitti.rotation_error_deg_per_m)},
+        {"lengths", lengths}}}};
 }
 
 int Run() {
@@ -472,25 +455,16 @@ int Run() {
     std::printf("\n");
   }
   if (!FLAGS_output_json.empty()) {
-    std::string estimates = "[";
-    for (size_t i = 0; i < results.size(); ++i) {
-      estimates += (i ? ", " : "") + ResultJson(results[i]);
-    }
-    estimates += "]";
-    const std::string json =
-        tools::JsonObject()
-            .AddString("tool", kTool)
-            .AddString("reference", FLAGS_reference)
-            .AddString("reference_format",
-                       TrajectoryFormatToString(reference_format))
-            .AddNumber("reference_poses", static_cast<double>(reference.size()))
-            .AddString("alignment",
-                       TrajectoryAlignmentToString(flags.alignment))
-            .AddNumber("delta", FLAGS_delta)
-            .Add("estimates", estimates)
-            .str() +
-        "\n";
-    if (!WriteFileAtomically(FLAGS_output_json, json, &error)) {
+    tools::Json estimates = tools::Json::array();
+    for (const EstimateResult& r : results) estimates.push_back(ResultJson(r));
+    tools::Json json = tools::ToolJson(kTool);
+    json["reference"] = FLAGS_reference;
+    json["reference_format"] = TrajectoryFormatToString(reference_format);
+    json["reference_poses"] = reference.size();
+    json["alignment"] = TrajectoryAlignmentToString(flags.alignment);
+    json["delta"] = FLAGS_delta;
+    json["estimates"] = estimates;
+    if (!tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
       return Fail(error);
     }
   }

@@ -37,11 +37,10 @@
 #include <iostream>
 
 #include "mlndt/cloud/io.h"
-#include "mlndt/common/atomic_file.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/map_builder.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
@@ -257,60 +256,47 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
   return options->IsValid(error);
 }
 
-std::string SummaryJson(const MapBuildOptions& options,
+// --output_json (docs/json_schema.md, "mlndt_map").
+tools::Json SummaryJson(const MapBuildOptions& options,
                         const MapBuildSummary& s,
                         const LayeredGrid& map) {
-  std::string layers = "[";
+  tools::Json layers = tools::Json::array();
   for (int i = 1; i <= map.num_layers(); ++i) {
     const NdtLayer& layer = map.layer(i);
-    tools::JsonObject o;
-    o.AddNumber("layer", i)
-        .AddNumber("cell_size_m", layer.cell_size())
-        .Add("dims",
-             tools::JsonArray(std::vector<int>{
-                 layer.dims().x(), layer.dims().y(), layer.dims().z()}))
-        .AddNumber("occupied_cells", static_cast<double>(layer.cells().size()))
-        .AddNumber("bytes", static_cast<double>(layer.MemoryBytes()));
-    layers += (i > 1 ? ", " : "") + o.str();
+    layers.push_back(
+        {{"layer", i},
+         {"cell_size_m", tools::Number(layer.cell_size())},
+         {"dims", {layer.dims().x(), layer.dims().y(), layer.dims().z()}},
+         {"occupied_cells", layer.cells().size()},
+         {"bytes", layer.MemoryBytes()}});
   }
-  layers += "]";
-  const Eigen::AlignedBox3d& b = map.bounds();
-  return tools::JsonObject()
-      .AddString("tool", kTool)
-      .AddString("output", FLAGS_output)
-      .AddNumber("scans", static_cast<double>(s.scans))
-      .AddNumber("input_points", static_cast<double>(s.input_points))
-      .AddNumber("cropped_points", static_cast<double>(s.cropped_points))
-      .AddNumber("merged_points", static_cast<double>(s.merged_points))
-      .AddNumber("map_points", static_cast<double>(s.map_points))
-      .AddNumber("min_range_m", options.range_filter.min_range_m)
-      .AddNumber("max_range_m", options.range_filter.max_range_m)
-      .AddNumber("voxel_size_m", options.voxel_size_m)
-      .Add("extent_m",
-           tools::JsonArray(std::vector<double>{
-               b.sizes().x(), b.sizes().y(), b.sizes().z()}))
-      .Add("layers", layers)
-      .AddNumber("map_bytes", static_cast<double>(s.map_bytes))
-      .Add("estimate",
-           tools::JsonObject()
-               .AddNumber("map_bytes", static_cast<double>(s.memory.map_bytes))
-               .AddNumber("build_peak_bytes",
-                          static_cast<double>(s.memory.build_peak_bytes))
-               .AddNumber("cloud_bytes",
-                          static_cast<double>(s.memory.cloud_bytes))
-               .AddNumber("limit_bytes",
-                          static_cast<double>(options.max_memory_bytes))
-               .str())
-      .AddNumber("peak_resident_bytes", tools::PeakResidentBytes())
-      .Add("time_s",
-           tools::JsonObject()
-               .AddNumber("read", s.read_time_s)
-               .AddNumber("voxel", s.voxel_time_s)
-               .AddNumber("estimate", s.estimate_time_s)
-               .AddNumber("build", s.build_time_s)
-               .AddNumber("total", s.total_time_s)
-               .str())
-      .str();
+  const Eigen::Vector3d extent = map.bounds().sizes();
+  tools::Json json = tools::ToolJson(kTool);
+  json["output"] = FLAGS_output;
+  json["scans"] = s.scans;
+  json["input_points"] = s.input_points;
+  json["cropped_points"] = s.cropped_points;
+  json["merged_points"] = s.merged_points;
+  json["map_points"] = s.map_points;
+  json["min_range_m"] = tools::Number(options.range_filter.min_range_m);
+  json["max_range_m"] = tools::Number(options.range_filter.max_range_m);
+  json["voxel_size_m"] = tools::Number(options.voxel_size_m);
+  json["extent_m"] = {tools::Number(extent.x()),
+                      tools::Number(extent.y()),
+                      tools::Number(extent.z())};
+  json["layers"] = layers;
+  json["map_bytes"] = s.map_bytes;
+  json["estimate"] = {{"map_bytes", s.memory.map_bytes},
+                      {"build_peak_bytes", s.memory.build_peak_bytes},
+                      {"cloud_bytes", s.memory.cloud_bytes},
+                      {"limit_bytes", options.max_memory_bytes}};
+  json["peak_resident_bytes"] = tools::PeakResidentBytes();
+  json["time_ms"] = {{"total", tools::Number(s.total_time_s * 1e3)},
+                     {"read", tools::Number(s.read_time_s * 1e3)},
+                     {"voxel", tools::Number(s.voxel_time_s * 1e3)},
+                     {"estimate", tools::Number(s.estimate_time_s * 1e3)},
+                     {"build", tools::Number(s.build_time_s * 1e3)}};
+  return json;
 }
 
 int Build() {
@@ -401,9 +387,8 @@ int Build() {
       summary.total_time_s);
   std::printf("map written to %s\n", FLAGS_output.c_str());
   if (!FLAGS_output_json.empty()) {
-    if (!WriteFileAtomically(FLAGS_output_json,
-                             SummaryJson(options, summary, map) + "\n",
-                             &error)) {
+    if (!tools::WriteJsonFile(
+            FLAGS_output_json, SummaryJson(options, summary, map), &error)) {
       return Fail(error);
     }
   }

@@ -221,6 +221,8 @@ TEST(MlndtEval, ReproducesAteAndRpeOfASequenceTrajectory) {
                 std::string::npos)
           << run.out;
       const Json json = ReadJson(json_path);
+      EXPECT_EQ(json["schema_version"], 1);
+      EXPECT_EQ(json["tool"], "mlndt_eval");
       const Json& e = json["estimates"][0];
       EXPECT_EQ(e["pairs"].get<int>(), 8);
       EXPECT_EQ(e["association"].get<std::string>(), "index");
