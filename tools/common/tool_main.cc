@@ -97,7 +97,11 @@ std::string ToolHelp(const std::string& tool) {
     }
   }
   std::ostringstream out;
-  out << tool << ": " << gflags::ProgramUsage() << "\n";
+  const std::string usage = gflags::ProgramUsage();
+  out << tool << ": " << usage << "\n";
+  if (usage.find("Exit codes") == std::string::npos) {
+    out << "\n" << kExitCodesHelp << "\n";
+  }
   if (!own.empty()) {
     out << "\nFlags of " << tool << ":\n";
     for (const auto& flag : own) AppendFlag(flag, &out);

@@ -23,7 +23,8 @@ extern const char kExitCodesHelp[];
 
 // Sets `usage` as the --help text, parses the flags (removing them from
 // argv) and starts glog, logging to stderr.
-//  - --help (or -h) prints `usage` and the flags defined in the tool's own
+//  - --help (or -h) prints `usage` (and kExitCodesHelp when `usage` has
+//    no "Exit codes" paragraph) and the flags defined in the tool's own
 //    file and in tools/common/ (the shared registration flags among them)
 //    with their defaults, and exits with 0; --helpfull lists every flag,
 //    glog's and gflags' included.
