@@ -48,7 +48,7 @@
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/cost/robust_loss.h"
 #include "mlndt/eval/dataset.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/output_files.h"
 #include "tools/common/posegraph_metrics.h"
 #include "tools/common/progress.h"
@@ -265,23 +265,25 @@ bool WriteTrajectories(const std::string& dir,
 }
 
 // The settings and the joint problem's facts.
-tools::JsonObject JointJson(size_t num_scans,
-                            const JointResult& joint_result,
-                            int chained_failures) {
-  tools::JsonObject json;
-  json.AddNumber("scans", static_cast<double>(num_scans))
-      .AddNumber("neighbors", FLAGS_neighbors)
-      .AddNumber("joint_layers", FLAGS_joint_layers)
-      .AddBool("joint_both_directions", !FLAGS_joint_one_way)
-      .AddNumber("directed_pairs", joint_result.directed_pairs)
-      .AddNumber("residual_blocks", joint_result.residual_blocks)
-      .AddString("linear_solver", joint_result.linear_solver)
-      .AddNumber("chained_failures", chained_failures)
-      .AddNumber("joint_iterations", joint_result.iterations)
-      .AddString("joint_termination", joint_result.termination)
-      .AddNumber("joint_initial_cost", joint_result.initial_cost)
-      .AddNumber("joint_cost_at_chained", joint_result.chained_cost_last_stage)
-      .AddNumber("joint_final_cost", joint_result.final_cost);
+// stdout and --output_json (docs/json_schema.md, "mlndt_posegraph").
+tools::Json JointJson(size_t num_scans,
+                      const JointResult& joint_result,
+                      int chained_failures) {
+  using tools::Number;
+  tools::Json json = tools::ToolJson("mlndt_posegraph");
+  json["scans"] = num_scans;
+  json["neighbors"] = FLAGS_neighbors;
+  json["joint_layers"] = FLAGS_joint_layers;
+  json["joint_both_directions"] = !FLAGS_joint_one_way;
+  json["directed_pairs"] = joint_result.directed_pairs;
+  json["residual_blocks"] = joint_result.residual_blocks;
+  json["linear_solver"] = joint_result.linear_solver;
+  json["chained_failures"] = chained_failures;
+  json["joint_iterations"] = joint_result.iterations;
+  json["joint_termination"] = joint_result.termination;
+  json["joint_initial_cost"] = Number(joint_result.initial_cost);
+  json["joint_cost_at_chained"] = Number(joint_result.chained_cost_last_stage);
+  json["joint_final_cost"] = Number(joint_result.final_cost);
   return json;
 }
 
@@ -347,6 +349,9 @@ int Run() {
                   " (the joint problem is built from ML-NDT residuals)");
   }
 
+  if (!tools::CheckOutputFile("output_json", FLAGS_output_json, &error)) {
+    return Refuse(error);
+  }
   if (!FLAGS_output_dir.empty() &&
       !tools::PrepareOutputDir(
           "output_dir",
@@ -400,18 +405,18 @@ int Run() {
       !WriteTrajectories(FLAGS_output_dir, chained, joint, &error)) {
     return Fail(error);
   }
-  tools::JsonObject json = JointJson(n, joint_result, chained_failures);
+  tools::Json json = JointJson(n, joint_result, chained_failures);
   if (!truth.empty() &&
       !tools::AddTrajectoryMetrics(chained, joint, truth, &json, &error)) {
     return Fail(error);
   }
-  json.AddNumber("time_maps_s", maps_done - start)
-      .AddNumber("time_chained_s", chained_done - maps_done)
-      .AddNumber("time_joint_s", joint_done - chained_done)
-      .AddNumber("time_total_s", joint_done - start);
-  std::cout << json.str() << std::endl;
+  json["time_ms"] = {{"total", (joint_done - start) * 1e3},
+                     {"maps", (maps_done - start) * 1e3},
+                     {"chained", (chained_done - maps_done) * 1e3},
+                     {"joint", (joint_done - chained_done) * 1e3}};
+  std::cout << tools::JsonText(json);
   if (!FLAGS_output_json.empty() &&
-      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+      !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
     return Fail(error);
   }
   return 0;

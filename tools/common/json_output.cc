@@ -159,13 +159,14 @@ Json RegistrationSummaryJson(const RegistrationSummary& summary,
   return json;
 }
 
+std::string JsonText(const Json& json) {
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
 bool WriteJsonFile(const std::string& path,
                    const Json& json,
                    std::string* error) {
-  return WriteFileAtomically(
-      path,
-      json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n",
-      error);
+  return WriteFileAtomically(path, JsonText(json), error);
 }
 
 }  // namespace tools

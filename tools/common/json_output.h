@@ -62,8 +62,12 @@ Json RegistrationTimeJson(const RegistrationSummary& summary);
 Json RegistrationSummaryJson(const RegistrationSummary& summary,
                              bool with_trace);
 
-// Writes json.dump(2) and a newline to `path` atomically
-// (WriteFileAtomically); false with *error when it cannot.
+// The text WriteJsonFile writes: json.dump(2) and a newline (invalid UTF-8
+// replaced).
+std::string JsonText(const Json& json);
+
+// Writes JsonText(json) to `path` atomically (WriteFileAtomically); false
+// with *error when it cannot.
 bool WriteJsonFile(const std::string& path,
                    const Json& json,
                    std::string* error);
