@@ -48,7 +48,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/statistics.h"
 #include "tools/common/covariance_consistency.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/output_files.h"
@@ -295,8 +295,12 @@ int Main() {
     return Fail(error);
   }
 
-  tools::JsonObject json;
-  std::string pair_list = "[";
+  tools::Json json = tools::ToolJson("mlndt_covariance");
+  json["starts"] = FLAGS_starts;
+  json["max_translation_m"] = FLAGS_max_translation;
+  json["max_rotation_deg"] = FLAGS_max_rotation;
+  json["vary_sampling_seed"] = FLAGS_vary_sampling_seed;
+  tools::Json pair_list = tools::Json::array();
   for (const std::string& dataset : datasets) {
     Consistency pooled;
     int failures = 0, outliers = 0;
@@ -309,32 +313,22 @@ int Main() {
       outliers += pair.outliers;
       const Consistency result = Finish(one);
       PrintRow(dataset + " " + pair.name, result);
-      if (pair_list.size() > 1) pair_list += ", ";
-      pair_list += tools::JsonObject()
-                       .AddString("dataset", dataset)
-                       .AddString("pair", pair.name)
-                       .AddNumber("failures", pair.failures)
-                       .AddNumber("outliers", pair.outliers)
-                       .Add("consistency", ConsistencyJson(result))
-                       .str();
+      pair_list.push_back({{"dataset", dataset},
+                           {"pair", pair.name},
+                           {"failures", pair.failures},
+                           {"outliers", pair.outliers},
+                           {"consistency", ConsistencyJson(result)}});
     }
     const Consistency result = Finish(pooled);
     PrintRow(dataset + " (all)", result);
     std::printf("\n");
-    json.Add(dataset,
-             tools::JsonObject()
-                 .AddNumber("failures", failures)
-                 .AddNumber("outliers", outliers)
-                 .Add("consistency", ConsistencyJson(result))
-                 .str());
+    json[dataset] = {{"failures", failures},
+                     {"outliers", outliers},
+                     {"consistency", ConsistencyJson(result)}};
   }
-  json.Add("pairs", pair_list + "]");
-  json.AddNumber("starts", FLAGS_starts)
-      .AddNumber("max_translation_m", FLAGS_max_translation)
-      .AddNumber("max_rotation_deg", FLAGS_max_rotation)
-      .AddBool("vary_sampling_seed", FLAGS_vary_sampling_seed);
+  json["pairs"] = pair_list;
   if (!FLAGS_output_json.empty() &&
-      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+      !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
     return Fail(error);
   }
   return 0;
