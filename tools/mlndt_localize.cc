@@ -43,6 +43,7 @@
 #include "mlndt/grid/map_memory.h"
 #include "mlndt/pipeline/localizer.h"
 #include "tools/common/gnuplot.h"
+#include "tools/common/json_output.h"
 #include "tools/common/json_writer.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
@@ -89,14 +90,6 @@ int Fail(const std::string& message) {
 int Refuse(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
   return tools::kExitUsage;
-}
-
-std::string CommandLine() {
-  std::string line;
-  for (const std::string& arg : gflags::GetArgvs()) {
-    line += (line.empty() ? "" : " ") + arg;
-  }
-  return line;
 }
 
 // Every flag is checked here, before the map or any scan is read.
@@ -241,16 +234,8 @@ bool WriteScansCsv(const std::string& path,
   return WriteFileAtomically(path, out.str(), error);
 }
 
-std::string StatsJson(const Stats& s) {
-  return tools::JsonObject()
-      .AddNumber("mean", s.mean)
-      .AddNumber("median", s.median)
-      .AddNumber("min", s.min)
-      .AddNumber("max", s.max)
-      .str();
-}
-
-std::string SummaryJson(const LocalizerOptions& options,
+// summary.json (docs/json_schema.md, "mlndt_localize").
+tools::Json SummaryJson(const LocalizerOptions& options,
                         const LayeredGrid& map,
                         const Isometry3d& first_guess,
                         const std::vector<LocalizationResult>& results,
@@ -270,36 +255,28 @@ std::string SummaryJson(const LocalizerOptions& options,
   for (int i = 1; i <= map.num_layers(); ++i) {
     cells += map.layer(i).cells().size();
   }
-  return tools::JsonObject()
-      .AddString("tool", kTool)
-      .AddString("command", CommandLine())
-      .AddString("map", FLAGS_map)
-      .Add("map_info",
-           tools::JsonObject()
-               .AddNumber("layers", map.num_layers())
-               .AddNumber("cells", static_cast<double>(cells))
-               .AddNumber("bytes", static_cast<double>(map.MemoryBytes()))
-               .AddNumber("finest_cell_size_m",
-                          map.layer(map.num_layers()).cell_size())
-               .str())
-      .AddNumber("scans", static_cast<double>(results.size()))
-      .AddString("motion_model", MotionModelToString(options.motion_model))
-      .AddString("backend",
-                 BackendTypeToString(options.registration.backend.type))
-      .Add("first_guess", tools::JsonArray(PoseNumbers(first_guess)))
-      .Add("terminations",
-           tools::JsonObject()
-               .AddNumber("CONVERGENCE", static_cast<double>(converged))
-               .AddNumber("NO_CONVERGENCE", static_cast<double>(no_convergence))
-               .AddNumber("FAILURE", static_cast<double>(failed))
-               .str())
-      .Add("inlier_fraction", StatsJson(ComputeStats(inliers)))
-      .Add("own_cell_fraction", StatsJson(ComputeStats(own)))
-      .Add("registration_ms", StatsJson(ComputeStats(registration_ms)))
-      .AddNumber("map_load_s", map_load_s)
-      .AddNumber("total_s", total_s)
-      .AddNumber("peak_resident_bytes", tools::PeakResidentBytes())
-      .str();
+  tools::Json json = tools::ToolJson(kTool);
+  json["map"] = FLAGS_map;
+  json["map_info"] = {{"layers", map.num_layers()},
+                      {"cells", cells},
+                      {"bytes", map.MemoryBytes()},
+                      {"finest_cell_size_m",
+                       tools::Number(map.layer(map.num_layers()).cell_size())}};
+  json["scans"] = results.size();
+  json["motion_model"] = MotionModelToString(options.motion_model);
+  json["backend"] = BackendTypeToString(options.registration.backend.type);
+  json["first_guess"] = tools::PoseJson(first_guess);
+  json["terminations"] = {{"CONVERGENCE", converged},
+                          {"NO_CONVERGENCE", no_convergence},
+                          {"FAILURE", failed}};
+  json["inlier_fraction"] = tools::StatsJson(ComputeStats(inliers));
+  json["own_cell_fraction"] = tools::StatsJson(ComputeStats(own));
+  json["time_ms"] = {{"total", tools::Number(total_s * 1e3)},
+                     {"map_load", tools::Number(map_load_s * 1e3)}};
+  json["time_ms_stats"] = {
+      {"registration", tools::StatsJson(ComputeStats(registration_ms))}};
+  json["peak_resident_bytes"] = tools::PeakResidentBytes();
+  return json;
 }
 
 // trajectory_xy.png: the finest layer's cell means (every k-th, at most
@@ -427,15 +404,14 @@ int Run() {
       !WriteScansCsv(out + "scans.csv", paths, results, &error)) {
     return Fail(error);
   }
-  if (!WriteFileAtomically(out + "summary.json",
-                           SummaryJson(options,
-                                       map,
-                                       first_guess,
-                                       results,
-                                       map_load_s,
-                                       NowSeconds() - start) +
-                               "\n",
-                           &error)) {
+  if (!tools::WriteJsonFile(out + "summary.json",
+                            SummaryJson(options,
+                                        map,
+                                        first_guess,
+                                        results,
+                                        map_load_s,
+                                        NowSeconds() - start),
+                            &error)) {
     return Fail(error);
   }
 

@@ -178,8 +178,13 @@ TEST(MlndtLocalize, KittiScansFromTenMetresAndFortyFiveDegreesOff) {
   EXPECT_EQ(summary["scans"].get<int>(), 8);
   EXPECT_EQ(summary["terminations"]["CONVERGENCE"].get<int>(), 8);
   EXPECT_EQ(summary["motion_model"].get<std::string>(), "CONSTANT_VELOCITY");
-  EXPECT_EQ(summary["first_guess"][5].get<double>(), 45.0);
-  EXPECT_GT(summary["registration_ms"]["mean"].get<double>(), 0.0);
+  EXPECT_EQ(summary["schema_version"], 1);
+  EXPECT_EQ(summary["tool"], "mlndt_localize");
+  EXPECT_EQ(summary["first_guess"]["rotation_deg"][2].get<double>(), 45.0);
+  EXPECT_GT(summary["time_ms_stats"]["registration"]["mean"].get<double>(),
+            0.0);
+  EXPECT_GT(summary["time_ms"]["total"].get<double>(),
+            summary["time_ms"]["map_load"].get<double>());
   EXPECT_EQ(fs::exists(out + "/trajectory_xy.png"), plots);
 }
 
