@@ -58,7 +58,7 @@
 #include "mlndt/pipeline/sequence_registration.h"
 #include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
@@ -238,37 +238,32 @@ std::string PairDetail(const PairResult& r) {
   return detail;
 }
 
-// The run's settings, first in summary.json.
-tools::JsonObject SummaryHeader(const SequenceOptions& options,
-                                size_t num_scans) {
+// The schema header and the run's settings, first in summary.json.
+tools::Json SummaryHeader(const SequenceOptions& options, size_t num_scans) {
   const MatcherOptions& registration = options.registration;
-  tools::JsonObject header;
-  header.AddString("tool", "mlndt_sequence")
-      .AddString("command", tools::CommandLine())
-      .AddString("scans_dir", FLAGS_scans)
-      .AddNumber("scans", static_cast<double>(num_scans))
-      .AddNumber("step", static_cast<double>(options.step))
-      .AddString("init", InitSpecToString(options.init))
-      .AddString("method", MethodToString(registration.method))
-      .AddString("backend",
-                 BackendTypeToString(registration.mlndt.backend.type))
-      .AddString(
-          "sampling",
-          SamplingMethodToString(registration.method == Method::NDT
-                                     ? registration.ndt.sampling.method
-                                     : registration.mlndt.sampling.method))
-      .AddBool("adaptive_start_layer", options.adaptive.enabled);
+  tools::Json header = tools::ToolJson("mlndt_sequence");
+  header["scans_dir"] = FLAGS_scans;
+  header["scans"] = num_scans;
+  header["step"] = options.step;
+  header["init"] = InitSpecToString(options.init);
+  header["method"] = MethodToString(registration.method);
+  header["backend"] = BackendTypeToString(registration.mlndt.backend.type);
+  header["sampling"] = SamplingMethodToString(
+      registration.method == Method::NDT ? registration.ndt.sampling.method
+                                         : registration.mlndt.sampling.method);
+  header["adaptive_start_layer"] = options.adaptive.enabled;
   if (options.adaptive.enabled) {
-    header.Add(
-        "adaptive",
-        tools::JsonObject()
-            .AddNumber("max_translation_m", options.adaptive.max_translation_m)
-            .AddNumber("max_rotation_deg", options.adaptive.max_rotation_deg)
-            .Add("fail_rate_thresholds",
-                 tools::JsonArray(options.adaptive.fail_rate_thresholds))
-            .str());
+    tools::Json thresholds = tools::Json::array();
+    for (const double v : options.adaptive.fail_rate_thresholds) {
+      thresholds.push_back(tools::Number(v));
+    }
+    header["adaptive"] = {
+        {"max_translation_m",
+         tools::Number(options.adaptive.max_translation_m)},
+        {"max_rotation_deg", tools::Number(options.adaptive.max_rotation_deg)},
+        {"fail_rate_thresholds", thresholds}};
   } else {
-    header.AddNumber("start_layer_flag", FLAGS_start_layer);
+    header["start_layer_flag"] = FLAGS_start_layer;
   }
   return header;
 }
