@@ -106,6 +106,13 @@ TEST(MlndtAlign, PositionalScansPrintTheResultAs4x4OnStdout) {
   EXPECT_EQ(m.row(3), Eigen::RowVector4d(0, 0, 0, 1)) << run.out;
 }
 
+// "--flag value" (gflags' other form) with a value that starts with '-'.
+TEST(MlndtAlign, FlagValueAfterASpaceIsNotTakenForAFlag) {
+  const ToolRun run = RunAlign("--initial_guess -0.1,0,0,0,0,0 --trace");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("iter  1"), std::string::npos) << run.out;
+}
+
 TEST(MlndtAlign, HelpShowsOwnAndSharedFlagsWithDefaultsAndVersionPrints) {
   const ToolRun help = RunAlign("--help");
   EXPECT_EQ(help.exit_code, 0) << help.err;

@@ -58,7 +58,11 @@ void ExitOnBadFlags(const std::string& tool, int argc, char** argv) {
     const std::string name = body.substr(0, eq);
     gflags::CommandLineFlagInfo info;
     if (gflags::GetCommandLineFlagInfo(name.c_str(), &info)) {
-      if (eq == std::string::npos) continue;
+      // "--name value": the next argument is the value, not a flag.
+      if (eq == std::string::npos) {
+        if (info.type != "bool") ++i;
+        continue;
+      }
       // Setting it now is harmless: the parse sets it again.
       const std::string value = body.substr(eq + 1);
       if (gflags::SetCommandLineOption(name.c_str(), value.c_str()).empty()) {
