@@ -55,8 +55,8 @@ struct LayeredGridOptions {
   // finest_cell_size_m > 0.
   int num_layers = 4;
   // When > 0, n is the smallest number of layers whose finest cell edge is
-  // <= this [m] (docs/defaults.md: why 1.5 m). 0, or in [1e-3, 1e5].
-  double finest_cell_size_m = 1.5;
+  // <= this [m] (docs/defaults.md: why 1.2 m). 0, or in [1e-3, 1e5].
+  double finest_cell_size_m = 1.2;
   // When > 0, the map has one layer of cubic cells of exactly this edge [m]
   // (the conventional NDT grid) and q, n and finest_cell_size_m are ignored.
   // 0, or in [1e-3, 1e5].

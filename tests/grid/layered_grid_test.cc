@@ -331,11 +331,11 @@ void ExpectIdenticalMaps(const LayeredGrid& a, const LayeredGrid& b) {
 TEST(LayeredGrid, ThreadsBuildTheSameMapOnKitti) {
   const PointCloud scan = KittiScan(0);
   ASSERT_EQ(scan.size(), 124668u);
-  // The registration default (1.5 m, nested layers aggregated from the
+  // The registration default (1.2 m, nested layers aggregated from the
   // finest),
   // a finer map, and q = 10 (every layer binned from the points).
   LayeredGridOptions registration;
-  ASSERT_EQ(registration.finest_cell_size_m, 1.5);
+  ASSERT_EQ(registration.finest_cell_size_m, 1.2);
   LayeredGridOptions fine = registration;
   fine.finest_cell_size_m = 0.5;
   LayeredGridOptions non_nested = PaperLayeredGridOptions();

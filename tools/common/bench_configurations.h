@@ -18,7 +18,7 @@ namespace tools {
 // Which defaults a configuration starts from.
 enum class BenchDefaults {
   CURRENT,   // RegistrationOptions().
-  PREVIOUS,  // The defaults before 1.5 m finest cells, FINEST_CELLS
+  PREVIOUS,  // The defaults before 1.2 m finest cells, FINEST_CELLS
              // weighting and Cauchy scale 2: 2 m, POINTS, scale 3.
 };
 
