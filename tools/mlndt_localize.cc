@@ -51,6 +51,7 @@
 #include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
@@ -343,6 +344,14 @@ int Run() {
   if (!CheckFlags(&options, &paths, &error)) return Refuse(error);
   Isometry3d first_guess;
   if (!FirstPose(&first_guess, &error)) return Refuse(error);
+  LayeredGrid map;
+  if (!LoadLayeredGrid(FLAGS_map, &map, &error)) return Refuse(error);
+  // The library would clamp a start layer beyond the map's layers.
+  if (!tools::CheckStartLayerForMap(
+          options.registration.schedule, map.num_layers(), &error)) {
+    return Refuse(error);
+  }
+  const double map_load_s = NowSeconds() - start;
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
                                {"scans.csv", "summary.json"},
@@ -357,9 +366,6 @@ int Run() {
                  "gnuplot-nox, or pass --plots=false)\n";
   }
 
-  LayeredGrid map;
-  if (!LoadLayeredGrid(FLAGS_map, &map, &error)) return Refuse(error);
-  const double map_load_s = NowSeconds() - start;
   std::printf("map: %s, %d layers, finest cell %.3f m, %s\n",
               FLAGS_map.c_str(),
               map.num_layers(),

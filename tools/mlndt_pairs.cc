@@ -29,6 +29,7 @@
 #include "mlndt/eval/statistics.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 
 DEFINE_string(scans, "", "Folder of scans (sorted by file name)");
@@ -140,8 +141,10 @@ int Run() {
     return Refuse("--scans and --gt_poses are required");
   RegistrationOptions options;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error))
+  if (!tools::RegistrationOptionsFromFlags(&options, &error) ||
+      !tools::CheckStartLayerBeforeMap(options, &error)) {
     return Refuse(error);
+  }
 
   std::vector<std::string> paths;
   if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {

@@ -53,6 +53,7 @@
 #include "tools/common/posegraph_metrics.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 
 // clang-format off
@@ -348,6 +349,7 @@ int Run() {
     return Refuse(error +
                   " (the joint problem is built from ML-NDT residuals)");
   }
+  if (!tools::CheckStartLayerBeforeMap(options, &error)) return Refuse(error);
 
   if (!tools::CheckOutputFile("output_json", FLAGS_output_json, &error)) {
     return Refuse(error);

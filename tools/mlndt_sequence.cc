@@ -66,6 +66,7 @@
 #include "tools/common/registration_flags.h"
 #include "tools/common/sequence_output.h"
 #include "tools/common/sequence_plots.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
@@ -327,6 +328,10 @@ int Run() {
   SequenceOptions options;
   std::string error;
   if (!SequenceOptionsFromFlags(&options, &error)) return Refuse(error);
+  if (options.registration.method == Method::MLNDT &&
+      !tools::CheckStartLayerBeforeMap(options.registration.mlndt, &error)) {
+    return Refuse(error);
+  }
   std::vector<std::string> paths;
   std::vector<Isometry3d> truth, odometry;
   if (!ReadScansAndPoses(options, &paths, &truth, &odometry, &error)) {

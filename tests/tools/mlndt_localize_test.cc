@@ -275,6 +275,8 @@ TEST(MlndtLocalize, RefusesBadFlags) {
            " --output_dir=" + Quote(kitti.map + "/out"),
        "--output_dir=" + kitti.map + "/out: cannot create the folder"},
       {base + " --max_scans=-1", "--max_scans must be >= 0"},
+      {base + " --start_layer=9",
+       "--start_layer=9 is out of range: the map has"},
       {base + " --plot_max_cells=-1", "--plot_max_cells must be >= 0"},
       {base + " --initial_guess=1,2", "--initial_guess=1,2: expected 6"},
       {base + " --initial_guess=0,0,0,0,0,0 --initial_matrix=1",

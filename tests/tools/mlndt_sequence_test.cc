@@ -499,6 +499,8 @@ TEST(MlndtSequence, BadFlagsExitTwo) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--output_dir=" + Quote(dir), "Usage"},
       {kitti + " --step=0", "--step"},
+      {kitti + " --finest_cell_size=0 --num_layers=3 --start_layer=5",
+       "--start_layer=5 is out of range"},
       {kitti + " --poses_are_camera", "--poses_are_camera needs --calib"},
       {kitti + " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")),
        "give --poses_are_camera with it"},
