@@ -18,16 +18,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/dataset.h"
 #include "mlndt/eval/statistics.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
@@ -106,7 +107,7 @@ bool RegisterAndPrint(const RegistrationOptions& options,
                       const Isometry3d& truth,
                       const Isometry3d& initial,
                       const std::string& label,
-                      std::ofstream* csv,
+                      std::ostringstream* csv,  // nullptr: no CSV.
                       std::vector<double>* times) {
   RegistrationSummary summary;
   Register(options, scans[i], scans[j], initial, &summary);
@@ -127,7 +128,7 @@ bool RegisterAndPrint(const RegistrationOptions& options,
               ok ? "yes" : "NO",
               summary.num_iterations,
               summary.total_time_s * 1e3);
-  if (csv->is_open()) {
+  if (csv != nullptr) {
     *csv << i << "," << j << "," << gap << ",\"" << label << "\"," << et << ","
          << er << "," << ok << ","
          << TerminationTypeToString(summary.termination_type) << ","
@@ -172,14 +173,16 @@ int Run() {
   if (!ParsePerturbations(FLAGS_perturbations, &perturbations, &error)) {
     return Refuse(error);
   }
+  if (!tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
+    return Refuse(error);
+  }
   std::vector<PointCloud> scans(paths.size());
   for (size_t i = 0; i < paths.size(); ++i) {
     if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
       return Refuse(error);
   }
-  std::ofstream csv;
+  std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
-    csv.open(FLAGS_output_csv);
     csv << "reference,input,gap,perturbation,translation_error_m,rotation_"
            "error_deg,success,"
            "termination,iterations,time_ms\n";
@@ -208,8 +211,16 @@ int Run() {
         const Isometry3d initial =
             InitialGuess(perturbations, k, truth, &label);
         ++total;
-        successes += RegisterAndPrint(
-            options, scans, i, j, gap, truth, initial, label, &csv, &times);
+        successes += RegisterAndPrint(options,
+                                      scans,
+                                      i,
+                                      j,
+                                      gap,
+                                      truth,
+                                      initial,
+                                      label,
+                                      FLAGS_output_csv.empty() ? nullptr : &csv,
+                                      &times);
       }
     }
   }
@@ -218,7 +229,11 @@ int Run() {
               total,
               100.0 * successes / std::max(1, total),
               ComputeStats(times).median);
-  return 0;
+  if (!FLAGS_output_csv.empty() &&
+      !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
+    return Fail(error);
+  }
+  return tools::kExitOk;
 }
 
 }  // namespace
