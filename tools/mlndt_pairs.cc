@@ -29,6 +29,7 @@
 #include "mlndt/eval/statistics.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
@@ -148,11 +149,17 @@ int Run() {
   }
 
   std::vector<std::string> paths;
-  if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
+  if (!ListScanFiles(
+          FLAGS_scans, {FLAGS_gt_poses, FLAGS_calib}, &paths, &error)) {
+    return Refuse(error);
+  }
+  if (!tools::CheckCameraPoseFlags("--gt_poses", true, &error)) {
     return Refuse(error);
   }
   std::vector<Isometry3d> poses;
-  if (!ReadKittiPoses(FLAGS_gt_poses, &poses, &error)) return Refuse(error);
+  if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &poses, &error)) {
+    return Refuse("--gt_poses: " + error);
+  }
   if (poses.size() < paths.size()) {
     return Refuse(FLAGS_gt_poses + " has " + std::to_string(poses.size()) +
                   " poses for " + std::to_string(paths.size()) + " scans");

@@ -50,6 +50,7 @@
 #include "mlndt/eval/dataset.h"
 #include "tools/common/json_output.h"
 #include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/posegraph_metrics.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
@@ -363,13 +364,20 @@ int Run() {
     return Refuse(error);
   }
   std::vector<std::string> paths;
-  if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
+  if (!ListScanFiles(
+          FLAGS_scans, {FLAGS_gt_poses, FLAGS_calib}, &paths, &error)) {
     return Refuse(error);
   }
   if (paths.size() < 2) return Refuse(FLAGS_scans + ": fewer than 2 scans");
+  if (!tools::CheckCameraPoseFlags(
+          "--gt_poses", !FLAGS_gt_poses.empty(), &error)) {
+    return Refuse(error);
+  }
   std::vector<Isometry3d> truth;
   if (!FLAGS_gt_poses.empty()) {
-    if (!ReadKittiPoses(FLAGS_gt_poses, &truth, &error)) return Refuse(error);
+    if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &truth, &error)) {
+      return Refuse(error);
+    }
     if (truth.size() < paths.size()) {
       return Refuse(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
                     " poses for " + std::to_string(paths.size()) + " scans");

@@ -51,5 +51,37 @@ TEST(MlndtPairs, RefusesAStartLayerBeyondTheMap) {
   EXPECT_TRUE(run.lines.empty()) << run.out;
 }
 
+// KITTI camera poses need --poses_are_camera with --calib, as in every tool
+// that reads pose files (pose_flags.h); with both they match the Velodyne
+// poses.
+TEST(MlndtPairs, CameraPosesNeedCalibAndThenMatchVelodynePoses) {
+  const std::string scans =
+      "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
+      " --gaps=7 --perturbations=";
+  const std::string camera =
+      " --gt_poses=" + Quote(testing::BundledDataPath("kitti/poses_cam0.txt"));
+  const ToolRun refused =
+      testing::RunTool("mlndt_pairs", scans + camera + " --poses_are_camera");
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("--poses_are_camera needs --calib"),
+            std::string::npos)
+      << refused.err;
+
+  const ToolRun converted =
+      testing::RunTool("mlndt_pairs",
+                       scans + camera + " --poses_are_camera --calib=" +
+                           Quote(testing::BundledDataPath("kitti/calib.txt")));
+  const ToolRun velodyne = testing::RunTool(
+      "mlndt_pairs",
+      scans + " --gt_poses=" +
+          Quote(testing::BundledDataPath("kitti/poses_velo.txt")));
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+  ASSERT_EQ(velodyne.exit_code, 0) << velodyne.err;
+  // The one pair (7 onto 0) has the same error line (the same truth).
+  ASSERT_GE(converted.lines.size(), 2u);
+  ASSERT_GE(velodyne.lines.size(), 2u);
+  EXPECT_EQ(converted.lines[1].substr(0, 60), velodyne.lines[1].substr(0, 60));
+}
+
 }  // namespace
 }  // namespace mlndt

@@ -157,6 +157,7 @@ TEST(MlndtPosegraph, BadFlagsExitWithTwo) {
            scans + " --backend=nonsense",        // Registration flag.
            scans + " --method=ndt",              // Not ML-NDT.
            scans + " --loss_scale=-1",           // Invalid option.
+           scans + " --poses_are_camera",        // Without --calib.
            scans + " --gt_poses=" +
                Quote(dir + "/missing.txt"),           // Unreadable file.
            scans + " --gt_poses=" + Quote(short_gt),  // Too few poses.
