@@ -79,7 +79,8 @@ DEFINE_string(kitti_gaps, "1", "Comma-separated frame gaps of the kitti pairs: i
 DEFINE_string(defaults, "current",
               "Comma-separated defaults the configurations start from: current "
               "(RegistrationOptions()), previous (2 m finest cells, POINTS coarse weighting, "
-              "Cauchy scale 3: the defaults before the reach and precision change)");
+              "Cauchy scale 3, step tolerance 1e-4: the defaults before the reach and precision "
+              "change)");
 DEFINE_string(backends, "ceres,newton,lm", "Comma-separated backends: ceres, newton, lm");
 DEFINE_string(samplings, "gbs",
               "Comma-separated input sampling methods: gbs, random, all, voxel_centroid");

@@ -42,6 +42,7 @@ LayerScheduleOptions PaperLayerScheduleOptions() {
   options.start_layer = 2;
   options.iterations_per_layer = 3;
   options.max_coarse_point_stride = 1;
+  options.step_tolerance = 1e-4;
   return options;
 }
 

@@ -29,8 +29,8 @@ struct LayerScheduleOptions {
   // Cap on the last layer's iterations. In [1, 10000].
   int max_final_iterations = 30;
   // The last layer converges when a successful step has ||delta xi|| below
-  // this (metres and radians). In [1e-12, 1].
-  double step_tolerance = 1e-4;
+  // this (metres and radians: 1 mm, 0.06 deg). In [1e-12, 1].
+  double step_tolerance = 1e-3;
   // A coarse layer ends early once a successful step has ||delta xi|| below
   // this; 0 runs every coarse layer for exactly iterations_per_layer
   // iterations, as the paper. In [0, 1].

@@ -414,7 +414,7 @@ TEST(PaperLayerScheduleOptions, IsTable1) {
   EXPECT_EQ(paper.max_coarse_point_stride, 1);
   EXPECT_EQ(paper.coarse_step_tolerance, 0.0);  // Exactly 3 iterations.
   EXPECT_EQ(paper.max_final_iterations, defaults.max_final_iterations);
-  EXPECT_EQ(paper.step_tolerance, defaults.step_tolerance);
+  EXPECT_EQ(paper.step_tolerance, 1e-4);  // The earlier default, kept.
 
   FakeBackend backend(Script({3, 3, 5}));
   Vector6d xi = Vector6d::Zero();

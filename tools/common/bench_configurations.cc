@@ -168,6 +168,7 @@ RegistrationOptions BenchConfiguration::Options(uint64_t seed) const {
     options.grid.finest_cell_size_m = 2.0;
     options.grid.coarse_weighting = CoarseWeighting::POINTS;
     options.objective.loss_scale = 3.0;
+    options.schedule.step_tolerance = 1e-4;
   }
   options.backend.type = backend;
   options.sampling.method = sampling;

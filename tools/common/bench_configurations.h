@@ -19,7 +19,8 @@ namespace tools {
 enum class BenchDefaults {
   CURRENT,   // RegistrationOptions().
   PREVIOUS,  // The defaults before 1.2 m finest cells, FINEST_CELLS
-             // weighting and Cauchy scale 2: 2 m, POINTS, scale 3.
+             // weighting, Cauchy scale 2 and a 1e-3 step tolerance: 2 m,
+             // POINTS, scale 3, 1e-4.
 };
 
 // "current" or "previous".
