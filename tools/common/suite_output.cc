@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_writer.h"
@@ -195,16 +196,12 @@ std::vector<double> Measure(
 bool WriteCurve(const std::string& path,
                 const std::vector<double>& values,
                 std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   for (size_t k = 0; k < values.size(); ++k) {
     out << Num(values[k]) << " " << Num(double(k + 1) / values.size()) << "\n";
   }
   if (values.empty()) out << "nan nan\n";
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 }  // namespace
@@ -224,18 +221,14 @@ bool WriteSuiteRunsCsv(const std::string& path,
                        const std::vector<LoadedSuiteDataset>& datasets,
                        const std::vector<std::vector<SuiteRunResult>>& results,
                        std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << SuiteRunsCsvHeader() << "\n";
   for (size_t d = 0; d < datasets.size(); ++d) {
     for (size_t k = 0; k < results.at(d).size(); ++k) {
       out << CsvRow(datasets[d], datasets[d].runs.at(k), results[d][k]);
     }
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 std::string SuiteSummaryJson(const SuiteScore& score,
