@@ -39,7 +39,7 @@
 #include "mlndt/pipeline/suite_runner.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
@@ -360,7 +360,6 @@ int Run() {
                                       outcomes,
                                       FLAGS_reach_share);
   tools::SuiteRunInfo info;
-  info.command_line = tools::CommandLine();
   info.method = MethodToString(config.matcher.method);
   info.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

@@ -120,6 +120,9 @@ TEST(MlndtSuite, BundledKittiTablesAgreeWithRunsCsv) {
   ASSERT_EQ(wrong_row.size(), header.size());
   const Json summary =
       Json::parse(testing::ReadWholeFile(dir + "/summary.json"));
+  EXPECT_EQ(summary["schema_version"], 1);
+  EXPECT_EQ(summary["tool"], "mlndt_suite");
+  EXPECT_GT(summary["time_ms"]["total"].get<double>(), 0.0);
   for (size_t c = 1; c + 1 < header.size(); ++c) {
     EXPECT_EQ(Number(right_row[c]), right_count[header[c]]) << header[c];
     EXPECT_EQ(Number(wrong_row[c]), wrong_count[header[c]]) << header[c];
