@@ -44,7 +44,6 @@
 #include "mlndt/pipeline/localizer.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_output.h"
-#include "tools/common/json_writer.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
@@ -186,7 +185,7 @@ std::vector<double> PoseNumbers(const Isometry3d& pose) {
 std::string PoseColumns(const Isometry3d& pose) {
   std::string out;
   for (const double v : PoseNumbers(pose)) {
-    out += (out.empty() ? "" : ",") + tools::JsonNumber(v);
+    out += (out.empty() ? "" : ",") + tools::Num(v);
   }
   return out;
 }
@@ -214,23 +213,23 @@ bool WriteScansCsv(const std::string& path,
         << CsvField(std::filesystem::path(files[r.index]).filename().string())
         << "," << TerminationTypeToString(r.termination_type) << ","
         << r.iterations << "," << r.input_points << "," << r.sampled_points
-        << "," << r.matched_points << "," << tools::JsonNumber(r.final_score)
-        << "," << tools::JsonNumber(r.quality.own_cell_fraction) << ","
-        << tools::JsonNumber(r.quality.inlier_fraction) << ","
-        << tools::JsonNumber(r.quality.mean_score) << ","
-        << tools::JsonNumber(r.quality.median_distance) << ","
+        << "," << r.matched_points << "," << tools::Num(r.final_score) << ","
+        << tools::Num(r.quality.own_cell_fraction) << ","
+        << tools::Num(r.quality.inlier_fraction) << ","
+        << tools::Num(r.quality.mean_score) << ","
+        << tools::Num(r.quality.median_distance) << ","
         << PoseColumns(r.map_from_scan) << ","
-        << tools::JsonNumber(
+        << tools::Num(
                TranslationErrorM(r.predicted_map_from_scan, r.map_from_scan))
         << ","
-        << tools::JsonNumber(
+        << tools::Num(
                RotationErrorRad(r.predicted_map_from_scan, r.map_from_scan) *
                kRadToDeg)
-        << "," << tools::JsonNumber(r.load_time_s * 1e3) << ","
-        << tools::JsonNumber(r.sampling_time_s * 1e3) << ","
-        << tools::JsonNumber(r.solve_time_s * 1e3) << ","
-        << tools::JsonNumber(r.registration_time_s * 1e3) << ","
-        << CsvField(r.message) << "\n";
+        << "," << tools::Num(r.load_time_s * 1e3) << ","
+        << tools::Num(r.sampling_time_s * 1e3) << ","
+        << tools::Num(r.solve_time_s * 1e3) << ","
+        << tools::Num(r.registration_time_s * 1e3) << "," << CsvField(r.message)
+        << "\n";
   }
   return WriteFileAtomically(path, out.str(), error);
 }
