@@ -79,18 +79,8 @@ void PrintTrace(const RegistrationSummary& summary) {
   }
 }
 
-// The pose in m and degrees (wrapped to (-180, 180]), then the 4x4.
-void PrintPose(const RegistrationSummary& summary) {
-  const Vector6d& xi = summary.reference_from_input_xi;
-  std::printf(
-      "  pose:           t = (%.4f, %.4f, %.4f) m, (alpha, beta, gamma) = "
-      "(%.4f, %.4f, %.4f) deg\n",
-      xi(0),
-      xi(1),
-      xi(2),
-      tools::WrapDegrees(xi(3) * kRadToDeg),
-      tools::WrapDegrees(xi(4) * kRadToDeg),
-      tools::WrapDegrees(xi(5) * kRadToDeg));
+// The 4x4 (the report above has the pose vector).
+void PrintMatrix(const RegistrationSummary& summary) {
   std::printf("reference_from_input (4x4, row-major):\n");
   const Eigen::Matrix4d& m = summary.reference_from_input.matrix();
   for (int r = 0; r < 4; ++r) {
@@ -230,7 +220,7 @@ int Run(int argc, char** argv) {
                 rotation_error_deg,
                 in.expected.c_str());
   }
-  PrintPose(summary);
+  PrintMatrix(summary);
 
   if (!FLAGS_output_json.empty() &&
       !tools::WriteJsonFile(FLAGS_output_json,
