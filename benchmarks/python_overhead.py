@@ -5,7 +5,7 @@
         [--reference A.pcd --input B.pcd] [--tool build/tools/mlndt_align] [-- TOOL FLAGS...]
 
 Each repetition, in turn:
-  tool    mlndt_align in a new process: its in-process time, time_ms.total of
+  tool    mlndt_align in a new process: its in-process time, registration.time_ms.total of
           its JSON (map, sampling and solve: what mlndt::Register measures);
   cold    a new Python process that reads the clouds with mlndt.read_cloud
           and times mlndt.register(reference, input) with perf_counter: the
@@ -49,7 +49,7 @@ def run_tool(tool, reference, input, flags, output):
     completed = subprocess.run(command, capture_output=True, text=True)
     if not Path(output).exists():
         raise SystemExit(f"python_overhead.py: {tool} failed: {completed.stderr}")
-    return json.loads(Path(output).read_text())["time_ms"]["total"] / 1e3
+    return json.loads(Path(output).read_text())["registration"]["time_ms"]["total"] / 1e3
 
 
 def run_cold(reference, input):
@@ -96,7 +96,7 @@ def main():
     print(f"pair: {args.reference} <- {args.input} ({len(reference)} / {len(input)} points)")
     print(f"{args.repetitions} repetitions, medians (min-max):")
     for name, values in [
-        ("mlndt_align time_ms.total", tool_s),
+        ("mlndt_align registration.time_ms.total", tool_s),
         ("Python, new process      ", cold_s),
         ("Python, same process     ", warm_s),
     ]:

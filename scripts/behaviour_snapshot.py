@@ -12,6 +12,7 @@ identical snapshots. Uses only the bundled data in data/.
 
 import csv
 import json
+import math
 import os
 import subprocess
 import sys
@@ -34,18 +35,23 @@ def align(build, flags):
         proc = subprocess.run(cmd, capture_output=True, text=True)
         if not os.path.exists(out):
             return "exit %d, no json" % proc.returncode
-        d = json.load(open(out))
-    pose = d["reference_from_input"][:12]
+        # docs/json_schema.md: the registration's result is one object.
+        d = json.load(open(out))["registration"]
+    pose = [v for row in d["reference_from_input"][:3] for v in row]
+    # The covariance's angles are in degrees there; the snapshot keeps rad.
+    deg = 180.0 / math.pi
+    cov = d["covariance_m_deg"]["matrix"]
+    cov_diag = [cov[i][i] / (deg * deg if i >= 3 else 1.0) for i in range(6)]
     fields = [
         d["termination"],
         "iters=%d" % d["iterations"],
         "per_layer=" + ",".join(str(i) for i in d.get("iterations_per_layer", [])),
         "start=%s" % d.get("start_layer"),
         "layers=%s" % d.get("num_layers"),
-        "score=" + g(d["initial_score"]) + "->" + g(d["score"]),
-        "sampled=%d matched=%d" % (d["sampled_points"], d["matched_points"]),
+        "score=" + g(d["score"]["initial"]) + "->" + g(d["score"]["final"]),
+        "sampled=%d matched=%d" % (d["points"]["sampled"], d["points"]["matched"]),
         "pose=" + " ".join(g(v) for v in pose),
-        "cov_diag=" + " ".join(g(d["covariance"][i * 7]) for i in range(6)),
+        "cov_diag=" + " ".join(g(v) for v in cov_diag),
         "trace_scores=" + " ".join(g(r["score"]) for r in d["trace"]),
     ]
     return " | ".join(fields)

@@ -2,185 +2,69 @@
 // (or, with --method=ndt, the conventional single-grid NDT baseline) and
 // reports the pose, a per-iteration trace and timings (README's main job).
 //
-//   mlndt_align --reference=ref.pcd --input=in.pcd
-//   [--initial_guess=tx,ty,tz,a,b,g]
-//               [--output_json=result.json]
+//   mlndt_align REF IN [--initial_guess=tx,ty,tz,a,b,g] [--output_json=FILE]
+//   mlndt_align --reference=REF --input=IN ...
 //
-// Without --reference/--input it aligns the Velodyne pair bundled in data/
-// and compares the result with the reference result shipped with it.
+// Without a reference and an input it aligns the Velodyne pair bundled in
+// data/ and compares the result with the reference result shipped with it.
+// stdout ends with the result's reference_from_input as a 4x4 matrix (4
+// lines of 4 numbers). --output_json (docs/json_schema.md) is written for
+// every registration that ran, trusted or not; --output_cloud only for an
+// accepted result. Exit codes (tool_main.h): 0 the result is accepted
+// (verdict_flags.h), 1 FAILURE or a result not to be trusted, 2 a flag or an
+// input refused before any work.
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/json_writer.h"
-#include "tools/common/list_flags.h"
+#include "tools/common/json_output.h"
+#include "tools/common/map_inputs.h"
 #include "tools/common/matrix_text.h"
+#include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
+#include "tools/common/verdict_flags.h"
 
-DEFINE_string(reference,
-              "",
-              "Reference scan (any format mlndt reads); default: bundled pair");
-DEFINE_string(
-    input,
-    "",
-    "Input scan, registered onto the reference; default: bundled pair");
-DEFINE_string(initial_guess,
-              "",
-              "tx,ty,tz,alpha,beta,gamma: metres and degrees, R = Rx Ry Rz "
-              "(ML-NDT Eq. 7)");
-DEFINE_string(initial_matrix,
-              "",
-              "12 comma-separated numbers: row-major 3x4 matrix mapping input "
-              "points into the "
-              "reference frame");
-DEFINE_string(expected_matrix_file,
-              "",
-              "Optional 3x4/4x4 text matrix to compare the result with "
-              "(reference_from_input)");
-DEFINE_string(output_json, "", "Write the result as JSON to this file");
-DEFINE_string(output_cloud,
-              "",
-              "Write the input, moved into the reference frame (.pcd/.ply)");
+// clang-format off
+DEFINE_string(reference, "",
+              "Reference scan (any format mlndt reads; or the first positional argument); "
+              "default: the bundled pair");
+DEFINE_string(input, "",
+              "Input scan, registered onto the reference (or the second positional argument); "
+              "default: the bundled pair");
+DEFINE_string(initial_guess, "",
+              "Initial reference_from_input: tx,ty,tz,alpha,beta,gamma (m, deg; R = Rx Ry Rz, "
+              "ML-NDT Eq. 7)");
+DEFINE_string(initial_matrix, "",
+              "Initial reference_from_input: 12 comma-separated numbers, a row-major 3x4 matrix");
+DEFINE_string(expected_matrix_file, "",
+              "Optional 3x4/4x4 text matrix to compare the result with (reference_from_input)");
+DEFINE_string(output_json, "",
+              "Write the result as JSON to this file (docs/json_schema.md, mlndt_align)");
+DEFINE_string(output_cloud, "",
+              "Write the input, moved into the reference frame (.pcd/.ply); only for an "
+              "accepted result (exit 0)");
 DEFINE_bool(trace, false, "Print the per-iteration trace");
+// clang-format on
 
 namespace mlndt {
 namespace {
 
+constexpr char kTool[] = "mlndt_align";
 constexpr char kBundledReference[] = "koide3/251370668.pcd";
 constexpr char kBundledInput[] = "koide3/251371071.pcd";
 constexpr char kBundledExpected[] = "koide3/T_target_source.txt";
 
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_align: " << message << std::endl;
-  return 1;
-}
-
-bool InitialGuessFromFlags(Isometry3d* reference_from_input,
-                           std::string* error) {
-  if (!FLAGS_initial_guess.empty() && !FLAGS_initial_matrix.empty()) {
-    *error = "give --initial_guess or --initial_matrix, not both";
-    return false;
-  }
-  std::vector<double> v;
-  if (!FLAGS_initial_guess.empty()) {
-    if (!tools::ParseNumberList(FLAGS_initial_guess, &v) || v.size() != 6) {
-      *error =
-          "--initial_guess needs 6 comma-separated numbers "
-          "tx,ty,tz,alpha,beta,gamma";
-      return false;
-    }
-    *reference_from_input = PoseVectorToIsometry(
-        PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]));
-    return true;
-  }
-  if (!FLAGS_initial_matrix.empty()) {
-    if (!tools::ParseNumberList(FLAGS_initial_matrix, &v)) v.clear();
-    return tools::RowMajorToRigidTransform(
-        v, "--initial_matrix", reference_from_input, error);
-  }
-  *reference_from_input = Isometry3d::Identity();
-  return true;
-}
-
-std::string MatrixJson(const Isometry3d& t) {
-  std::vector<double> v;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) v.push_back(t.matrix()(r, c));
-  }
-  return tools::JsonArray(v);
-}
-
-std::string TraceJson(const RegistrationSummary& summary) {
-  std::string out = "[";
-  for (size_t i = 0; i < summary.trace.size(); ++i) {
-    const IterationRecord& r = summary.trace[i];
-    std::vector<double> pose(r.reference_from_input_xi.data(),
-                             r.reference_from_input_xi.data() + 6);
-    for (int a = 3; a < 6; ++a) pose[static_cast<size_t>(a)] *= kRadToDeg;
-    tools::JsonObject o;
-    o.AddNumber("iteration", r.iteration)
-        .AddNumber("layer", r.layer)
-        .AddNumber("score", r.score)
-        .AddNumber("step_norm", r.step_norm)
-        .AddBool("step_is_successful", r.step_is_successful)
-        .Add("pose", tools::JsonArray(pose))
-        .AddNumber("time_ms", r.time_s * 1e3);
-    out += (i ? ", " : "") + o.str();
-  }
-  return out + "]";
-}
-
-// The result as mlndt_align's JSON object (README: align_result.json).
-tools::JsonObject ResultJson(const std::string& reference_path,
-                             const std::string& input_path,
-                             Method method,
-                             const RegistrationSummary& summary,
-                             double peak_bytes,
-                             bool has_expected,
-                             double translation_error,
-                             double rotation_error_deg) {
-  tools::JsonObject json;
-  json.AddString("reference", reference_path)
-      .AddString("input", input_path)
-      .AddString("method", MethodToString(method))
-      .Add("reference_from_input", MatrixJson(summary.reference_from_input))
-      .AddBool("converged",
-               summary.termination_type == TerminationType::CONVERGENCE)
-      .AddString("termination",
-                 TerminationTypeToString(summary.termination_type))
-      .AddString("message", summary.message)
-      .AddNumber("iterations", summary.num_iterations)
-      .Add("iterations_per_layer",
-           tools::JsonArray(summary.iterations_per_layer))
-      .AddNumber("start_layer", summary.start_layer)
-      .AddNumber("num_layers", summary.num_layers)
-      .AddNumber("score", summary.final_score)
-      .AddNumber("initial_score", summary.initial_score)
-      .AddNumber("sampled_points", static_cast<double>(summary.sampled_points))
-      .AddNumber("matched_points", static_cast<double>(summary.matched_points))
-      .AddNumber("unmatched_points",
-                 static_cast<double>(summary.unmatched_points))
-      .Add(
-          "quality",
-          tools::JsonObject()
-              .AddNumber("own_cell_fraction", summary.quality.own_cell_fraction)
-              .AddNumber("inlier_fraction", summary.quality.inlier_fraction)
-              .AddNumber("mean_score", summary.quality.mean_score)
-              .AddNumber("median_distance", summary.quality.median_distance)
-              .AddNumber("constraint_ratio",
-                         summary.constraints.constraint_ratio)
-              .str())
-      .Add("time_ms",
-           tools::JsonObject()
-               .AddNumber("total", summary.total_time_s * 1e3)
-               .AddNumber("map", summary.map_time_s * 1e3)
-               .AddNumber("sampling", summary.sampling_time_s * 1e3)
-               .AddNumber("solve", summary.solve_time_s * 1e3)
-               .str())
-      .Add("memory",
-           tools::JsonObject()
-               .AddNumber("map_bytes", static_cast<double>(summary.map_bytes))
-               .AddNumber("map_occupied_cells",
-                          static_cast<double>(summary.map_occupied_cells))
-               .AddNumber("peak_resident_bytes", peak_bytes)
-               .str())
-      .Add("covariance",
-           tools::JsonArray(std::vector<double>(
-               summary.covariance.data(), summary.covariance.data() + 36)))
-      .Add("trace", TraceJson(summary));
-  if (has_expected) {
-    json.AddNumber("translation_error_m", translation_error)
-        .AddNumber("rotation_error_deg", rotation_error_deg);
-  }
-  return json;
+int Fail(const std::string& message, int code) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return code;
 }
 
 // --trace: one line per iteration.
@@ -195,116 +79,205 @@ void PrintTrace(const RegistrationSummary& summary) {
   }
 }
 
-// Prints the result's distance from the expected transform (read from
-// `path`) and returns it.
-void CompareWithExpected(const Isometry3d& expected,
-                         const std::string& path,
-                         const RegistrationSummary& summary,
-                         double* translation_error,
-                         double* rotation_error_deg) {
-  *translation_error =
-      TranslationErrorM(expected, summary.reference_from_input);
-  *rotation_error_deg =
-      RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg;
-  std::printf("  vs expected:    %.4f m, %.4f deg (%s)\n",
-              *translation_error,
-              *rotation_error_deg,
-              path.c_str());
+// The 4x4 (the report above has the pose vector).
+void PrintMatrix(const RegistrationSummary& summary) {
+  std::printf("reference_from_input (4x4, row-major):\n");
+  const Eigen::Matrix4d& m = summary.reference_from_input.matrix();
+  for (int r = 0; r < 4; ++r) {
+    std::printf(
+        "%14.9f %14.9f %14.9f %14.9f\n", m(r, 0), m(r, 1), m(r, 2), m(r, 3));
+  }
 }
 
-int Run() {
-  if (FLAGS_reference.empty() != FLAGS_input.empty()) {
-    return Fail(
-        "give both --reference and --input, or neither (to align the bundled "
-        "pair)");
-  }
-  const bool bundled = FLAGS_reference.empty();
-  const std::string data_dir = std::string(MLNDT_DATA_DIR) + "/";
-  const std::string reference_path =
-      bundled ? data_dir + kBundledReference : FLAGS_reference;
-  const std::string input_path =
-      bundled ? data_dir + kBundledInput : FLAGS_input;
-  const std::string expected_path =
-      bundled && FLAGS_expected_matrix_file.empty()
-          ? data_dir + kBundledExpected
-          : FLAGS_expected_matrix_file;
+struct Inputs {
+  std::string reference;
+  std::string input;
+  std::string expected;
+};
 
+// REF IN as positional arguments or as --reference/--input; the bundled
+// pair (and its expected result) without either.
+bool InputsFromCommandLine(int argc, char** argv, Inputs* in, std::string* e) {
+  if (argc > 1 && (!FLAGS_reference.empty() || !FLAGS_input.empty())) {
+    *e = "give the scans as REF IN or as --reference/--input, not both";
+    return false;
+  }
+  if (argc > 3) {
+    *e = std::string("unexpected argument '") + argv[3] +
+         "' (usage: mlndt_align REF IN [--flags])";
+    return false;
+  }
+  if (argc == 2) {
+    *e = "give both the reference and the input (REF IN), or neither (to "
+         "align the bundled pair)";
+    return false;
+  }
+  in->reference = argc == 3 ? argv[1] : FLAGS_reference;
+  in->input = argc == 3 ? argv[2] : FLAGS_input;
+  if (in->reference.empty() != in->input.empty()) {
+    *e = "give both --reference and --input, or neither (to align the "
+         "bundled pair)";
+    return false;
+  }
+  in->expected = FLAGS_expected_matrix_file;
+  if (in->reference.empty()) {
+    const std::string data_dir = std::string(MLNDT_DATA_DIR) + "/";
+    in->reference = data_dir + kBundledReference;
+    in->input = data_dir + kBundledInput;
+    if (in->expected.empty()) in->expected = data_dir + kBundledExpected;
+  }
+  return true;
+}
+
+tools::Json ResultJson(const Inputs& in,
+                       Method method,
+                       const RegistrationSummary& summary,
+                       double peak_bytes,
+                       double translation_error,
+                       double rotation_error_deg) {
+  tools::Json json = tools::ToolJson(kTool);
+  json["reference"] = in.reference;
+  json["input"] = in.input;
+  json["method"] = MethodToString(method);
+  json["accepted"] = tools::AcceptedResult(summary.termination_type);
+  json["registration"] = tools::RegistrationSummaryJson(summary, true);
+  if (!in.expected.empty()) {
+    json["expected"] = {
+        {"file", in.expected},
+        {"translation_error_m", tools::Number(translation_error)},
+        {"rotation_error_deg", tools::Number(rotation_error_deg)}};
+  }
+  json["memory"] = {{"peak_resident_bytes", peak_bytes}};
+  return json;
+}
+
+int Run(int argc, char** argv) {
+  Inputs in;
   MatcherOptions options;
   std::string error;
-  if (!tools::MatcherOptionsFromFlags(&options, &error)) return Fail(error);
+  if (!InputsFromCommandLine(argc, argv, &in, &error) ||
+      !tools::MatcherOptionsFromFlags(&options, &error)) {
+    return Fail(error, tools::kExitUsage);
+  }
+  if (options.method == Method::MLNDT &&
+      !tools::CheckStartLayerBeforeMap(options.mlndt, &error)) {
+    return Fail(error, tools::kExitUsage);
+  }
   Isometry3d initial = Isometry3d::Identity();
-  if (!InitialGuessFromFlags(&initial, &error)) return Fail(error);
+  bool guess_given = false;
+  if (!tools::ParseInitialPose(FLAGS_initial_guess,
+                               FLAGS_initial_matrix,
+                               &initial,
+                               &guess_given,
+                               &error) ||
+      !tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
+      !tools::CheckOutputFile("output_cloud", FLAGS_output_cloud, &error)) {
+    return Fail(error, tools::kExitUsage);
+  }
   Isometry3d expected = Isometry3d::Identity();
-  if (!expected_path.empty() &&
-      !tools::ReadMatrixFile(expected_path, &expected, &error)) {
-    return Fail(error);
+  if (!in.expected.empty() &&
+      !tools::ReadMatrixFile(in.expected, &expected, &error)) {
+    return Fail(error, tools::kExitUsage);
   }
 
   PointCloud reference, input;
-  if (!ReadPointCloud(reference_path, &reference, nullptr, &error) ||
-      !ReadPointCloud(input_path, &input, nullptr, &error)) {
-    return Fail(error);
+  if (!ReadPointCloud(in.reference, &reference, nullptr, &error) ||
+      !ReadPointCloud(in.input, &input, nullptr, &error)) {
+    return Fail(error, tools::kExitUsage);
+  }
+  if (options.method == Method::MLNDT &&
+      !tools::CheckStartLayerForReference(options.mlndt, reference, &error)) {
+    return Fail(error, tools::kExitUsage);
   }
 
   RegistrationSummary summary;
   RegisterWithMatcher(options, reference, input, initial, &summary);
+  // The map's layer count is known now; a start layer beyond it was
+  // clamped by the library: refuse the result instead.
+  if (options.method == Method::MLNDT && summary.num_layers > 0 &&
+      !tools::CheckStartLayerForMap(
+          options.mlndt.schedule, summary.num_layers, &error)) {
+    return Fail(error + " (nothing written)", tools::kExitUsage);
+  }
 
-  std::cout << "reference: " << reference_path << " (" << reference.size()
+  std::cout << "reference: " << in.reference << " (" << reference.size()
             << " points)\n"
-            << "input:     " << input_path << " (" << input.size()
-            << " points)\n"
+            << "input:     " << in.input << " (" << input.size() << " points)\n"
             << summary.FullReport();
   const double peak_bytes = tools::PeakResidentBytes();
   std::printf(
       "  peak memory:    %.1f MB resident (the process, clouds included)\n",
       peak_bytes / 1e6);
   if (FLAGS_trace) PrintTrace(summary);
-  double translation_error = -1, rotation_error_deg = -1;
-  if (!expected_path.empty()) {
-    CompareWithExpected(expected,
-                        expected_path,
-                        summary,
-                        &translation_error,
-                        &rotation_error_deg);
+  double translation_error = NAN, rotation_error_deg = NAN;
+  if (!in.expected.empty()) {
+    translation_error =
+        TranslationErrorM(expected, summary.reference_from_input);
+    rotation_error_deg =
+        RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg;
+    std::printf("  vs expected:    %.4f m, %.4f deg (%s)\n",
+                translation_error,
+                rotation_error_deg,
+                in.expected.c_str());
   }
+  PrintMatrix(summary);
 
-  if (!FLAGS_output_json.empty()) {
-    const tools::JsonObject json = ResultJson(reference_path,
-                                              input_path,
-                                              options.method,
-                                              summary,
-                                              peak_bytes,
-                                              !expected_path.empty(),
-                                              translation_error,
-                                              rotation_error_deg);
-    if (!tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
-      return Fail(error);
-    }
+  if (!FLAGS_output_json.empty() &&
+      !tools::WriteJsonFile(FLAGS_output_json,
+                            ResultJson(in,
+                                       options.method,
+                                       summary,
+                                       peak_bytes,
+                                       translation_error,
+                                       rotation_error_deg),
+                            &error)) {
+    return Fail(error, tools::kExitFailed);
+  }
+  if (!tools::AcceptedResult(summary.termination_type)) {
+    const std::string verdict =
+        TerminationTypeToString(summary.termination_type);
+    const std::string cloud =
+        FLAGS_output_cloud.empty()
+            ? ""
+            : "; --output_cloud=" + FLAGS_output_cloud + " not written";
+    const std::string accept =
+        summary.termination_type == TerminationType::FAILURE
+            ? ""
+            : " (--accept_unverified accepts it)";
+    const std::string what =
+        summary.termination_type == TerminationType::FAILURE
+            ? ": the registration failed: "
+            : ": the pose is not to be trusted: ";
+    return Fail(verdict + what + summary.message + cloud + accept,
+                tools::kExitFailed);
   }
   if (!FLAGS_output_cloud.empty() &&
       !WritePointCloud(FLAGS_output_cloud,
                        TransformCloud(summary.reference_from_input, input),
                        &error)) {
-    return Fail(error);
+    return Fail(error, tools::kExitFailed);
   }
-  return summary.IsSolutionUsable()
-             ? 0
-             : Fail("registration failed: " + summary.message);
+  return tools::kExitOk;
 }
 
 }  // namespace
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  if (!mlndt::tools::StartTool(
-          "Registers --input onto --reference with ML-NDT (--method=mlndt) "
-          "or NDT (--method=ndt).\n"
-          "  mlndt_align --reference=ref.pcd --input=in.pcd "
-          "[--initial_guess=tx,ty,tz,a,b,g]",
-          true,
-          &argc,
-          &argv)) {
-    return 1;
+  const std::string usage =
+      std::string(
+          "registers the input scan onto the reference with ML-NDT "
+          "(--method=mlndt) or NDT (--method=ndt) and prints the pose, "
+          "ending with reference_from_input as a 4x4 matrix.\n\n"
+          "Usage:\n"
+          "  mlndt_align REF IN [--initial_guess=tx,ty,tz,a,b,g] "
+          "[--output_json=FILE] [--output_cloud=FILE] [registration flags]\n"
+          "  mlndt_align --reference=REF --input=IN [...]\n"
+          "  mlndt_align   (the bundled koide3 pair, compared with its "
+          "reference result)\n\n") +
+      mlndt::tools::kExitCodesHelp;
+  if (!mlndt::tools::StartTool(usage.c_str(), false, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
   }
-  return mlndt::Run();
+  return mlndt::Run(argc, argv);
 }

@@ -45,13 +45,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/eval/statistics.h"
@@ -61,6 +62,7 @@
 #include "tools/common/bench_report.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
+#include "tools/common/output_files.h"
 #include "tools/common/tool_main.h"
 
 #ifdef MLNDT_WITH_PCL
@@ -122,7 +124,13 @@ using tools::ScanPair;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_bench: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_bench: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 BenchRun Evaluate(const Isometry3d& truth,
@@ -281,10 +289,10 @@ int Report(const std::vector<std::string>& sets,
            const std::vector<tools::BenchConfiguration>& configurations,
            bool with_pcl,
            const std::vector<std::vector<std::vector<BenchRun>>>& results,
-           std::ofstream* csv) {
+           std::ostringstream* csv) {  // nullptr: no --output_csv.
   PrintPreamble(sets, pairs, configurations.size(), with_pcl);
   std::vector<std::vector<std::string>> table = {tools::BenchTableHeader()};
-  if (csv->is_open()) *csv << tools::BenchCsvHeader();
+  if (csv != nullptr) *csv << tools::BenchCsvHeader();
   std::vector<std::string> notes;
   for (const std::string& set : sets) {
     std::vector<size_t> indices;
@@ -301,7 +309,7 @@ int Report(const std::vector<std::string>& sets,
           is_pcl ? tools::PclLabels(FLAGS_pcl_leaf_size)
                  : tools::ConfigurationLabels(configurations[m]);
       table.push_back(tools::BenchTableRow(set, labels, stats[m], pcl));
-      if (csv->is_open())
+      if (csv != nullptr)
         *csv << tools::BenchCsvRow(set, labels, stats[m], pcl) << "\n";
       if (is_pcl) {
         notes.push_back(
@@ -315,25 +323,26 @@ int Report(const std::vector<std::string>& sets,
   }
   tools::PrintMarkdownTable(table);
   PrintNotes(with_pcl, notes);
-  if (csv->is_open()) {
-    csv->close();
-    if (!*csv) return Fail(FLAGS_output_csv + ": cannot write");
+  std::string error;
+  if (csv != nullptr &&
+      !WriteFileAtomically(FLAGS_output_csv, csv->str(), &error)) {
+    return Fail(error);
   }
-  return 0;
+  return tools::kExitOk;
 }
 
 int Run() {
-  if (FLAGS_repetitions < 1) return Fail("--repetitions must be >= 1");
+  if (FLAGS_repetitions < 1) return Refuse("--repetitions must be >= 1");
 #ifndef MLNDT_WITH_PCL
   if (FLAGS_compare_pcl) {
-    return Fail(
+    return Refuse(
         "--compare_pcl: this build has no PCL; configure with "
         "-DMLNDT_WITH_PCL=ON");
   }
 #endif
   std::vector<std::string> sets;
   std::string error;
-  if (!tools::ParseBenchSets(FLAGS_pairs, &sets, &error)) return Fail(error);
+  if (!tools::ParseBenchSets(FLAGS_pairs, &sets, &error)) return Refuse(error);
   const tools::BenchGridFlags grid{FLAGS_defaults,
                                    FLAGS_backends,
                                    FLAGS_samplings,
@@ -345,17 +354,16 @@ int Run() {
                                    FLAGS_seed};
   std::vector<tools::BenchConfiguration> configurations;
   if (!tools::ParseBenchConfigurations(grid, &configurations, &error))
-    return Fail(error);
+    return Refuse(error);
   std::vector<ScanPair> pairs;
   if (!tools::LoadBenchPairs(
           FLAGS_data_dir, sets, FLAGS_kitti_gaps, &pairs, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
-  std::ofstream csv;
-  if (!FLAGS_output_csv.empty()) {
-    csv.open(FLAGS_output_csv);
-    if (!csv) return Fail(FLAGS_output_csv + ": cannot write");
+  if (!tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
+    return Refuse(error);
   }
+  std::ostringstream csv;
 
   // Methods: the configurations, then PCL (when compared).
   const size_t num_configurations = configurations.size();
@@ -380,7 +388,12 @@ int Run() {
   };
   const auto results = RunRounds(
       num_configurations + (with_pcl ? 1 : 0), pairs.size(), run_method);
-  return Report(sets, pairs, configurations, with_pcl, results, &csv);
+  return Report(sets,
+                pairs,
+                configurations,
+                with_pcl,
+                results,
+                FLAGS_output_csv.empty() ? nullptr : &csv);
 }
 
 }  // namespace
@@ -395,7 +408,7 @@ int main(int argc, char** argv) {
           true,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

@@ -2,7 +2,8 @@
 // writes (reads PCD, PLY, KITTI .bin, 3DTK .3d, xyz text; writes binary PCD
 // with x y z as float, or binary PLY). Non-finite points are dropped.
 //
-//   mlndt_convert --input=000000.bin --output=000000.pcd [--voxel_size=0.2]
+//   mlndt_convert 000000.bin 000000.pcd [--voxel_size=0.2]
+//   mlndt_convert --input=000000.bin --output=000000.pcd
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -11,41 +12,69 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/sampling/point_sampler.h"
+#include "tools/common/output_files.h"
+#include "tools/common/tool_main.h"
 
-DEFINE_string(input, "", "Input cloud (any format mlndt reads)");
-DEFINE_string(output, "", "Output cloud (.pcd or .ply)");
+DEFINE_string(
+    input,
+    "",
+    "Input cloud (any format mlndt reads; or the first positional argument)");
+DEFINE_string(output,
+              "",
+              "Output cloud (.pcd or .ply; or the second positional argument)");
 DEFINE_double(voxel_size,
               0.0,
               "When > 0, keep one centroid per voxel of this edge [m]");
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Converts a point cloud: mlndt_convert --input=A --output=B");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  if (FLAGS_input.empty() || FLAGS_output.empty() || argc > 1) {
-    std::cerr << "mlndt_convert: give --input=FILE and --output=FILE\n";
-    return 1;
+  if (!mlndt::tools::StartTool("Converts a point cloud.\n"
+                               "  mlndt_convert IN OUT [--voxel_size=0.2]\n"
+                               "  mlndt_convert --input=IN --output=OUT",
+                               false,
+                               &argc,
+                               &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
+  if (argc > 1 && (!FLAGS_input.empty() || !FLAGS_output.empty())) {
+    std::cerr << "mlndt_convert: give the clouds as IN OUT or as "
+                 "--input/--output, not both\n";
+    return mlndt::tools::kExitUsage;
+  }
+  if (argc > 3 || argc == 2) {
+    std::cerr << "mlndt_convert: expected IN OUT (usage: mlndt_convert IN OUT "
+                 "[--voxel_size=V])\n";
+    return mlndt::tools::kExitUsage;
+  }
+  const std::string input = argc == 3 ? argv[1] : FLAGS_input;
+  const std::string output = argc == 3 ? argv[2] : FLAGS_output;
+  if (input.empty() || output.empty()) {
+    std::cerr << "mlndt_convert: give IN OUT (or --input=FILE and "
+                 "--output=FILE)\n";
+    return mlndt::tools::kExitUsage;
+  }
+  std::string error;
+  if (!mlndt::tools::CheckOutputFile("output", output, &error)) {
+    std::cerr << "mlndt_convert: " << error << "\n";
+    return mlndt::tools::kExitUsage;
   }
   if (!(FLAGS_voxel_size >= 0.0)) {
     std::cerr << "mlndt_convert: --voxel_size must be >= 0\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   mlndt::PointCloud cloud;
   mlndt::ReadCloudInfo info;
-  std::string error;
-  if (!mlndt::ReadPointCloud(FLAGS_input, &cloud, &info, &error)) {
+  if (!mlndt::ReadPointCloud(input, &cloud, &info, &error)) {
     std::cerr << "mlndt_convert: " << error << "\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   if (FLAGS_voxel_size > 0.0)
     cloud = mlndt::VoxelDownsample(cloud, FLAGS_voxel_size);
-  if (!mlndt::WritePointCloud(FLAGS_output, cloud, &error)) {
+  if (!mlndt::WritePointCloud(output, cloud, &error)) {
     std::cerr << "mlndt_convert: " << error << "\n";
-    return 1;
+    return mlndt::tools::kExitFailed;
   }
-  std::cout << FLAGS_input << " (" << info.points_in_file << " points, "
-            << info.dropped_non_finite << " non-finite dropped) -> "
-            << FLAGS_output << " (" << cloud.size() << " points)\n";
-  return 0;
+  std::cout << input << " (" << info.points_in_file << " points, "
+            << info.dropped_non_finite << " non-finite dropped) -> " << output
+            << " (" << cloud.size() << " points)\n";
+  return mlndt::tools::kExitOk;
 }

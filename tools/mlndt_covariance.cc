@@ -36,7 +36,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -45,12 +44,15 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/statistics.h"
 #include "tools/common/covariance_consistency.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
+#include "tools/common/output_files.h"
+#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
 
@@ -79,7 +81,30 @@ using tools::StartResult;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_covariance: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_covariance: " << message << std::endl;
+  return tools::kExitUsage;
+}
+
+// What every registration of the run shares: the start offsets' generator,
+// the --output_csv rows (written once at the end) and the progress bar.
+struct Campaign {
+  std::mt19937_64* rng;
+  std::ostringstream* csv;  // nullptr without --output_csv.
+  tools::Progress* progress;
+  size_t done = 0;
+};
+
+// The registrations of --datasets: --starts for each pair.
+size_t NumRegistrations(const std::vector<std::string>& datasets) {
+  size_t pairs = 0;
+  for (const std::string& dataset : datasets)
+    pairs += dataset == "kitti" ? 7 : 1;
+  return pairs * static_cast<size_t>(FLAGS_starts);
 }
 
 // Registers input onto reference from the perturbed starts.
@@ -87,10 +112,11 @@ bool RunPair(const RegistrationOptions& base_options,
              const PointCloud& reference,
              const PointCloud& input,
              const Isometry3d& reference_from_input,
-             std::mt19937_64* rng,
-             std::ofstream* csv,
+             Campaign* campaign,
              PairRuns* pair,
              std::string* error) {
+  std::mt19937_64* rng = campaign->rng;
+  std::ostringstream* csv = campaign->csv;
   LayeredGrid map;
   if (!LayeredGrid::Build(base_options.grid, reference, &map, error))
     return false;
@@ -113,7 +139,11 @@ bool RunPair(const RegistrationOptions& base_options,
              &summary);
     const bool usable =
         summary.IsSolutionUsable() && !summary.covariance.isZero(0.0);
-    if (csv->is_open()) {
+    campaign->progress->Update(
+        ++campaign->done,
+        pair->dataset + " " + pair->name + " start " + std::to_string(k + 1) +
+            " " + TerminationTypeToString(summary.termination_type));
+    if (csv != nullptr) {
       *csv << pair->dataset << "," << pair->name << "," << k << "," << usable;
       for (int a = 0; a < 6; ++a)
         *csv << "," << summary.reference_from_input_xi(a);
@@ -153,8 +183,7 @@ bool RunPair(const RegistrationOptions& base_options,
 }
 
 bool RunKitti(const RegistrationOptions& options,
-              std::mt19937_64* rng,
-              std::ofstream* csv,
+              Campaign* campaign,
               std::vector<PairRuns>* pairs,
               std::string* error) {
   const std::string dir = FLAGS_data_dir + "/kitti";
@@ -176,8 +205,7 @@ bool RunKitti(const RegistrationOptions& options,
                  scans[i],
                  scans[i + 1],
                  poses[i].inverse() * poses[i + 1],
-                 rng,
-                 csv,
+                 campaign,
                  &pair,
                  error)) {
       return false;
@@ -188,8 +216,7 @@ bool RunKitti(const RegistrationOptions& options,
 }
 
 bool RunKoide3(const RegistrationOptions& options,
-               std::mt19937_64* rng,
-               std::ofstream* csv,
+               Campaign* campaign,
                std::vector<PairRuns>* pairs,
                std::string* error) {
   const std::string dir = FLAGS_data_dir + "/koide3";
@@ -201,6 +228,12 @@ bool RunKoide3(const RegistrationOptions& options,
           dir + "/T_target_source.txt", &reference_from_input, error)) {
     return false;
   }
+  // The file's 6-digit rotation is rigid only to ~1e-6; Register() refuses
+  // a guess that is not rigid, and every start is built on this pose.
+  reference_from_input.linear() =
+      Eigen::Quaterniond(reference_from_input.rotation())
+          .normalized()
+          .toRotationMatrix();
   PairRuns pair;
   pair.dataset = "koide3";
   pair.name = "251371071->668";
@@ -208,8 +241,7 @@ bool RunKoide3(const RegistrationOptions& options,
                reference,
                input,
                reference_from_input,
-               rng,
-               csv,
+               campaign,
                &pair,
                error)) {
     return false;
@@ -219,41 +251,56 @@ bool RunKoide3(const RegistrationOptions& options,
 }
 
 int Main() {
-  if (FLAGS_starts < 2) return Fail("--starts must be >= 2");
+  if (FLAGS_starts < 2) return Refuse("--starts must be >= 2");
   if (!(FLAGS_max_translation >= 0.0) || !(FLAGS_max_rotation >= 0.0)) {
-    return Fail("--max_translation and --max_rotation must be >= 0");
+    return Refuse("--max_translation and --max_rotation must be >= 0");
   }
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Fail(error);
+    return Refuse(error);
   std::vector<std::string> datasets;
   if (!tools::SplitList(FLAGS_datasets, &datasets)) {
-    return Fail("--datasets: expected a comma-separated list of kitti, koide3");
+    return Refuse(
+        "--datasets: expected a comma-separated list of kitti, koide3");
   }
-  std::ofstream csv;
+  for (const std::string& dataset : datasets) {
+    if (dataset != "kitti" && dataset != "koide3") {
+      return Refuse("--datasets: unknown '" + dataset + "' (kitti, koide3)");
+    }
+  }
+  if (!tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
+      !tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
+    return Refuse(error);
+  }
+  std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
-    csv.open(FLAGS_output_csv);
     csv << "dataset,pair,start,usable,tx,ty,tz,alpha,beta,gamma,sd_tx,sd_ty,sd_"
            "tz,sd_alpha,"
            "sd_beta,sd_gamma,final_score,matched\n";
   }
   std::mt19937_64 rng(FLAGS_perturbation_seed);
+  tools::Progress progress("mlndt_covariance", NumRegistrations(datasets));
+  Campaign campaign{&rng, FLAGS_output_csv.empty() ? nullptr : &csv, &progress};
   std::vector<PairRuns> pairs;
   for (const std::string& dataset : datasets) {
-    bool ok = false;
-    if (dataset == "kitti") {
-      ok = RunKitti(options, &rng, &csv, &pairs, &error);
-    } else if (dataset == "koide3") {
-      ok = RunKoide3(options, &rng, &csv, &pairs, &error);
-    } else {
-      return Fail("--datasets: unknown '" + dataset + "' (kitti, koide3)");
-    }
+    const bool ok = dataset == "kitti"
+                        ? RunKitti(options, &campaign, &pairs, &error)
+                        : RunKoide3(options, &campaign, &pairs, &error);
     if (!ok) return Fail(error);
   }
+  progress.Finish();
+  if (!FLAGS_output_csv.empty() &&
+      !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
+    return Fail(error);
+  }
 
-  tools::JsonObject json;
-  std::string pair_list = "[";
+  tools::Json json = tools::ToolJson("mlndt_covariance");
+  json["starts"] = FLAGS_starts;
+  json["max_translation_m"] = FLAGS_max_translation;
+  json["max_rotation_deg"] = FLAGS_max_rotation;
+  json["vary_sampling_seed"] = FLAGS_vary_sampling_seed;
+  tools::Json pair_list = tools::Json::array();
   for (const std::string& dataset : datasets) {
     Consistency pooled;
     int failures = 0, outliers = 0;
@@ -266,32 +313,22 @@ int Main() {
       outliers += pair.outliers;
       const Consistency result = Finish(one);
       PrintRow(dataset + " " + pair.name, result);
-      if (pair_list.size() > 1) pair_list += ", ";
-      pair_list += tools::JsonObject()
-                       .AddString("dataset", dataset)
-                       .AddString("pair", pair.name)
-                       .AddNumber("failures", pair.failures)
-                       .AddNumber("outliers", pair.outliers)
-                       .Add("consistency", ConsistencyJson(result))
-                       .str();
+      pair_list.push_back({{"dataset", dataset},
+                           {"pair", pair.name},
+                           {"failures", pair.failures},
+                           {"outliers", pair.outliers},
+                           {"consistency", ConsistencyJson(result)}});
     }
     const Consistency result = Finish(pooled);
     PrintRow(dataset + " (all)", result);
     std::printf("\n");
-    json.Add(dataset,
-             tools::JsonObject()
-                 .AddNumber("failures", failures)
-                 .AddNumber("outliers", outliers)
-                 .Add("consistency", ConsistencyJson(result))
-                 .str());
+    json[dataset] = {{"failures", failures},
+                     {"outliers", outliers},
+                     {"consistency", ConsistencyJson(result)}};
   }
-  json.Add("pairs", pair_list + "]");
-  json.AddNumber("starts", FLAGS_starts)
-      .AddNumber("max_translation_m", FLAGS_max_translation)
-      .AddNumber("max_rotation_deg", FLAGS_max_rotation)
-      .AddBool("vary_sampling_seed", FLAGS_vary_sampling_seed);
+  json["pairs"] = pair_list;
   if (!FLAGS_output_json.empty() &&
-      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+      !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
     return Fail(error);
   }
   return 0;
@@ -309,7 +346,7 @@ int main(int argc, char** argv) {
           false,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Main();
 }

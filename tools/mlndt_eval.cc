@@ -27,7 +27,6 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -38,9 +37,11 @@
 #include "mlndt/eval/trajectory_io.h"
 #include "mlndt/eval/trajectory_metrics.h"
 #include "tools/common/flag_utils.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/output_files.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -68,7 +69,13 @@ constexpr char kTool[] = "mlndt_eval";
 
 int Fail(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 const std::vector<std::string> kEvalFlags = {"reference",
@@ -90,10 +97,10 @@ int Chain(const std::string& pairs_path, const std::string& output) {
   std::string error;
   if (!tools::RefuseGivenFlags(
           kEvalFlags, "does not apply to 'mlndt_eval chain'", &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   std::map<std::string, ReferencePair> pairs;
-  if (!ReadReferencePairs(pairs_path, &pairs, &error)) return Fail(error);
+  if (!ReadReferencePairs(pairs_path, &pairs, &error)) return Refuse(error);
   int64_t first = -1;
   for (const auto& [key, pair] : pairs) {
     if (pair.input_index == pair.reference_index + 1 &&
@@ -138,6 +145,9 @@ struct EvalFlags {
 };
 
 bool ParseFlags(EvalFlags* flags, std::string* error) {
+  if (!tools::CheckOutputFile("output_json", FLAGS_output_json, error)) {
+    return false;
+  }
   if (FLAGS_reference.empty() || FLAGS_estimate.empty()) {
     *error =
         "give --reference=FILE and --estimate=FILE[,FILE...]. Usage: "
@@ -252,23 +262,13 @@ struct EstimateResult {
   KittiSegmentSummary kitti;
 };
 
+// `estimate` was read from result->path in result->format.
 bool Evaluate(const EvalFlags& flags,
               const Trajectory& reference,
               TrajectoryFormat reference_format,
-              const std::string& path,
+              const Trajectory& estimate,
               EstimateResult* result,
               std::string* error) {
-  result->path = path;
-  Trajectory estimate;
-  if (!ReadOne(path,
-               flags.detect_estimate,
-               flags.estimate_format,
-               "",
-               &estimate,
-               &result->format,
-               error)) {
-    return false;
-  }
   result->poses = estimate.size();
   bool by_time = false;
   switch (flags.association) {
@@ -289,7 +289,7 @@ bool Evaluate(const EvalFlags& flags,
           : AssociateByIndex(reference, estimate);
   result->pairs = pairs.size();
   if (pairs.size() == 0) {
-    *error = path + ": no pose pairs with the reference (" +
+    *error = result->path + ": no pose pairs with the reference (" +
              result->association + " association)";
     return false;
   }
@@ -298,7 +298,7 @@ bool Evaluate(const EvalFlags& flags,
   AteOptions ate;
   ate.alignment = flags.alignment;
   if (!ComputeAte(ate, pairs.reference, pairs.estimate, &result->ate, error)) {
-    *error = path + ": " + *error;
+    *error = result->path + ": " + *error;
     return false;
   }
   RpeOptions rpe;
@@ -306,7 +306,7 @@ bool Evaluate(const EvalFlags& flags,
   if (pairs.size() > static_cast<size_t>(FLAGS_delta)) {
     if (!ComputeRpe(
             rpe, pairs.reference, pairs.estimate, &result->rpe, error)) {
-      *error = path + ": " + *error;
+      *error = result->path + ": " + *error;
       return false;
     }
     result->rpe_pairs = pairs.size() - static_cast<size_t>(FLAGS_delta);
@@ -316,76 +316,60 @@ bool Evaluate(const EvalFlags& flags,
                                  pairs.estimate,
                                  &result->kitti,
                                  error)) {
-    *error = path + ": " + *error;
+    *error = result->path + ": " + *error;
     return false;
   }
   return true;
 }
 
-std::string ResultJson(const EstimateResult& r) {
-  std::string lengths = "[";
-  for (size_t i = 0; i < r.kitti.lengths.size(); ++i) {
-    const KittiLengthErrors& l = r.kitti.lengths[i];
-    lengths +=
-        (i ? ", " : "") +
-        tools::JsonObject()
-            .AddNumber("length_m", l.length_m)
-            .AddNumber("segments", static_cast<double>(l.num_segments))
-            .AddNumber("translation_error_percent", l.translation_error_percent)
-            .AddNumber("rotation_error_deg_per_m", l.rotation_error_deg_per_m)
-            .str();
+// One estimate's entry of --output_json (docs/json_schema.md, "mlndt_eval").
+tools::Json ResultJson(const EstimateResult& r) {
+  using tools::Number;
+  tools::Json lengths = tools::Json::array();
+  for (const KittiLengthErrors& l : r.kitti.lengths) {
+    lengths.push_back(
+        {{"length_m", Number(l.length_m)},
+         {"segments", l.num_segments},
+         {"translation_error_percent", Number(l.translation_error_percent)},
+         {"rotation_error_deg_per_m", Number(l.rotation_error_deg_per_m)}});
   }
-  lengths += "]";
   const bool has_rpe = r.rpe_pairs > 0;
   const double nan = std::nan("");
-  return tools::JsonObject()
-      .AddString("file", r.path)
-      .AddString("format", TrajectoryFormatToString(r.format))
-      .AddString("association", r.association)
-      .AddNumber("poses", static_cast<double>(r.poses))
-      .AddNumber("pairs", static_cast<double>(r.pairs))
-      .AddNumber("path_length_m", r.path_length_m)
-      .Add("ate",
-           tools::JsonObject()
-               .AddNumber("rmse_m", r.ate.rmse_m)
-               .AddNumber("mean_m", r.ate.errors.mean)
-               .AddNumber("median_m", r.ate.errors.median)
-               .AddNumber("max_m", r.ate.errors.max)
-               .AddNumber("scale", r.ate.reference_from_estimate.scale)
-               .str())
-      .Add("rpe",
-           tools::JsonObject()
-               .AddNumber("pairs", static_cast<double>(r.rpe_pairs))
-               .AddNumber("translation_rmse_m",
-                          has_rpe ? r.rpe.translation_rmse_m : nan)
-               .AddNumber("translation_mean_m",
-                          has_rpe ? r.rpe.translation_m.mean : nan)
-               .AddNumber("translation_max_m",
-                          has_rpe ? r.rpe.translation_m.max : nan)
-               .AddNumber("rotation_rmse_deg",
-                          has_rpe ? r.rpe.rotation_rmse_deg : nan)
-               .AddNumber("rotation_mean_deg",
-                          has_rpe ? r.rpe.rotation_deg.mean : nan)
-               .AddNumber("rotation_max_deg",
-                          has_rpe ? r.rpe.rotation_deg.max : nan)
-               .str())
-      .Add("kitti",
-           tools::JsonObject()
-               .AddNumber("segments",
-                          static_cast<double>(r.kitti.segments.size()))
-               .AddNumber("translation_error_percent",
-                          r.kitti.translation_error_percent)
-               .AddNumber("rotation_error_deg_per_m",
-                          r.kitti.rotation_error_deg_per_m)
-               .Add("lengths", lengths)
-               .str())
-      .str();
+  return {
+      {"file", r.path},
+      {"format", TrajectoryFormatToString(r.format)},
+      {"association", r.association},
+      {"poses", r.poses},
+      {"pairs", r.pairs},
+      {"path_length_m", Number(r.path_length_m)},
+      {"ate",
+       {{"rmse_m", Number(r.ate.rmse_m)},
+        {"mean_m", Number(r.ate.errors.mean)},
+        {"median_m", Number(r.ate.errors.median)},
+        {"max_m", Number(r.ate.errors.max)},
+        {"scale", Number(r.ate.reference_from_estimate.scale)}}},
+      {"rpe",
+       {{"pairs", r.rpe_pairs},
+        {"translation_rmse_m",
+         Number(has_rpe ? r.rpe.translation_rmse_m : nan)},
+        {"translation_mean_m",
+         Number(has_rpe ? r.rpe.translation_m.mean : nan)},
+        {"translation_max_m", Number(has_rpe ? r.rpe.translation_m.max : nan)},
+        {"rotation_rmse_deg", Number(has_rpe ? r.rpe.rotation_rmse_deg : nan)},
+        {"rotation_mean_deg", Number(has_rpe ? r.rpe.rotation_deg.mean : nan)},
+        {"rotation_max_deg", Number(has_rpe ? r.rpe.rotation_deg.max : nan)}}},
+      {"kitti",
+       {{"segments", r.kitti.segments.size()},
+        {"translation_error_percent",
+         Number(r.kitti.translation_error_percent)},
+        {"rotation_error_deg_per_m", Number(r.kitti.rotation_error_deg_per_m)},
+        {"lengths", lengths}}}};
 }
 
 int Run() {
   EvalFlags flags;
   std::string error;
-  if (!ParseFlags(&flags, &error)) return Fail(error);
+  if (!ParseFlags(&flags, &error)) return Refuse(error);
   Trajectory reference;
   TrajectoryFormat reference_format;
   if (!ReadOne(FLAGS_reference,
@@ -395,14 +379,27 @@ int Run() {
                &reference,
                &reference_format,
                &error)) {
-    return Fail("--reference: " + error);
+    return Refuse("--reference: " + error);
   }
   std::vector<EstimateResult> results(flags.estimates.size());
+  std::vector<Trajectory> estimates(flags.estimates.size());
+  for (size_t i = 0; i < flags.estimates.size(); ++i) {
+    results[i].path = flags.estimates[i];
+    if (!ReadOne(results[i].path,
+                 flags.detect_estimate,
+                 flags.estimate_format,
+                 "",
+                 &estimates[i],
+                 &results[i].format,
+                 &error)) {
+      return Refuse(error);
+    }
+  }
   for (size_t i = 0; i < flags.estimates.size(); ++i) {
     if (!Evaluate(flags,
                   reference,
                   reference_format,
-                  flags.estimates[i],
+                  estimates[i],
                   &results[i],
                   &error)) {
       return Fail(error);
@@ -458,26 +455,18 @@ int Run() {
     std::printf("\n");
   }
   if (!FLAGS_output_json.empty()) {
-    std::string estimates = "[";
-    for (size_t i = 0; i < results.size(); ++i) {
-      estimates += (i ? ", " : "") + ResultJson(results[i]);
+    tools::Json estimates = tools::Json::array();
+    for (const EstimateResult& r : results) estimates.push_back(ResultJson(r));
+    tools::Json json = tools::ToolJson(kTool);
+    json["reference"] = FLAGS_reference;
+    json["reference_format"] = TrajectoryFormatToString(reference_format);
+    json["reference_poses"] = reference.size();
+    json["alignment"] = TrajectoryAlignmentToString(flags.alignment);
+    json["delta"] = FLAGS_delta;
+    json["estimates"] = estimates;
+    if (!tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
+      return Fail(error);
     }
-    estimates += "]";
-    std::ofstream out(FLAGS_output_json);
-    out << tools::JsonObject()
-               .AddString("tool", kTool)
-               .AddString("reference", FLAGS_reference)
-               .AddString("reference_format",
-                          TrajectoryFormatToString(reference_format))
-               .AddNumber("reference_poses",
-                          static_cast<double>(reference.size()))
-               .AddString("alignment",
-                          TrajectoryAlignmentToString(flags.alignment))
-               .AddNumber("delta", FLAGS_delta)
-               .Add("estimates", estimates)
-               .str()
-        << "\n";
-    if (!out) return Fail(FLAGS_output_json + ": cannot write");
   }
   return 0;
 }
@@ -486,19 +475,19 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Evaluates trajectories (KITTI or TUM) against a reference: ATE, RPE, "
       "KITTI segment errors.\n"
       "  mlndt_eval --reference=FILE --estimate=FILE[,FILE...] "
       "[--alignment=se3]\n"
-      "  mlndt_eval chain reference_pairs.json poses.txt");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+      "  mlndt_eval chain reference_pairs.json poses.txt";
+  if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
   if (argc > 1 && std::string(argv[1]) == "chain") {
     if (argc != 4) {
       std::cerr << "mlndt_eval: usage: mlndt_eval chain PAIRS.json OUT.txt\n";
-      return 1;
+      return mlndt::tools::kExitUsage;
     }
     return mlndt::Chain(argv[2], argv[3]);
   }
@@ -506,7 +495,7 @@ int main(int argc, char** argv) {
     std::cerr << "mlndt_eval: unexpected argument '" << argv[1]
               << "' (flags are --name=value; the one subcommand is 'chain "
                  "PAIRS OUT')\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

@@ -23,6 +23,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/fast_floor.h"
 #include "mlndt/common/types.h"
+#include "tools/common/tool_main.h"
 
 DEFINE_string(reference, "", "Reference scan");
 DEFINE_string(input, "", "Input scan");
@@ -64,14 +65,14 @@ int Run() {
       !ReadPointCloud(FLAGS_input, &input, nullptr, &error) ||
       !ReadKittiPoses(FLAGS_gt_poses, &poses, &error)) {
     std::cerr << "mlndt_gt_check: " << error << "\n";
-    return 1;
+    return tools::kExitUsage;
   }
   const int n = static_cast<int>(poses.size());
   if (FLAGS_reference_index < 0 || FLAGS_reference_index >= n ||
       FLAGS_input_index < 0 || FLAGS_input_index >= n) {
     std::cerr << "mlndt_gt_check: pose index out of range (" << n
               << " poses)\n";
-    return 1;
+    return tools::kExitUsage;
   }
   const Isometry3d truth =
       poses[static_cast<size_t>(FLAGS_reference_index)].inverse() *
@@ -123,9 +124,12 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "Checks a ground-truth relative pose against the scans' geometry.");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
+  if (!mlndt::tools::StartTool(
+          "Checks a ground-truth relative pose against the scans' geometry.",
+          true,
+          &argc,
+          &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
   return mlndt::Run();
 }

@@ -4,9 +4,11 @@
 //              [--division_constant=8] [--min_points_per_cell=5]] FILE...
 //
 // For every file:
-//   {"file": ..., "format": "PCD", "points": N, "dropped_non_finite": N,
-//    "min": [x, y, z], "max": [x, y, z]}
-// "points" counts the points kept (finite ones); "min" and "max" are null
+//   {"schema_version": 1, "tool": "mlndt_info", "version": ..., "command": ...,
+//    "file": ..., "format": "PCD", "points": N, "dropped_non_finite": N,
+//    "min_m": [x, y, z], "max_m": [x, y, z]}
+// (docs/json_schema.md). "points" counts the points kept (finite ones);
+// "min_m" and "max_m" are null
 // for an empty cloud. With --layers the object also holds "layers": one entry
 // per layer of the ML-NDT map (LayeredGrid) built from the cloud, coarsest
 // first, with "layer", "cell_size_m", "dims", "occupied_cells",
@@ -24,7 +26,8 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
+#include "tools/common/tool_main.h"
 
 DEFINE_bool(layers,
             false,
@@ -90,28 +93,23 @@ bool GridOptionsFromFlags(LayeredGridOptions* options, std::string* error) {
   return true;
 }
 
-std::string PointJson(const Eigen::Vector3d& point) {
-  return tools::JsonArray(std::vector<double>{point.x(), point.y(), point.z()});
+tools::Json PointJson(const Eigen::Vector3d& point) {
+  return {tools::Number(point.x()),
+          tools::Number(point.y()),
+          tools::Number(point.z())};
 }
 
-std::string LayersJson(const LayeredGrid& grid) {
-  std::string out = "[";
-  bool first = true;
+tools::Json LayersJson(const LayeredGrid& grid) {
+  tools::Json layers = tools::Json::array();
   for (const LayerInfo& info : grid.layer_info()) {
-    tools::JsonObject layer;
-    layer.AddNumber("layer", info.layer)
-        .AddNumber("cell_size_m", info.cell_size_m)
-        .Add("dims",
-             tools::JsonArray(
-                 std::vector<int>{info.dims.x(), info.dims.y(), info.dims.z()}))
-        .AddNumber("occupied_cells", static_cast<double>(info.occupied_cells))
-        .AddNumber("sparse_cells", static_cast<double>(info.sparse_cells))
-        .AddNumber("degenerate_cells",
-                   static_cast<double>(info.degenerate_cells));
-    out += (first ? "" : ", ") + layer.str();
-    first = false;
+    layers.push_back({{"layer", info.layer},
+                      {"cell_size_m", tools::Number(info.cell_size_m)},
+                      {"dims", {info.dims.x(), info.dims.y(), info.dims.z()}},
+                      {"occupied_cells", info.occupied_cells},
+                      {"sparse_cells", info.sparse_cells},
+                      {"degenerate_cells", info.degenerate_cells}});
   }
-  return out + "]";
+  return layers;
 }
 
 // Prints the JSON line of one file. Returns false (after reporting on stderr)
@@ -129,27 +127,27 @@ bool DescribeFile(const std::string& path,
   }
 
   const Eigen::AlignedBox3d box = BoundingBox(cloud);
-  tools::JsonObject json;
-  json.AddString("file", path)
-      .AddString("format", CloudFormatToString(info.format))
-      .AddNumber("points", static_cast<double>(cloud.size()))
-      .AddNumber("dropped_non_finite",
-                 static_cast<double>(info.dropped_non_finite))
-      // An empty cloud has no bounding box.
-      .Add("min", cloud.empty() ? "null" : PointJson(box.min()))
-      .Add("max", cloud.empty() ? "null" : PointJson(box.max()));
+  tools::Json json = tools::ToolJson(kToolName);
+  json["file"] = path;
+  json["format"] = CloudFormatToString(info.format);
+  json["points"] = cloud.size();
+  json["dropped_non_finite"] = info.dropped_non_finite;
+  // An empty cloud has no bounding box.
+  json["min_m"] = cloud.empty() ? tools::Json() : PointJson(box.min());
+  json["max_m"] = cloud.empty() ? tools::Json() : PointJson(box.max());
 
   bool ok = true;
   if (FLAGS_layers) {
     LayeredGrid grid;
     if (LayeredGrid::Build(grid_options, cloud, &grid, &error)) {
-      json.Add("layers", LayersJson(grid));
+      json["layers"] = LayersJson(grid);
     } else {
       error = path + ": cannot build the layered map: " + error;
       ok = false;
     }
   }
-  std::cout << json.str() << std::endl;
+  std::cout << json.dump(-1, ' ', false, tools::Json::error_handler_t::replace)
+            << std::endl;
   if (!ok) PrintError(error);
   return ok;
 }
@@ -159,32 +157,32 @@ int Run(const std::vector<std::string>& files) {
   std::string error;
   if (!GridOptionsFromFlags(&grid_options, &error)) {
     PrintError(error);
-    return 1;
+    return tools::kExitUsage;
   }
   bool all_ok = true;
   for (const std::string& file : files) {
     all_ok = DescribeFile(file, grid_options) && all_ok;
   }
-  return all_ok ? 0 : 1;
+  return all_ok ? tools::kExitOk : tools::kExitFailed;
 }
 
 }  // namespace
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Prints one JSON line per point-cloud file: format, point count, "
       "bounding box and, with "
       "--layers, the layers of its ML-NDT map.\n"
       "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]] "
-      "FILE...");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+      "FILE...";
+  if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
   if (argc < 2) {
     std::cerr << "mlndt_info: no input files\n"
               << gflags::ProgramUsage() << "\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run(std::vector<std::string>(argv + 1, argv + argc));
 }

@@ -3,16 +3,17 @@
 //
 //   mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT
 //                  [--initial_guess=tx,ty,tz,a,b,g | --initial_matrix=...
-//                   | --initial_poses=FILE [--calib=calib.txt]]
+//                   | --initial_poses=FILE [--poses_are_camera
+//                   --calib=calib.txt]]
 //                  [--motion_model=constant_velocity|constant_pose]
 //                  [--plots=false] [any registration flag of mlndt_align]
 //
 // The first scan starts from --initial_guess (metres and degrees, R = Rx Ry
 // Rz), --initial_matrix (12 numbers, row-major 3x4) or the first pose of
-// --initial_poses (KITTI or TUM; with --calib KITTI camera poses), else the
-// identity; map_from_scan. Each next scan starts from the previous pose
-// moved by the last relative motion (constant velocity; Localizer in
-// mlndt/pipeline/localizer.h). The map and the current scan are the only
+// --initial_poses (KITTI or TUM; with --poses_are_camera --calib KITTI camera
+// poses), else the identity; map_from_scan. Each next scan starts from the
+// previous pose moved by the last relative motion (constant velocity; Localizer
+// in mlndt/pipeline/localizer.h). The map and the current scan are the only
 // clouds in memory: each scan is read when its turn comes.
 //
 // Writes into --output_dir: trajectory_kitti.txt and trajectory_tum.txt
@@ -29,11 +30,11 @@
 #include <glog/logging.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "mlndt/cloud/io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/eval/statistics.h"
@@ -42,11 +43,15 @@
 #include "mlndt/grid/map_memory.h"
 #include "mlndt/pipeline/localizer.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/start_layer_check.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -61,7 +66,6 @@ DEFINE_string(initial_matrix, "", "First scan's map_from_scan: 12 comma-separate
 DEFINE_string(initial_poses, "", "Pose file (KITTI or TUM) whose first pose is the first scan's "
               "map_from_scan");
 DEFINE_string(initial_poses_format, "auto", "auto | kitti | tum");
-DEFINE_string(calib, "", "KITTI calib.txt: --initial_poses are camera (cam0) poses");
 DEFINE_string(motion_model, "constant_velocity",
               "Initial guess of scan k > 0: constant_velocity (previous pose x last motion) | "
               "constant_pose (previous pose)");
@@ -79,15 +83,13 @@ constexpr char kTool[] = "mlndt_localize";
 
 int Fail(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
 }
 
-std::string CommandLine() {
-  std::string line;
-  for (const std::string& arg : gflags::GetArgvs()) {
-    line += (line.empty() ? "" : " ") + arg;
-  }
-  return line;
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // Every flag is checked here, before the map or any scan is read.
@@ -122,8 +124,8 @@ bool CheckFlags(LocalizerOptions* options,
         "give one of --initial_guess, --initial_matrix and --initial_poses";
     return false;
   }
-  if (!FLAGS_calib.empty() && FLAGS_initial_poses.empty()) {
-    *error = "--calib converts --initial_poses; give it with --initial_poses";
+  if (!tools::CheckCameraPoseFlags(
+          "--initial_poses", !FLAGS_initial_poses.empty(), error)) {
     return false;
   }
   if (!StringToMotionModel(FLAGS_motion_model, &options->motion_model)) {
@@ -183,7 +185,7 @@ std::vector<double> PoseNumbers(const Isometry3d& pose) {
 std::string PoseColumns(const Isometry3d& pose) {
   std::string out;
   for (const double v : PoseNumbers(pose)) {
-    out += (out.empty() ? "" : ",") + tools::JsonNumber(v);
+    out += (out.empty() ? "" : ",") + tools::Num(v);
   }
   return out;
 }
@@ -200,7 +202,7 @@ bool WriteScansCsv(const std::string& path,
                    const std::vector<std::string>& files,
                    const std::vector<LocalizationResult>& results,
                    std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "index,file,termination,iterations,input_points,sampled_points,"
          "matched_points,score,own_cell_fraction,inlier_fraction,mean_score,"
          "median_distance,tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,"
@@ -211,41 +213,29 @@ bool WriteScansCsv(const std::string& path,
         << CsvField(std::filesystem::path(files[r.index]).filename().string())
         << "," << TerminationTypeToString(r.termination_type) << ","
         << r.iterations << "," << r.input_points << "," << r.sampled_points
-        << "," << r.matched_points << "," << tools::JsonNumber(r.final_score)
-        << "," << tools::JsonNumber(r.quality.own_cell_fraction) << ","
-        << tools::JsonNumber(r.quality.inlier_fraction) << ","
-        << tools::JsonNumber(r.quality.mean_score) << ","
-        << tools::JsonNumber(r.quality.median_distance) << ","
+        << "," << r.matched_points << "," << tools::Num(r.final_score) << ","
+        << tools::Num(r.quality.own_cell_fraction) << ","
+        << tools::Num(r.quality.inlier_fraction) << ","
+        << tools::Num(r.quality.mean_score) << ","
+        << tools::Num(r.quality.median_distance) << ","
         << PoseColumns(r.map_from_scan) << ","
-        << tools::JsonNumber(
+        << tools::Num(
                TranslationErrorM(r.predicted_map_from_scan, r.map_from_scan))
         << ","
-        << tools::JsonNumber(
+        << tools::Num(
                RotationErrorRad(r.predicted_map_from_scan, r.map_from_scan) *
                kRadToDeg)
-        << "," << tools::JsonNumber(r.load_time_s * 1e3) << ","
-        << tools::JsonNumber(r.sampling_time_s * 1e3) << ","
-        << tools::JsonNumber(r.solve_time_s * 1e3) << ","
-        << tools::JsonNumber(r.registration_time_s * 1e3) << ","
-        << CsvField(r.message) << "\n";
+        << "," << tools::Num(r.load_time_s * 1e3) << ","
+        << tools::Num(r.sampling_time_s * 1e3) << ","
+        << tools::Num(r.solve_time_s * 1e3) << ","
+        << tools::Num(r.registration_time_s * 1e3) << "," << CsvField(r.message)
+        << "\n";
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
-std::string StatsJson(const Stats& s) {
-  return tools::JsonObject()
-      .AddNumber("mean", s.mean)
-      .AddNumber("median", s.median)
-      .AddNumber("min", s.min)
-      .AddNumber("max", s.max)
-      .str();
-}
-
-std::string SummaryJson(const LocalizerOptions& options,
+// summary.json (docs/json_schema.md, "mlndt_localize").
+tools::Json SummaryJson(const LocalizerOptions& options,
                         const LayeredGrid& map,
                         const Isometry3d& first_guess,
                         const std::vector<LocalizationResult>& results,
@@ -265,36 +255,28 @@ std::string SummaryJson(const LocalizerOptions& options,
   for (int i = 1; i <= map.num_layers(); ++i) {
     cells += map.layer(i).cells().size();
   }
-  return tools::JsonObject()
-      .AddString("tool", kTool)
-      .AddString("command", CommandLine())
-      .AddString("map", FLAGS_map)
-      .Add("map_info",
-           tools::JsonObject()
-               .AddNumber("layers", map.num_layers())
-               .AddNumber("cells", static_cast<double>(cells))
-               .AddNumber("bytes", static_cast<double>(map.MemoryBytes()))
-               .AddNumber("finest_cell_size_m",
-                          map.layer(map.num_layers()).cell_size())
-               .str())
-      .AddNumber("scans", static_cast<double>(results.size()))
-      .AddString("motion_model", MotionModelToString(options.motion_model))
-      .AddString("backend",
-                 BackendTypeToString(options.registration.backend.type))
-      .Add("first_guess", tools::JsonArray(PoseNumbers(first_guess)))
-      .Add("terminations",
-           tools::JsonObject()
-               .AddNumber("CONVERGENCE", static_cast<double>(converged))
-               .AddNumber("NO_CONVERGENCE", static_cast<double>(no_convergence))
-               .AddNumber("FAILURE", static_cast<double>(failed))
-               .str())
-      .Add("inlier_fraction", StatsJson(ComputeStats(inliers)))
-      .Add("own_cell_fraction", StatsJson(ComputeStats(own)))
-      .Add("registration_ms", StatsJson(ComputeStats(registration_ms)))
-      .AddNumber("map_load_s", map_load_s)
-      .AddNumber("total_s", total_s)
-      .AddNumber("peak_resident_bytes", tools::PeakResidentBytes())
-      .str();
+  tools::Json json = tools::ToolJson(kTool);
+  json["map"] = FLAGS_map;
+  json["map_info"] = {{"layers", map.num_layers()},
+                      {"cells", cells},
+                      {"bytes", map.MemoryBytes()},
+                      {"finest_cell_size_m",
+                       tools::Number(map.layer(map.num_layers()).cell_size())}};
+  json["scans"] = results.size();
+  json["motion_model"] = MotionModelToString(options.motion_model);
+  json["backend"] = BackendTypeToString(options.registration.backend.type);
+  json["first_guess"] = tools::PoseJson(first_guess);
+  json["terminations"] = {{"CONVERGENCE", converged},
+                          {"NO_CONVERGENCE", no_convergence},
+                          {"FAILURE", failed}};
+  json["inlier_fraction"] = tools::StatsJson(ComputeStats(inliers));
+  json["own_cell_fraction"] = tools::StatsJson(ComputeStats(own));
+  json["time_ms"] = {{"total", tools::Number(total_s * 1e3)},
+                     {"map_load", tools::Number(map_load_s * 1e3)}};
+  json["time_ms_stats"] = {
+      {"registration", tools::StatsJson(ComputeStats(registration_ms))}};
+  json["peak_resident_bytes"] = tools::PeakResidentBytes();
+  return json;
 }
 
 // trajectory_xy.png: the finest layer's cell means (every k-th, at most
@@ -317,14 +299,14 @@ bool WritePlot(const std::string& dir,
           ? 0
           : std::max<size_t>(1, (cells.size() + max_cells - 1) / max_cells);
   {
-    std::ofstream out(data_dir + "/map_cells.dat");
+    std::ostringstream out;
     out << "# x_m y_m z_m (finest-layer cell means, every " << stride
         << "-th)\n";
     for (size_t c = 0; stride > 0 && c < cells.size(); c += stride) {
       out << cells[c].mean.x() << " " << cells[c].mean.y() << " "
           << cells[c].mean.z() << "\n";
     }
-    std::ofstream trajectory(data_dir + "/trajectory.dat");
+    std::ostringstream trajectory;
     trajectory << "# x_m y_m converged(1/0)\n";
     for (const LocalizationResult& r : results) {
       trajectory << r.map_from_scan.translation().x() << " "
@@ -332,8 +314,9 @@ bool WritePlot(const std::string& dir,
                  << (r.termination_type == TerminationType::CONVERGENCE)
                  << "\n";
     }
-    if (!out || !trajectory) {
-      *error = data_dir + ": cannot write the plot data";
+    if (!WriteFileAtomically(data_dir + "/map_cells.dat", out.str(), error) ||
+        !WriteFileAtomically(
+            data_dir + "/trajectory.dat", trajectory.str(), error)) {
       return false;
     }
   }
@@ -357,12 +340,23 @@ int Run() {
   LocalizerOptions options;
   std::vector<std::string> paths;
   std::string error;
-  if (!CheckFlags(&options, &paths, &error)) return Fail(error);
+  if (!CheckFlags(&options, &paths, &error)) return Refuse(error);
   Isometry3d first_guess;
-  if (!FirstPose(&first_guess, &error)) return Fail(error);
-  std::error_code ec;
-  std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec) return Fail("--output_dir=" + FLAGS_output_dir + ": " + ec.message());
+  if (!FirstPose(&first_guess, &error)) return Refuse(error);
+  LayeredGrid map;
+  if (!LoadLayeredGrid(FLAGS_map, &map, &error)) return Refuse(error);
+  // The library would clamp a start layer beyond the map's layers.
+  if (!tools::CheckStartLayerForMap(
+          options.registration.schedule, map.num_layers(), &error)) {
+    return Refuse(error);
+  }
+  const double map_load_s = NowSeconds() - start;
+  if (!tools::PrepareOutputDir("output_dir",
+                               FLAGS_output_dir,
+                               {"scans.csv", "summary.json"},
+                               &error)) {
+    return Refuse(error);
+  }
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {
@@ -371,9 +365,6 @@ int Run() {
                  "gnuplot-nox, or pass --plots=false)\n";
   }
 
-  LayeredGrid map;
-  if (!LoadLayeredGrid(FLAGS_map, &map, &error)) return Fail(error);
-  const double map_load_s = NowSeconds() - start;
   std::printf("map: %s, %d layers, finest cell %.3f m, %s\n",
               FLAGS_map.c_str(),
               map.num_layers(),
@@ -418,16 +409,15 @@ int Run() {
       !WriteScansCsv(out + "scans.csv", paths, results, &error)) {
     return Fail(error);
   }
-  {
-    std::ofstream json(out + "summary.json");
-    json << SummaryJson(options,
-                        map,
-                        first_guess,
-                        results,
-                        map_load_s,
-                        NowSeconds() - start)
-         << "\n";
-    if (!json) return Fail(out + "summary.json: cannot write");
+  if (!tools::WriteJsonFile(out + "summary.json",
+                            SummaryJson(options,
+                                        map,
+                                        first_guess,
+                                        results,
+                                        map_load_s,
+                                        NowSeconds() - start),
+                            &error)) {
+    return Fail(error);
   }
 
   std::printf("%-5s %-24s %-15s %5s %8s %8s %10s %10s %10s %9s %9s\n",
@@ -490,17 +480,12 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Registers every scan of a folder onto a saved map (mlndt_map).\n"
       "  mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT "
-      "[--initial_guess=tx,ty,tz,a,b,g]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc > 1) {
-    std::cerr << "mlndt_localize: unexpected argument '" << argv[1]
-              << "' (flags are --name=value)\n";
-    return 1;
+      "[--initial_guess=tx,ty,tz,a,b,g]";
+  if (!mlndt::tools::StartTool(usage, true, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

@@ -2,7 +2,8 @@
 // (SaveLayeredGrid), or describes a saved map.
 //
 //   mlndt_map --scans=DIR --poses=poses.txt --output=map.mlndt
-//             [--calib=calib.txt] [--min_range=3 --max_range=80]
+//             [--poses_are_camera --calib=calib.txt] [--min_range=3
+//             --max_range=80]
 //             [--voxel_size=0.2] [--finest_cell_size=2 ...]
 //   mlndt_map --scan_list=scans.txt --poses=poses.tum --output=map.mlndt
 //   mlndt_map --cloud=merged.pcd --output=map.mlndt [--voxel_size=0.2]
@@ -13,9 +14,9 @@
 // cropped by range from its sensor (--min_range, --max_range), moved into
 // the world frame by its pose and merged; pose k of --poses (KITTI
 // 12-number lines or TUM lines, format detected or --poses_format;
-// world_from_scan) belongs to scan k; with --calib they are KITTI camera
-// poses, converted with its Tr line. Or --cloud: one cloud already in the
-// world frame. The merged cloud is voxel-filtered (--voxel_size, one
+// world_from_scan) belongs to scan k; with --poses_are_camera --calib they are
+// KITTI camera poses, converted with its Tr line. Or --cloud: one cloud already
+// in the world frame. The merged cloud is voxel-filtered (--voxel_size, one
 // centroid per voxel) and the map is built with the shared map flags
 // (--preset, --finest_cell_size, --num_layers, --division_constant,
 // --min_points_per_cell, --min_eigenvalue, --min_eigenvalue_ratio,
@@ -33,18 +34,20 @@
 #include <glog/logging.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/map_builder.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
+#include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
@@ -53,8 +56,6 @@ DEFINE_string(scan_list, "", "Text file of scan paths, one a line (relative to t
 DEFINE_string(poses, "", "world_from_scan of every scan, in scan order: KITTI (12 numbers a line) "
               "or TUM (t tx ty tz qx qy qz qw) lines");
 DEFINE_string(poses_format, "auto", "auto (by extension, then by the first line) | kitti | tum");
-DEFINE_string(calib, "", "KITTI calib.txt: --poses are camera (cam0) poses, converted with its Tr "
-              "line (V = Tr^-1 P Tr)");
 DEFINE_string(cloud, "", "One cloud already in the world frame, instead of --scans and --poses");
 DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
 DEFINE_double(voxel_size, 0.0, "Voxel filter of the merged cloud: voxel edge [m], 0 = none, else "
@@ -72,7 +73,13 @@ constexpr char kTool[] = "mlndt_map";
 
 int Fail(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // The flags of this file (the build's), for refusing them with `info`.
@@ -81,6 +88,7 @@ const std::vector<std::string> kBuildFlags = {"scans",
                                               "poses",
                                               "poses_format",
                                               "calib",
+                                              "poses_are_camera",
                                               "cloud",
                                               "max_scans",
                                               "min_range",
@@ -145,10 +153,10 @@ int Info(const std::string& path) {
   std::string error;
   if (!tools::RefuseGivenFlags(
           kBuildFlags, "does not apply to 'mlndt_map info'", &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   LayeredGrid map;
-  if (!LoadLayeredGrid(path, &map, &error)) return Fail(error);
+  if (!LoadLayeredGrid(path, &map, &error)) return Refuse(error);
   std::error_code ec;
   const auto file_bytes = std::filesystem::file_size(path, ec);
   std::printf("map: %s (%llu bytes on disk)\n",
@@ -189,6 +197,7 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
           {"poses",
            "poses_format",
            "calib",
+           "poses_are_camera",
            "max_scans",
            "min_range",
            "max_range",
@@ -202,6 +211,9 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
     *error =
         "--scans and --scan_list need --poses (world_from_scan of every "
         "scan)";
+    return false;
+  }
+  if (!tools::CheckCameraPoseFlags("--poses", !FLAGS_poses.empty(), error)) {
     return false;
   }
   if (FLAGS_max_scans < 0) {
@@ -237,74 +249,65 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
              " does not exist";
     return false;
   }
+  if (!tools::CheckOutputFile("output", FLAGS_output, error) ||
+      !tools::CheckOutputFile("output_json", FLAGS_output_json, error)) {
+    return false;
+  }
   return options->IsValid(error);
 }
 
-std::string SummaryJson(const MapBuildOptions& options,
+// --output_json (docs/json_schema.md, "mlndt_map").
+tools::Json SummaryJson(const MapBuildOptions& options,
                         const MapBuildSummary& s,
                         const LayeredGrid& map) {
-  std::string layers = "[";
+  tools::Json layers = tools::Json::array();
   for (int i = 1; i <= map.num_layers(); ++i) {
     const NdtLayer& layer = map.layer(i);
-    tools::JsonObject o;
-    o.AddNumber("layer", i)
-        .AddNumber("cell_size_m", layer.cell_size())
-        .Add("dims",
-             tools::JsonArray(std::vector<int>{
-                 layer.dims().x(), layer.dims().y(), layer.dims().z()}))
-        .AddNumber("occupied_cells", static_cast<double>(layer.cells().size()))
-        .AddNumber("bytes", static_cast<double>(layer.MemoryBytes()));
-    layers += (i > 1 ? ", " : "") + o.str();
+    layers.push_back(
+        {{"layer", i},
+         {"cell_size_m", tools::Number(layer.cell_size())},
+         {"dims", {layer.dims().x(), layer.dims().y(), layer.dims().z()}},
+         {"occupied_cells", layer.cells().size()},
+         {"bytes", layer.MemoryBytes()}});
   }
-  layers += "]";
-  const Eigen::AlignedBox3d& b = map.bounds();
-  return tools::JsonObject()
-      .AddString("tool", kTool)
-      .AddString("output", FLAGS_output)
-      .AddNumber("scans", static_cast<double>(s.scans))
-      .AddNumber("input_points", static_cast<double>(s.input_points))
-      .AddNumber("cropped_points", static_cast<double>(s.cropped_points))
-      .AddNumber("merged_points", static_cast<double>(s.merged_points))
-      .AddNumber("map_points", static_cast<double>(s.map_points))
-      .AddNumber("min_range_m", options.range_filter.min_range_m)
-      .AddNumber("max_range_m", options.range_filter.max_range_m)
-      .AddNumber("voxel_size_m", options.voxel_size_m)
-      .Add("extent_m",
-           tools::JsonArray(std::vector<double>{
-               b.sizes().x(), b.sizes().y(), b.sizes().z()}))
-      .Add("layers", layers)
-      .AddNumber("map_bytes", static_cast<double>(s.map_bytes))
-      .Add("estimate",
-           tools::JsonObject()
-               .AddNumber("map_bytes", static_cast<double>(s.memory.map_bytes))
-               .AddNumber("build_peak_bytes",
-                          static_cast<double>(s.memory.build_peak_bytes))
-               .AddNumber("cloud_bytes",
-                          static_cast<double>(s.memory.cloud_bytes))
-               .AddNumber("limit_bytes",
-                          static_cast<double>(options.max_memory_bytes))
-               .str())
-      .AddNumber("peak_resident_bytes", tools::PeakResidentBytes())
-      .Add("time_s",
-           tools::JsonObject()
-               .AddNumber("read", s.read_time_s)
-               .AddNumber("voxel", s.voxel_time_s)
-               .AddNumber("estimate", s.estimate_time_s)
-               .AddNumber("build", s.build_time_s)
-               .AddNumber("total", s.total_time_s)
-               .str())
-      .str();
+  const Eigen::Vector3d extent = map.bounds().sizes();
+  tools::Json json = tools::ToolJson(kTool);
+  json["output"] = FLAGS_output;
+  json["scans"] = s.scans;
+  json["input_points"] = s.input_points;
+  json["cropped_points"] = s.cropped_points;
+  json["merged_points"] = s.merged_points;
+  json["map_points"] = s.map_points;
+  json["min_range_m"] = tools::Number(options.range_filter.min_range_m);
+  json["max_range_m"] = tools::Number(options.range_filter.max_range_m);
+  json["voxel_size_m"] = tools::Number(options.voxel_size_m);
+  json["extent_m"] = {tools::Number(extent.x()),
+                      tools::Number(extent.y()),
+                      tools::Number(extent.z())};
+  json["layers"] = layers;
+  json["map_bytes"] = s.map_bytes;
+  json["estimate"] = {{"map_bytes", s.memory.map_bytes},
+                      {"build_peak_bytes", s.memory.build_peak_bytes},
+                      {"cloud_bytes", s.memory.cloud_bytes},
+                      {"limit_bytes", options.max_memory_bytes}};
+  json["peak_resident_bytes"] = tools::PeakResidentBytes();
+  json["time_ms"] = {{"total", tools::Number(s.total_time_s * 1e3)},
+                     {"read", tools::Number(s.read_time_s * 1e3)},
+                     {"voxel", tools::Number(s.voxel_time_s * 1e3)},
+                     {"estimate", tools::Number(s.estimate_time_s * 1e3)},
+                     {"build", tools::Number(s.build_time_s * 1e3)}};
+  return json;
 }
 
 int Build() {
   MapBuildOptions options;
   std::string error;
-  if (!CheckFlags(&options, &error)) return Fail(error);
+  if (!CheckFlags(&options, &error)) return Refuse(error);
   bool detect = true;
   TrajectoryFormat format = TrajectoryFormat::KITTI;
   if (!tools::ParseTrajectoryFormatFlag(
           "poses_format", FLAGS_poses_format, &detect, &format, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
 
   LayeredGrid map;
@@ -312,7 +315,7 @@ int Build() {
   if (!FLAGS_cloud.empty()) {
     PointCloud cloud;
     if (!ReadPointCloud(FLAGS_cloud, &cloud, nullptr, &error)) {
-      return Fail(error);
+      return Refuse(error);
     }
     if (!BuildMapFromCloud(options, std::move(cloud), &map, &summary, &error))
       return Fail(error);
@@ -324,17 +327,17 @@ int Build() {
                                    static_cast<size_t>(FLAGS_max_scans),
                                    &paths,
                                    &error)) {
-      return Fail(error);
+      return Refuse(error);
     }
     std::vector<Isometry3d> poses;
     if (!tools::ReadPoseFile(
             FLAGS_poses, detect, format, FLAGS_calib, &poses, &error)) {
-      return Fail("--poses: " + error);
+      return Refuse("--poses: " + error);
     }
     if (poses.size() < paths.size()) {
-      return Fail("--poses=" + FLAGS_poses + " has " +
-                  std::to_string(poses.size()) + " poses for " +
-                  std::to_string(paths.size()) + " scans");
+      return Refuse("--poses=" + FLAGS_poses + " has " +
+                    std::to_string(poses.size()) + " poses for " +
+                    std::to_string(paths.size()) + " scans");
     }
     tools::Progress progress(kTool, paths.size());
     const bool ok = BuildMapFromScans(
@@ -384,9 +387,10 @@ int Build() {
       summary.total_time_s);
   std::printf("map written to %s\n", FLAGS_output.c_str());
   if (!FLAGS_output_json.empty()) {
-    std::ofstream out(FLAGS_output_json);
-    out << SummaryJson(options, summary, map) << "\n";
-    if (!out) return Fail(FLAGS_output_json + ": cannot write");
+    if (!tools::WriteJsonFile(
+            FLAGS_output_json, SummaryJson(options, summary, map), &error)) {
+      return Fail(error);
+    }
   }
   return 0;
 }
@@ -395,19 +399,20 @@ int Build() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
+  const char* usage =
       "Builds a layered NDT map from scans and poses (or one cloud), or "
       "describes one.\n"
-      "  mlndt_map --scans=DIR --poses=FILE [--calib=FILE] --output=MAP\n"
+      "  mlndt_map --scans=DIR --poses=FILE [--poses_are_camera --calib=FILE] "
+      "--output=MAP\n"
       "  mlndt_map --cloud=FILE --output=MAP\n"
-      "  mlndt_map info MAP");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
+      "  mlndt_map info MAP";
+  if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
   if (argc > 1 && std::string(argv[1]) == "info") {
     if (argc != 3) {
       std::cerr << "mlndt_map: usage: mlndt_map info MAP (one map file)\n";
-      return 1;
+      return mlndt::tools::kExitUsage;
     }
     return mlndt::Info(argv[2]);
   }
@@ -415,7 +420,7 @@ int main(int argc, char** argv) {
     std::cerr << "mlndt_map: unexpected argument '" << argv[1]
               << "' (flags are --name=value; the one subcommand is 'info "
                  "MAP')\n";
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Build();
 }

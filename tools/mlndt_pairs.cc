@@ -16,18 +16,22 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/dataset.h"
 #include "mlndt/eval/statistics.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 
 DEFINE_string(scans, "", "Folder of scans (sorted by file name)");
@@ -49,7 +53,13 @@ namespace {
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_pairs: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_pairs: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // ';'-separated tx,ty,tz,alpha,beta,gamma offsets [m, deg].
@@ -98,7 +108,7 @@ bool RegisterAndPrint(const RegistrationOptions& options,
                       const Isometry3d& truth,
                       const Isometry3d& initial,
                       const std::string& label,
-                      std::ofstream* csv,
+                      std::ostringstream* csv,  // nullptr: no CSV.
                       std::vector<double>* times) {
   RegistrationSummary summary;
   Register(options, scans[i], scans[j], initial, &summary);
@@ -119,7 +129,7 @@ bool RegisterAndPrint(const RegistrationOptions& options,
               ok ? "yes" : "NO",
               summary.num_iterations,
               summary.total_time_s * 1e3);
-  if (csv->is_open()) {
+  if (csv != nullptr) {
     *csv << i << "," << j << "," << gap << ",\"" << label << "\"," << et << ","
          << er << "," << ok << ","
          << TerminationTypeToString(summary.termination_type) << ","
@@ -130,37 +140,56 @@ bool RegisterAndPrint(const RegistrationOptions& options,
 
 int Run() {
   if (FLAGS_scans.empty() || FLAGS_gt_poses.empty())
-    return Fail("--scans and --gt_poses are required");
+    return Refuse("--scans and --gt_poses are required");
   RegistrationOptions options;
   std::string error;
-  if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Fail(error);
+  if (!tools::RegistrationOptionsFromFlags(&options, &error) ||
+      !tools::CheckStartLayerBeforeMap(options, &error)) {
+    return Refuse(error);
+  }
 
   std::vector<std::string> paths;
-  if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
-    return Fail(error);
+  if (!ListScanFiles(
+          FLAGS_scans, {FLAGS_gt_poses, FLAGS_calib}, &paths, &error)) {
+    return Refuse(error);
+  }
+  if (!tools::CheckCameraPoseFlags("--gt_poses", true, &error)) {
+    return Refuse(error);
   }
   std::vector<Isometry3d> poses;
-  if (!ReadKittiPoses(FLAGS_gt_poses, &poses, &error)) return Fail(error);
+  if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &poses, &error)) {
+    return Refuse("--gt_poses: " + error);
+  }
   if (poses.size() < paths.size()) {
-    return Fail(FLAGS_gt_poses + " has " + std::to_string(poses.size()) +
-                " poses for " + std::to_string(paths.size()) + " scans");
+    return Refuse(FLAGS_gt_poses + " has " + std::to_string(poses.size()) +
+                  " poses for " + std::to_string(paths.size()) + " scans");
   }
   std::vector<double> gaps;
-  if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty())
-    return Fail("bad --gaps");
+  if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty()) {
+    return Refuse("--gaps=" + FLAGS_gaps +
+                  ": expected comma-separated frame gaps (e.g. 1,2,5)");
+  }
+  for (const double gap : gaps) {
+    // A gap of 0 would register every scan onto itself.
+    if (!(gap >= 1.0) || gap != std::floor(gap)) {
+      return Refuse("--gaps=" + FLAGS_gaps +
+                    ": a gap is a whole number of frames >= 1");
+    }
+  }
   std::vector<Vector6d> perturbations;
   if (!ParsePerturbations(FLAGS_perturbations, &perturbations, &error)) {
-    return Fail(error);
+    return Refuse(error);
+  }
+  if (!tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
+    return Refuse(error);
   }
   std::vector<PointCloud> scans(paths.size());
   for (size_t i = 0; i < paths.size(); ++i) {
     if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
-      return Fail(error);
+      return Refuse(error);
   }
-  std::ofstream csv;
+  std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
-    csv.open(FLAGS_output_csv);
     csv << "reference,input,gap,perturbation,translation_error_m,rotation_"
            "error_deg,success,"
            "termination,iterations,time_ms\n";
@@ -189,8 +218,16 @@ int Run() {
         const Isometry3d initial =
             InitialGuess(perturbations, k, truth, &label);
         ++total;
-        successes += RegisterAndPrint(
-            options, scans, i, j, gap, truth, initial, label, &csv, &times);
+        successes += RegisterAndPrint(options,
+                                      scans,
+                                      i,
+                                      j,
+                                      gap,
+                                      truth,
+                                      initial,
+                                      label,
+                                      FLAGS_output_csv.empty() ? nullptr : &csv,
+                                      &times);
       }
     }
   }
@@ -199,7 +236,11 @@ int Run() {
               total,
               100.0 * successes / std::max(1, total),
               ComputeStats(times).median);
-  return 0;
+  if (!FLAGS_output_csv.empty() &&
+      !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
+    return Fail(error);
+  }
+  return tools::kExitOk;
 }
 
 }  // namespace
@@ -211,7 +252,7 @@ int main(int argc, char** argv) {
           false,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

@@ -37,7 +37,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -49,9 +48,13 @@
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/cost/robust_loss.h"
 #include "mlndt/eval/dataset.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
+#include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/posegraph_metrics.h"
+#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 
 // clang-format off
@@ -74,7 +77,13 @@ namespace {
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_posegraph: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_posegraph: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // A world_from_scan pose in the layout Ceres optimises.
@@ -173,12 +182,40 @@ double CostAt(ceres::Problem* problem,
   return cost;
 }
 
+// The joint solve's iterations on a progress bar whose total is the
+// iteration cap of all stages (a stage that converges ends early).
+class JointProgress : public ceres::IterationCallback {
+ public:
+  // `progress` must outlive the callback.
+  JointProgress(tools::Progress* progress, size_t before, std::string stage)
+      : progress_(progress), before_(before), stage_(std::move(stage)) {}
+
+  ceres::CallbackReturnType operator()(
+      const ceres::IterationSummary& summary) override {
+    char cost[64];
+    std::snprintf(cost, sizeof(cost), " cost %.6g", summary.cost);
+    progress_->Update(before_ + static_cast<size_t>(summary.iteration),
+                      stage_ + cost);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  tools::Progress* progress_;
+  size_t before_;
+  std::string stage_;
+};
+
 JointResult SolveJointly(const std::vector<LayeredGrid>& maps,
                          const std::vector<PointCloud>& samples,
                          const RegistrationOptions& options,
                          std::vector<PoseBlocks>* poses) {
   JointResult result;
   const std::vector<PoseBlocks> chained = *poses;
+  const size_t stage_iterations =
+      static_cast<size_t>(FLAGS_joint_max_iterations);
+  tools::Progress progress(
+      "mlndt_posegraph joint",
+      static_cast<size_t>(FLAGS_joint_layers) * stage_iterations);
   for (int offset = FLAGS_joint_layers - 1; offset >= 0; --offset) {
     ceres::Problem problem;
     result.directed_pairs =
@@ -189,8 +226,14 @@ JointResult SolveJointly(const std::vector<LayeredGrid>& maps,
     ChooseLinearSolver(&solver_options);
     solver_options.max_num_iterations = FLAGS_joint_max_iterations;
     solver_options.num_threads = options.num_threads;
+    const size_t stage = static_cast<size_t>(FLAGS_joint_layers - 1 - offset);
+    JointProgress callback(&progress,
+                           stage * stage_iterations,
+                           "layer n-" + std::to_string(offset));
+    solver_options.callbacks.push_back(&callback);
     ceres::Solver::Summary summary;
     ceres::Solve(solver_options, &problem, &summary);
+    progress.Finish();
     LOG(INFO) << "joint stage, layer n-" << offset << ": "
               << summary.BriefReport();
     if (offset == FLAGS_joint_layers - 1)
@@ -224,23 +267,25 @@ bool WriteTrajectories(const std::string& dir,
 }
 
 // The settings and the joint problem's facts.
-tools::JsonObject JointJson(size_t num_scans,
-                            const JointResult& joint_result,
-                            int chained_failures) {
-  tools::JsonObject json;
-  json.AddNumber("scans", static_cast<double>(num_scans))
-      .AddNumber("neighbors", FLAGS_neighbors)
-      .AddNumber("joint_layers", FLAGS_joint_layers)
-      .AddBool("joint_both_directions", !FLAGS_joint_one_way)
-      .AddNumber("directed_pairs", joint_result.directed_pairs)
-      .AddNumber("residual_blocks", joint_result.residual_blocks)
-      .AddString("linear_solver", joint_result.linear_solver)
-      .AddNumber("chained_failures", chained_failures)
-      .AddNumber("joint_iterations", joint_result.iterations)
-      .AddString("joint_termination", joint_result.termination)
-      .AddNumber("joint_initial_cost", joint_result.initial_cost)
-      .AddNumber("joint_cost_at_chained", joint_result.chained_cost_last_stage)
-      .AddNumber("joint_final_cost", joint_result.final_cost);
+// stdout and --output_json (docs/json_schema.md, "mlndt_posegraph").
+tools::Json JointJson(size_t num_scans,
+                      const JointResult& joint_result,
+                      int chained_failures) {
+  using tools::Number;
+  tools::Json json = tools::ToolJson("mlndt_posegraph");
+  json["scans"] = num_scans;
+  json["neighbors"] = FLAGS_neighbors;
+  json["joint_layers"] = FLAGS_joint_layers;
+  json["joint_both_directions"] = !FLAGS_joint_one_way;
+  json["directed_pairs"] = joint_result.directed_pairs;
+  json["residual_blocks"] = joint_result.residual_blocks;
+  json["linear_solver"] = joint_result.linear_solver;
+  json["chained_failures"] = chained_failures;
+  json["joint_iterations"] = joint_result.iterations;
+  json["joint_termination"] = joint_result.termination;
+  json["joint_initial_cost"] = Number(joint_result.initial_cost);
+  json["joint_cost_at_chained"] = Number(joint_result.chained_cost_last_stage);
+  json["joint_final_cost"] = Number(joint_result.final_cost);
   return json;
 }
 
@@ -293,29 +338,49 @@ std::vector<Isometry3d> ChainRegistrations(const RegistrationOptions& options,
 }
 
 int Run() {
-  if (FLAGS_scans.empty()) return Fail("--scans is required");
-  if (FLAGS_neighbors < 1) return Fail("--neighbors must be >= 1");
+  if (FLAGS_scans.empty()) return Refuse("--scans is required");
+  if (FLAGS_neighbors < 1) return Refuse("--neighbors must be >= 1");
   if (FLAGS_joint_layers < 1 || FLAGS_joint_layers > 2)
-    return Fail("--joint_layers: 1 or 2");
+    return Refuse("--joint_layers: 1 or 2");
   if (FLAGS_joint_max_iterations < 1)
-    return Fail("--joint_max_iterations must be >= 1");
+    return Refuse("--joint_max_iterations must be >= 1");
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error)) {
-    return Fail(error + " (the joint problem is built from ML-NDT residuals)");
+    return Refuse(error +
+                  " (the joint problem is built from ML-NDT residuals)");
   }
+  if (!tools::CheckStartLayerBeforeMap(options, &error)) return Refuse(error);
 
-  std::vector<std::string> paths;
-  if (!ListScanFiles(FLAGS_scans, {FLAGS_gt_poses}, &paths, &error)) {
-    return Fail(error);
+  if (!tools::CheckOutputFile("output_json", FLAGS_output_json, &error)) {
+    return Refuse(error);
   }
-  if (paths.size() < 2) return Fail(FLAGS_scans + ": fewer than 2 scans");
+  if (!FLAGS_output_dir.empty() &&
+      !tools::PrepareOutputDir(
+          "output_dir",
+          FLAGS_output_dir,
+          {"trajectory_chained.txt", "trajectory_joint.txt"},
+          &error)) {
+    return Refuse(error);
+  }
+  std::vector<std::string> paths;
+  if (!ListScanFiles(
+          FLAGS_scans, {FLAGS_gt_poses, FLAGS_calib}, &paths, &error)) {
+    return Refuse(error);
+  }
+  if (paths.size() < 2) return Refuse(FLAGS_scans + ": fewer than 2 scans");
+  if (!tools::CheckCameraPoseFlags(
+          "--gt_poses", !FLAGS_gt_poses.empty(), &error)) {
+    return Refuse(error);
+  }
   std::vector<Isometry3d> truth;
   if (!FLAGS_gt_poses.empty()) {
-    if (!ReadKittiPoses(FLAGS_gt_poses, &truth, &error)) return Fail(error);
+    if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &truth, &error)) {
+      return Refuse(error);
+    }
     if (truth.size() < paths.size()) {
-      return Fail(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
-                  " poses for " + std::to_string(paths.size()) + " scans");
+      return Refuse(FLAGS_gt_poses + " has " + std::to_string(truth.size()) +
+                    " poses for " + std::to_string(paths.size()) + " scans");
     }
     truth.resize(paths.size());
   }
@@ -350,18 +415,18 @@ int Run() {
       !WriteTrajectories(FLAGS_output_dir, chained, joint, &error)) {
     return Fail(error);
   }
-  tools::JsonObject json = JointJson(n, joint_result, chained_failures);
+  tools::Json json = JointJson(n, joint_result, chained_failures);
   if (!truth.empty() &&
       !tools::AddTrajectoryMetrics(chained, joint, truth, &json, &error)) {
     return Fail(error);
   }
-  json.AddNumber("time_maps_s", maps_done - start)
-      .AddNumber("time_chained_s", chained_done - maps_done)
-      .AddNumber("time_joint_s", joint_done - chained_done)
-      .AddNumber("time_total_s", joint_done - start);
-  std::cout << json.str() << std::endl;
+  json["time_ms"] = {{"total", (joint_done - start) * 1e3},
+                     {"maps", (maps_done - start) * 1e3},
+                     {"chained", (chained_done - maps_done) * 1e3},
+                     {"joint", (joint_done - chained_done) * 1e3}};
+  std::cout << tools::JsonText(json);
   if (!FLAGS_output_json.empty() &&
-      !tools::WriteJsonFile(FLAGS_output_json, json.str(), &error)) {
+      !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
     return Fail(error);
   }
   return 0;
@@ -379,7 +444,7 @@ int main(int argc, char** argv) {
           false,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

@@ -61,6 +61,7 @@
 #include "mlndt/pipeline/scan_store.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/output_files.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scaling_measure.h"
@@ -100,7 +101,13 @@ using tools::SizeResult;
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_scaling: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_scaling: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 // Reads every scan, moves it into the first scan's frame with the ground
@@ -271,12 +278,13 @@ int Run() {
   MatcherOptions options;
   std::string error;
   if (!ParseFlags(&sizes, &reference_from_input, &options, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
   if (!FLAGS_output_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(FLAGS_output_dir, ec);
-    if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
+    if (!tools::PrepareOutputDir(
+            "output_dir", FLAGS_output_dir, {"scaling.csv"}, &error)) {
+      return Refuse(error);
+    }
   }
   const bool gnuplot_ok =
       FLAGS_output_dir.empty() || tools::GnuplotAvailable(FLAGS_gnuplot);
@@ -288,12 +296,12 @@ int Run() {
 
   PointCloud merged;
   size_t num_scans = 0;
-  if (!LoadMergedCloud(&merged, &num_scans, &error)) return Fail(error);
+  if (!LoadMergedCloud(&merged, &num_scans, &error)) return Refuse(error);
   if (sizes.back() > merged.size()) {
-    return Fail("--sizes: " + std::to_string(sizes.back()) +
-                " points requested, but the " + std::to_string(num_scans) +
-                " scans of " + FLAGS_scans + " merge into only " +
-                std::to_string(merged.size()) + " points");
+    return Refuse("--sizes: " + std::to_string(sizes.back()) +
+                  " points requested, but the " + std::to_string(num_scans) +
+                  " scans of " + FLAGS_scans + " merge into only " +
+                  std::to_string(merged.size()) + " points");
   }
 
   tools::ScalingSettings settings;
@@ -357,7 +365,7 @@ int main(int argc, char** argv) {
           true,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

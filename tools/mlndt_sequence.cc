@@ -3,7 +3,7 @@
 // reports per-pair errors and totals in the layout of the paper's Tables 2-4.
 //
 //   mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=poses.txt
-//   [--calib=calib.txt]]
+//   [--poses_are_camera --calib=calib.txt]]
 //                  [--step=1]
 //                  [--init=zero|gt_fraction:c|constant_velocity|poses:FILE]
 //                  [--adaptive_start_layer] [any mlndt_align registration flag]
@@ -11,9 +11,9 @@
 // Scans are the point-cloud files in DIR (by extension), sorted by file
 // name; pose and calibration files given on the command line are left out
 // even when they sit in DIR. Ground-truth poses are KITTI lines, one per
-// scan, world_from_scan in the scans' own frame; with --calib they are KITTI
-// camera poses and are converted with the Tr line (V = Tr^-1 P Tr). --calib
-// applies to --init=poses:FILE too.
+// scan, world_from_scan in the scans' own frame; with --poses_are_camera
+// --calib they are KITTI camera poses and are converted with the Tr line
+// (V = Tr^-1 P Tr; pose_flags.h). --calib applies to --init=poses:FILE too.
 //
 // Initial guesses (reference_from_input):
 //   zero               identity (the paper's Z_i = 0),
@@ -58,20 +58,21 @@
 #include "mlndt/pipeline/sequence_registration.h"
 #include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/sequence_output.h"
 #include "tools/common/sequence_plots.h"
+#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
 DEFINE_string(gt_poses, "", "Optional KITTI poses, one line per scan (world_from_scan)");
-DEFINE_string(calib, "", "Optional KITTI calib.txt: pose files are camera poses, converted "
-              "with its Tr line (V = Tr^-1 P Tr)");
 DEFINE_int32(step, 1, "Register scan i + step onto scan i (>= 1)");
 DEFINE_string(init, "zero", "Initial guess: zero | gt_fraction:c | constant_velocity | poses:FILE");
 DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
@@ -94,7 +95,13 @@ namespace {
 
 int Fail(const std::string& message) {
   std::cerr << "mlndt_sequence: " << message << std::endl;
-  return 1;
+  return tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << "mlndt_sequence: " << message << std::endl;
+  return tools::kExitUsage;
 }
 
 bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
@@ -153,11 +160,10 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
     *error = "--trace_plot_pairs must be >= 0";
     return false;
   }
-  if (!FLAGS_calib.empty() && FLAGS_gt_poses.empty() &&
-      options->init.mode != InitMode::POSES) {
-    *error =
-        "--calib converts pose files; give --gt_poses or --init=poses:FILE "
-        "with it";
+  if (!tools::CheckCameraPoseFlags(
+          "--gt_poses or --init=poses:FILE",
+          !FLAGS_gt_poses.empty() || options->init.mode == InitMode::POSES,
+          error)) {
     return false;
   }
   return true;
@@ -233,37 +239,32 @@ std::string PairDetail(const PairResult& r) {
   return detail;
 }
 
-// The run's settings, first in summary.json.
-tools::JsonObject SummaryHeader(const SequenceOptions& options,
-                                size_t num_scans) {
+// The schema header and the run's settings, first in summary.json.
+tools::Json SummaryHeader(const SequenceOptions& options, size_t num_scans) {
   const MatcherOptions& registration = options.registration;
-  tools::JsonObject header;
-  header.AddString("tool", "mlndt_sequence")
-      .AddString("command", tools::CommandLine())
-      .AddString("scans_dir", FLAGS_scans)
-      .AddNumber("scans", static_cast<double>(num_scans))
-      .AddNumber("step", static_cast<double>(options.step))
-      .AddString("init", InitSpecToString(options.init))
-      .AddString("method", MethodToString(registration.method))
-      .AddString("backend",
-                 BackendTypeToString(registration.mlndt.backend.type))
-      .AddString(
-          "sampling",
-          SamplingMethodToString(registration.method == Method::NDT
-                                     ? registration.ndt.sampling.method
-                                     : registration.mlndt.sampling.method))
-      .AddBool("adaptive_start_layer", options.adaptive.enabled);
+  tools::Json header = tools::ToolJson("mlndt_sequence");
+  header["scans_dir"] = FLAGS_scans;
+  header["scans"] = num_scans;
+  header["step"] = options.step;
+  header["init"] = InitSpecToString(options.init);
+  header["method"] = MethodToString(registration.method);
+  header["backend"] = BackendTypeToString(registration.mlndt.backend.type);
+  header["sampling"] = SamplingMethodToString(
+      registration.method == Method::NDT ? registration.ndt.sampling.method
+                                         : registration.mlndt.sampling.method);
+  header["adaptive_start_layer"] = options.adaptive.enabled;
   if (options.adaptive.enabled) {
-    header.Add(
-        "adaptive",
-        tools::JsonObject()
-            .AddNumber("max_translation_m", options.adaptive.max_translation_m)
-            .AddNumber("max_rotation_deg", options.adaptive.max_rotation_deg)
-            .Add("fail_rate_thresholds",
-                 tools::JsonArray(options.adaptive.fail_rate_thresholds))
-            .str());
+    tools::Json thresholds = tools::Json::array();
+    for (const double v : options.adaptive.fail_rate_thresholds) {
+      thresholds.push_back(tools::Number(v));
+    }
+    header["adaptive"] = {
+        {"max_translation_m",
+         tools::Number(options.adaptive.max_translation_m)},
+        {"max_rotation_deg", tools::Number(options.adaptive.max_rotation_deg)},
+        {"fail_rate_thresholds", thresholds}};
   } else {
-    header.AddNumber("start_layer_flag", FLAGS_start_layer);
+    header["start_layer_flag"] = FLAGS_start_layer;
   }
   return header;
 }
@@ -326,15 +327,22 @@ int WritePlots(const SequenceOptions& options,
 int Run() {
   SequenceOptions options;
   std::string error;
-  if (!SequenceOptionsFromFlags(&options, &error)) return Fail(error);
+  if (!SequenceOptionsFromFlags(&options, &error)) return Refuse(error);
+  if (options.registration.method == Method::MLNDT &&
+      !tools::CheckStartLayerBeforeMap(options.registration.mlndt, &error)) {
+    return Refuse(error);
+  }
   std::vector<std::string> paths;
   std::vector<Isometry3d> truth, odometry;
   if (!ReadScansAndPoses(options, &paths, &truth, &odometry, &error)) {
-    return Fail(error);
+    return Refuse(error);
   }
-  std::error_code ec;
-  std::filesystem::create_directories(FLAGS_output_dir, ec);
-  if (ec) return Fail(FLAGS_output_dir + ": " + ec.message());
+  if (!tools::PrepareOutputDir("output_dir",
+                               FLAGS_output_dir,
+                               {"pairs.csv", "summary.json"},
+                               &error)) {
+    return Refuse(error);
+  }
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
   if (!gnuplot_ok) {
@@ -378,7 +386,7 @@ int main(int argc, char** argv) {
           true,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

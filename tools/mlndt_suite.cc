@@ -21,9 +21,10 @@
 // precision and recall of CONVERGENCE and of usable results, the table per
 // data set and start, the accuracy of the right runs from the identity and
 // the prior, and the reach per offset. --output_dir writes runs.csv and
-// summary.json (and quality.png with --plot). Exit code 0 after a complete
-// run, 1 on bad input (refused before any registration, naming the flag),
-// 2 when the run misses a --fail_on target.
+// summary.json (and quality.png with --plot). Exit codes (tool_main.h): 0
+// after a complete run, 1 when the run misses a --fail_on target (or its
+// outputs cannot be written), 2 on bad input (refused before any
+// registration, naming the flag).
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -38,8 +39,9 @@
 #include "mlndt/pipeline/suite_runner.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/suite_inputs.h"
 #include "tools/common/suite_output.h"
@@ -76,12 +78,12 @@ DEFINE_string(prior_uncertainty, "",
               "empty = unknown");
 DEFINE_double(reach_share, 0.9, "Reach: the share of right runs an offset needs, (0, 1]");
 DEFINE_string(output_dir, "", "Folder for runs.csv, summary.json (and quality.png)");
-DEFINE_bool(plot, false, "Write quality.png with gnuplot (needs --output_dir; exit 1 "
+DEFINE_bool(plot, false, "Write quality.png with gnuplot (needs --output_dir; exit 2 "
             "when gnuplot is missing)");
 DEFINE_string(gnuplot, "gnuplot", "The gnuplot program (--plot)");
 DEFINE_string(fail_on, "",
               "Targets MEASURE:minimum,... (success, precision, recall, usable_precision, "
-              "usable_recall); exit 2 when one is missed");
+              "usable_recall); exit 1 when one is missed");
 // clang-format on
 
 namespace mlndt {
@@ -91,7 +93,13 @@ constexpr char kTool[] = "mlndt_suite";
 
 int Fail(const std::string& message) {
   std::cerr << kTool << ": " << message << std::endl;
-  return 1;
+  return mlndt::tools::kExitFailed;
+}
+
+// A flag, argument or input refused before any work (tool_main.h).
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return mlndt::tools::kExitUsage;
 }
 
 struct SuiteConfig {
@@ -314,18 +322,20 @@ bool WriteOutputs(const SuiteConfig& config,
 int Run() {
   SuiteConfig config;
   std::string error;
-  if (!ParseConfig(&config, &error)) return Fail(error);
+  if (!ParseConfig(&config, &error)) return Refuse(error);
   std::vector<tools::LoadedSuiteDataset> loaded(config.datasets.size());
   for (size_t d = 0; d < config.datasets.size(); ++d) {
     if (!tools::LoadSuiteDataset(
             config.datasets[d], d, config.plan, &loaded[d], &error)) {
-      return Fail(error);
+      return Refuse(error);
     }
   }
-  std::error_code ec;
   if (!FLAGS_output_dir.empty() &&
-      !std::filesystem::create_directories(FLAGS_output_dir, ec) && ec) {
-    return Fail("--output_dir=" + FLAGS_output_dir + ": " + ec.message());
+      !mlndt::tools::PrepareOutputDir("output_dir",
+                                      FLAGS_output_dir,
+                                      {"runs.csv", "summary.json"},
+                                      &error)) {
+    return Refuse(error);
   }
   std::printf("%s", tools::SuitePlanText(loaded).c_str());
   std::fflush(stdout);
@@ -350,7 +360,6 @@ int Run() {
                                       outcomes,
                                       FLAGS_reach_share);
   tools::SuiteRunInfo info;
-  info.command_line = tools::CommandLine();
   info.method = MethodToString(config.matcher.method);
   info.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -366,7 +375,8 @@ int Run() {
   for (const std::string& missed : info.missed_targets) {
     std::printf("target missed: %s\n", missed.c_str());
   }
-  return info.missed_targets.empty() ? 0 : 2;
+  return info.missed_targets.empty() ? mlndt::tools::kExitOk
+                                     : mlndt::tools::kExitFailed;
 }
 
 }  // namespace
@@ -381,7 +391,7 @@ int main(int argc, char** argv) {
           true,
           &argc,
           &argv)) {
-    return 1;
+    return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();
 }

@@ -24,7 +24,7 @@ struct ObjectiveOptions {
   // rho; NONE is the paper's plain sum.
   LossType loss = LossType::CAUCHY;
   // Mahalanobis distance sqrt(s) where the loss bends. In [1e-3, 1e3].
-  double loss_scale = 2.0;
+  double loss_scale = 1.5;
 
   bool IsValid(std::string* error) const;
 };

@@ -37,6 +37,14 @@ std::string RegistrationSummary::FullReport() const {
   out << "\n  points:         " << input_points << " input, " << sampled_points
       << " sampled, " << matched_points << " matched, " << unmatched_points
       << " unmatched\n";
+  if (quality.points > 0) {
+    out << std::setprecision(3) << "  fit:            inliers "
+        << quality.inlier_fraction << ", mean score " << quality.mean_score
+        << ", own cell " << quality.own_cell_fraction << ", constraint ratio "
+        << constraints.constraint_ratio;
+    if (attempts > 1) out << ", " << attempts << " attempts";
+    out << "\n";
+  }
   out << std::setprecision(2) << "  time [ms]:      map " << map_time_s * 1e3
       << ", sampling " << sampling_time_s * 1e3 << ", solve "
       << solve_time_s * 1e3 << ", total " << total_time_s * 1e3 << "\n";

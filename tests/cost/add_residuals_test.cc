@@ -183,8 +183,8 @@ TEST(AddMlNdtResiduals, OneLossFromTheObjectiveOnEveryBlock) {
   ASSERT_NE(defaults.GetLossFunctionForResidualBlock(default_ids.front()),
             nullptr);
   defaults.GetLossFunctionForResidualBlock(default_ids.front())
-      ->Evaluate(4.0, rho);  // Cauchy, scale 2: 4 log(1 + 4 / 4).
-  EXPECT_DOUBLE_EQ(rho[0], 4.0 * std::log(2.0));
+      ->Evaluate(2.25, rho);  // Cauchy, scale 1.5: 2.25 log(1 + 2.25 / 2.25).
+  EXPECT_DOUBLE_EQ(rho[0], 2.25 * std::log(2.0));
 }
 
 TEST(AddMlNdtResidualsQuaternion, SetsEigenQuaternionManifoldOnRotationBlock) {

@@ -66,12 +66,12 @@ void ExpectSameRelativePose(const std::string& reference_file,
       filter, Read(testing::BundledDataPath(reference_file)), nullptr);
   const PointCloud input = FilterByRange(
       filter, Read(testing::BundledDataPath(input_file)), nullptr);
+  // Converged tighter than the default 1 mm step, so that the comparison
+  // measures the frame, not where each run happened to stop.
+  RegistrationOptions options;
+  options.schedule.step_tolerance = 1e-5;
   RegistrationSummary at_origin;
-  Register(RegistrationOptions(),
-           reference,
-           input,
-           Isometry3d::Identity(),
-           &at_origin);
+  Register(options, reference, input, Isometry3d::Identity(), &at_origin);
   ASSERT_TRUE(at_origin.IsSolutionUsable()) << at_origin.message;
   struct Case {
     double c;
@@ -85,7 +85,7 @@ void ExpectSameRelativePose(const std::string& reference_file,
     far_from_near.translation() = shift;
     RegistrationSummary far;
     // Identity guess, in the far frame: the input starts where it lies.
-    Register(RegistrationOptions(),
+    Register(options,
              ThroughFile(reference, shift, k.float64, "reference.pcd"),
              ThroughFile(input, shift, k.float64, "input.pcd"),
              Isometry3d::Identity(),
@@ -93,10 +93,15 @@ void ExpectSameRelativePose(const std::string& reference_file,
     ASSERT_TRUE(far.IsSolutionUsable()) << far.message;
     const Isometry3d back =
         far_from_near.inverse() * far.reference_from_input * far_from_near;
-    EXPECT_LT(TranslationErrorM(back, at_origin.reference_from_input), 1e-3);
+    // float32 at 1 km rounds the points by up to 30 um, which moves a few
+    // across sampling and cell borders: another sample set, a pose a few
+    // mm away (KITTI 0 -> 1: 3.4 mm, 0.016 deg). float64 keeps the points.
+    const double max_m = k.float64 ? 1e-3 : 5e-3;
+    const double max_deg = k.float64 ? 0.01 : 0.03;
+    EXPECT_LT(TranslationErrorM(back, at_origin.reference_from_input), max_m);
     EXPECT_LT(
         RotationErrorRad(back, at_origin.reference_from_input) * kRadToDeg,
-        0.01);
+        max_deg);
   }
 }
 

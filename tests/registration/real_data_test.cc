@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <vector>
 
 #include "mlndt/cloud/io.h"
@@ -70,6 +71,16 @@ TEST(VelodynePair, MatchesReferenceResultFromIdentity) {
       << summary.FullReport();
   EXPECT_LT(
       RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg, 0.5)
+      << summary.FullReport();
+  // The report shows the verdict's evidence.
+  char fit[64];
+  std::snprintf(fit,
+                sizeof(fit),
+                "  fit:            inliers %.3f, mean score %.3f",
+                summary.quality.inlier_fraction,
+                summary.quality.mean_score);
+  EXPECT_GT(summary.quality.inlier_fraction, 0.5);
+  EXPECT_NE(summary.FullReport().find(fit), std::string::npos)
       << summary.FullReport();
 }
 

@@ -1,7 +1,8 @@
 // Runs the built mlndt_align binary, the README's main job, on the bundled
 // koide3 pair and checks what it writes: the recovered transform against the
-// pair's reference result, the timing and memory fields, and clear failures
-// on bad input.
+// pair's reference result, the timing and memory fields, --help and
+// --version, the 4x4 on stdout, and misconfigurations refused with exit 2
+// and a message naming the flag.
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "mlndt/cloud/point_cloud.h"
@@ -34,13 +37,21 @@ std::string TestDir() {
   return dir;
 }
 
-// The number after "key": in the tool's JSON (keys are unique there); NaN
-// when missing.
-double JsonNumber(const std::string& json, const std::string& key) {
-  const std::string pattern = "\"" + key + "\": ";
-  const size_t at = json.find(pattern);
-  if (at == std::string::npos) return std::nan("");
-  return std::strtod(json.c_str() + at + pattern.size(), nullptr);
+// The tool's JSON file, parsed; a discarded value when it is not JSON.
+nlohmann::json ReadJson(const std::string& path) {
+  return nlohmann::json::parse(
+      testing::ReadWholeFile(path), nullptr, /*allow_exceptions=*/false);
+}
+
+// The 4x4 matrix of the last four lines of stdout.
+Eigen::Matrix4d Last4x4(const ToolRun& run) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Constant(std::nan(""));
+  if (run.lines.size() < 4) return m;
+  for (int r = 0; r < 4; ++r) {
+    std::istringstream row(run.lines[run.lines.size() - 4 + r]);
+    for (int c = 0; c < 4; ++c) row >> m(r, c);
+  }
+  return m;
 }
 
 TEST(MlndtAlign, BundledPairMatchesTheReferenceResultAndReportsTimeAndMemory) {
@@ -51,31 +62,121 @@ TEST(MlndtAlign, BundledPairMatchesTheReferenceResultAndReportsTimeAndMemory) {
   EXPECT_NE(run.out.find("map memory:"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("peak memory:"), std::string::npos) << run.out;
 
-  const std::string json = testing::ReadWholeFile(json_path);
-  ASSERT_FALSE(json.empty());
-  EXPECT_NE(json.find("\"converged\": true"), std::string::npos) << json;
+  const nlohmann::json json = ReadJson(json_path);
+  ASSERT_TRUE(json.is_object()) << testing::ReadWholeFile(json_path);
+  EXPECT_EQ(json["schema_version"], 1);
+  EXPECT_EQ(json["tool"], "mlndt_align");
+  EXPECT_EQ(json["accepted"], true);
+  const nlohmann::json& registration = json["registration"];
+  EXPECT_EQ(registration["termination"], "CONVERGENCE");
   // fast_gicp's tolerance on this pair (PEERS.md 1a); we measured 1.55 cm.
-  EXPECT_LT(JsonNumber(json, "translation_error_m"), 0.05);
-  EXPECT_LT(JsonNumber(json, "rotation_error_deg"), 1.0);
+  EXPECT_LT(json["expected"]["translation_error_m"].get<double>(), 0.05);
+  EXPECT_LT(json["expected"]["rotation_error_deg"].get<double>(), 1.0);
 
-  const double total = JsonNumber(json, "total");
-  const double map = JsonNumber(json, "map");
-  const double sampling = JsonNumber(json, "sampling");
-  const double solve = JsonNumber(json, "solve");
-  EXPECT_GT(map, 0.0);
-  EXPECT_GT(sampling, 0.0);
-  EXPECT_GT(solve, 0.0);
-  EXPECT_GE(total, map + sampling + solve);
+  const nlohmann::json& time = registration["time_ms"];
+  EXPECT_GT(time["map"].get<double>(), 0.0);
+  EXPECT_GT(time["sampling"].get<double>(), 0.0);
+  EXPECT_GT(time["solve"].get<double>(), 0.0);
+  EXPECT_GE(time["total"].get<double>(),
+            time["map"].get<double>() + time["sampling"].get<double>() +
+                time["solve"].get<double>());
 
   // Every occupied cell holds at least its NdtCell-sized record.
-  const double cells = JsonNumber(json, "map_occupied_cells");
-  const double bytes = JsonNumber(json, "map_bytes");
+  const double cells = registration["map"]["occupied_cells"].get<double>();
+  const double bytes = registration["map"]["memory_bytes"].get<double>();
   EXPECT_GT(cells, 100.0);
   EXPECT_GE(bytes, cells * 200.0);
   EXPECT_LT(bytes, cells * 2000.0);
   // Two ~70k-point clouds are loaded: at least 2 x 69k x 24 bytes.
-  EXPECT_GT(JsonNumber(json, "peak_resident_bytes"),
+  EXPECT_GT(json["memory"]["peak_resident_bytes"].get<double>(),
             2 * 69000 * sizeof(Eigen::Vector3d));
+}
+
+TEST(MlndtAlign, PositionalScansPrintTheResultAs4x4OnStdout) {
+  const ToolRun run =
+      RunAlign(Quote(testing::BundledDataPath("koide3/251370668.pcd")) + " " +
+               Quote(testing::BundledDataPath("koide3/251371071.pcd")));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Eigen::Matrix4d m = Last4x4(run);
+  // data/koide3/T_target_source.txt, the pair's reference result.
+  EXPECT_NEAR(m(0, 3), 0.488882, 0.05) << run.out;
+  EXPECT_NEAR(m(1, 3), 0.121214, 0.05) << run.out;
+  EXPECT_NEAR(m(2, 3), -0.0253342, 0.05) << run.out;
+  EXPECT_NEAR(m(0, 0), 0.999925, 1e-3) << run.out;
+  EXPECT_EQ(m.row(3), Eigen::RowVector4d(0, 0, 0, 1)) << run.out;
+}
+
+// "--flag value" (gflags' other form) with a value that starts with '-'.
+TEST(MlndtAlign, FlagValueAfterASpaceIsNotTakenForAFlag) {
+  const ToolRun run = RunAlign("--initial_guess -0.1,0,0,0,0,0 --trace");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("iter  1"), std::string::npos) << run.out;
+}
+
+TEST(MlndtAlign, HelpShowsOwnAndSharedFlagsWithDefaultsAndVersionPrints) {
+  const ToolRun help = RunAlign("--help");
+  EXPECT_EQ(help.exit_code, 0) << help.err;
+  EXPECT_EQ(help.out.find("mlndt_align: "), 0u) << help.out;
+  EXPECT_NE(help.out.find("Flags of mlndt_align:"), std::string::npos);
+  EXPECT_NE(help.out.find("--initial_guess=\"\""), std::string::npos);
+  EXPECT_NE(help.out.find("--backend=\"ceres\""), std::string::npos);
+  EXPECT_NE(help.out.find("--start_layer=1"), std::string::npos);
+  EXPECT_NE(help.out.find("Exit codes: 0"), std::string::npos);
+  // glog's and gflags' own flags stay behind --helpfull.
+  EXPECT_EQ(help.out.find("--logtostderr"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("--flagfile"), std::string::npos) << help.out;
+  EXPECT_EQ(RunAlign("-h").out, help.out);
+
+  const ToolRun version = RunAlign("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out.rfind("mlndt ", 0), 0u) << version.out;
+  EXPECT_EQ(version.lines.size(), 1u) << version.out;
+}
+
+// Each is refused before any work, with exit 2 and a message naming the
+// flag.
+TEST(MlndtAlign, MisconfigurationsAreRefusedNamingTheFlag) {
+  const std::string dir = TestDir();
+  { std::ofstream file(dir + "/file"); }
+  struct Case {
+    std::string args;
+    std::string message;
+  } cases[] = {
+      {"--num_layers=3", "--num_layers is ignored while --finest_cell_size"},
+      {"--method=ndt --backend=newton",
+       "--backend does not apply to --method=ndt"},
+      {"--method=ndt --start_layer=2",
+       "--start_layer does not apply to --method=ndt"},
+      {"--start_layer=9", "--start_layer=9 is out of range"},
+      {"--start_layer=-9", "--start_layer=-9 is out of range"},
+      {"--finest_cell_size=0 --num_layers=3 --start_layer=4",
+       "--start_layer=4 is out of range"},
+      {"--output_json=" + Quote(dir + "/file/result.json"), "--output_json"},
+      {"--output_cloud=" + Quote(dir + "/missing/out.pcd"), "--output_cloud"},
+      {"--bogus_flag=1", "unknown flag --bogus_flag"},
+      {"--threads=many", "--threads=many: not a valid int32"},
+  };
+  for (const Case& c : cases) {
+    const ToolRun run = RunAlign(c.args);
+    EXPECT_EQ(run.exit_code, 2) << c.args << "\nstderr: " << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos)
+        << c.args << "\nstderr: " << run.err;
+    EXPECT_EQ(run.out.find("reference_from_input"), std::string::npos)
+        << c.args << ": the registration ran";
+  }
+}
+
+// A FAILED registration exits with 1 and writes no --output_cloud.
+TEST(MlndtAlign, FailedRegistrationWritesNoOutputCloud) {
+  const std::string cloud = TestDir() + "/moved.pcd";
+  const ToolRun run =
+      RunAlign("--max_range=0.5 --output_cloud=" + Quote(cloud));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("FAILURE"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--output_cloud=" + cloud + " not written"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(std::filesystem::exists(cloud));
 }
 
 TEST(MlndtAlign, BadInputFailsWithAMessage) {
@@ -99,11 +200,14 @@ TEST(MlndtAlign, BadInputFailsWithAMessage) {
        "bad.pcd"},
       {"--backend=simplex", "simplex"},
       {"--threads=0", "threads"},
-      {"stray_argument", "unexpected argument"},
+      {"only_one_scan", "give both the reference and the input (REF IN)"},
+      {"a b stray_argument", "unexpected argument 'stray_argument'"},
+      {Quote(reference) + " --input=" + Quote(reference),
+       "as REF IN or as --reference/--input, not both"},
   };
   for (const Case& c : cases) {
     const ToolRun run = RunAlign(c.args);
-    EXPECT_NE(run.exit_code, 0) << c.args;
+    EXPECT_EQ(run.exit_code, 2) << c.args;
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
   }

@@ -143,7 +143,7 @@ TEST(MlndtBench, CurrentAndPreviousDefaultsOnTheKoide3Pair) {
 TEST(MlndtBench, UnknownBackendFails) {
   const ToolRun run =
       RunBench("--repetitions=1 --pairs=koide3 --backends=newton,foo");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(run.lines.empty());
   EXPECT_NE(run.err.find("--backends"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("foo"), std::string::npos) << run.err;
@@ -168,7 +168,7 @@ TEST(MlndtBench, RejectsBadFlagValues) {
         "unexpected_argument"}) {
     SCOPED_TRACE(flags);
     const ToolRun run = RunBench(flags);
-    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(run.exit_code, 2);
     EXPECT_TRUE(run.lines.empty());
     EXPECT_NE(run.err.find("mlndt_bench: "), std::string::npos) << run.err;
   }

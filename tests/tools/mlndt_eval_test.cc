@@ -221,6 +221,8 @@ TEST(MlndtEval, ReproducesAteAndRpeOfASequenceTrajectory) {
                 std::string::npos)
           << run.out;
       const Json json = ReadJson(json_path);
+      EXPECT_EQ(json["schema_version"], 1);
+      EXPECT_EQ(json["tool"], "mlndt_eval");
       const Json& e = json["estimates"][0];
       EXPECT_EQ(e["pairs"].get<int>(), 8);
       EXPECT_EQ(e["association"].get<std::string>(), "index");
@@ -370,7 +372,7 @@ TEST(MlndtEval, RefusesBadFlags) {
   };
   for (const Case& c : cases) {
     const ToolRun run = testing::RunTool("mlndt_eval", c.args);
-    EXPECT_EQ(run.exit_code, 1) << c.args;
+    EXPECT_EQ(run.exit_code, 2) << c.args;
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
   }

@@ -38,16 +38,17 @@ ToolRun RunInfo(const std::string& args) {
   return testing::RunTool("mlndt_info", args);
 }
 
-// The number after `"key": ` at or after `from` in `json`; NaN when absent.
+// The number after `"key":` at or after `from` in `json`; NaN when absent.
 // *end (may be null) receives the position after the number.
 double NumberAfter(const std::string& json,
                    const std::string& key,
                    size_t from = 0,
                    size_t* end = nullptr) {
-  const std::string pattern = "\"" + key + "\": ";
+  const std::string pattern = "\"" + key + "\":";
   const size_t at = json.find(pattern, from);
   if (at == std::string::npos) return std::nan("");
   const char* begin = json.c_str() + at + pattern.size();
+  while (*begin == ' ') ++begin;
   char* stop = nullptr;
   const double value = std::strtod(begin, &stop);
   if (stop == begin) return std::nan("");
@@ -55,16 +56,18 @@ double NumberAfter(const std::string& json,
   return value;
 }
 
-// The numbers of the array after `"key": [`; empty when absent.
+// The numbers of the array after `"key":` (spaces allowed); empty when
+// absent.
 std::vector<double> ArrayAfter(const std::string& json,
                                const std::string& key,
                                size_t from = 0) {
-  const std::string pattern = "\"" + key + "\": [";
+  const std::string pattern = "\"" + key + "\":";
   const size_t at = json.find(pattern, from);
   if (at == std::string::npos) return {};
-  const size_t close = json.find(']', at);
-  std::istringstream items(
-      json.substr(at + pattern.size(), close - at - pattern.size()));
+  const size_t open = json.find_first_not_of(' ', at + pattern.size());
+  if (open == std::string::npos || json[open] != '[') return {};
+  const size_t close = json.find(']', open);
+  std::istringstream items(json.substr(open + 1, close - open - 1));
   std::vector<double> values;
   std::string item;
   while (std::getline(items, item, ','))
@@ -72,12 +75,14 @@ std::vector<double> ArrayAfter(const std::string& json,
   return values;
 }
 
-// The string after `"key": "` (no escapes expected in these tests).
+// The string after `"key":` (no escapes expected in these tests).
 std::string StringAfter(const std::string& json, const std::string& key) {
-  const std::string pattern = "\"" + key + "\": \"";
+  const std::string pattern = "\"" + key + "\":";
   const size_t at = json.find(pattern);
   if (at == std::string::npos) return "";
-  const size_t begin = at + pattern.size();
+  const size_t quote = json.find_first_not_of(' ', at + pattern.size());
+  if (quote == std::string::npos || json[quote] != '"') return "";
+  const size_t begin = quote + 1;
   return json.substr(begin, json.find('"', begin) - begin);
 }
 
@@ -91,9 +96,9 @@ struct Layer {
 
 std::vector<Layer> ParseLayers(const std::string& json) {
   std::vector<Layer> layers;
-  size_t at = json.find("\"layers\": [");
+  size_t at = json.find("\"layers\":[");
   if (at == std::string::npos) return layers;
-  while ((at = json.find("{\"layer\": ", at)) != std::string::npos) {
+  while ((at = json.find("{\"layer\":", at)) != std::string::npos) {
     Layer layer;
     layer.layer = static_cast<int>(NumberAfter(json, "layer", at));
     layer.cell_size_m = NumberAfter(json, "cell_size_m", at);
@@ -116,8 +121,8 @@ void ExpectCloudLine(const std::string& line,
   EXPECT_EQ(StringAfter(line, "format"), format);
   EXPECT_EQ(NumberAfter(line, "points"), points);
   EXPECT_EQ(NumberAfter(line, "dropped_non_finite"), 0.0);
-  const std::vector<double> min = ArrayAfter(line, "min");
-  const std::vector<double> max = ArrayAfter(line, "max");
+  const std::vector<double> min = ArrayAfter(line, "min_m");
+  const std::vector<double> max = ArrayAfter(line, "max_m");
   ASSERT_EQ(min.size(), 3u);
   ASSERT_EQ(max.size(), 3u);
   for (int axis = 0; axis < 3; ++axis)
@@ -200,7 +205,7 @@ TEST(MlndtInfo, MissingFileFailsButOtherFilesAreDescribed) {
 
 TEST(MlndtInfo, NoArgumentsPrintsUsage) {
   const ToolRun run = RunInfo("");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(run.lines.empty());
   EXPECT_NE(run.err.find("mlndt_info"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("FILE"), std::string::npos) << run.err;
@@ -248,8 +253,9 @@ TEST(MlndtInfo, CountsDroppedNonFinitePoints) {
   EXPECT_EQ(NumberAfter(run.lines[0], "points"), 2.0) << run.lines[0];
   EXPECT_EQ(NumberAfter(run.lines[0], "dropped_non_finite"), 1.0)
       << run.lines[0];
-  EXPECT_EQ(ArrayAfter(run.lines[0], "min"), (std::vector<double>{-1, -2, -3}));
-  EXPECT_EQ(ArrayAfter(run.lines[0], "max"), (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(ArrayAfter(run.lines[0], "min_m"),
+            (std::vector<double>{-1, -2, -3}));
+  EXPECT_EQ(ArrayAfter(run.lines[0], "max_m"), (std::vector<double>{1, 2, 3}));
 }
 
 const char kEmptyPcd[] =
@@ -263,7 +269,7 @@ TEST(MlndtInfo, EmptyCloudIsDescribed) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
   EXPECT_EQ(NumberAfter(run.lines[0], "points"), 0.0) << run.lines[0];
-  EXPECT_NE(run.lines[0].find("\"min\": null, \"max\": null"),
+  EXPECT_NE(run.lines[0].find("\"min_m\":null,\"max_m\":null"),
             std::string::npos)
       << run.lines[0];
 }
@@ -288,7 +294,7 @@ TEST(MlndtInfo, RejectsBadFlagCombinations) {
         "--layers --num_layers=0"}) {
     SCOPED_TRACE(flags);
     const ToolRun run = RunInfo(flags + " " + reference);
-    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(run.exit_code, 2);
     EXPECT_TRUE(run.lines.empty());
     EXPECT_FALSE(run.err.empty());
   }

@@ -178,8 +178,13 @@ TEST(MlndtLocalize, KittiScansFromTenMetresAndFortyFiveDegreesOff) {
   EXPECT_EQ(summary["scans"].get<int>(), 8);
   EXPECT_EQ(summary["terminations"]["CONVERGENCE"].get<int>(), 8);
   EXPECT_EQ(summary["motion_model"].get<std::string>(), "CONSTANT_VELOCITY");
-  EXPECT_EQ(summary["first_guess"][5].get<double>(), 45.0);
-  EXPECT_GT(summary["registration_ms"]["mean"].get<double>(), 0.0);
+  EXPECT_EQ(summary["schema_version"], 1);
+  EXPECT_EQ(summary["tool"], "mlndt_localize");
+  EXPECT_EQ(summary["first_guess"]["rotation_deg"][2].get<double>(), 45.0);
+  EXPECT_GT(summary["time_ms_stats"]["registration"]["mean"].get<double>(),
+            0.0);
+  EXPECT_GT(summary["time_ms"]["total"].get<double>(),
+            summary["time_ms"]["map_load"].get<double>());
   EXPECT_EQ(fs::exists(out + "/trajectory_xy.png"), plots);
 }
 
@@ -243,7 +248,7 @@ TEST(MlndtLocalize, MissingGnuplotFailsAfterWritingTheRest) {
   EXPECT_FALSE(fs::exists(out + "/trajectory_xy.png"));
 }
 
-// Every misconfiguration: exit code 1, a message naming the flag, and no
+// Every misconfiguration: exit code 2, a message naming the flag, and no
 // work (no output folder).
 TEST(MlndtLocalize, RefusesBadFlags) {
   const std::string dir = TestDir();
@@ -266,7 +271,12 @@ TEST(MlndtLocalize, RefusesBadFlags) {
       {"--map=/nonexistent.mlndt --scans=" + Quote(KittiPcd()) +
            " --output_dir=" + Quote(out),
        "--map=/nonexistent.mlndt: no such file"},
+      {"--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
+           " --output_dir=" + Quote(kitti.map + "/out"),
+       "--output_dir=" + kitti.map + "/out: cannot create the folder"},
       {base + " --max_scans=-1", "--max_scans must be >= 0"},
+      {base + " --start_layer=9",
+       "--start_layer=9 is out of range: the map has"},
       {base + " --plot_max_cells=-1", "--plot_max_cells must be >= 0"},
       {base + " --initial_guess=1,2", "--initial_guess=1,2: expected 6"},
       {base + " --initial_guess=0,0,0,0,0,0 --initial_matrix=1",
@@ -274,7 +284,7 @@ TEST(MlndtLocalize, RefusesBadFlags) {
       {base +
            " --initial_guess=0,0,0,0,0,0 --initial_poses=" + Quote(kitti.poses),
        "give one of"},
-      {base + " --initial_matrix=1,2,3", "--initial_matrix: expected 12"},
+      {base + " --initial_matrix=1,2,3", "--initial_matrix needs 12"},
       {base + " --initial_matrix=2,0,0,0,0,1,0,0,0,0,1,0",
        "--initial_matrix: the 3x3 part is not a rotation"},
       {base + " --initial_poses=/nonexistent.txt",
@@ -282,8 +292,11 @@ TEST(MlndtLocalize, RefusesBadFlags) {
       {base + " --initial_poses=" + Quote(kitti.poses) +
            " --initial_poses_format=csv",
        "--initial_poses_format=csv: expected auto, kitti or tum"},
-      {base + " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")),
-       "--calib converts --initial_poses"},
+      {base + " --poses_are_camera --calib=" +
+           Quote(testing::BundledDataPath("kitti/calib.txt")),
+       "--calib converts pose files; give it with --initial_poses"},
+      {base + " --initial_poses=" + Quote(kitti.poses) + " --poses_are_camera",
+       "--poses_are_camera needs --calib=calib.txt"},
       {base + " --motion_model=kalman",
        "--motion_model=kalman: expected constant_velocity or constant_pose"},
       {base + " --finest_cell_size=1",
@@ -303,7 +316,7 @@ TEST(MlndtLocalize, RefusesBadFlags) {
   };
   for (const Case& c : cases) {
     const ToolRun run = testing::RunTool("mlndt_localize", c.args);
-    EXPECT_EQ(run.exit_code, 1) << c.args;
+    EXPECT_EQ(run.exit_code, 2) << c.args;
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;

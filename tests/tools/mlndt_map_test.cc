@@ -162,6 +162,10 @@ TEST(MlndtMap, BuildsTheKittiMapFromChainedPoses) {
   const PointCloud merged = MergeHere(poses, 3.0, 80.0, &read, &cropped);
   const PointCloud filtered = VoxelDownsample(merged, 0.2);
   const Json json = ReadJson(dir + "/map.json");
+  EXPECT_EQ(json["schema_version"], 1);
+  EXPECT_EQ(json["tool"], "mlndt_map");
+  EXPECT_GT(json["time_ms"]["total"].get<double>(),
+            json["time_ms"]["build"].get<double>());
   EXPECT_EQ(json["scans"].get<size_t>(), 8u);
   EXPECT_EQ(json["input_points"].get<size_t>(), read);
   EXPECT_EQ(json["cropped_points"].get<size_t>(), cropped);
@@ -180,7 +184,8 @@ TEST(MlndtMap, BuildsTheKittiMapFromChainedPoses) {
   EXPECT_EQ(json["map_bytes"].get<size_t>(), here.MemoryBytes());
 }
 
-// The same poses as a TUM file, and as KITTI camera poses with --calib,
+// The same poses as a TUM file, and as KITTI camera poses with
+// --poses_are_camera --calib,
 // give the same map; --scan_list gives the same map as --scans. (The
 // chained rotations are orthonormal only to ~5e-6, as the 9-digit pairs
 // are; TUM's quaternions are exact rotations, so points 80 m out move by
@@ -230,8 +235,9 @@ TEST(MlndtMap, TumPosesCameraPosesAndScanLists) {
   const ToolRun camera =
       RunMap("--scans=" + Quote(KittiPcd()) + " --poses=" +
              Quote(testing::BundledDataPath("kitti/poses_cam0.txt")) +
-             " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")) +
-             common + "--output=" + Quote(dir + "/camera.mlndt"));
+             " --poses_are_camera --calib=" +
+             Quote(testing::BundledDataPath("kitti/calib.txt")) + common +
+             "--output=" + Quote(dir + "/camera.mlndt"));
   ASSERT_EQ(velo.exit_code, 0) << velo.err;
   ASSERT_EQ(camera.exit_code, 0) << camera.err;
   ExpectSameMap(
@@ -344,6 +350,13 @@ TEST(MlndtMap, RefusesBadFlags) {
       {"--cloud=x.pcd --min_range=2" + to,
        "--min_range does not apply to --cloud"},
       {"--cloud=x.pcd --calib=c.txt" + to, "--calib does not apply to --cloud"},
+      {"--cloud=x.pcd --poses_are_camera" + to,
+       "--poses_are_camera does not apply to --cloud"},
+      {scans + " --poses_are_camera" + to,
+       "--poses_are_camera needs --calib=calib.txt"},
+      {scans + " --calib=" +
+           Quote(testing::BundledDataPath("kitti/calib.txt")) + to,
+       "--calib converts camera poses: give --poses_are_camera with it"},
       {scans + " --min_range=-1" + to, "--min_range: invalid option"},
       {scans + " --min_range=5 --max_range=4" + to,
        "--max_range: invalid option"},
@@ -385,7 +398,7 @@ TEST(MlndtMap, RefusesBadFlags) {
   };
   for (const Case& c : cases) {
     const ToolRun run = RunMap(c.args);
-    EXPECT_EQ(run.exit_code, 1) << c.args;
+    EXPECT_EQ(run.exit_code, 2) << c.args;
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
     EXPECT_FALSE(fs::exists(out)) << c.args;
@@ -399,7 +412,7 @@ TEST(MlndtMap, RefusesBadFlags) {
   }
   const ToolRun few = RunMap("--scans=" + Quote(KittiPcd()) +
                              " --poses=" + Quote(dir + "/three.txt") + to);
-  EXPECT_EQ(few.exit_code, 1);
+  EXPECT_EQ(few.exit_code, 2);
   EXPECT_NE(few.err.find("has 3 poses for 8 scans"), std::string::npos)
       << few.err;
 }

@@ -84,6 +84,8 @@ TEST(MlndtPosegraph, JointIsNotWorseThanChainedOnKittiFrames0To7) {
   // The same JSON on stdout and in the file, with the four metrics.
   const std::string json = ReadFile(json_path);
   EXPECT_EQ(json, run.out);
+  EXPECT_EQ(NumberAfter(json, "schema_version"), 1.0) << json;
+  EXPECT_GT(NumberAfter(json, "total"), NumberAfter(json, "joint")) << json;
   for (const std::string key :
        {"ate_chained_m", "ate_joint_m", "rpe_chained", "rpe_joint"}) {
     EXPECT_NE(json.find("\"" + key + "\": "), std::string::npos)
@@ -131,7 +133,7 @@ TEST(MlndtPosegraph, WithoutGroundTruthThereAreNoMetrics) {
   EXPECT_EQ(run.out.find("rpe_"), std::string::npos) << run.out;
 }
 
-TEST(MlndtPosegraph, BadFlagsExitWithOne) {
+TEST(MlndtPosegraph, BadFlagsExitWithTwo) {
   const std::string dir = TempDir("bad_flags");
   const std::string scans =
       " --scans=" + Quote(testing::BundledDataPath("kitti/pcd"));
@@ -155,15 +157,18 @@ TEST(MlndtPosegraph, BadFlagsExitWithOne) {
            scans + " --backend=nonsense",        // Registration flag.
            scans + " --method=ndt",              // Not ML-NDT.
            scans + " --loss_scale=-1",           // Invalid option.
+           scans + " --poses_are_camera",        // Without --calib.
            scans + " --gt_poses=" +
                Quote(dir + "/missing.txt"),           // Unreadable file.
            scans + " --gt_poses=" + Quote(short_gt),  // Too few poses.
            " --scans=" + Quote(dir + "/missing"),     // No folder.
            " --scans=" + Quote(one_scan),             // Fewer than 2 scans.
+           scans + " --output_dir=" +
+               Quote(short_gt + "/out"),  // A file as the folder's parent.
        }) {
     SCOPED_TRACE(args);
     const ToolRun run = RunPosegraph(args, dir);
-    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(run.exit_code, 2);
     EXPECT_NE(run.err.find("mlndt_posegraph"), std::string::npos) << run.err;
     EXPECT_TRUE(run.out.empty()) << run.out;
   }

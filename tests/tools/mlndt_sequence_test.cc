@@ -308,10 +308,11 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
         summary.Number("errors." + name + ".max"), r.max, name + " max");
   }
   const Recomputed t = Recompute(time);
-  ExpectClose(summary.Number("time_ms.mean"), t.mean, "time mean");
-  ExpectClose(summary.Number("time_ms.median"), t.median, "time median");
-  ExpectClose(summary.Number("time_ms.p95"), t.p95, "time p95");
-  ExpectClose(summary.Number("time_ms.max"), t.max, "time max");
+  ExpectClose(summary.Number("time_ms_stats.pair.mean"), t.mean, "time mean");
+  ExpectClose(
+      summary.Number("time_ms_stats.pair.median"), t.median, "time median");
+  ExpectClose(summary.Number("time_ms_stats.pair.p95"), t.p95, "time p95");
+  ExpectClose(summary.Number("time_ms_stats.pair.max"), t.max, "time max");
   ExpectClose(summary.Number("mean_iterations"),
               Recompute(iterations).mean,
               "iterations");
@@ -424,8 +425,8 @@ TEST(MlndtSequence, CameraPosesWithCalibMatchVelodynePoses) {
   const ToolRun run = RunSequence(
       "--scans=" + Quote(data) +
       " --gt_poses=" + Quote(data + "/poses_cam0.txt") +
-      " --calib=" + Quote(data + "/calib.txt") + " --output_dir=" + Quote(dir) +
-      " --backend=lm --plots=false");
+      " --poses_are_camera --calib=" + Quote(data + "/calib.txt") +
+      " --output_dir=" + Quote(dir) + " --backend=lm --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const FlatJson summary(ReadFile(dir + "/summary.json"));
   EXPECT_EQ(summary.Number("scans"), 3.0);
@@ -478,12 +479,31 @@ TEST(MlndtSequence, AdaptiveStartLayerFollowsTheRunningFailRate) {
   EXPECT_EQ(summary.String("adaptive_start_layer"), "true");
 }
 
-TEST(MlndtSequence, BadFlagsExitOne) {
+// An --output_dir that cannot be created is refused before any pair is
+// registered.
+TEST(MlndtSequence, UnwritableOutputFolderIsRefusedBeforeAnyWork) {
+  const std::string dir = TestDir();
+  { std::ofstream file(dir + "/file"); }
+  const std::string out = dir + "/file/out";
+  const ToolRun run = RunSequence(KittiArgs(out));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--output_dir=" + out + ": cannot create the folder"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(run.err.find("pair 0->1"), std::string::npos) << run.err;
+}
+
+TEST(MlndtSequence, BadFlagsExitTwo) {
   const std::string dir = TestDir();
   const std::string kitti = KittiArgs(dir);
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--output_dir=" + Quote(dir), "Usage"},
       {kitti + " --step=0", "--step"},
+      {kitti + " --finest_cell_size=0 --num_layers=3 --start_layer=5",
+       "--start_layer=5 is out of range"},
+      {kitti + " --poses_are_camera", "--poses_are_camera needs --calib"},
+      {kitti + " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")),
+       "give --poses_are_camera with it"},
       {kitti + " --step=8", "too few"},
       {kitti + " --init=bogus", "--init=bogus"},
       {kitti + " --init=gt_fraction:x", "gt_fraction"},
@@ -504,7 +524,7 @@ TEST(MlndtSequence, BadFlagsExitOne) {
   };
   for (const auto& [args, message] : cases) {
     const ToolRun run = RunSequence(args);
-    EXPECT_EQ(run.exit_code, 1) << args << "\n" << run.err;
+    EXPECT_EQ(run.exit_code, 2) << args << "\n" << run.err;
     EXPECT_NE(run.err.find(message), std::string::npos) << args << "\n"
                                                         << run.err;
   }

@@ -120,6 +120,9 @@ TEST(MlndtSuite, BundledKittiTablesAgreeWithRunsCsv) {
   ASSERT_EQ(wrong_row.size(), header.size());
   const Json summary =
       Json::parse(testing::ReadWholeFile(dir + "/summary.json"));
+  EXPECT_EQ(summary["schema_version"], 1);
+  EXPECT_EQ(summary["tool"], "mlndt_suite");
+  EXPECT_GT(summary["time_ms"]["total"].get<double>(), 0.0);
   for (size_t c = 1; c + 1 < header.size(); ++c) {
     EXPECT_EQ(Number(right_row[c]), right_count[header[c]]) << header[c];
     EXPECT_EQ(Number(wrong_row[c]), wrong_count[header[c]]) << header[c];
@@ -218,7 +221,7 @@ TEST(MlndtSuite, FailOnSetsTheExitCode) {
       ":0.1:1 --starts=identity --retry_yaw_seeds=";
   ToolRun run =
       testing::RunTool("mlndt_suite", room + " --fail_on=success:0.5");
-  EXPECT_EQ(run.exit_code, 2) << run.err << run.out;
+  EXPECT_EQ(run.exit_code, 1) << run.err << run.out;
   EXPECT_NE(run.out.find("target missed: success 0 < 0.5"), std::string::npos)
       << run.out;
   run = testing::RunTool(
@@ -321,7 +324,7 @@ TEST(MlndtSuite, RefusesBadInputBeforeAnyWork) {
   };
   for (const auto& [args, expected] : cases) {
     const ToolRun run = testing::RunTool("mlndt_suite", args);
-    EXPECT_EQ(run.exit_code, 1) << args;
+    EXPECT_EQ(run.exit_code, 2) << args;
     EXPECT_NE(run.err.find(expected), std::string::npos)
         << args << "\nstderr: " << run.err;
     EXPECT_TRUE(run.out.empty()) << args << "\n" << run.out;

@@ -66,7 +66,7 @@ TEST(MlndtAlign, TrailingCommaInInitialMatrixIsAnError) {
   const testing::ToolRun run = testing::RunTool(
       "mlndt_align",
       AlignPair() + " --initial_matrix=1,0,0,0,0,1,0,0,0,0,1,0,");
-  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("--initial_matrix needs 12"), std::string::npos)
       << run.err;
 }
@@ -97,7 +97,7 @@ TEST(MlndtAlign, RefusesASymlinkAsOutputJson) {
   const testing::ToolRun run = testing::RunTool(
       "mlndt_align",
       AlignPair() + " --output_json=" + testing::ShellQuote(link));
-  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("symbolic link"), std::string::npos) << run.err;
   EXPECT_EQ(testing::ReadWholeFile(victim), "victim");
   EXPECT_TRUE(std::filesystem::is_symlink(link));

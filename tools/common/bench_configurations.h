@@ -19,7 +19,7 @@ namespace tools {
 enum class BenchDefaults {
   CURRENT,   // RegistrationOptions().
   PREVIOUS,  // The defaults before 1.2 m finest cells, FINEST_CELLS
-             // weighting, Cauchy scale 2 and a 1e-3 step tolerance: 2 m,
+             // weighting, Cauchy scale 1.5 and a 1e-3 step tolerance: 2 m,
              // POINTS, scale 3, 1e-4.
 };
 

@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "mlndt/common/pose.h"
-#include "tools/common/json_writer.h"
 
 namespace mlndt {
 namespace tools {
@@ -71,21 +70,24 @@ std::vector<double> InDegrees(const Vector6d& v) {
 
 }  // namespace
 
-std::string ConsistencyJson(const Consistency& c) {
-  return JsonObject()
-      .AddNumber("runs", c.runs)
-      .AddNumber("nees_about_mean", c.nees_mean)
-      .AddNumber("nees_about_mean_expected", c.nees_mean_expected)
-      .AddNumber("k_spread", c.k_spread())
-      .AddNumber("nees_about_reference", c.nees_reference)
-      .AddNumber("k_reference", c.k_reference())
-      .AddNumber("sigma2", c.sigma2)
-      .AddNumber("k_spread_sigma2", c.k_spread_sigma2())
-      .AddNumber("k_reference_sigma2", c.k_reference_sigma2())
-      .Add("spread_std_m_deg", JsonArray(InDegrees(c.spread_std)))
-      .Add("predicted_std_m_deg", JsonArray(InDegrees(c.predicted_std)))
-      .Add("bias_m_deg", JsonArray(InDegrees(c.bias)))
-      .str();
+Json ConsistencyJson(const Consistency& c) {
+  const auto numbers = [](const std::vector<double>& values) {
+    Json array = Json::array();
+    for (const double v : values) array.push_back(Number(v));
+    return array;
+  };
+  return {{"runs", c.runs},
+          {"nees_about_mean", Number(c.nees_mean)},
+          {"nees_about_mean_expected", Number(c.nees_mean_expected)},
+          {"k_spread", Number(c.k_spread())},
+          {"nees_about_reference", Number(c.nees_reference)},
+          {"k_reference", Number(c.k_reference())},
+          {"sigma2", Number(c.sigma2)},
+          {"k_spread_sigma2", Number(c.k_spread_sigma2())},
+          {"k_reference_sigma2", Number(c.k_reference_sigma2())},
+          {"spread_std_m_deg", numbers(InDegrees(c.spread_std))},
+          {"predicted_std_m_deg", numbers(InDegrees(c.predicted_std))},
+          {"bias_m_deg", numbers(InDegrees(c.bias))}};
 }
 
 void PrintRow(const std::string& label, const Consistency& c) {

@@ -10,6 +10,7 @@
 
 #include "mlndt/common/types.h"
 #include "mlndt/eval/nees.h"
+#include "tools/common/json_output.h"
 
 namespace mlndt {
 namespace tools {
@@ -66,7 +67,7 @@ void Accumulate(const PairRuns& pair, Consistency* sum);
 Consistency Finish(Consistency sum);
 
 // The consistency as JSON, standard deviations in m and deg.
-std::string ConsistencyJson(const Consistency& c);
+Json ConsistencyJson(const Consistency& c);
 
 // Three lines of the stdout report, headed by `label`.
 void PrintRow(const std::string& label, const Consistency& c);

@@ -7,6 +7,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/eval/dataset.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/matrix_text.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {
@@ -115,22 +116,8 @@ bool ParseInitialPose(const std::string& guess,
     return true;
   }
   if (!matrix.empty()) {
-    if (!ParseNumberList(matrix, &v) || v.size() != 12) {
-      *error =
-          "--initial_matrix: expected 12 comma-separated numbers "
-          "(row-major 3x4)";
-      return false;
-    }
-    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-    for (int i = 0; i < 12; ++i) m(i / 4, i % 4) = v[static_cast<size_t>(i)];
-    const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
-    if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-3 ||
-        r.determinant() < 0) {
-      *error = "--initial_matrix: the 3x3 part is not a rotation";
-      return false;
-    }
-    pose->matrix() = m;
-    pose->linear() = Eigen::Quaterniond(r).normalized().toRotationMatrix();
+    if (!ParseNumberList(matrix, &v)) v.clear();
+    return RowMajorToRigidTransform(v, "--initial_matrix", pose, error);
   }
   return true;
 }

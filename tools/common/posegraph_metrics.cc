@@ -32,11 +32,9 @@ bool Evaluate(const std::vector<Isometry3d>& estimate,
   return true;
 }
 
-std::string RpeJson(const Metrics& metrics) {
-  return JsonObject()
-      .AddNumber("translation_m", metrics.rpe_translation_m)
-      .AddNumber("rotation_deg", metrics.rpe_rotation_deg)
-      .str();
+Json RpeJson(const Metrics& metrics) {
+  return {{"translation_m", Number(metrics.rpe_translation_m)},
+          {"rotation_deg", Number(metrics.rpe_rotation_deg)}};
 }
 
 }  // namespace
@@ -44,18 +42,18 @@ std::string RpeJson(const Metrics& metrics) {
 bool AddTrajectoryMetrics(const std::vector<Isometry3d>& chained,
                           const std::vector<Isometry3d>& joint,
                           const std::vector<Isometry3d>& truth,
-                          JsonObject* json,
+                          Json* json,
                           std::string* error) {
   Metrics chained_metrics, joint_metrics;
   if (!Evaluate(chained, truth, &chained_metrics, error) ||
       !Evaluate(joint, truth, &joint_metrics, error)) {
     return false;
   }
-  json->AddString("ate_alignment", "first_pose")
-      .AddNumber("ate_chained_m", chained_metrics.ate_m)
-      .AddNumber("ate_joint_m", joint_metrics.ate_m)
-      .Add("rpe_chained", RpeJson(chained_metrics))
-      .Add("rpe_joint", RpeJson(joint_metrics));
+  (*json)["ate_alignment"] = "first_pose";
+  (*json)["ate_chained_m"] = Number(chained_metrics.ate_m);
+  (*json)["ate_joint_m"] = Number(joint_metrics.ate_m);
+  (*json)["rpe_chained"] = RpeJson(chained_metrics);
+  (*json)["rpe_joint"] = RpeJson(joint_metrics);
   return true;
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "mlndt/common/types.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 
 namespace mlndt {
 namespace tools {
@@ -21,7 +21,7 @@ namespace tools {
 bool AddTrajectoryMetrics(const std::vector<Isometry3d>& chained,
                           const std::vector<Isometry3d>& joint,
                           const std::vector<Isometry3d>& truth,
-                          JsonObject* json,
+                          Json* json,
                           std::string* error);
 
 }  // namespace tools

@@ -1,9 +1,9 @@
 #include "tools/common/scaling_report.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
+#include "mlndt/common/atomic_file.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/tool_utils.h"
 
@@ -51,7 +51,7 @@ std::vector<std::pair<std::string, std::vector<double>>> Series(
 bool WriteScalingCsv(const std::string& path,
                      const std::vector<SizeResult>& results,
                      std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "points,map_ms,sampling_ms,solve_ms,total_ms,sampled_points,finest_"
          "layer_cells,"
          "num_layers,iterations,termination,translation_error_m,rotation_error_"
@@ -64,11 +64,7 @@ bool WriteScalingCsv(const std::string& path,
         << Num(r.translation_error_m) << "," << Num(r.rotation_error_deg) << ","
         << (r.ok ? 1 : 0) << "\n";
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 bool WriteScalingPlot(const std::string& gnuplot,

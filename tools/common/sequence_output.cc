@@ -1,9 +1,10 @@
 #include "tools/common/sequence_output.h"
 
 #include <cstdio>
-#include <fstream>
 #include <map>
+#include <sstream>
 
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/tool_utils.h"
@@ -12,11 +13,10 @@ namespace mlndt {
 namespace tools {
 namespace {
 
-std::string ErrorsJson(const std::vector<Stats>& errors) {
-  JsonObject o;
-  for (int k = 0; k < 8; ++k)
-    o.Add(ErrorNames()[k], StatsJson(errors[k], false));
-  return o.str();
+Json ErrorsJson(const std::vector<Stats>& errors) {
+  Json o;
+  for (int k = 0; k < 8; ++k) o[ErrorNames()[k]] = StatsJson(errors[k]);
+  return o;
 }
 
 }  // namespace
@@ -27,7 +27,7 @@ bool WritePairsCsv(const std::string& path,
                    const ScanStore& store,
                    const std::vector<PairResult>& results,
                    std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "reference,input,reference_file,input_file,"
          "err_tx_cm,err_ty_cm,err_tz_cm,err_alpha_deg,err_beta_deg,err_gamma_"
          "deg,"
@@ -64,18 +64,14 @@ bool WritePairsCsv(const std::string& path,
       out << "," << Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
     out << "\n";
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 // trace.csv: every iteration of every pair.
 bool WriteTraceCsv(const std::string& path,
                    const std::vector<PairResult>& results,
                    std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "reference,input,iteration,layer,score,step_norm,step_is_successful,"
          "tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,time_ms\n";
   for (const PairResult& r : results) {
@@ -90,64 +86,46 @@ bool WriteTraceCsv(const std::string& path,
       out << "," << Num(it.time_s * 1e3) << "\n";
     }
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
-std::string StatsJson(const Stats& s, bool with_quantiles) {
-  JsonObject o;
-  o.AddNumber("mean", s.mean).AddNumber("std", s.std).AddNumber("max", s.max);
-  if (with_quantiles) o.AddNumber("median", s.median).AddNumber("p95", s.p95);
-  return o.str();
-}
-
-// The run's totals as one JSON object; `header` holds the run's settings
-// (raw JSON members) and comes first.
-std::string SummaryJson(const JsonObject& header,
-                        const std::vector<PairResult>& results) {
+Json SummaryJson(const Json& header, const std::vector<PairResult>& results) {
   const SequenceTotals t = ComputeTotals(results);
-  JsonObject o = header;
-  o.AddNumber("pairs", static_cast<double>(t.pairs))
-      .AddBool("has_ground_truth", t.has_truth);
+  Json o = header;
+  o["pairs"] = t.pairs;
+  o["has_ground_truth"] = t.has_truth;
   if (t.has_truth) {
-    o.AddString("success_rule",
-                "translation error < 50 cm (the paper, Section 5.2.1)")
-        .AddNumber("successes", static_cast<double>(t.successes))
-        .AddNumber("success_rate_percent", t.success_rate_percent)
-        .AddString("strict_success_rule",
-                   "translation error < 20 cm and rotation error < 1 deg")
-        .AddNumber("strict_successes", static_cast<double>(t.strict_successes))
-        .AddNumber("strict_success_rate_percent", t.strict_success_rate_percent)
-        .AddString(
-            "errors_note",
-            "|component| of the error transform truth^-1 * estimate (cm, deg), "
-            "std = sample standard deviation")
-        .Add("errors", ErrorsJson(t.errors))
-        .Add("errors_successful_pairs", ErrorsJson(t.errors_successful));
+    o["success_rule"] = "translation error < 50 cm (the paper, Section 5.2.1)";
+    o["successes"] = t.successes;
+    o["success_rate_percent"] = Number(t.success_rate_percent);
+    o["strict_success_rule"] =
+        "translation error < 20 cm and rotation error < 1 deg";
+    o["strict_successes"] = t.strict_successes;
+    o["strict_success_rate_percent"] = Number(t.strict_success_rate_percent);
+    o["errors_note"] =
+        "|component| of the error transform truth^-1 * estimate (cm, deg), "
+        "std = sample standard deviation";
+    o["errors"] = ErrorsJson(t.errors);
+    o["errors_successful_pairs"] = ErrorsJson(t.errors_successful);
   } else {
-    o.Add("success_rate_percent", "null")
-        .Add("strict_success_rate_percent", "null");
+    o["success_rate_percent"] = nullptr;
+    o["strict_success_rate_percent"] = nullptr;
   }
   std::map<int, int> start_layers;
   for (const PairResult& r : results) ++start_layers[r.start_layer];
-  JsonObject layers;
-  for (const auto& [layer, count] : start_layers)
-    layers.AddNumber(std::to_string(layer), count);
-  o.AddNumber("registration_failures",
-              static_cast<double>(t.registration_failures))
-      .AddNumber("guess_check_failures",
-                 static_cast<double>(t.guess_check_failures))
-      .AddString("time_note",
-                 "time_ms = map + registration per pair; p95 = nearest rank")
-      .Add("time_ms", StatsJson(t.time_ms, true))
-      .Add("map_time_ms", StatsJson(t.map_time_ms, true))
-      .Add("registration_time_ms", StatsJson(t.registration_time_ms, true))
-      .AddNumber("mean_iterations", t.iterations.mean)
-      .Add("start_layer_counts", layers.str());
-  return o.str();
+  Json layers = Json::object();
+  for (const auto& [layer, count] : start_layers) {
+    layers[std::to_string(layer)] = count;
+  }
+  o["registration_failures"] = t.registration_failures;
+  o["guess_check_failures"] = t.guess_check_failures;
+  o["time_note"] = "per pair: pair = map + registration; p95 = nearest rank";
+  o["time_ms_stats"] = {{"pair", StatsJson(t.time_ms)},
+                        {"map", StatsJson(t.map_time_ms)},
+                        {"registration", StatsJson(t.registration_time_ms)}};
+  o["mean_iterations"] = Number(t.iterations.mean);
+  o["start_layer_counts"] = layers;
+  return o;
 }
 
 void PrintSequenceTotals(const SequenceOptions& options,

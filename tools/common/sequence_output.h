@@ -12,7 +12,7 @@
 #include "mlndt/eval/statistics.h"
 #include "mlndt/pipeline/scan_store.h"
 #include "mlndt/pipeline/sequence_registration.h"
-#include "tools/common/json_writer.h"
+#include "tools/common/json_output.h"
 
 namespace mlndt {
 namespace tools {
@@ -29,13 +29,9 @@ bool WriteTraceCsv(const std::string& path,
                    const std::vector<PairResult>& results,
                    std::string* error);
 
-// {"mean", "std", "max"[, "median", "p95"]}.
-std::string StatsJson(const Stats& s, bool with_quantiles);
-
-// The run's totals as one JSON object; `header` holds the run's settings
-// (raw JSON members) and comes first.
-std::string SummaryJson(const JsonObject& header,
-                        const std::vector<PairResult>& results);
+// summary.json (docs/json_schema.md, "mlndt_sequence"): `header` (the
+// schema header and the run's settings) followed by the run's totals.
+Json SummaryJson(const Json& header, const std::vector<PairResult>& results);
 
 // The run's totals on stdout (pairs, success rates, errors, times) and the
 // output folder.

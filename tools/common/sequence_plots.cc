@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <system_error>
 
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/tool_utils.h"
@@ -23,8 +23,10 @@ struct PlotFiles {
   std::vector<std::string>* pngs;
 };
 
-void ErrorPlots(const std::vector<PairResult>& results, const PlotFiles& f) {
-  std::ofstream errors(f.data_dir + "/errors.dat");
+bool ErrorPlots(const std::vector<PairResult>& results,
+                const PlotFiles& f,
+                std::string* error) {
+  std::ostringstream errors;
   errors << "# input tx_cm ty_cm tz_cm alpha_deg beta_deg gamma_deg\n";
   for (const PairResult& r : results) {
     errors << r.input;
@@ -32,6 +34,9 @@ void ErrorPlots(const std::vector<PairResult>& results, const PlotFiles& f) {
       errors << " " << Num(r.error.components(k) * (k < 3 ? 100.0 : kRadToDeg));
     }
     errors << "\n";
+  }
+  if (!WriteFileAtomically(f.data_dir + "/errors.dat", errors.str(), error)) {
+    return false;
   }
   const std::string data = GnuplotQuote(f.data_dir + "/errors.dat");
   *f.script << "set output " << GnuplotQuote(f.dir + "/errors_translation.png")
@@ -53,13 +58,15 @@ void ErrorPlots(const std::vector<PairResult>& results, const PlotFiles& f) {
                "'gamma'\n";
   f.pngs->push_back("errors_translation.png");
   f.pngs->push_back("errors_rotation.png");
+  return true;
 }
 
-void TrajectoryPlot(const std::vector<PairResult>& results,
+bool TrajectoryPlot(const std::vector<PairResult>& results,
                     size_t step,
                     bool has_truth,
-                    const PlotFiles& f) {
-  std::ofstream trajectory(f.data_dir + "/trajectory.dat");
+                    const PlotFiles& f,
+                    std::string* error) {
+  std::ostringstream trajectory;
   trajectory << "# x_m y_m (estimate) [x_gt_m y_gt_m]\n";
   const std::vector<Isometry3d> estimate =
       ChainTrajectory(results, step, false);
@@ -74,6 +81,10 @@ void TrajectoryPlot(const std::vector<PairResult>& results,
                  << Num(truth[k].translation().y());
     }
     trajectory << "\n";
+  }
+  if (!WriteFileAtomically(
+          f.data_dir + "/trajectory.dat", trajectory.str(), error)) {
+    return false;
   }
   // Equal scales on both axes around the union of both paths.
   Eigen::AlignedBox2d box;
@@ -98,6 +109,7 @@ void TrajectoryPlot(const std::vector<PairResult>& results,
   }
   script << "\nset size noratio\nset autoscale xy\nset key outside right top\n";
   f.pngs->push_back("trajectory_xy.png");
+  return true;
 }
 
 // Evenly spread pairs for the trace figure: first, ..., last.
@@ -111,11 +123,12 @@ std::vector<size_t> TracedPairs(size_t num_results, int trace_pairs) {
   return traced;
 }
 
-void WriteTraceData(const std::vector<PairResult>& results,
+bool WriteTraceData(const std::vector<PairResult>& results,
                     const std::vector<size_t>& traced,
                     bool has_truth,
-                    const std::string& path) {
-  std::ofstream trace(path);
+                    const std::string& path,
+                    std::string* error) {
+  std::ostringstream trace;
   trace << "# blocks per pair: iteration layer score_per_point "
            "translation_error_cm\n";
   for (size_t index : traced) {
@@ -134,13 +147,18 @@ void WriteTraceData(const std::vector<PairResult>& results,
     }
     trace << "\n\n";
   }
+  return WriteFileAtomically(path, trace.str(), error);
 }
 
-void TracePlot(const std::vector<PairResult>& results,
+bool TracePlot(const std::vector<PairResult>& results,
                const std::vector<size_t>& traced,
                bool has_truth,
-               const PlotFiles& f) {
-  WriteTraceData(results, traced, has_truth, f.data_dir + "/trace.dat");
+               const PlotFiles& f,
+               std::string* error) {
+  if (!WriteTraceData(
+          results, traced, has_truth, f.data_dir + "/trace.dat", error)) {
+    return false;
+  }
   const std::string data = GnuplotQuote(f.data_dir + "/trace.dat");
   std::ostringstream& script = *f.script;
   script << "set output " << GnuplotQuote(f.dir + "/score_vs_iteration.png")
@@ -169,6 +187,7 @@ void TracePlot(const std::vector<PairResult>& results,
     script << "\nunset logscale y\nunset multiplot\n";
   }
   f.pngs->push_back("score_vs_iteration.png");
+  return true;
 }
 
 }  // namespace
@@ -192,10 +211,14 @@ bool WriteSequencePlots(const std::string& gnuplot,
   script << GnuplotPngHeader(1000, 560);
   const PlotFiles files{
       dir, data_dir, "step " + std::to_string(step), &script, pngs};
-  if (has_truth) ErrorPlots(results, files);
-  TrajectoryPlot(results, step, has_truth, files);
+  if ((has_truth && !ErrorPlots(results, files, error)) ||
+      !TrajectoryPlot(results, step, has_truth, files, error)) {
+    return false;
+  }
   const std::vector<size_t> traced = TracedPairs(results.size(), trace_pairs);
-  if (!traced.empty()) TracePlot(results, traced, has_truth, files);
+  if (!traced.empty() && !TracePlot(results, traced, has_truth, files, error)) {
+    return false;
+  }
   return RunGnuplot(gnuplot, data_dir + "/plots.gp", script.str(), error);
 }
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
+#include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_writer.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {
@@ -65,111 +65,85 @@ std::string CsvRow(const LoadedSuiteDataset& dataset,
   return line + "\n";
 }
 
-std::string ConfusionJson(const ConfusionTable& c) {
-  JsonObject counts;
+Json ConfusionJson(const ConfusionTable& c) {
+  Json counts = Json::object();
   for (const TerminationType type : c.types) {
-    counts.Add(TerminationTypeToString(type),
-               JsonObject()
-                   .AddNumber("right", double(c.Count(true, type)))
-                   .AddNumber("wrong", double(c.Count(false, type)))
-                   .str());
+    counts[TerminationTypeToString(type)] = {{"right", c.Count(true, type)},
+                                             {"wrong", c.Count(false, type)}};
   }
-  return JsonObject()
-      .Add("counts", counts.str())
-      .AddNumber("runs", double(c.total()))
-      .AddNumber("right", double(c.total_right()))
-      .AddNumber("success", c.Success())
-      .AddNumber("precision", c.Precision())
-      .AddNumber("recall", c.Recall())
-      .AddNumber("usable_precision", c.UsablePrecision())
-      .AddNumber("usable_recall", c.UsableRecall())
-      .str();
+  return {{"counts", counts},
+          {"runs", c.total()},
+          {"right", c.total_right()},
+          {"success", Number(c.Success())},
+          {"precision", Number(c.Precision())},
+          {"recall", Number(c.Recall())},
+          {"usable_precision", Number(c.UsablePrecision())},
+          {"usable_recall", Number(c.UsableRecall())}};
 }
 
-std::string RowsJson(const std::vector<std::string>& rows) {
-  std::string out = "[";
-  for (size_t k = 0; k < rows.size(); ++k) {
-    out += (k > 0 ? ", " : "") + rows[k];
-  }
-  return out + "]";
-}
-
-std::string StartsJson(const SuiteScore& score) {
-  std::vector<std::string> rows;
+Json StartsJson(const SuiteScore& score) {
+  Json rows = Json::array();
   for (const SuiteStartRow& r : score.by_start) {
-    rows.push_back(
-        JsonObject()
-            .AddString("dataset", score.datasets.at(r.dataset))
-            .AddString("start", StartKindToString(r.kind))
-            .AddNumber("runs", double(r.runs))
-            .AddNumber("right", double(r.right))
-            .AddNumber("convergence", double(r.convergence))
-            .AddNumber("wrong_convergence", double(r.wrong_convergence))
-            .AddNumber("skipped_pairs", double(r.skipped_pairs))
-            .str());
+    rows.push_back({{"dataset", score.datasets.at(r.dataset)},
+                    {"start", StartKindToString(r.kind)},
+                    {"runs", r.runs},
+                    {"right", r.right},
+                    {"convergence", r.convergence},
+                    {"wrong_convergence", r.wrong_convergence},
+                    {"skipped_pairs", r.skipped_pairs}});
   }
-  return RowsJson(rows);
+  return rows;
 }
 
-std::string AccuracyJson(const SuiteScore& score) {
-  std::vector<std::string> rows;
+Json AccuracyJson(const SuiteScore& score) {
+  Json rows = Json::array();
   for (const SuiteAccuracyRow& r : score.accuracy) {
-    rows.push_back(JsonObject()
-                       .AddString("dataset", score.datasets.at(r.dataset))
-                       .AddString("start", StartKindToString(r.kind))
-                       .AddNumber("right", double(r.right))
-                       .AddNumber("rms_translation_m", r.rms_translation_m)
-                       .AddNumber("mean_along_track_m", r.mean_along_track_m)
-                       .AddNumber("rms_rotation_deg", r.rms_rotation_deg)
-                       .AddNumber("median_time_ms", r.median_time_ms)
-                       .str());
+    rows.push_back({{"dataset", score.datasets.at(r.dataset)},
+                    {"start", StartKindToString(r.kind)},
+                    {"right", r.right},
+                    {"rms_translation_m", Number(r.rms_translation_m)},
+                    {"mean_along_track_m", Number(r.mean_along_track_m)},
+                    {"rms_rotation_deg", Number(r.rms_rotation_deg)},
+                    {"median_time_ms", Number(r.median_time_ms)}});
   }
-  return RowsJson(rows);
+  return rows;
 }
 
-std::string ShareJson(const SuiteShare& share) {
-  return JsonObject()
-      .AddNumber("runs", double(share.runs))
-      .AddNumber("right", double(share.right))
-      .str();
+Json ShareJson(const SuiteShare& share) {
+  return {{"runs", share.runs}, {"right", share.right}};
 }
 
-std::string ReachJson(const SuiteScore& score) {
-  std::vector<std::string> rows;
+Json ReachJson(const SuiteScore& score) {
+  Json rows = Json::array();
   for (const SuiteReachRow& r : score.reach) {
     const StartOffset& offset = score.offsets.at(size_t(r.offset_index));
-    JsonObject per_dataset;
+    Json per_dataset = Json::object();
     for (size_t d = 0; d < r.per_dataset.size(); ++d) {
-      per_dataset.Add(score.datasets[d], ShareJson(r.per_dataset[d]));
+      per_dataset[score.datasets[d]] = ShareJson(r.per_dataset[d]);
     }
-    rows.push_back(JsonObject()
-                       .AddString("offset", offset.label)
-                       .AddString("family", offset.family)
-                       .Add("datasets", per_dataset.str())
-                       .Add("all", ShareJson(r.all))
-                       .str());
+    rows.push_back({{"offset", offset.label},
+                    {"family", offset.family},
+                    {"datasets", per_dataset},
+                    {"all", ShareJson(r.all)}});
   }
-  const auto label = [&](int reach) {
-    if (reach < 0) return std::string(reach == -1 ? "\"none\"" : "null");
-    return JsonString(score.offsets.at(size_t(reach)).label);
+  // The label of the reach: "none" (-1), null (not measured) or an offset.
+  const auto label = [&](int reach) -> Json {
+    if (reach < 0) return reach == -1 ? Json("none") : Json();
+    return score.offsets.at(size_t(reach)).label;
   };
-  std::vector<std::string> families;
+  Json families = Json::array();
   for (const SuiteFamilyReach& f : score.family_reach) {
-    JsonObject per_dataset;
+    Json per_dataset = Json::object();
     for (size_t d = 0; d < f.per_dataset.size(); ++d) {
-      per_dataset.Add(score.datasets[d], label(f.per_dataset[d]));
+      per_dataset[score.datasets[d]] = label(f.per_dataset[d]);
     }
-    families.push_back(JsonObject()
-                           .AddString("family", f.family)
-                           .Add("datasets", per_dataset.str())
-                           .Add("all", label(f.all))
-                           .str());
+    families.push_back({{"family", f.family},
+                        {"datasets", per_dataset},
+                        {"all", label(f.all)}});
   }
-  return JsonObject()
-      .AddNumber("share", score.reach_share)
-      .Add("offsets", RowsJson(rows))
-      .Add("families", RowsJson(families))
-      .str();
+  return {{"share", Number(score.reach_share)},
+          {"offsets", rows},
+          {"families", families}};
 }
 
 // The sorted values of one measure of the right (or wrong) runs.
@@ -195,16 +169,12 @@ std::vector<double> Measure(
 bool WriteCurve(const std::string& path,
                 const std::vector<double>& values,
                 std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   for (size_t k = 0; k < values.size(); ++k) {
     out << Num(values[k]) << " " << Num(double(k + 1) / values.size()) << "\n";
   }
   if (values.empty()) out << "nan nan\n";
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
 }  // namespace
@@ -224,38 +194,27 @@ bool WriteSuiteRunsCsv(const std::string& path,
                        const std::vector<LoadedSuiteDataset>& datasets,
                        const std::vector<std::vector<SuiteRunResult>>& results,
                        std::string* error) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << SuiteRunsCsvHeader() << "\n";
   for (size_t d = 0; d < datasets.size(); ++d) {
     for (size_t k = 0; k < results.at(d).size(); ++k) {
       out << CsvRow(datasets[d], datasets[d].runs.at(k), results[d][k]);
     }
   }
-  if (!out) {
-    *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return WriteFileAtomically(path, out.str(), error);
 }
 
-std::string SuiteSummaryJson(const SuiteScore& score,
-                             const SuiteRunInfo& info) {
-  std::vector<std::string> missed;
-  for (const std::string& m : info.missed_targets)
-    missed.push_back(JsonString(m));
-  std::vector<std::string> names;
-  for (const std::string& n : score.datasets) names.push_back(JsonString(n));
-  return JsonObject()
-      .AddString("command_line", info.command_line)
-      .AddString("method", info.method)
-      .AddNumber("wall_time_s", info.wall_time_s)
-      .Add("datasets", RowsJson(names))
-      .Add("confusion", ConfusionJson(score.confusion))
-      .Add("by_start", StartsJson(score))
-      .Add("accuracy", AccuracyJson(score))
-      .Add("reach", ReachJson(score))
-      .Add("missed_targets", RowsJson(missed))
-      .str();
+Json SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info) {
+  Json json = ToolJson("mlndt_suite");
+  json["method"] = info.method;
+  json["time_ms"] = {{"total", Number(info.wall_time_s * 1e3)}};
+  json["datasets"] = score.datasets;
+  json["confusion"] = ConfusionJson(score.confusion);
+  json["by_start"] = StartsJson(score);
+  json["accuracy"] = AccuracyJson(score);
+  json["reach"] = ReachJson(score);
+  json["missed_targets"] = info.missed_targets;
+  return json;
 }
 
 bool WriteSuiteQualityPlot(

@@ -10,6 +10,7 @@
 #include "mlndt/eval/suite_score.h"
 #include "mlndt/pipeline/suite_runner.h"
 #include "mlndt/registration/quality_check.h"
+#include "tools/common/json_output.h"
 #include "tools/common/suite_inputs.h"
 
 namespace mlndt {
@@ -27,14 +28,14 @@ bool WriteSuiteRunsCsv(const std::string& path,
 
 // The run's facts for summary.json.
 struct SuiteRunInfo {
-  std::string command_line;
   std::string method;  // MethodToString.
   double wall_time_s = 0.0;
   std::vector<std::string> missed_targets;
 };
 
-// The scored tables as one JSON object.
-std::string SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info);
+// summary.json (docs/json_schema.md, "mlndt_suite"): the schema header, then
+// the scored tables.
+Json SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info);
 
 // quality.png in `dir` (data and script in dir/plot_data): the share of
 // right and of wrong runs at or below each value of the inlier fraction and

@@ -3,23 +3,150 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+// gflags' own help flags (gflags_reporting.cc).
+DECLARE_bool(help);
+DECLARE_bool(version);
 
 namespace mlndt {
 namespace tools {
+
+const char kExitCodesHelp[] =
+    "Exit codes: 0 success; 1 the run failed (a registration FAILED or its "
+    "result is not to be used, or an output could not be written); 2 usage "
+    "or misconfiguration (a flag, argument or input refused before any work, "
+    "the message names it).";
+
+namespace {
+
+std::string FileName(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
+}
+
+// "tools/common/registration_flags.cc" for a flag's full source path.
+std::string ShortPath(const std::string& path) {
+  const size_t at = path.rfind("tools/");
+  return at == std::string::npos ? FileName(path) : path.substr(at);
+}
+
+void AppendFlag(const gflags::CommandLineFlagInfo& flag, std::ostream* out) {
+  *out << "  --" << flag.name;
+  if (flag.type == "string") {
+    *out << "=\"" << flag.default_value << "\"";
+  } else {
+    *out << "=" << flag.default_value;
+  }
+  *out << "  (" << flag.type << ")\n      " << flag.description << "\n";
+}
+
+// gflags exits with 1 on an unknown flag or a value it cannot parse; a
+// usage error is kExitUsage in every tool, so the flags are checked first.
+void ExitOnBadFlags(const std::string& tool, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") break;
+    if (arg.size() < 2 || arg[0] != '-') continue;
+    const std::string body = arg.substr(arg[1] == '-' ? 2 : 1);
+    const size_t eq = body.find('=');
+    const std::string name = body.substr(0, eq);
+    gflags::CommandLineFlagInfo info;
+    if (gflags::GetCommandLineFlagInfo(name.c_str(), &info)) {
+      // "--name value": the next argument is the value, not a flag.
+      if (eq == std::string::npos) {
+        if (info.type != "bool") ++i;
+        continue;
+      }
+      // Setting it now is harmless: the parse sets it again.
+      const std::string value = body.substr(eq + 1);
+      if (gflags::SetCommandLineOption(name.c_str(), value.c_str()).empty()) {
+        std::cerr << tool << ": --" << name << "=" << value << ": not a valid "
+                  << info.type << " (see --help)\n";
+        std::exit(kExitUsage);
+      }
+      continue;
+    }
+    if (name.rfind("no", 0) == 0 && eq == std::string::npos &&
+        gflags::GetCommandLineFlagInfo(name.substr(2).c_str(), &info) &&
+        info.type == "bool") {
+      continue;
+    }
+    std::cerr << tool << ": unknown flag --" << name << " (see --help)\n";
+    std::exit(kExitUsage);
+  }
+}
+
+}  // namespace
+
+std::string VersionLine() { return std::string("mlndt ") + MLNDT_VERSION; }
+
+std::string ToolHelp(const std::string& tool) {
+  std::vector<gflags::CommandLineFlagInfo> flags;
+  gflags::GetAllFlags(&flags);
+  const std::string own_file = tool + ".cc";
+  std::vector<gflags::CommandLineFlagInfo> own;
+  std::map<std::string, std::vector<gflags::CommandLineFlagInfo>> shared;
+  for (const gflags::CommandLineFlagInfo& flag : flags) {
+    const std::string path = ShortPath(flag.filename);
+    if (path == "tools/" + own_file) {
+      own.push_back(flag);
+    } else if (path.rfind("tools/common/", 0) == 0) {
+      shared[path].push_back(flag);
+    }
+  }
+  std::ostringstream out;
+  const std::string usage = gflags::ProgramUsage();
+  out << tool << ": " << usage << "\n";
+  if (usage.find("Exit codes") == std::string::npos) {
+    out << "\n" << kExitCodesHelp << "\n";
+  }
+  if (!own.empty()) {
+    out << "\nFlags of " << tool << ":\n";
+    for (const auto& flag : own) AppendFlag(flag, &out);
+  }
+  for (const auto& [path, file_flags] : shared) {
+    out << "\nShared flags (" << path << "):\n";
+    for (const auto& flag : file_flags) AppendFlag(flag, &out);
+  }
+  out << "\n  --help, -h  this text;  --version  print \"" << VersionLine()
+      << "\";  --helpfull  every flag, glog's and gflags' included\n";
+  return out.str();
+}
 
 bool StartTool(const char* usage,
                bool reject_arguments,
                int* argc,
                char*** argv) {
+  // -h is the ecosystem's --help; gflags does not know it.
+  static char help_flag[] = "--help";
+  for (int i = 1; i < *argc; ++i) {
+    if (std::strcmp((*argv)[i], "-h") == 0) (*argv)[i] = help_flag;
+    if (std::strcmp((*argv)[i], "--") == 0) break;
+  }
+  const std::string tool = FileName((*argv)[0]);
   gflags::SetUsageMessage(usage);
-  gflags::ParseCommandLineFlags(argc, argv, true);
+  gflags::SetVersionString(MLNDT_VERSION);
+  ExitOnBadFlags(tool, *argc, *argv);
+  gflags::ParseCommandLineNonHelpFlags(argc, argv, true);
+  if (FLAGS_help) {
+    std::cout << ToolHelp(tool);
+    std::exit(0);
+  }
+  if (FLAGS_version) {
+    std::cout << VersionLine() << "\n";
+    std::exit(0);
+  }
+  gflags::HandleCommandLineHelpFlags();  // --helpfull, --helpmatch, ...
   google::InitGoogleLogging((*argv)[0]);
   FLAGS_logtostderr = true;
   if (reject_arguments && *argc > 1) {
-    std::cerr << std::filesystem::path((*argv)[0]).filename().string()
-              << ": unexpected argument '" << (*argv)[1]
+    std::cerr << tool << ": unexpected argument '" << (*argv)[1]
               << "' (flags are --name=value)\n";
     return false;
   }

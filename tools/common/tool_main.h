@@ -1,19 +1,47 @@
 #pragma once
 
-// The start of every tool's main: usage message, flags, logging.
+// The start of every tool's main: usage message, flags, logging, --help and
+// --version, and the exit codes every tool shares.
+
+#include <string>
 
 namespace mlndt {
 namespace tools {
 
+// Exit codes, the same in every tool (README, "Exit codes"):
+//  0 success;
+//  1 the run failed: a registration FAILED or its result is not to be used
+//    (verdict_flags.h), or a result could not be written;
+//  2 usage or misconfiguration: a flag, an argument or an input refused
+//    before any work, with a message naming it.
+constexpr int kExitOk = 0;
+constexpr int kExitFailed = 1;
+constexpr int kExitUsage = 2;
+
+// The exit-code paragraph of the usage texts.
+extern const char kExitCodesHelp[];
+
 // Sets `usage` as the --help text, parses the flags (removing them from
-// argv) and starts glog, logging to stderr. With `reject_arguments`, an
-// argument left after the flags is reported on stderr as
-// "<tool>: unexpected argument 'x' (flags are --name=value)" and false is
-// returned (the tool exits with 1).
+// argv) and starts glog, logging to stderr.
+//  - --help (or -h) prints `usage` (and kExitCodesHelp when `usage` has
+//    no "Exit codes" paragraph) and the flags defined in the tool's own
+//    file and in tools/common/ (the shared registration flags among them)
+//    with their defaults, and exits with 0; --helpfull lists every flag,
+//    glog's and gflags' included.
+//  - --version prints "mlndt <PROJECT_VERSION>" and exits with 0.
+// With `reject_arguments`, an argument left after the flags is reported on
+// stderr as "<tool>: unexpected argument 'x' (flags are --name=value)" and
+// false is returned (the tool exits with kExitUsage).
 bool StartTool(const char* usage,
                bool reject_arguments,
                int* argc,
                char*** argv);
+
+// The --help text of the tool `tool` (its file is tools/<tool>.cc).
+std::string ToolHelp(const std::string& tool);
+
+// "mlndt <PROJECT_VERSION>".
+std::string VersionLine();
 
 }  // namespace tools
 }  // namespace mlndt

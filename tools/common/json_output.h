@@ -1,0 +1,76 @@
+#pragma once
+
+// The tools' JSON output, built with nlohmann::json in one place: the
+// header every file starts with, poses, statistics, timings and a
+// RegistrationSummary. Conventions (docs/json_schema.md):
+//  - every file holds "schema_version": kJsonSchemaVersion, "tool" and
+//    "version" (ToolJson);
+//  - units are in the key names (_m, _deg, _ms, _bytes); every angle is in
+//    degrees (poses wrapped to (-180, 180]), no file mixes in radians;
+//  - timings are one object "time_ms": {"total": ..., <stage>: ...}; a
+//    distribution of times over many runs is "time_ms_stats";
+//  - numbers are written with 17 significant digits (they round-trip);
+//    NaN and infinities are written as null.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "mlndt/common/types.h"
+#include "mlndt/eval/statistics.h"
+#include "mlndt/registration/registration_summary.h"
+
+namespace mlndt {
+namespace tools {
+
+// Keys keep the order they are added in.
+using Json = nlohmann::ordered_json;
+
+constexpr int kJsonSchemaVersion = 1;
+
+// {"schema_version": 1, "tool": tool, "version": "<PROJECT_VERSION>",
+//  "command": the command line}.
+Json ToolJson(const std::string& tool);
+
+// `value`, or null when it is not finite.
+Json Number(double value);
+
+// An angle [deg] wrapped to (-180, 180].
+double WrapDegrees(double degrees);
+
+// A 4x4 transform as 4 rows of 4 numbers (row-major).
+Json MatrixJson(const Isometry3d& transform);
+
+// A pose vector xi = (t [m], Euler angles [rad], ML-NDT Eq. 11) as
+// {"translation_m": [x, y, z], "rotation_deg": [alpha, beta, gamma]}, the
+// angles wrapped to (-180, 180] (R = Rx(alpha) Ry(beta) Rz(gamma)).
+Json PoseVectorJson(const Vector6d& xi);
+// The same for a transform (IsometryToPoseVector).
+Json PoseJson(const Isometry3d& transform);
+
+// {"count", "mean", "median", "min", "max", "std", "p95"}.
+Json StatsJson(const Stats& stats);
+
+// {"total": ..., "map": ..., "sampling": ..., "solve": ...} [ms].
+Json RegistrationTimeJson(const RegistrationSummary& summary);
+
+// The one JSON form of a registration's result (docs/json_schema.md,
+// "registration"): termination, message, pose, iterations, attempts,
+// layers, scores, point counts, fit quality with the constraint ratio,
+// map size, times and the covariance; the per-iteration trace with
+// `with_trace`.
+Json RegistrationSummaryJson(const RegistrationSummary& summary,
+                             bool with_trace);
+
+// The text WriteJsonFile writes: json.dump(2) and a newline (invalid UTF-8
+// replaced).
+std::string JsonText(const Json& json);
+
+// Writes JsonText(json) to `path` atomically (WriteFileAtomically); false
+// with *error when it cannot.
+bool WriteJsonFile(const std::string& path,
+                   const Json& json,
+                   std::string* error);
+
+}  // namespace tools
+}  // namespace mlndt
