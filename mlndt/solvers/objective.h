@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mlndt/common/types.h"
+#include "mlndt/cost/scalar_residual.h"
 #include "mlndt/cost/score.h"
 #include "mlndt/grid/ndt_layer.h"
 
@@ -19,6 +20,14 @@ class Objective {
   // Score at xi, with the requested Hessian (and the gradient unless NONE).
   virtual ScoreEvaluation Evaluate(const Vector6d& reference_from_input_xi,
                                    HessianType hessian) const = 0;
+  // The paper's scalar-residual LM system at xi (scalar_residual.h); false
+  // when the objective has none (the NDT baseline).
+  virtual bool EvaluateScalarResiduals(const Vector6d& reference_from_input_xi,
+                                       ScalarResidualSystem* system) const {
+    (void)reference_from_input_xi;
+    (void)system;
+    return false;
+  }
 };
 
 // Eq. (10) over `input_points` on `layer`. Keeps references: the layer and
@@ -42,6 +51,13 @@ class MlNdtObjective : public Objective {
                          objective_,
                          hessian,
                          num_threads_);
+  }
+
+  bool EvaluateScalarResiduals(const Vector6d& reference_from_input_xi,
+                               ScalarResidualSystem* system) const override {
+    *system = EvaluateScalarResidualSystem(
+        layer_, input_points_, reference_from_input_xi, objective_);
+    return true;
   }
 
  private:

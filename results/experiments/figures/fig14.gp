@@ -1,0 +1,21 @@
+# Run from the report folder: gnuplot figures/fig14.gp
+if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
+  set terminal pngcairo size 1200,370 font 'Sans,10'
+} else {
+  set terminal png size 1200,370
+}
+set grid
+set key outside right top
+set termoption noenhanced
+set datafile separator ','
+set output 'figures/fig14.png'
+set key autotitle columnheader
+set multiplot layout 1,2 title 'Fig. 14: prior (odometry) error, mulran'
+set title 'prior, mulran: translation'
+set xlabel 'pair index (consecutive pairs)'
+set ylabel 'error [cm]'
+plot 'csv/fig14_prior.csv' using 1:3 with linespoints title 'tx (lateral)', '' using 1:4 with linespoints title 'ty (vertical)', '' using 1:5 with linespoints title 'tz (forward)'
+set title 'prior, mulran: rotation'
+set ylabel 'error [deg]'
+plot 'csv/fig14_prior.csv' using 1:6 with linespoints title 'alpha', '' using 1:7 with linespoints title 'beta (heading)', '' using 1:8 with linespoints title 'gamma'
+unset multiplot
