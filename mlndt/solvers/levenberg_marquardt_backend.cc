@@ -43,19 +43,58 @@ bool LevenbergMarquardtOptions::IsValid(std::string* error) const {
 
 namespace {
 
-// The paper's literal LM (Eqs. 18-20): (J^T J + lambda I) delta = -J^T r on
-// the scalar residuals r_k = rho(s_k); a step is kept when it lowers the
-// score sum_k rho(s_k).
-void MinimizeScalarResidualLm(const Objective& objective,
-                              const LevenbergMarquardtOptions& lm_options,
-                              const StageControl& control,
-                              Vector6d* xi,
-                              StageSummary* summary) {
+// The normal equations of one LM step: (jtj + lambda I) delta = -jtr.
+struct LmSystem {
+  double score = 0.0;
+  size_t matched = 0;
+  Matrix6d jtj = Matrix6d::Zero();
+  Vector6d jtr = Vector6d::Zero();
+};
+
+// The whitened form: the Gauss-Newton Hessian is 2 J^T J and the gradient
+// 2 J^T r of the 3-vector residuals W e_k, so (H / 2 + lambda I) delta =
+// -g / 2 is the paper's (J^T J + lambda I) delta = -J^T r.
+bool EvaluateWhitened(const Objective& objective,
+                      const Vector6d& xi,
+                      LmSystem* system) {
+  const ScoreEvaluation e = objective.Evaluate(xi, HessianType::GAUSS_NEWTON);
+  system->score = e.score;
+  system->matched = e.matched;
+  system->jtj = e.hessian / 2.0;
+  system->jtr = e.gradient / 2.0;
+  return true;
+}
+
+// The paper's literal form (Eqs. 18-20): the scalar residuals r_k =
+// rho(s_k); a step is kept when it lowers the score sum_k rho(s_k).
+bool EvaluateScalar(const Objective& objective,
+                    const Vector6d& xi,
+                    LmSystem* system) {
+  ScalarResidualSystem s;
+  if (!objective.EvaluateScalarResiduals(xi, &s)) return false;
+  system->score = s.score;
+  system->matched = s.matched;
+  system->jtj = s.jtj;
+  system->jtr = s.jtr;
+  return true;
+}
+
+}  // namespace
+
+void MinimizeLevenbergMarquardt(const Objective& objective,
+                                const LevenbergMarquardtOptions& lm_options,
+                                const StageControl& control,
+                                Vector6d* xi,
+                                StageSummary* summary) {
+  *summary = StageSummary();
+  const auto evaluate = lm_options.residual == LmResidual::SCALAR_SCORE
+                            ? EvaluateScalar
+                            : EvaluateWhitened;
   internal::StageMonitor trace(control, summary);
   summary->termination_type = TerminationType::NO_CONVERGENCE;
   summary->message = "iteration cap reached";
-  ScalarResidualSystem current;
-  if (!objective.EvaluateScalarResiduals(*xi, &current)) {
+  LmSystem current;
+  if (!evaluate(objective, *xi, &current)) {
     summary->termination_type = TerminationType::FAILURE;
     summary->message = "the objective has no scalar residuals";
     return;
@@ -77,65 +116,8 @@ void MinimizeScalarResidualLm(const Objective& objective,
       return;
     }
     const Vector6d candidate_xi = *xi + step;
-    ScalarResidualSystem candidate;
-    objective.EvaluateScalarResiduals(candidate_xi, &candidate);
-    const bool successful =
-        candidate.matched > 0 && candidate.score < current.score;
-    if (successful) {
-      *xi = candidate_xi;
-      current = candidate;
-      summary->final_score = current.score;
-      lambda /= lm_options.lambda_decrease;
-    } else {
-      lambda *= lm_options.lambda_increase;
-    }
-    if (trace.Record(current.score, step.norm(), successful, *xi)) {
-      summary->termination_type = TerminationType::CONVERGENCE;
-      summary->message = "update norm below tolerance";
-      return;
-    }
-  }
-}
-
-}  // namespace
-
-void MinimizeLevenbergMarquardt(const Objective& objective,
-                                const LevenbergMarquardtOptions& lm_options,
-                                const StageControl& control,
-                                Vector6d* xi,
-                                StageSummary* summary) {
-  *summary = StageSummary();
-  if (lm_options.residual == LmResidual::SCALAR_SCORE) {
-    MinimizeScalarResidualLm(objective, lm_options, control, xi, summary);
-    return;
-  }
-  internal::StageMonitor trace(control, summary);
-  summary->termination_type = TerminationType::NO_CONVERGENCE;
-  summary->message = "iteration cap reached";
-  // The Gauss-Newton Hessian is 2 J^T J and the gradient 2 J^T r, so
-  // (H + 2 lambda I) delta = -g is the paper's (J^T J + lambda I) delta = -J^T
-  // r.
-  ScoreEvaluation current = objective.Evaluate(*xi, HessianType::GAUSS_NEWTON);
-  summary->final_score = current.score;
-  if (current.matched == 0) {
-    summary->termination_type = TerminationType::FAILURE;
-    summary->message = "no input point lies in an occupied cell";
-    return;
-  }
-  double lambda = lm_options.initial_lambda_factor *
-                  current.hessian.diagonal().mean() / 2.0;
-  for (int iteration = 0; iteration < control.max_iterations; ++iteration) {
-    const Matrix6d damped =
-        current.hessian + 2.0 * lambda * Matrix6d::Identity();
-    const Vector6d step = -damped.ldlt().solve(current.gradient);
-    if (!step.allFinite()) {
-      summary->termination_type = TerminationType::FAILURE;
-      summary->message = "the Levenberg-Marquardt step is not finite";
-      return;
-    }
-    const Vector6d candidate_xi = *xi + step;
-    const ScoreEvaluation candidate =
-        objective.Evaluate(candidate_xi, HessianType::GAUSS_NEWTON);
+    LmSystem candidate;
+    evaluate(objective, candidate_xi, &candidate);
     const bool successful =
         candidate.matched > 0 && candidate.score < current.score;
     if (successful) {
