@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -58,6 +59,15 @@ ToolRun RunTool(const std::string& name, const std::string& args) {
   }
   run.err = ReadWholeFile(err_path);
   return run;
+}
+
+std::string FreshTestDir(const std::string& tool) {
+  const std::string dir =
+      ::testing::TempDir() + tool + "_test_" +
+      ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 
 }  // namespace testing

@@ -23,6 +23,10 @@ std::string ShellQuote(const std::string& text);
 // The whole file, or "" when it cannot be read.
 std::string ReadWholeFile(const std::string& path);
 
+// A fresh, empty folder for the current test:
+// TempDir()/<tool>_test_<test name>, removed first if it exists.
+std::string FreshTestDir(const std::string& tool);
+
 // Runs the tool `name` (ToolPath) with `args`, already quoted where needed.
 ToolRun RunTool(const std::string& name, const std::string& args);
 

@@ -28,14 +28,7 @@ ToolRun RunAlign(const std::string& args) {
   return testing::RunTool("mlndt_align", args);
 }
 
-std::string TestDir() {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_align_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::string TestDir() { return testing::FreshTestDir("mlndt_align"); }
 
 // The tool's JSON file, parsed; a discarded value when it is not JSON.
 nlohmann::json ReadJson(const std::string& path) {

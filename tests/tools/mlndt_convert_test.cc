@@ -15,14 +15,7 @@ namespace {
 using testing::ToolRun;
 const auto& Quote = testing::ShellQuote;
 
-std::string TestDir() {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_convert_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::string TestDir() { return testing::FreshTestDir("mlndt_convert"); }
 
 TEST(MlndtConvert, PositionalFilesAndFlagsGiveTheSameCloud) {
   const std::string dir = TestDir();

@@ -18,14 +18,7 @@ namespace {
 using testing::ToolRun;
 const auto& Quote = testing::ShellQuote;
 
-std::string TestDir() {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_covariance_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::string TestDir() { return testing::FreshTestDir("mlndt_covariance"); }
 
 TEST(MlndtCovariance, Koide3StartsShowProgressAndWriteJsonAndCsv) {
   const std::string dir = TestDir();

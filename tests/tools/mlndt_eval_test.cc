@@ -28,14 +28,7 @@ const auto& Quote = testing::ShellQuote;
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-std::string TestDir() {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_eval_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+std::string TestDir() { return testing::FreshTestDir("mlndt_eval"); }
 
 std::string KittiPcd() { return testing::BundledDataPath("kitti/pcd"); }
 std::string KittiGt() {

@@ -56,14 +56,7 @@ std::vector<std::vector<std::string>> TableRows(const ToolRun& run) {
   return rows;
 }
 
-std::string TestDir() {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_scaling_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+std::string TestDir() { return testing::FreshTestDir("mlndt_scaling"); }
 
 TEST(MlndtScaling, SmallSizesOnTheBundledKittiFrames) {
   const std::string dir = TestDir();

@@ -27,14 +27,7 @@ const auto& Quote = testing::ShellQuote;
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-std::string TestDir() {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_suite_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+std::string TestDir() { return testing::FreshTestDir("mlndt_suite"); }
 
 // runs.csv as one map (column -> value) per row.
 std::vector<std::map<std::string, std::string>> ReadCsv(
