@@ -21,9 +21,12 @@
 #include "mlndt/sampling/point_sampler.h"
 #include "tests/testing/eigen_near.h"
 #include "tests/testing/synthetic_scene.h"
+#include "tests/testing/tilted_cells.h"
 
 namespace mlndt {
 namespace {
+
+using testing::TiltedCovariance;
 
 using Eigen::Matrix3d;
 using Eigen::Quaterniond;
@@ -34,14 +37,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 using testing::EigenNear;
 
 // Q diag(l) Q^T with a tilted Q: non-diagonal, eigenvalues above the floors.
-Matrix3d TiltedCovariance(const Vector3d& eigenvalues,
-                          double angle,
-                          const Vector3d& axis) {
-  const Matrix3d q =
-      Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
-  return q * eigenvalues.asDiagonal() * q.transpose();
-}
-
 // A hand-built layer of scan i's map: origin 0, 2 m cells, 4 x 3 x 2 grid,
 // occupied cells A at (1, 1, 0) and B at (3, 1, 1); cell (2, 1, 0) is empty
 // with A as a neighbour.

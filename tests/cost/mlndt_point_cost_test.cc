@@ -15,9 +15,12 @@
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
 #include "tests/testing/eigen_near.h"
+#include "tests/testing/tilted_cells.h"
 
 namespace mlndt {
 namespace {
+
+using testing::TiltedCovariance;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -32,14 +35,6 @@ Matrix3d ElementaryProduct(double alpha, double beta, double gamma) {
 
 // Q diag(l) Q^T with a tilted Q: a non-diagonal covariance with known
 // eigenvalues, all above the regularisation floors (so MakeNdtCell keeps it).
-Matrix3d TiltedCovariance(const Vector3d& eigenvalues,
-                          double angle,
-                          const Vector3d& axis) {
-  const Matrix3d q =
-      Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
-  return q * eigenvalues.asDiagonal() * q.transpose();
-}
-
 // A hand-built layer: origin 0, 2 m cells, 4 x 3 x 2 grid, three occupied
 // cells with non-diagonal covariances:
 //   A at (1, 1, 0): x in [2, 4), y in [2, 4), z in [0, 2)

@@ -10,48 +10,14 @@
 #include "mlndt/grid/ndt_layer.h"
 #include "mlndt/solvers/levenberg_marquardt_backend.h"
 #include "mlndt/solvers/objective.h"
+#include "tests/testing/tilted_cells.h"
 
 namespace mlndt {
 namespace {
 
-Matrix3d TiltedCovariance(const Vector3d& eigenvalues,
-                          double angle,
-                          const Vector3d& axis) {
-  const Matrix3d q =
-      Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
-  return q * eigenvalues.asDiagonal() * q.transpose();
-}
+using testing::TiltedCovariance;
 
-// Origin 0, 2 m cells, 4 x 3 x 2 grid, three occupied cells.
-NdtLayer MakeLayer() {
-  const auto key = [](int i, int j, int k) -> int64_t {
-    return i + 4 * (j + 3 * k);
-  };
-  std::vector<NdtCell> cells(3);
-  EXPECT_TRUE(
-      MakeNdtCell(20,
-                  Vector3d(3.1, 2.9, 0.8),
-                  TiltedCovariance({0.40, 0.15, 0.05}, 0.7, {1.0, 2.0, -0.5}),
-                  CellRegularization(),
-                  &cells[0]));
-  EXPECT_TRUE(
-      MakeNdtCell(20,
-                  Vector3d(7.0, 3.2, 2.9),
-                  TiltedCovariance({0.30, 0.20, 0.02}, 1.1, {-0.3, 1.0, 1.0}),
-                  CellRegularization(),
-                  &cells[1]));
-  EXPECT_TRUE(
-      MakeNdtCell(20,
-                  Vector3d(5.2, 4.6, 1.1),
-                  TiltedCovariance({0.50, 0.10, 0.03}, 0.4, {0.2, -1.0, 0.6}),
-                  CellRegularization(),
-                  &cells[2]));
-  return NdtLayer(Vector3d::Zero(),
-                  2.0,
-                  Eigen::Vector3i(4, 3, 2),
-                  cells,
-                  {key(1, 1, 0), key(3, 1, 1), key(2, 2, 0)});
-}
+NdtLayer MakeLayer() { return testing::ThreeCellLayer(); }
 
 // Points spread around the three cell means, pulled back by `xi` so that xi
 // maps them near the means.

@@ -9,22 +9,17 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
+#include "tests/testing/tilted_cells.h"
 
 namespace mlndt {
 namespace {
+
+using testing::TiltedCovariance;
 
 // Cells of 2 m over a 4 x 3 x 2 grid at the origin.
 constexpr double kCellSize = 2.0;
 
 int64_t Key(int i, int j, int k) { return i + 4 * (j + 3 * k); }
-
-Matrix3d TiltedCovariance(const Vector3d& eigenvalues,
-                          double angle,
-                          const Vector3d& axis) {
-  const Matrix3d q =
-      Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
-  return q * eigenvalues.asDiagonal() * q.transpose();
-}
 
 // Occupied cells with non-diagonal covariances: (1, 1, 0); its face
 // neighbour (2, 1, 0); (2, 2, 1), which only touches (1, 1, 0) along an
