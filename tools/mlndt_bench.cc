@@ -50,12 +50,12 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/statistics.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
-#include "mlndt/eval/statistics.h"
 #include "mlndt/registration/registration.h"
 #include "tools/common/bench_configurations.h"
 #include "tools/common/bench_pairs.h"

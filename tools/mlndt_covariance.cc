@@ -42,11 +42,11 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/statistics.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/statistics.h"
 #include "tools/common/covariance_consistency.h"
 #include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"

@@ -30,12 +30,12 @@
 #include <iostream>
 #include <map>
 
+#include "lab/eval/kitti_segment_errors.h"
+#include "lab/eval/reference_pairs.h"
+#include "lab/eval/trajectory_association.h"
+#include "lab/eval/trajectory_io.h"
+#include "lab/eval/trajectory_metrics.h"
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/eval/kitti_segment_errors.h"
-#include "mlndt/eval/reference_pairs.h"
-#include "mlndt/eval/trajectory_association.h"
-#include "mlndt/eval/trajectory_io.h"
-#include "mlndt/eval/trajectory_metrics.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"

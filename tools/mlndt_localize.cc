@@ -33,12 +33,12 @@
 #include <iostream>
 #include <sstream>
 
+#include "lab/eval/statistics.h"
+#include "lab/eval/trajectory_io.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
-#include "mlndt/eval/statistics.h"
-#include "mlndt/eval/trajectory_io.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/map_memory.h"
 #include "mlndt/pipeline/localizer.h"

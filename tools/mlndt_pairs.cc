@@ -21,12 +21,12 @@
 #include <iostream>
 #include <sstream>
 
+#include "lab/eval/dataset.h"
+#include "lab/eval/statistics.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/dataset.h"
-#include "mlndt/eval/statistics.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"

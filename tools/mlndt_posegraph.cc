@@ -25,7 +25,7 @@
 //   ate_{chained,joint}_m: RMSE of the translation error over all scans after
 //       aligning the first poses (estimate_k -> gt_0 est_0^-1 est_k; no
 //       rotation, translation or scale fit beyond that; ComputeAte with
-//       FIRST_POSE, mlndt/eval/trajectory_metrics.h);
+//       FIRST_POSE, lab/eval/trajectory_metrics.h);
 //   rpe_{chained,joint}: mean over consecutive scans of the relative pose
 //       error gt_{k,k+1}^-1 est_{k,k+1} (ComputeRpe, delta 1):
 //       {"translation_m", "rotation_deg"}.
@@ -41,13 +41,13 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/dataset.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/cost/robust_loss.h"
-#include "mlndt/eval/dataset.h"
 #include "tools/common/json_output.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"

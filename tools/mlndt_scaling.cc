@@ -54,11 +54,11 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/dataset.h"
+#include "lab/eval/statistics.h"
+#include "lab/runs/matcher.h"
+#include "lab/runs/scan_store.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/dataset.h"
-#include "mlndt/eval/statistics.h"
-#include "mlndt/pipeline/matcher.h"
-#include "mlndt/pipeline/scan_store.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"

@@ -28,7 +28,7 @@
 // --method=ndt builds its own single grid per pair (no prebuilt-grid API).
 //
 // --adaptive_start_layer: the paper's proposal (end of Section 5.3), defined
-// precisely in mlndt/pipeline/adaptive_start_layer.h: start on the last layer;
+// precisely in lab/runs/adaptive_start_layer.h: start on the last layer;
 // a pair fails when its estimate is more than 1 m or 15 deg from its --init
 // guess (or the registration fails); while the running fail rate over the
 // pairs so far exceeds 5 % start one layer coarser, above 20 % two coarser.
@@ -51,12 +51,12 @@
 #include <iostream>
 #include <sstream>
 
+#include "lab/eval/dataset.h"
+#include "lab/runs/scan_store.h"
+#include "lab/runs/sequence_registration.h"
+#include "lab/runs/sequence_totals.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/dataset.h"
-#include "mlndt/pipeline/scan_store.h"
-#include "mlndt/pipeline/sequence_registration.h"
-#include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"

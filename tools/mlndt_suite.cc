@@ -35,8 +35,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "mlndt/eval/suite_report.h"
-#include "mlndt/pipeline/suite_runner.h"
+#include "lab/eval/suite_report.h"
+#include "lab/runs/suite_runner.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/json_output.h"

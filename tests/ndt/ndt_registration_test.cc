@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "lab/runs/matcher.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/ndt/gaussian_score.h"
 #include "mlndt/ndt/ndt_objective.h"
-#include "mlndt/pipeline/matcher.h"
 #include "mlndt/registration/registration.h"
 #include "tests/testing/synthetic_scene.h"
 #include "tests/testing/test_data.h"

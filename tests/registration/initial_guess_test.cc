@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "lab/eval/reference_pairs.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/reference_pairs.h"
 #include "mlndt/registration/registration.h"
 #include "tests/testing/test_data.h"
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/trajectory_io.h"
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/eval/trajectory_io.h"
 #include "tests/testing/run_tool.h"
 #include "tests/testing/test_data.h"
 

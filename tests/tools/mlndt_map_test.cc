@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/dataset.h"
+#include "lab/eval/trajectory_io.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/eval/dataset.h"
-#include "mlndt/eval/trajectory_io.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/sampling/point_sampler.h"

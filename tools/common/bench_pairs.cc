@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <map>
 
+#include "lab/eval/reference_pairs.h"
 #include "mlndt/cloud/io.h"
-#include "mlndt/eval/reference_pairs.h"
 #include "tools/common/list_flags.h"
 
 namespace mlndt {

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "mlndt/eval/statistics.h"
+#include "lab/eval/statistics.h"
 
 namespace mlndt {
 namespace tools {

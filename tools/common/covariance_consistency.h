@@ -2,14 +2,14 @@
 
 // mlndt_covariance's measure: how well the registration covariance P
 // predicts the spread of many registrations of one pair (NEES about the
-// runs' mean and about the reference pose, mlndt/eval/nees.h), per pair and
+// runs' mean and about the reference pose, lab/eval/nees.h), per pair and
 // pooled over a data set.
 
 #include <string>
 #include <vector>
 
+#include "lab/eval/nees.h"
 #include "mlndt/common/types.h"
-#include "mlndt/eval/nees.h"
 #include "tools/common/json_output.h"
 
 namespace mlndt {
@@ -44,7 +44,7 @@ struct Consistency {
   Vector6d predicted_std = Vector6d::Zero();  // sqrt diag mean P.
   Vector6d bias = Vector6d::Zero();           // mean - reference (pair only).
 
-  // k = mean NEES / its expectation (mlndt/eval/nees.h).
+  // k = mean NEES / its expectation (lab/eval/nees.h).
   double k_spread() const {
     return NeesScaleFactor(nees_mean, nees_mean_expected);
   }

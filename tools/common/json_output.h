@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/statistics.h"
 #include "mlndt/common/types.h"
-#include "mlndt/eval/statistics.h"
 #include "mlndt/registration/registration_summary.h"
 
 namespace mlndt {

@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "lab/eval/dataset.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/dataset.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/tool_utils.h"

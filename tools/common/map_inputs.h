@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/trajectory_io.h"
 #include "mlndt/common/types.h"
-#include "mlndt/eval/trajectory_io.h"
 
 namespace mlndt {
 namespace tools {

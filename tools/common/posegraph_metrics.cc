@@ -1,6 +1,6 @@
 #include "tools/common/posegraph_metrics.h"
 
-#include "mlndt/eval/trajectory_metrics.h"
+#include "lab/eval/trajectory_metrics.h"
 
 namespace mlndt {
 namespace tools {
@@ -13,7 +13,7 @@ struct Metrics {
 };
 
 // ATE after aligning the first poses, and the mean RPE of consecutive scans
-// (mlndt/eval/trajectory_metrics.h).
+// (lab/eval/trajectory_metrics.h).
 bool Evaluate(const std::vector<Isometry3d>& estimate,
               const std::vector<Isometry3d>& truth,
               Metrics* metrics,

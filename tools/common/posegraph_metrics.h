@@ -4,7 +4,7 @@
 // refined trajectory, the ATE after aligning the first poses
 // (estimate_k -> gt_0 est_0^-1 est_k; ComputeAte with FIRST_POSE) and the
 // mean relative pose error of consecutive scans (ComputeRpe, delta 1), see
-// mlndt/eval/trajectory_metrics.h.
+// lab/eval/trajectory_metrics.h.
 
 #include <string>
 #include <vector>

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "mlndt/pipeline/matcher.h"
+#include "lab/runs/matcher.h"
 
 // clang-format off
 DECLARE_string(preset);

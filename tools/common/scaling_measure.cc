@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "lab/eval/statistics.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/eval/statistics.h"
 #include "mlndt/sampling/point_sampler.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/tool_utils.h"

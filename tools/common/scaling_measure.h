@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "lab/runs/matcher.h"
 #include "mlndt/cloud/point_cloud.h"
-#include "mlndt/pipeline/matcher.h"
 
 namespace mlndt {
 namespace tools {

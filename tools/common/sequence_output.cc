@@ -4,9 +4,9 @@
 #include <map>
 #include <sstream>
 
+#include "lab/runs/sequence_totals.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/pipeline/sequence_totals.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/eval/statistics.h"
-#include "mlndt/pipeline/scan_store.h"
-#include "mlndt/pipeline/sequence_registration.h"
+#include "lab/eval/statistics.h"
+#include "lab/runs/scan_store.h"
+#include "lab/runs/sequence_registration.h"
 #include "tools/common/json_output.h"
 
 namespace mlndt {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/pipeline/sequence_registration.h"
+#include "lab/runs/sequence_registration.h"
 
 namespace mlndt {
 namespace tools {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/eval/reference_pairs.h"
-#include "mlndt/eval/suite_plan.h"
+#include "lab/eval/reference_pairs.h"
+#include "lab/eval/suite_plan.h"
 
 namespace mlndt {
 namespace tools {

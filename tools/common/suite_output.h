@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/eval/suite_score.h"
-#include "mlndt/pipeline/suite_runner.h"
+#include "lab/eval/suite_score.h"
+#include "lab/runs/suite_runner.h"
 #include "mlndt/registration/quality_check.h"
 #include "tools/common/json_output.h"
 #include "tools/common/suite_inputs.h"

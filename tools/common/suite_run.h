@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/pipeline/matcher.h"
-#include "mlndt/pipeline/suite_runner.h"
+#include "lab/runs/matcher.h"
+#include "lab/runs/suite_runner.h"
 #include "tools/common/suite_inputs.h"
 
 namespace mlndt {

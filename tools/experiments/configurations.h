@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/pipeline/matcher.h"
+#include "lab/runs/matcher.h"
 
 namespace mlndt {
 namespace experiments {

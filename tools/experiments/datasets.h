@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/eval/pose_error.h"
-#include "mlndt/eval/reference_pairs.h"
-#include "mlndt/eval/suite_plan.h"
+#include "lab/eval/pose_error.h"
+#include "lab/eval/reference_pairs.h"
+#include "lab/eval/suite_plan.h"
 
 namespace mlndt {
 namespace experiments {

@@ -14,7 +14,7 @@
 
 #include <vector>
 
-#include "mlndt/eval/suite_plan.h"
+#include "lab/eval/suite_plan.h"
 #include "tools/experiments/datasets.h"
 #include "tools/experiments/run_batch.h"
 

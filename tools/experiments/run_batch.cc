@@ -3,8 +3,8 @@
 #include <chrono>
 #include <sstream>
 
+#include "lab/runs/suite_runner.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/pipeline/suite_runner.h"
 #include "tools/common/progress.h"
 #include "tools/common/suite_output.h"
 #include "tools/common/tool_utils.h"

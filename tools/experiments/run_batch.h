@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/suite_plan.h"
 #include "mlndt/common/types.h"
-#include "mlndt/eval/suite_plan.h"
 #include "tools/experiments/configurations.h"
 #include "tools/experiments/datasets.h"
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lab/runs/matcher.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/pipeline/matcher.h"
 #include "mlndt/solvers/levenberg_marquardt_backend.h"
 #include "tools/common/tool_utils.h"
 #include "tools/experiments/configurations.h"

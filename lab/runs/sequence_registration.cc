@@ -1,0 +1,125 @@
+#include "lab/runs/sequence_registration.h"
+
+#include <glog/logging.h>
+
+#include <utility>
+
+namespace mlndt {
+namespace {
+
+bool CheckInputs(const SequenceOptions& options,
+                 size_t n,
+                 const std::vector<Isometry3d>* truth,
+                 const std::vector<Isometry3d>* odometry,
+                 std::string* error) {
+  if (options.step < 1) {
+    *error = "step must be >= 1";
+    return false;
+  }
+  if (truth != nullptr && truth->size() < n) {
+    *error = "the ground truth has " + std::to_string(truth->size()) +
+             " poses for " + std::to_string(n) + " scans";
+    return false;
+  }
+  if (options.init.mode == InitMode::GT_FRACTION && truth == nullptr) {
+    *error = "--init=gt_fraction needs ground-truth poses";
+    return false;
+  }
+  if (options.init.mode == InitMode::POSES &&
+      (odometry == nullptr || odometry->size() < n)) {
+    *error = "--init=poses: the pose file needs one pose per scan (" +
+             std::to_string(n) + ")";
+    return false;
+  }
+  return true;
+}
+
+// Copies what a pair reports from the registration summary and scores it
+// against the guess and, when known, the truth.
+void FillResult(const SequenceOptions& options,
+                const RegistrationSummary& summary,
+                PairResult* r) {
+  const bool usable = summary.IsSolutionUsable();
+  r->termination = summary.termination_type;
+  r->message = summary.message;
+  r->estimate = usable ? summary.reference_from_input : r->guess;
+  r->iterations = summary.num_iterations;
+  r->start_layer = summary.start_layer;
+  r->num_layers = summary.num_layers;
+  r->sampled_points = summary.sampled_points;
+  r->trace = summary.trace;
+  const GuessCheck check =
+      CheckGuess(options.adaptive, usable, r->guess, r->estimate);
+  r->guess_deviation_m = check.deviation_m;
+  r->guess_deviation_deg = check.deviation_deg;
+  r->guess_check_failed = check.failed;
+  if (r->has_truth) {
+    r->error = ComputePoseError(r->truth, r->estimate);
+    r->success = usable && kPaperSuccessCriterion.IsWithin(r->error);
+    r->strict_success = usable && SuccessCriterion().IsWithin(r->error);
+  }
+}
+
+}  // namespace
+
+bool RunSequence(const SequenceOptions& options,
+                 ScanStore* store,
+                 const std::vector<Isometry3d>* truth,
+                 const std::vector<Isometry3d>* odometry,
+                 const PairCallback& on_pair,
+                 std::vector<PairResult>* results,
+                 std::string* error) {
+  CHECK(store != nullptr);
+  CHECK(results != nullptr);
+  CHECK(error != nullptr);
+  results->clear();
+  const size_t n = store->size();
+  if (!CheckInputs(options, n, truth, odometry, error)) return false;
+  const size_t total = n > options.step ? n - options.step : 0;
+  InitialGuessPolicy guesses(options.init);
+  AdaptiveStartLayer adaptive(options.adaptive);
+  for (size_t i = 0; i + options.step < n; ++i) {
+    const size_t j = i + options.step;
+    PairResult r;
+    r.reference = i;
+    r.input = j;
+    if (truth != nullptr) {
+      r.has_truth = true;
+      r.truth = (*truth)[i].inverse() * (*truth)[j];
+    }
+    r.guess = guesses.Guess(r.truth,
+                            options.init.mode == InitMode::POSES
+                                ? (*odometry)[i].inverse() * (*odometry)[j]
+                                : Isometry3d::Identity());
+    MatcherOptions registration = options.registration;
+    if (options.adaptive.enabled) {
+      r.running_fail_rate = adaptive.running_fail_rate();
+      registration.mlndt.schedule.start_layer = adaptive.StartLayer();
+    }
+    RegistrationSummary summary;
+    if (!RegisterPair(
+            registration, store, i, j, r.guess, &summary, &r.times, error)) {
+      return false;
+    }
+    FillResult(options, summary, &r);
+    adaptive.Record(r.guess_check_failed);
+    guesses.Record(summary.IsSolutionUsable(), r.estimate);
+    results->push_back(std::move(r));
+    if (options.release_used_scans) store->ReleaseBefore(i + 1);
+    if (on_pair) on_pair(results->back(), results->size(), total);
+  }
+  return true;
+}
+
+std::vector<Isometry3d> ChainTrajectory(const std::vector<PairResult>& results,
+                                        size_t step,
+                                        bool use_truth) {
+  std::vector<Isometry3d> poses = {Isometry3d::Identity()};
+  for (const PairResult& r : results) {
+    if (r.reference % step != 0) continue;
+    poses.push_back(poses.back() * (use_truth ? r.truth : r.estimate));
+  }
+  return poses;
+}
+
+}  // namespace mlndt

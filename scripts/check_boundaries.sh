@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Fails when an include crosses a module boundary the wrong way. The
+# dependency order is mlndt <- lab <- tools (README, "Modules"):
+#   mlndt/   the installed library: no lab/, tools/, gflags or nlohmann_json;
+#   lab/     evaluation and experiments: no tools/ and no gflags;
+#   python/  the bindings of the library: no lab/ and no tools/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+status=0
+forbid() {
+  local dir="$1" pattern="$2" why="$3" hits
+  hits="$(grep -rnE "^#include [<\"]($pattern)" "$dir" --include=*.h --include=*.cc || true)"
+  if [[ -n $hits ]]; then
+    echo "check_boundaries: $dir must not include $why:" >&2
+    echo "$hits" >&2
+    status=1
+  fi
+}
+
+forbid mlndt 'lab/|tools/' "the lab or the tools (mlndt <- lab <- tools)"
+forbid mlndt 'gflags/|nlohmann/' "gflags or nlohmann_json (the installed package needs neither)"
+forbid lab 'tools/' "the tools (mlndt <- lab <- tools)"
+forbid lab 'gflags/' "gflags (flags belong to tools/)"
+forbid python/src 'lab/|tools/' "the lab or the tools (Python binds the library only)"
+
+if ((status == 0)); then
+  echo "check_boundaries: mlndt <- lab <- tools, python -> mlndt: ok"
+fi
+exit $status

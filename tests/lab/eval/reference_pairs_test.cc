@@ -1,0 +1,190 @@
+#include "lab/eval/reference_pairs.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "tests/testing/test_data.h"
+
+namespace mlndt {
+namespace {
+
+std::string WriteFile(const std::string& name, const std::string& text) {
+  const ::testing::TestInfo* test =
+      ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string path = ::testing::TempDir() +
+                           "mlndt_reference_pairs_test_" + test->name() + "_" +
+                           name;
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+  return path;
+}
+
+::testing::AssertionResult Contains(const std::string& text,
+                                    const std::string& part) {
+  if (text.find(part) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "'" << text << "' does not contain '" << part << "'";
+}
+
+const char* const kIdentity = "[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0]";
+
+TEST(ReadReferencePairs, KittiHasTheTwentyOnePairsOfItsReadme) {
+  std::map<std::string, ReferencePair> pairs;
+  std::string error;
+  ASSERT_TRUE(ReadReferencePairs(
+      testing::BundledDataPath("kitti/reference_pairs.json"), &pairs, &error))
+      << error;
+  // Consensus |t| [m] from the table in the data set's README.
+  const std::map<std::string, double> readme = {
+      {"0_1", 0.690}, {"1_2", 0.700}, {"2_3", 0.726}, {"3_4", 0.733},
+      {"4_5", 0.737}, {"5_6", 0.764}, {"6_7", 0.778}, {"0_2", 1.382},
+      {"1_3", 1.422}, {"2_4", 1.456}, {"3_5", 1.489}, {"4_6", 1.517},
+      {"5_7", 1.542}, {"0_3", 2.107}, {"1_4", 2.159}, {"2_5", 2.208},
+      {"3_6", 2.253}, {"4_7", 2.292}, {"0_5", 3.587}, {"1_6", 3.666},
+      {"2_7", 3.743}};
+  ASSERT_EQ(pairs.size(), 21u);
+  for (const auto& [key, norm] : readme) {
+    ASSERT_EQ(pairs.count(key), 1u) << key;
+    EXPECT_NEAR(
+        pairs.at(key).reference_from_input.translation().norm(), norm, 0.0006)
+        << key;
+    EXPECT_EQ(ReferencePairKey(pairs.at(key).reference_index,
+                               pairs.at(key).input_index),
+              key);
+  }
+  const ReferencePair& first = pairs.at("0_1");
+  EXPECT_EQ(first.reference_index, 0);
+  EXPECT_EQ(first.input_index, 1);
+  EXPECT_DOUBLE_EQ(first.spread_m, 0.0148);
+  EXPECT_DOUBLE_EQ(first.spread_deg, 0.055);
+  EXPECT_DOUBLE_EQ(first.reference_from_input.translation().x(), 0.689459865);
+  // The prior is the official ground truth: 0.860 m (README table).
+  ASSERT_TRUE(first.prior_from_input.has_value());
+  EXPECT_NEAR(first.prior_from_input->translation().norm(), 0.860, 0.0006);
+}
+
+TEST(ReadReferencePairs, Koide3PairReads) {
+  std::map<std::string, ReferencePair> pairs;
+  std::string error;
+  ASSERT_TRUE(ReadReferencePairs(
+      testing::BundledDataPath("koide3/reference_pairs.json"), &pairs, &error))
+      << error;
+  ASSERT_EQ(pairs.size(), 1u);
+  const ReferencePair& pair = pairs.at("251370668_251371071");
+  EXPECT_EQ(pair.reference_index, 251370668);
+  EXPECT_EQ(pair.input_index, 251371071);
+  EXPECT_DOUBLE_EQ(pair.reference_from_input.translation().y(), 0.126538434);
+  EXPECT_DOUBLE_EQ(pair.spread_m, 0.0332);
+  ASSERT_TRUE(pair.prior_from_input.has_value());
+  EXPECT_TRUE(pair.prior_from_input->isApprox(Isometry3d::Identity()));
+}
+
+TEST(ReadReferencePairs, EverySharedDataSetReads) {
+  MLNDT_REQUIRE_SHARED_DATA(dir);
+  const std::map<std::string, size_t> expected = {
+      {"kitti00_frames_0000_0007", 21},
+      {"koide3_velodyne_pair", 1},
+      {"pcl_room_scans", 1},
+      {"3dtk_example_scans", 2},
+      {"mulran_kaist03_keyframes", 84}};
+  for (const auto& [folder, count] : expected) {
+    std::map<std::string, ReferencePair> pairs;
+    std::string error;
+    ASSERT_TRUE(ReadReferencePairs(
+        dir + "/" + folder + "/reference_pairs.json", &pairs, &error))
+        << error;
+    EXPECT_EQ(pairs.size(), count) << folder;
+  }
+}
+
+TEST(ReadReferencePairs, OptionalPriorMayBeAbsent) {
+  const std::string path = WriteFile(
+      "p.json",
+      std::string("{\"3_5\": {\"reference_from_input\": ") + kIdentity +
+          ", \"spread_m\": 0.01, \"spread_deg\": 0.1, \"methods\": []}}");
+  std::map<std::string, ReferencePair> pairs;
+  std::string error;
+  ASSERT_TRUE(ReadReferencePairs(path, &pairs, &error)) << error;
+  EXPECT_FALSE(pairs.at("3_5").prior_from_input.has_value());
+  EXPECT_EQ(pairs.at("3_5").input_index, 5);
+}
+
+struct BadCase {
+  const char* name;
+  std::string json;
+  const char* message;  // Expected in the error, after "<path>: ".
+};
+
+TEST(ReadReferencePairs, BadFilesNameTheFileAndTheKey) {
+  const std::string matrix = kIdentity;
+  const std::string spreads = ", \"spread_m\": 0.01, \"spread_deg\": 0.1";
+  const BadCase cases[] = {
+      {"truncated",
+       "{\"0_1\": {\"reference_from_input\": [1, 0",
+       "malformed JSON"},
+      {"not_object", "[1, 2]", "expected a JSON object"},
+      {"empty", "{}", "no pairs"},
+      {"bad_key",
+       "{\"a_1\": {\"reference_from_input\": " + matrix + spreads + "}}",
+       "key \"a_1\""},
+      {"negative_key",
+       "{\"-1_1\": {\"reference_from_input\": " + matrix + spreads + "}}",
+       "key \"-1_1\""},
+      {"missing_matrix",
+       "{\"0_1\": {\"spread_m\": 0.1, \"spread_deg\": 1}}",
+       "\"0_1\": reference_from_input: missing"},
+      {"missing_spread",
+       "{\"0_1\": {\"reference_from_input\": " + matrix +
+           ", \"spread_m\": 0.01}}",
+       "\"0_1\": spread_deg: missing"},
+      {"short_matrix",
+       "{\"0_1\": {\"reference_from_input\": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, "
+       "1]" +
+           spreads + "}}",
+       "\"0_1\": reference_from_input: expected an array of 12 numbers "
+       "(row-major 3x4), found 11 elements"},
+      {"string_element",
+       "{\"0_1\": {\"reference_from_input\": [1, 0, 0, \"x\", 0, 1, 0, 0, 0, "
+       "0, 1, 0]" +
+           spreads + "}}",
+       "\"0_1\": reference_from_input: element 3 is not a finite number"},
+      {"not_rotation",
+       "{\"0_1\": {\"reference_from_input\": [1.1, 0, 0, 0, 0, 1, 0, 0, 0, 0, "
+       "1, 0]" +
+           spreads + "}}",
+       "\"0_1\": reference_from_input: the 3x3 part is not a rotation"},
+      {"reflection",
+       "{\"0_1\": {\"reference_from_input\": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, "
+       "-1, 0]" +
+           spreads + "}}",
+       "not a rotation"},
+      {"bad_prior",
+       "{\"0_1\": {\"reference_from_input\": " + matrix + spreads +
+           ", \"prior_from_input\": [1, 2]}}",
+       "\"0_1\": prior_from_input: expected an array of 12"},
+      {"negative_spread",
+       "{\"0_1\": {\"reference_from_input\": " + matrix +
+           ", \"spread_m\": -0.01, \"spread_deg\": 0.1}}",
+       "\"0_1\": spread_m: expected a finite number >= 0"},
+      {"entry_not_object", "{\"0_1\": 5}", "\"0_1\": expected an object"},
+  };
+  for (const BadCase& c : cases) {
+    const std::string path = WriteFile(std::string(c.name) + ".json", c.json);
+    std::map<std::string, ReferencePair> pairs;
+    std::string error;
+    EXPECT_FALSE(ReadReferencePairs(path, &pairs, &error)) << c.name;
+    EXPECT_TRUE(Contains(error, path + ": ")) << c.name;
+    EXPECT_TRUE(Contains(error, c.message)) << c.name;
+    EXPECT_TRUE(pairs.empty()) << c.name;
+  }
+  std::map<std::string, ReferencePair> pairs;
+  std::string error;
+  EXPECT_FALSE(ReadReferencePairs("/nonexistent/pairs.json", &pairs, &error));
+  EXPECT_TRUE(Contains(error, "/nonexistent/pairs.json"));
+}
+
+}  // namespace
+}  // namespace mlndt
