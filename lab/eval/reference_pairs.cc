@@ -83,9 +83,18 @@ bool ReadEntry(const Json& entry, ReferencePair* pair, std::string* problem) {
     *problem = "expected an object, found " + std::string(entry.type_name());
     return false;
   }
+  if (entry.contains("source")) {
+    if (!entry.at("source").is_string()) {
+      *problem = "source: expected a string";
+      return false;
+    }
+    pair->source = entry.at("source").get<std::string>();
+  }
+  const bool consensus = pair->source.empty();
   for (const char* member :
        {"reference_from_input", "spread_m", "spread_deg"}) {
-    if (!entry.contains(member)) {
+    const bool optional = !consensus && member[0] == 's';
+    if (!entry.contains(member) && !optional) {
       *problem = std::string(member) + ": missing";
       return false;
     }
@@ -97,13 +106,14 @@ bool ReadEntry(const Json& entry, ReferencePair* pair, std::string* problem) {
     *problem = "reference_from_input: " + what;
     return false;
   }
-  if (!ReadSpread(entry.at("spread_m"), &pair->spread_m, &what)) {
-    *problem = "spread_m: " + what;
-    return false;
-  }
-  if (!ReadSpread(entry.at("spread_deg"), &pair->spread_deg, &what)) {
-    *problem = "spread_deg: " + what;
-    return false;
+  for (const auto& [member, spread] :
+       {std::pair{"spread_m", &pair->spread_m},
+        std::pair{"spread_deg", &pair->spread_deg}}) {
+    if (!entry.contains(member)) continue;
+    if (!ReadSpread(entry.at(member), spread, &what)) {
+      *problem = std::string(member) + ": " + what;
+      return false;
+    }
   }
   if (entry.contains("prior_from_input")) {
     Isometry3d prior;

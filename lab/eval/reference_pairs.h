@@ -4,7 +4,8 @@
 // (format in shared/data/README.md). Each entry, keyed "i_j" by the scan
 // numbers in the file names (i = reference = target, j = input = source),
 // holds the consensus of five third-party registrations of scan j onto scan
-// i and how far the five spread around it.
+// i and how far the five spread around it, or, where the five disagreed
+// (the Livox folders), the data set's prior, marked by a "source" member.
 
 #include <cstdint>
 #include <map>
@@ -23,8 +24,12 @@ struct ReferencePair {
   // Largest distance of any of the five registrations from the consensus,
   // in translation [m] and rotation angle [deg]: each reference is good to
   // about this much.
+  // Zero for a prior entry (its accuracy is not known from a spread).
   double spread_m = 0.0;
   double spread_deg = 0.0;
+  // "source": empty for a consensus entry; for an entry that is not a
+  // consensus, where the reference comes from (e.g. "prior: FAST-LIO2 ...").
+  std::string source;
   // "prior_from_input", when present: the data set's own prior pose (the
   // registrations' start; KITTI: its official ground truth).
   std::optional<Isometry3d> prior_from_input;
@@ -38,8 +43,9 @@ std::string ReferencePairKey(int64_t reference_index, int64_t input_index);
 // kept as written; a 3x3 part that is not a rotation within 1e-3 is an
 // error. False with *error naming the file and, for a bad entry, its key
 // and member, on malformed JSON, a key that is not "i_j" with non-negative
-// integers, a missing member, an array that does not hold 12 finite
-// numbers, or a spread that is not a finite number >= 0.
+// integers, a missing member (the spreads may be missing only in an entry
+// with a "source" string), an array that does not hold 12 finite numbers,
+// or a spread that is not a finite number >= 0.
 bool ReadReferencePairs(const std::string& path,
                         std::map<std::string, ReferencePair>* pairs,
                         std::string* error);

@@ -89,7 +89,8 @@ TEST(ReadReferencePairs, EverySharedDataSetReads) {
       {"koide3_velodyne_pair", 1},
       {"pcl_room_scans", 1},
       {"3dtk_example_scans", 2},
-      {"mulran_kaist03_keyframes", 84}};
+      {"mulran_kaist03_keyframes", 84},
+      {"fastlio_avia_hku_2_pairs", 176}};
   for (const auto& [folder, count] : expected) {
     std::map<std::string, ReferencePair> pairs;
     std::string error;
@@ -110,6 +111,35 @@ TEST(ReadReferencePairs, OptionalPriorMayBeAbsent) {
   ASSERT_TRUE(ReadReferencePairs(path, &pairs, &error)) << error;
   EXPECT_FALSE(pairs.at("3_5").prior_from_input.has_value());
   EXPECT_EQ(pairs.at("3_5").input_index, 5);
+}
+
+// The Livox folder's README: 13 consensus entries, 163 prior entries that
+// carry a "source" and no spread.
+TEST(ReadReferencePairs, LivoxPriorEntriesAreMarkedBySource) {
+  MLNDT_REQUIRE_SHARED_DATA(dir);
+  std::map<std::string, ReferencePair> pairs;
+  std::string error;
+  ASSERT_TRUE(ReadReferencePairs(
+      dir + "/fastlio_avia_hku_2_pairs/reference_pairs.json", &pairs, &error))
+      << error;
+  int consensus = 0;
+  for (const auto& [key, pair] : pairs) consensus += pair.source.empty();
+  EXPECT_EQ(consensus, 13);
+  EXPECT_EQ(pairs.at("180_181").source.rfind("prior: FAST-LIO2", 0), 0u);
+  EXPECT_EQ(pairs.at("180_181").spread_m, 0.0);
+  EXPECT_TRUE(pairs.at("192_193").source.empty());
+  EXPECT_GT(pairs.at("192_193").spread_m, 0.0);
+}
+
+TEST(ReadReferencePairs, SpreadsMayBeMissingOnlyWithASource) {
+  const std::string path = WriteFile(
+      "source.json",
+      std::string("{\"3_5\": {\"reference_from_input\": ") + kIdentity +
+          ", \"source\": \"prior: odometry\"}}");
+  std::map<std::string, ReferencePair> pairs;
+  std::string error;
+  ASSERT_TRUE(ReadReferencePairs(path, &pairs, &error)) << error;
+  EXPECT_EQ(pairs.at("3_5").source, "prior: odometry");
 }
 
 struct BadCase {
@@ -170,6 +200,10 @@ TEST(ReadReferencePairs, BadFilesNameTheFileAndTheKey) {
            ", \"spread_m\": -0.01, \"spread_deg\": 0.1}}",
        "\"0_1\": spread_m: expected a finite number >= 0"},
       {"entry_not_object", "{\"0_1\": 5}", "\"0_1\": expected an object"},
+      {"source_not_string",
+       "{\"0_1\": {\"reference_from_input\": " + matrix +
+           ", \"source\": 3}}",
+       "\"0_1\": source: expected a string"},
   };
   for (const BadCase& c : cases) {
     const std::string path = WriteFile(std::string(c.name) + ".json", c.json);
