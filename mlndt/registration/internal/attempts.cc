@@ -66,18 +66,28 @@ int StartLayer(const RegistrationOptions& options, const Problem& problem) {
   return StartLayerForUncertainty(options.schedule, problem.map, displacement);
 }
 
-// True when `xi_local` is farther from the guess than its uncertainty says.
-bool LeftTheUncertainty(const RegistrationOptions& options,
-                        const Problem& problem,
-                        const Vector6d& initial_local,
-                        const Vector6d& xi_local) {
+// True when the coarse layers took `xi_local` farther from the guess than
+// the last layer alone can check: beyond the guess's uncertainty when it is
+// given, else beyond half a last-layer cell (at the points' RMS range for
+// the rotation). A guess within that distance is where the last layer's
+// own basin would have led.
+bool LeftTheGuess(const RegistrationOptions& options,
+                  const Problem& problem,
+                  const Vector6d& initial_local,
+                  const Vector6d& xi_local) {
   const InitialGuessUncertainty& u = options.initial_uncertainty;
   const Isometry3d guess =
       PoseVectorToIsometry(problem.anchor.ToGlobal(initial_local));
   const Isometry3d result =
       PoseVectorToIsometry(problem.anchor.ToGlobal(xi_local));
-  return TranslationErrorM(guess, result) > u.translation_m ||
-         RotationErrorRad(guess, result) > u.rotation_deg * kDegToRad;
+  const double moved_m = TranslationErrorM(guess, result);
+  const double turned_rad = RotationErrorRad(guess, result);
+  if (u.given) {
+    return moved_m > u.translation_m || turned_rad > u.rotation_deg * kDegToRad;
+  }
+  const double quarter_cell_m =
+      0.25 * problem.map.layer_info().back().cell_size_m;
+  return moved_m + turned_rad * problem.rms_range_m > quarter_cell_m;
 }
 
 // Verdicts from worst to best: a converged, checked pose is what a retry
@@ -128,8 +138,8 @@ Attempt SolveAttempts(const RegistrationOptions& options,
   *attempts = 1;
   if (best.schedule.termination_type == TerminationType::FAILURE) return best;
   const InitialGuessUncertainty& u = options.initial_uncertainty;
-  if (u.given && start < n &&
-      LeftTheUncertainty(options, problem, initial_local, best.xi_local)) {
+  if (start < n &&
+      LeftTheGuess(options, problem, initial_local, best.xi_local)) {
     ++*attempts;
     KeepBetter(Solve(options, problem, n, initial_local, start_time_s), &best);
   }

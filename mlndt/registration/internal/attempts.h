@@ -4,9 +4,10 @@
 // the reported one is chosen:
 //  1. the schedule from the start layer (schedule.start_layer, or the layer
 //     the initial guess's uncertainty needs);
-//  2. with an uncertainty given, when the result left it: the last layer
-//     alone from the guess; the better fit wins, so a good guess is never
-//     made worse;
+//  2. when the result left the guess (beyond its uncertainty when one is
+//     given, else beyond half a last-layer cell): the last layer alone from
+//     the guess; the better fit wins, so a good guess is never made worse
+//     by the coarse layers (they can pull a sparse scan into another basin);
 //  3. until a result converges and passes the quality check: the schedule
 //     again from the guess turned about the input's centroid by each yaw
 //     seed (retry); the best verdict wins, then the most inliers (every
