@@ -2,9 +2,9 @@
 
 #include <glog/logging.h>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 
 #include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/pose.h"
@@ -27,16 +27,6 @@ GaussianScoreOptions ScoreOptionsFor(const NdtOptions& options) {
   score.neighbors = options.neighbors;
   score.num_threads = options.num_threads;
   return score;
-}
-
-// H^-1 when H is positive definite, else zero. The Gaussian score
-// approximates the negative log-likelihood of the input points up to a
-// constant (Magnusson Eq. 6.8), so H^-1 is its Laplace covariance.
-Matrix6d CovarianceFromHessian(const Matrix6d& hessian) {
-  const Eigen::LLT<Matrix6d> llt(hessian);
-  if (llt.info() != Eigen::Success) return Matrix6d::Zero();
-  const Matrix6d covariance = llt.solve(Matrix6d::Identity());
-  return covariance.allFinite() ? covariance : Matrix6d::Zero();
 }
 
 // The objective with its Newton Hessian shifted to H + mu I, mu >= 0, so
@@ -136,15 +126,68 @@ std::string MinimizeOnGrid(const NdtOptions& options,
   summary->matched_points = final.matched;
   summary->unmatched_points = final.unmatched;
   summary->hessian = final.hessian;
-  summary->covariance = CovarianceFromHessian(final.hessian);
   summary->termination_type = newton.termination_type;
   summary->message = newton.message;
   return "";
 }
 
+// The verdict on `verdict_layer` (nullptr: cells too coarse to check), and
+// the covariance: the Gaussian score approximates the negative
+// log-likelihood of the input points up to a constant (Magnusson Eq. 6.8),
+// so H^-1 is its Laplace covariance; infinite where H is not positive
+// definite or the fit leaves a direction free.
+void Judge(const NdtOptions& options,
+           const NdtLayer* verdict_layer,
+           const std::vector<Eigen::Vector3d>& points,
+           RegistrationSummary* summary) {
+  if (verdict_layer == nullptr) {
+    summary->covariance =
+        LaplaceCovariance(summary->hessian, 1.0, ConstraintAnalysis());
+    if (options.quality_check.enabled &&
+        summary->termination_type == TerminationType::CONVERGENCE) {
+      summary->termination_type = TerminationType::NO_CONVERGENCE;
+      summary->message =
+          "not checked: the map's cells are too coarse for the fit check "
+          "(register from the reference cloud for a verdict); solver: " +
+          summary->message;
+    }
+    return;
+  }
+  double squares = 0.0;
+  for (const Eigen::Vector3d& p : points) squares += p.squaredNorm();
+  const double rms_range_m =
+      std::sqrt(squares / static_cast<double>(points.size()));
+  Judgement judgement = JudgeSolution(options.quality_check,
+                                      summary->termination_type,
+                                      *verdict_layer,
+                                      points,
+                                      summary->reference_from_input_xi,
+                                      ObjectiveOptions(),
+                                      rms_range_m);
+  summary->quality = judgement.fit;
+  summary->constraints = judgement.constraints;
+  summary->covariance =
+      LaplaceCovariance(summary->hessian, 1.0, judgement.constraints);
+  if (judgement.verdict != summary->termination_type) {
+    summary->termination_type = judgement.verdict;
+    summary->message =
+        judgement.message + " (solver: " + summary->message + ")";
+  }
+}
+
+// The layer an NDT result on `map` is judged on: its own when the cells are
+// at most twice ML-NDT's finest cell, else none.
+const NdtLayer* VerdictLayerOf(const LayeredGrid& map) {
+  const double finest = LayeredGridOptions().finest_cell_size_m;
+  return map.layer_info().back().cell_size_m <= 2.0 * finest
+             ? &map.layer(map.num_layers())
+             : nullptr;
+}
+
 // Registration once the grid exists; times are added to *summary.
 void RegisterOnGrid(const NdtOptions& options,
                     const LayeredGrid& map,
+                    const NdtLayer* verdict_layer,
                     const PointCloud& input,
                     const Isometry3d& initial_reference_from_input,
                     double start_time_s,
@@ -172,7 +215,8 @@ void RegisterOnGrid(const NdtOptions& options,
     error =
         internal::CheckMatchedFraction(options.min_matched_fraction, *summary);
   }
-  if (!error.empty()) Fail(error, summary);
+  if (!error.empty()) return Fail(error, summary);
+  Judge(options, verdict_layer, sampled.points(), summary);
 }
 
 }  // namespace
@@ -191,7 +235,7 @@ bool NdtOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
   MLNDT_OPTION_IN_RANGE(min_matched_fraction, 0.0, 1.0);
   return range_filter.IsValid(error) && sampling.IsValid(error) &&
-         newton.IsValid(error);
+         newton.IsValid(error) && quality_check.IsValid(error);
 }
 
 bool NdtGridOptions(const NdtOptions& options,
@@ -233,19 +277,29 @@ void RegisterNdt(const NdtOptions& options,
   std::string error;
   LayeredGridOptions grid_options;
   PointCloud filtered;
-  LayeredGrid map;
+  LayeredGrid map, verdict_map;
   if (!options.IsValid(&error)) {
     Fail(error, summary);
   } else if (!internal::FilterReference(
                  options.range_filter, reference, &filtered, &error) ||
              !NdtGridOptions(options, filtered, &grid_options, &error) ||
              !LayeredGrid::Build(
-                 grid_options, filtered, options.num_threads, &map, &error)) {
+                 grid_options, filtered, options.num_threads, &map, &error) ||
+             !LayeredGrid::Build(LayeredGridOptions(),
+                                 filtered,
+                                 options.num_threads,
+                                 &verdict_map,
+                                 &error)) {
     Fail("reference map: " + error, summary);
   } else {
     summary->map_time_s = NowSeconds() - start;
-    RegisterOnGrid(
-        options, map, input, initial_reference_from_input, start, summary);
+    RegisterOnGrid(options,
+                   map,
+                   &verdict_map.layer(verdict_map.num_layers()),
+                   input,
+                   initial_reference_from_input,
+                   start,
+                   summary);
   }
   summary->total_time_s = NowSeconds() - start;
 }
@@ -265,6 +319,7 @@ void RegisterNdt(const NdtOptions& options,
   } else {
     RegisterOnGrid(options,
                    reference_map,
+                   VerdictLayerOf(reference_map),
                    input,
                    initial_reference_from_input,
                    start,

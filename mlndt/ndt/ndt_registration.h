@@ -19,6 +19,7 @@
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/ndt/gaussian_score.h"
+#include "mlndt/registration/quality_check.h"
 #include "mlndt/registration/registration_summary.h"
 #include "mlndt/sampling/point_sampler.h"
 #include "mlndt/solvers/newton_backend.h"
@@ -61,6 +62,11 @@ struct NdtOptions {
   // FAILURE when fewer than this fraction of the sampled points are matched
   // at the solution. In [0, 1].
   double min_matched_fraction = 0.05;
+  // The verdict, as ML-NDT's (quality_check.h: the same function judges
+  // both). It is judged on cells of ML-NDT's finest size
+  // (LayeredGridOptions' default, built from the reference for it), not on
+  // the NDT grid: the check's thresholds are measured on those cells.
+  QualityCheckOptions quality_check;
 
   bool IsValid(std::string* error) const;
 };
@@ -82,7 +88,10 @@ void RegisterNdt(const NdtOptions& options,
 
 // Registers against the finest layer of a map built beforehand (for NDT,
 // with NdtGridOptions: one layer; cell_size_m, min_points_per_cell and
-// regularization of options do not apply).
+// regularization of options do not apply). The verdict is judged on that
+// layer when its cells are at most twice ML-NDT's finest cell; on coarser
+// cells the fit cannot be checked, and a converged result is reported as
+// NO_CONVERGENCE saying so (the cloud overload checks it).
 void RegisterNdt(const NdtOptions& options,
                  const LayeredGrid& reference_map,
                  const PointCloud& input,

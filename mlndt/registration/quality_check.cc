@@ -1,7 +1,10 @@
 #include "mlndt/registration/quality_check.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "mlndt/common/internal/check_option.h"
@@ -134,6 +137,68 @@ TerminationType CheckQuality(const QualityCheckOptions& options,
   }
   *message = why.str();
   return TerminationType::LOW_QUALITY;
+}
+
+Judgement JudgeSolution(const QualityCheckOptions& options,
+                        TerminationType solver_termination,
+                        const NdtLayer& layer,
+                        const std::vector<Eigen::Vector3d>& input_points,
+                        const Vector6d& reference_from_input_xi,
+                        const ObjectiveOptions& objective,
+                        double rms_range_m) {
+  Judgement judgement;
+  judgement.fit = EvaluateFitQuality(layer,
+                                     input_points,
+                                     reference_from_input_xi,
+                                     objective,
+                                     options.inlier_gate);
+  judgement.constraints = AnalyseConstraints(layer,
+                                             input_points,
+                                             reference_from_input_xi,
+                                             objective,
+                                             rms_range_m,
+                                             options.min_constraint_ratio);
+  judgement.verdict = CheckQuality(options,
+                                   solver_termination,
+                                   judgement.fit,
+                                   judgement.constraints,
+                                   &judgement.message);
+  return judgement;
+}
+
+Matrix6d LaplaceCovariance(const Matrix6d& hessian,
+                           double scale,
+                           const ConstraintAnalysis& constraints) {
+  if (constraints.degenerate_directions.empty()) {
+    const Eigen::LLT<Matrix6d> positive_definite(hessian);
+    const Eigen::FullPivLU<Matrix6d> lu(hessian);
+    if (positive_definite.info() == Eigen::Success && lu.isInvertible()) {
+      const Matrix6d covariance = scale * lu.inverse();
+      if (covariance.allFinite()) return covariance;
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(hessian);
+  const double largest = std::max(solver.eigenvalues()(5), 0.0);
+  Matrix6d covariance = Matrix6d::Zero();
+  Vector6d unconstrained = Vector6d::Zero();
+  for (int i = 0; i < 6; ++i) {
+    const double lambda = solver.eigenvalues()(i);
+    const Vector6d v = solver.eigenvectors().col(i);
+    if (lambda > 1e-12 * largest && largest > 0.0) {
+      covariance += (scale / lambda) * v * v.transpose();
+    } else {
+      unconstrained = unconstrained.cwiseMax(v.cwiseAbs());
+    }
+  }
+  for (const Vector6d& d : constraints.degenerate_directions) {
+    unconstrained = unconstrained.cwiseMax(d.cwiseAbs());
+  }
+  for (int i = 0; i < 6; ++i) {
+    if (unconstrained(i) > 0.1) {
+      covariance(i, i) = std::numeric_limits<double>::infinity();
+    }
+  }
+  return covariance;
 }
 
 }  // namespace mlndt

@@ -79,6 +79,34 @@ TerminationType CheckQuality(const QualityCheckOptions& options,
                              const ConstraintAnalysis& constraints,
                              std::string* message);
 
+// A solution judged: its fit, its constraints and the verdict on them.
+struct Judgement {
+  FitQuality fit;
+  ConstraintAnalysis constraints;
+  TerminationType verdict = TerminationType::FAILURE;
+  std::string message;  // Why, when the verdict is not the solver's.
+};
+
+// The one verdict of a pose, whichever method found it (ML-NDT's attempts,
+// the NDT baseline): the fit of `input_points` moved by xi onto `layer`,
+// the constraint analysis (rotations about the points' origin, scaled by
+// `rms_range_m`) and CheckQuality on them.
+Judgement JudgeSolution(const QualityCheckOptions& options,
+                        TerminationType solver_termination,
+                        const NdtLayer& layer,
+                        const std::vector<Eigen::Vector3d>& input_points,
+                        const Vector6d& reference_from_input_xi,
+                        const ObjectiveOptions& objective,
+                        double rms_range_m);
+
+// The Laplace covariance `scale` H^-1 at a solution (scale 2 for whitened
+// residuals of unit variance, 1 for a negative log-likelihood), infinite
+// along the constraint analysis' degenerate directions and along directions
+// in which H is not positive definite; the inverse on the rest.
+Matrix6d LaplaceCovariance(const Matrix6d& hessian,
+                           double scale,
+                           const ConstraintAnalysis& constraints);
+
 // "translation along (0.98, 0.17, 0.00)" and the like, for messages.
 std::string DescribeDirection(const Vector6d& direction);
 

@@ -26,39 +26,6 @@ void Fail(const std::string& message, RegistrationSummary* summary) {
 using internal::Attempt;
 using internal::Problem;
 
-// 2 H^-1 (the Laplace approximation for whitened residuals of unit
-// variance), infinite along the degenerate directions (scaled frame of
-// `constraints`) and the inverse on the rest.
-Matrix6d CovarianceFromHessian(const Matrix6d& hessian,
-                               const ConstraintAnalysis& constraints) {
-  if (constraints.degenerate_directions.empty()) {
-    const Eigen::FullPivLU<Matrix6d> lu(hessian);
-    if (lu.isInvertible()) return 2.0 * lu.inverse();
-  }
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(hessian);
-  const double largest = std::max(solver.eigenvalues()(5), 0.0);
-  Matrix6d covariance = Matrix6d::Zero();
-  Vector6d unconstrained = Vector6d::Zero();
-  for (int i = 0; i < 6; ++i) {
-    const double lambda = solver.eigenvalues()(i);
-    const Vector6d v = solver.eigenvectors().col(i);
-    if (lambda > 1e-12 * largest && largest > 0.0) {
-      covariance += (2.0 / lambda) * v * v.transpose();
-    } else {
-      unconstrained = unconstrained.cwiseMax(v.cwiseAbs());
-    }
-  }
-  for (const Vector6d& d : constraints.degenerate_directions) {
-    unconstrained = unconstrained.cwiseMax(d.cwiseAbs());
-  }
-  for (int i = 0; i < 6; ++i) {
-    if (unconstrained(i) > 0.1) {
-      covariance(i, i) = std::numeric_limits<double>::infinity();
-    }
-  }
-  return covariance;
-}
-
 // The pose, score, counts, fit, constraints, Hessian and covariance at the
 // attempt's solution, on the last layer, in the input frame's
 // parametrisation (Eq. 11).
@@ -74,8 +41,10 @@ void ReportSolution(const RegistrationOptions& options,
   const Matrix6d j_inverse = j.inverse();
   summary->constraints = attempt.constraints;
   summary->quality = attempt.fit;
+  // 2 H^-1: the Laplace approximation for whitened residuals of unit
+  // variance.
   const Matrix6d local_covariance =
-      CovarianceFromHessian(final.hessian, summary->constraints);
+      LaplaceCovariance(final.hessian, 2.0, summary->constraints);
   summary->reference_from_input =
       PoseVectorToIsometry(problem.anchor.ToGlobal(local));
   // Angles wrapped to (-pi, pi] by the round trip.

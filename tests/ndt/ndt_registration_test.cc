@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -339,6 +340,54 @@ TEST_F(NdtKittiFrames, ConsecutivePairsFromIdentity) {
   EXPECT_GE(ConsecutiveSuccesses(Ndt(0.0), &report), 5) << report;
   report.clear();
   EXPECT_GE(ConsecutiveSuccesses(Ndt(2.0), &report), 5) << report;
+}
+
+// The NDT baseline has ML-NDT's verdict (JudgeSolution): started 180 deg
+// off, its Newton steps stop wherever the Gaussian score flattens, and
+// before the verdict every such stop was CONVERGENCE (5 m off, exit 0).
+TEST_F(NdtKittiFrames, AWrongPoseFromAFarStartIsNotCalledConverged) {
+  int wrong = 0;
+  for (int i = 0; i + 1 < 8; i += 2) {
+    const Isometry3d truth = poses_[i].inverse() * poses_[i + 1];
+    Isometry3d turned = truth;
+    turned.linear() =
+        Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()) * truth.linear();
+    RegistrationSummary s;
+    Register(NdtOptions(), scans_[i], scans_[i + 1], turned, &s);
+    const bool right =
+        TranslationErrorM(truth, s.reference_from_input) < 0.2 &&
+        RotationErrorRad(truth, s.reference_from_input) < 1.0 * kDegToRad;
+    wrong += !right;
+    if (!right) {
+      EXPECT_FALSE(s.IsSolutionUsable()) << "pair " << i << "\n"
+                                         << s.FullReport();
+    }
+  }
+  EXPECT_GT(wrong, 0) << "no start ended wrong: the test checks nothing";
+}
+
+// A ground plane alone: the fit leaves its in-plane translations and the
+// turn about its normal free. The verdict names it, and the covariance is
+// infinite along them (it was H^-1 of a near-singular Hessian, or zero).
+TEST(NdtBaseline, APlaneIsDegenerateWithAnInfiniteCovariance) {
+  const auto plane = [](int n, unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> xy(-20.0, 20.0);
+    std::normal_distribution<double> noise(0.0, 0.02);
+    PointCloud cloud;
+    for (int k = 0; k < n; ++k) {
+      cloud.Add(Eigen::Vector3d(xy(random), xy(random), noise(random)));
+    }
+    return cloud;
+  };
+  RegistrationSummary s;
+  Register(
+      Ndt(2.0), plane(20000, 1), plane(20000, 2), Isometry3d::Identity(), &s);
+  EXPECT_EQ(s.termination_type, TerminationType::DEGENERATE) << s.message;
+  EXPECT_NE(s.message.find("translation along"), std::string::npos)
+      << s.message;
+  EXPECT_TRUE(std::isinf(s.covariance(0, 0)) && std::isinf(s.covariance(1, 1)))
+      << s.covariance;
 }
 
 }  // namespace

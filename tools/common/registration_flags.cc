@@ -194,17 +194,21 @@ bool ParseSchedule(LayerScheduleOptions* schedule) {
   return true;
 }
 
-bool ParseTrust(RegistrationOptions* options, std::string* error) {
-  QualityCheckOptions& check = options->quality_check;
-  if (Given("quality_check")) check.enabled = FLAGS_quality_check;
+// The verdict's flags: both methods are judged by the same check.
+void ParseQualityCheck(QualityCheckOptions* check) {
+  if (Given("quality_check")) check->enabled = FLAGS_quality_check;
   if (Given("min_inlier_fraction")) {
-    check.min_inlier_fraction = FLAGS_min_inlier_fraction;
+    check->min_inlier_fraction = FLAGS_min_inlier_fraction;
   }
-  if (Given("max_mean_score")) check.max_mean_score = FLAGS_max_mean_score;
-  if (Given("inlier_gate")) check.inlier_gate = FLAGS_inlier_gate;
+  if (Given("max_mean_score")) check->max_mean_score = FLAGS_max_mean_score;
+  if (Given("inlier_gate")) check->inlier_gate = FLAGS_inlier_gate;
   if (Given("min_constraint_ratio")) {
-    check.min_constraint_ratio = FLAGS_min_constraint_ratio;
+    check->min_constraint_ratio = FLAGS_min_constraint_ratio;
   }
+}
+
+bool ParseTrust(RegistrationOptions* options, std::string* error) {
+  ParseQualityCheck(&options->quality_check);
   if (Given("retry_yaw_seeds") &&
       !ParseNumberList(FLAGS_retry_yaw_seeds, &options->retry.yaw_seeds_deg)) {
     *error = "--retry_yaw_seeds=" + FLAGS_retry_yaw_seeds +
@@ -293,6 +297,7 @@ bool ParseNdt(NdtOptions* options, std::string* error) {
   options->outlier_ratio = FLAGS_ndt_outlier_ratio;
   options->max_iterations = FLAGS_ndt_max_iterations;
   options->max_step_norm = FLAGS_ndt_max_step;
+  ParseQualityCheck(&options->quality_check);
   options->step_tolerance = FLAGS_step_tolerance;
   options->num_threads = FLAGS_threads;
   ParseCells(&options->min_points_per_cell, &options->regularization);

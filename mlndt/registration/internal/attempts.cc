@@ -11,26 +11,21 @@ namespace {
 void Assess(const RegistrationOptions& options,
             const Problem& problem,
             Attempt* attempt) {
-  const ScoreEvaluation evaluation = EvaluateScore(
-      problem.last(), problem.points, attempt->xi_local, options.objective);
-  attempt->final_score = evaluation.score;
-  attempt->fit = EvaluateFitQuality(problem.last(),
-                                    problem.points,
-                                    attempt->xi_local,
-                                    options.objective,
-                                    options.quality_check.inlier_gate);
-  attempt->constraints =
-      AnalyseConstraints(problem.last(),
-                         problem.points,
-                         attempt->xi_local,
-                         options.objective,
-                         problem.rms_range_m,
-                         options.quality_check.min_constraint_ratio);
-  attempt->verdict = CheckQuality(options.quality_check,
-                                  attempt->schedule.termination_type,
-                                  attempt->fit,
-                                  attempt->constraints,
-                                  &attempt->verdict_message);
+  attempt->final_score =
+      EvaluateScore(
+          problem.last(), problem.points, attempt->xi_local, options.objective)
+          .score;
+  Judgement judgement = JudgeSolution(options.quality_check,
+                                      attempt->schedule.termination_type,
+                                      problem.last(),
+                                      problem.points,
+                                      attempt->xi_local,
+                                      options.objective,
+                                      problem.rms_range_m);
+  attempt->fit = judgement.fit;
+  attempt->constraints = std::move(judgement.constraints);
+  attempt->verdict = judgement.verdict;
+  attempt->verdict_message = std::move(judgement.message);
 }
 
 Attempt Solve(const RegistrationOptions& options,
@@ -116,6 +111,24 @@ void KeepBetter(Attempt candidate, Attempt* best) {
   }
 }
 
+// True when the two solutions lie farther apart than a tenth of a last-layer
+// cell (rotation at the points' RMS range): different basins, of which the
+// better fit is kept. Closer, they are one minimum where each run stopped,
+// and the first is kept, so that the result does not flip between the two
+// on round-off.
+bool AnotherBasin(const Problem& problem,
+                  const Attempt& candidate,
+                  const Attempt& best) {
+  if (candidate.schedule.termination_type == TerminationType::FAILURE) {
+    return false;
+  }
+  const Isometry3d a = PoseVectorToIsometry(candidate.xi_local);
+  const Isometry3d b = PoseVectorToIsometry(best.xi_local);
+  const double apart_m =
+      TranslationErrorM(a, b) + RotationErrorRad(a, b) * problem.rms_range_m;
+  return apart_m > 0.1 * problem.map.layer_info().back().cell_size_m;
+}
+
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
 Vector6d TurnedGuess(const Vector6d& initial_local, double yaw_deg) {
   Isometry3d turned = PoseVectorToIsometry(initial_local);
@@ -141,7 +154,11 @@ Attempt SolveAttempts(const RegistrationOptions& options,
   if (start < n &&
       LeftTheGuess(options, problem, initial_local, best.xi_local)) {
     ++*attempts;
-    KeepBetter(Solve(options, problem, n, initial_local, start_time_s), &best);
+    Attempt from_guess =
+        Solve(options, problem, n, initial_local, start_time_s);
+    if (AnotherBasin(problem, from_guess, best)) {
+      KeepBetter(std::move(from_guess), &best);
+    }
   }
   for (const double yaw_deg : options.retry.yaw_seeds_deg) {
     if (best.verdict == TerminationType::CONVERGENCE) break;

@@ -132,10 +132,10 @@ TEST(ReadReferencePairs, LivoxPriorEntriesAreMarkedBySource) {
 }
 
 TEST(ReadReferencePairs, SpreadsMayBeMissingOnlyWithASource) {
-  const std::string path = WriteFile(
-      "source.json",
-      std::string("{\"3_5\": {\"reference_from_input\": ") + kIdentity +
-          ", \"source\": \"prior: odometry\"}}");
+  const std::string path =
+      WriteFile("source.json",
+                std::string("{\"3_5\": {\"reference_from_input\": ") +
+                    kIdentity + ", \"source\": \"prior: odometry\"}}");
   std::map<std::string, ReferencePair> pairs;
   std::string error;
   ASSERT_TRUE(ReadReferencePairs(path, &pairs, &error)) << error;
@@ -201,8 +201,7 @@ TEST(ReadReferencePairs, BadFilesNameTheFileAndTheKey) {
        "\"0_1\": spread_m: expected a finite number >= 0"},
       {"entry_not_object", "{\"0_1\": 5}", "\"0_1\": expected an object"},
       {"source_not_string",
-       "{\"0_1\": {\"reference_from_input\": " + matrix +
-           ", \"source\": 3}}",
+       "{\"0_1\": {\"reference_from_input\": " + matrix + ", \"source\": 3}}",
        "\"0_1\": source: expected a string"},
   };
   for (const BadCase& c : cases) {
