@@ -56,9 +56,9 @@ std::string RegistrationSummary::FullReport() const {
         << " bytes per cell\n";
   }
   // A FAILURE has no solution, and a zero covariance is "not computed" (H
-  // not positive definite): neither is a sigma of 0.
-  if (termination_type == TerminationType::FAILURE || covariance.isZero() ||
-      !covariance.allFinite()) {
+  // singular): neither is a sigma of 0. Infinite variances (degenerate
+  // directions) are printed as inf.
+  if (termination_type == TerminationType::FAILURE || covariance.isZero()) {
     out << "  sigma (cov):    not available\n";
     return out.str();
   }

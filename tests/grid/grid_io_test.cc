@@ -431,7 +431,7 @@ TEST(GridIo, CraftedHeadersFailFastWithSmallMemory) {
                 outcome.seconds * 1e3,
                 outcome.error);
     EXPECT_FALSE(outcome.loaded);
-    EXPECT_NE(std::string(outcome.error).find("grid_crafted_" + c.name),
+    EXPECT_NE(std::string(outcome.error).find("crafted_" + c.name),
               std::string::npos)
         << outcome.error;
     EXPECT_NE(std::string(outcome.error).find(c.keyword), std::string::npos)

@@ -41,7 +41,7 @@ bool SameFile(const struct stat& a, const struct stat& b) {
   return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
-// The input `candidate` (of `source`) is `output` (st: its stat), or a
+// The input `candidate` is `output` (`output_status`: its stat), or a
 // folder whose point-cloud files `output` is one of.
 bool IsInput(const std::string& candidate,
              const std::string& output,
