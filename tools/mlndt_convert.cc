@@ -12,6 +12,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/sampling/point_sampler.h"
+#include "tools/common/input_files.h"
 #include "tools/common/output_files.h"
 #include "tools/common/tool_main.h"
 
@@ -53,6 +54,8 @@ int main(int argc, char** argv) {
     return mlndt::tools::kExitUsage;
   }
   std::string error;
+  // OUT is an argument too, but only IN is read.
+  mlndt::tools::SetToolArguments({input});
   if (!mlndt::tools::CheckOutputFile("output", output, &error)) {
     std::cerr << "mlndt_convert: " << error << "\n";
     return mlndt::tools::kExitUsage;

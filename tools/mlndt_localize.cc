@@ -105,7 +105,10 @@ bool CheckFlags(LocalizerOptions* options,
     return false;
   }
   if (!std::filesystem::is_regular_file(FLAGS_map)) {
-    *error = "--map=" + FLAGS_map + ": no such file";
+    *error = "--map=" + FLAGS_map +
+             (std::filesystem::is_directory(FLAGS_map)
+                  ? ": it is a directory (give the map file mlndt_map wrote)"
+                  : ": no such file");
     return false;
   }
   if (FLAGS_max_scans < 0) {
@@ -321,9 +324,9 @@ bool WritePlot(const std::string& dir,
     }
   }
   std::ostringstream script;
-  script << tools::GnuplotPngHeader(1000, 800) << "set output "
-         << tools::GnuplotQuote(dir + "/trajectory_xy.png")
-         << "\nset title 'Map (finest cell means) and trajectory, top view'\n"
+  const std::string png = dir + "/trajectory_xy.png";
+  script << tools::GnuplotPngHeader(1000, 800) << tools::GnuplotSetOutput(png)
+         << "set title 'Map (finest cell means) and trajectory, top view'\n"
          << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
          << "plot " << tools::GnuplotQuote(data_dir + "/map_cells.dat")
          << " using 1:2 with points pt 7 ps 0.3 lc rgb '#a0a0a0' title 'map "
@@ -332,7 +335,7 @@ bool WritePlot(const std::string& dir,
          << " using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#c00000' "
             "title 'trajectory'\n";
   return tools::RunGnuplot(
-      FLAGS_gnuplot, data_dir + "/plot.gp", script.str(), error);
+      FLAGS_gnuplot, data_dir + "/plot.gp", script.str(), {png}, error);
 }
 
 int Run() {
@@ -353,7 +356,10 @@ int Run() {
   const double map_load_s = NowSeconds() - start;
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
-                               {"scans.csv", "summary.json"},
+                               {"scans.csv",
+                                "summary.json",
+                                "trajectory_kitti.txt",
+                                "trajectory_tum.txt"},
                                &error)) {
     return Refuse(error);
   }
@@ -484,6 +490,7 @@ int main(int argc, char** argv) {
       "Registers every scan of a folder onto a saved map (mlndt_map).\n"
       "  mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT "
       "[--initial_guess=tx,ty,tz,a,b,g]";
+  mlndt::tools::HideFlagsFromHelp(mlndt::tools::LocalizerRefusedFlags());
   if (!mlndt::tools::StartTool(usage, true, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

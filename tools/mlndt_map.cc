@@ -406,6 +406,7 @@ int main(int argc, char** argv) {
       "--output=MAP\n"
       "  mlndt_map --cloud=FILE --output=MAP\n"
       "  mlndt_map info MAP";
+  mlndt::tools::HideFlagsFromHelp(mlndt::tools::MapBuildRefusedFlags());
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

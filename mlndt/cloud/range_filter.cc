@@ -3,6 +3,8 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <vector>
 
 #include "mlndt/common/internal/check_option.h"
@@ -13,6 +15,45 @@ namespace {
 // Returns within this of the largest range count as "at" it [m].
 constexpr double kSaturationBand = 0.01;
 
+// A cloud whose centroid is farther from its origin than this many RMS
+// radii (and kFarOriginMinDistance) is not in a sensor frame: a scan
+// surrounds its sensor (or, for a forward-looking one, lies about one
+// radius ahead of it).
+constexpr double kFarOriginRadii = 3.0;
+constexpr double kFarOriginMinDistance = 10.0;  // [m]
+
+bool AnyFilterOn(const RangeFilterOptions& options) {
+  return options.min_range_m > 0.0 || options.max_range_m > 0.0 ||
+         options.saturated_range_fraction > 0.0;
+}
+
+// Warns when the filters are on and `cloud` looks like a map-frame cloud:
+// they measure ranges from its origin, which is not a sensor there.
+void WarnWhenOriginIsFar(const RangeFilterOptions& options,
+                         const PointCloud& cloud) {
+  if (cloud.empty() || !AnyFilterOn(options)) return;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < cloud.size(); ++i) centroid += cloud[i];
+  centroid /= static_cast<double>(cloud.size());
+  double squared_radius = 0.0;
+  for (size_t i = 0; i < cloud.size(); ++i) {
+    squared_radius += (cloud[i] - centroid).squaredNorm();
+  }
+  const double radius =
+      std::sqrt(squared_radius / static_cast<double>(cloud.size()));
+  const double distance = centroid.norm();
+  if (distance <= std::max(kFarOriginMinDistance, kFarOriginRadii * radius)) {
+    return;
+  }
+  LOG_FIRST_N(WARNING, 3)
+      << "range filter: the cloud's centroid is " << distance
+      << " m from its origin (its RMS radius is " << radius
+      << " m): it does not look like a scan in its sensor frame, and the "
+         "range filters (min_range_m, max_range_m, saturated_range_fraction) "
+         "measure distances from the origin. For a map-frame cloud turn them "
+         "off (min_range_m = 0, saturated_range_fraction = 0)";
+}
+
 }  // namespace
 
 bool RangeFilterOptions::IsValid(std::string* error) const {
@@ -22,11 +63,36 @@ bool RangeFilterOptions::IsValid(std::string* error) const {
   return true;
 }
 
+std::string DescribeDroppedPoints(const RangeFilterOptions& options,
+                                  const RangeFilterSummary& summary) {
+  std::ostringstream out;
+  const char* separator = "";
+  if (summary.too_close > 0) {
+    out << summary.too_close << " closer than min_range_m "
+        << options.min_range_m << " to the cloud's origin";
+    separator = ", ";
+  }
+  if (summary.too_far > 0) {
+    out << separator << summary.too_far << " farther than max_range_m "
+        << options.max_range_m << " from the cloud's origin";
+    separator = ", ";
+  }
+  if (summary.saturated > 0) {
+    out << separator << summary.saturated
+        << " at the cloud's largest range (saturated_range_fraction "
+        << options.saturated_range_fraction
+        << ": a saturated maximum range, or every point at one distance "
+           "from the origin)";
+  }
+  return out.str();
+}
+
 PointCloud FilterByRange(const RangeFilterOptions& options,
                          const PointCloud& cloud,
                          RangeFilterSummary* summary) {
   std::string error;
   CHECK(options.IsValid(&error)) << error;
+  WarnWhenOriginIsFar(options, cloud);
   RangeFilterSummary counts;
   counts.input_points = cloud.size();
   std::vector<double> ranges(cloud.size());

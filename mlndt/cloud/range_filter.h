@@ -38,6 +38,12 @@ struct RangeFilterSummary {
   size_t saturated = 0;  // At the saturated maximum range.
 };
 
+// What dropped the points, filter by filter, e.g. "5000 at the cloud's
+// largest range (saturated_range_fraction 0.005: a saturated range, or
+// every point at one distance)"; the filters that dropped none are left out.
+std::string DescribeDroppedPoints(const RangeFilterOptions& options,
+                                  const RangeFilterSummary& summary);
+
 // The points of `cloud` the options keep, in input order. Options must be
 // valid (CHECKed).
 PointCloud FilterByRange(const RangeFilterOptions& options,

@@ -1,7 +1,9 @@
 #include "mlndt/common/atomic_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <glog/logging.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -74,9 +76,11 @@ bool InspectTarget(const std::string& path,
 // Six random characters for a temporary name. The generator is per thread
 // and seeded from the random device, the thread and the clock, so threads
 // and processes draw different sequences (a clash only costs a retry).
+constexpr char kAlphabet[] =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+constexpr size_t kSuffixLength = 6;
+
 std::string RandomSuffix() {
-  static constexpr char kAlphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
   thread_local std::mt19937_64 generator([] {
     std::random_device device;
     const uint64_t clock = static_cast<uint64_t>(
@@ -89,9 +93,83 @@ std::string RandomSuffix() {
                        clock};
     return std::mt19937_64(seed);
   }());
-  std::string suffix(6, 'X');
+  std::string suffix(kSuffixLength, 'X');
   for (char& c : suffix) c = kAlphabet[generator() % (sizeof(kAlphabet) - 1)];
   return suffix;
+}
+
+// True for "<prefix>XXXXXX": a temporary file name of the same target.
+bool IsTemporaryName(const std::string& entry, const std::string& prefix) {
+  if (entry.size() != prefix.size() + kSuffixLength ||
+      entry.compare(0, prefix.size(), prefix) != 0) {
+    return false;
+  }
+  const std::string alphabet = kAlphabet;
+  return entry.find_first_not_of(alphabet, prefix.size()) == std::string::npos;
+}
+
+// Removes the temporary files "<prefix>XXXXXX" in `folder` that no writer
+// holds: a live writer keeps an exclusive flock on its temporary file until
+// the rename, the kernel drops the lock of a killed one. Best effort: what
+// cannot be opened, locked or removed stays.
+void RemoveStaleTemporaries(const std::string& folder,
+                            const std::string& prefix) {
+  DIR* dir = ::opendir(folder.c_str());
+  if (dir == nullptr) return;
+  const int dir_fd = ::dirfd(dir);
+  while (const dirent* entry = ::readdir(dir)) {
+    if (!IsTemporaryName(entry->d_name, prefix)) continue;
+    const int fd = ::openat(
+        dir_fd, entry->d_name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) continue;
+    struct stat opened, named;
+    if (::fstat(fd, &opened) == 0 && S_ISREG(opened.st_mode) &&
+        ::flock(fd, LOCK_EX | LOCK_NB) == 0 &&
+        ::fstatat(dir_fd, entry->d_name, &named, AT_SYMLINK_NOFOLLOW) == 0 &&
+        named.st_dev == opened.st_dev && named.st_ino == opened.st_ino) {
+      ::unlinkat(dir_fd, entry->d_name, 0);
+    }
+    ::close(fd);
+  }
+  ::closedir(dir);
+}
+
+// Locks our new temporary file `fd` (see RemoveStaleTemporaries). False
+// when a cleaner removed it before we held the lock: try another name.
+bool LockTemporary(int fd, const std::string& temporary) {
+  if (::flock(fd, LOCK_EX) != 0) return true;  // No locks here: no cleaner.
+  struct stat opened, named;
+  return ::fstat(fd, &opened) == 0 && ::lstat(temporary.c_str(), &named) == 0 &&
+         named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
+}
+
+// Creates and locks a new temporary file ".<name>.tmp.XXXXXX" in `folder`
+// (mkstemp's O_EXCL + random name, but with mode 0644 through the umask
+// instead of mkstemp's 0600), after removing the stale ones. Returns its
+// descriptor, or -1 with *open_errno.
+int CreateTemporary(const std::string& folder,
+                    const std::string& name,
+                    std::string* temporary,
+                    int* open_errno) {
+  const std::string temporary_name = "." + name + ".tmp.";
+  RemoveStaleTemporaries(folder, temporary_name);
+  const std::string prefix =
+      (folder == "/" ? "/" : folder + "/") + temporary_name;
+  int fd = -1;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    *temporary = prefix + RandomSuffix();
+    fd = ::open(temporary->c_str(),
+                O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW,
+                0644);
+    *open_errno = errno;
+    if (fd < 0 && *open_errno != EEXIST) break;
+    if (fd >= 0 && !LockTemporary(fd, *temporary)) {
+      ::close(fd);
+      fd = -1;
+      *open_errno = EEXIST;
+    }
+  }
+  return fd;
 }
 
 // Writes all of `bytes`, resuming short writes. Returns 0 or an errno.
@@ -145,26 +223,19 @@ bool WriteFileAtomically(const std::string& path,
   mode_t mode = 0;
   if (!InspectTarget(path, &exists, &mode, error)) return false;
 
-  // Step 2: our own temporary file (mkstemp's O_EXCL + random name, but with
-  // mode 0644 through the umask instead of mkstemp's 0600).
-  const std::string prefix =
-      (folder == "/" ? "/" : folder + "/") + "." + name + ".tmp.";
+  // Step 2: our own temporary file, locked.
   std::string temporary;
-  int fd = -1;
   int open_errno = 0;
-  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-    temporary = prefix + RandomSuffix();
-    fd = ::open(temporary.c_str(),
-                O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW,
-                0644);
-    open_errno = errno;
-    if (fd < 0 && open_errno != EEXIST) break;
-  }
+  const int fd = CreateTemporary(folder, name, &temporary, &open_errno);
   if (fd < 0) {
     *error = path + ": cannot create a temporary file in " + folder + ": " +
              ErrnoText(open_errno);
     return false;
   }
+
+  // The lock lives as long as the open file description: this duplicate
+  // keeps it held past close(fd) until the rename is done.
+  const int lock_fd = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
 
   // Step 3: contents, mode, fsync, close; each one checked.
   const char* failed_step = nullptr;
@@ -186,8 +257,9 @@ bool WriteFileAtomically(const std::string& path,
     failure = errno;
     failed_step = "cannot rename the temporary file onto it";
   }
+  if (failure != 0) ::unlink(temporary.c_str());
+  if (lock_fd >= 0) ::close(lock_fd);
   if (failure != 0) {
-    ::unlink(temporary.c_str());
     *error = path + ": " + failed_step + ": " + ErrnoText(failure) +
              " (nothing written; the previous file, if any, is unchanged)";
     return false;

@@ -14,6 +14,11 @@
 //     and a random suffix, retried on a name clash, as mkstemp does: two
 //     threads or processes writing the same path each get their own
 //     temporary file. The leading dot keeps it out of "*.pcd"-style listings.
+//     The writer holds an exclusive flock() on its temporary file until the
+//     rename. Before creating it, temporary files of the same target that
+//     no writer holds (left by a killed writer: the kernel dropped its lock)
+//     are removed; a cleaner that removed a file in the instant before its
+//     writer locked it makes that writer retry with a new name.
 //  3. Every write() and the close() are checked (short writes are resumed,
 //     EINTR retried); the file is fsync()ed before it is renamed onto
 //     `path`, and the folder is fsync()ed after, so that after a power

@@ -55,6 +55,13 @@ std::string RegistrationSummary::FullReport() const {
         << static_cast<double>(map_bytes) / map_occupied_cells
         << " bytes per cell\n";
   }
+  // A FAILURE has no solution, and a zero covariance is "not computed" (H
+  // singular): neither is a sigma of 0. Infinite variances (degenerate
+  // directions) are printed as inf.
+  if (termination_type == TerminationType::FAILURE || covariance.isZero()) {
+    out << "  sigma (cov):    not available\n";
+    return out.str();
+  }
   out << std::setprecision(4) << "  sigma (cov):    t = ("
       << std::sqrt(covariance(0, 0)) << ", " << std::sqrt(covariance(1, 1))
       << ", " << std::sqrt(covariance(2, 2)) << ") m, angles = ("

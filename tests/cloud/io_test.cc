@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/small_file_system.h"
 
 namespace mlndt {
@@ -27,9 +28,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A path under the test temp dir, unique per test.
 std::string TempPath(const std::string& name) {
-  const ::testing::TestInfo* test =
-      ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "mlndt_io_test_" + test->name() + "_" + name;
+  return testing::ScratchPath(name);
 }
 
 std::string WriteFile(const std::string& name, const std::string& bytes) {
@@ -230,8 +229,8 @@ TEST(WritePointCloud, ReplacesExistingFileAndLeavesNoTemporaryFile) {
 
   const std::string prefix = std::filesystem::path(path).filename().string();
   int files = 0;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(::testing::TempDir())) {
+  for (const auto& entry : std::filesystem::directory_iterator(
+           std::filesystem::path(path).parent_path())) {
     // Temporary files are ".<name>.tmp.XXXXXX" (atomic_file.h).
     if (entry.path().filename().string().find(prefix) != std::string::npos)
       ++files;
@@ -277,8 +276,8 @@ TEST(WritePointCloud, FailedRenameRemovesTemporaryFileAndKeepsTarget) {
   EXPECT_TRUE(std::filesystem::exists(path + "/keep.txt"));
   const std::string prefix =
       std::filesystem::path(path).filename().string() + ".tmp";
-  for (const auto& entry :
-       std::filesystem::directory_iterator(::testing::TempDir())) {
+  for (const auto& entry : std::filesystem::directory_iterator(
+           std::filesystem::path(path).parent_path())) {
     EXPECT_EQ(entry.path().filename().string().find(prefix), std::string::npos)
         << entry.path();
   }

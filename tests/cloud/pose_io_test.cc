@@ -14,16 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/small_file_system.h"
 
 namespace mlndt {
 namespace {
 
 std::string TempPath(const std::string& name) {
-  const ::testing::TestInfo* test =
-      ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "mlndt_pose_io_test_" + test->name() + "_" +
-         name;
+  return testing::ScratchPath(name);
 }
 
 std::string WriteFile(const std::string& name, const std::string& text) {

@@ -1,7 +1,9 @@
 #include "mlndt/common/atomic_file.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
@@ -28,8 +30,8 @@ namespace {
 std::string FreshFolder() {
   const ::testing::TestInfo* test =
       ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string path =
-      ::testing::TempDir() + "mlndt_atomic_file_test_" + test->name();
+  const std::string path = ::testing::TempDir() + "mlndt_atomic_file_test_" +
+                           test->name() + "_" + std::to_string(::getpid());
   std::filesystem::remove_all(path);
   std::filesystem::create_directories(path);
   return path;
@@ -296,6 +298,47 @@ TEST(WriteFileAtomically, ConcurrentWritersOfOnePathNeverCollide) {
   const std::string last = ReadBytes(path);
   EXPECT_TRUE(last == contents[0] || last == contents[1]);
   EXPECT_EQ(FolderEntries(folder), std::vector<std::string>{"map.bin"});
+}
+
+// Issue 27 item 11: a writer killed between creating its temporary file and
+// the rename leaves ".map.bin.tmp.XXXXXX"; the next write of map.bin
+// removes it, but not a temporary file another writer still holds (locked),
+// nor files of other targets or of other name patterns.
+TEST(WriteFileAtomically, NextWriteRemovesStaleTemporariesOfItsTarget) {
+  const std::string folder = FreshFolder();
+  const std::vector<std::string> planted = {".map.bin.tmp.AbC123",
+                                            ".map.bin.tmp.Held12",
+                                            ".other.bin.tmp.AbC123",
+                                            ".map.bin.tmp.toolong7",
+                                            ".map.bin.tmp.AB-123"};
+  for (const std::string& name : planted) {
+    std::ofstream(folder + "/" + name) << "half a map";
+  }
+  // A live writer's temporary file: open and locked, as WriteFileAtomically
+  // holds its own.
+  const int held = ::open((folder + "/.map.bin.tmp.Held12").c_str(), O_RDONLY);
+  ASSERT_GE(held, 0);
+  ASSERT_EQ(::flock(held, LOCK_EX), 0);
+  // A stale one that is a symbolic link is not followed or removed.
+  std::filesystem::create_symlink(folder + "/.other.bin.tmp.AbC123",
+                                  folder + "/.map.bin.tmp.Link12");
+
+  std::string error;
+  ASSERT_TRUE(WriteFileAtomically(folder + "/map.bin", "map", &error)) << error;
+  ::close(held);
+  EXPECT_EQ(ReadBytes(folder + "/map.bin"), "map");
+  EXPECT_EQ(FolderEntries(folder),
+            (std::vector<std::string>{".map.bin.tmp.AB-123",
+                                      ".map.bin.tmp.Held12",
+                                      ".map.bin.tmp.Link12",
+                                      ".map.bin.tmp.toolong7",
+                                      ".other.bin.tmp.AbC123",
+                                      "map.bin"}));
+  EXPECT_EQ(ReadBytes(folder + "/.other.bin.tmp.AbC123"), "half a map");
+  // Unlocked now: stale, removed by the next write.
+  ASSERT_TRUE(WriteFileAtomically(folder + "/map.bin", "map 2", &error))
+      << error;
+  EXPECT_FALSE(std::filesystem::exists(folder + "/.map.bin.tmp.Held12"));
 }
 
 }  // namespace

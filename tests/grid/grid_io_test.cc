@@ -22,6 +22,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/registration/registration.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/small_file_system.h"
 #include "tests/testing/test_data.h"
 
@@ -53,7 +54,7 @@ void WriteAll(const std::string& path, const std::string& bytes) {
 
 TEST(GridIo, RoundTripKeepsEveryCell) {
   const LayeredGrid grid = MakeGrid();
-  const std::string path = ::testing::TempDir() + "grid_round_trip.mlndtmap";
+  const std::string path = testing::ScratchPath("round_trip.mlndtmap");
   std::string error;
   ASSERT_TRUE(SaveLayeredGrid(path, grid, &error)) << error;
   LayeredGrid loaded;
@@ -90,7 +91,7 @@ TEST(GridIo, KittiFrameMapRoundTrips) {
   LayeredGrid grid;
   ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), cloud, &grid, &error))
       << error;
-  const std::string path = ::testing::TempDir() + "grid_kitti.mlndtmap";
+  const std::string path = testing::ScratchPath("kitti.mlndtmap");
   ASSERT_TRUE(SaveLayeredGrid(path, grid, &error)) << error;
   LayeredGrid loaded;
   ASSERT_TRUE(LoadLayeredGrid(path, &loaded, &error)) << error;
@@ -104,7 +105,7 @@ TEST(GridIo, KittiFrameMapRoundTrips) {
 
 TEST(GridIo, CorruptTruncatedAndForeignFilesFailCleanly) {
   const LayeredGrid grid = MakeGrid();
-  const std::string path = ::testing::TempDir() + "grid_corrupt.mlndtmap";
+  const std::string path = testing::ScratchPath("corrupt.mlndtmap");
   std::string error;
   ASSERT_TRUE(SaveLayeredGrid(path, grid, &error)) << error;
   const std::string good = ReadAll(path);
@@ -218,7 +219,7 @@ std::string FromHex(const std::string& hex) {
 // count and mean). The covariances themselves come back through the
 // eigen-decomposition of the regularisation, so only to ~1e-16.
 void ExpectResavedLike(const LayeredGrid& grid, const std::string& bytes) {
-  const std::string path = ::testing::TempDir() + "grid_resaved.mlndtmap";
+  const std::string path = testing::ScratchPath("resaved.mlndtmap");
   std::string error;
   ASSERT_TRUE(SaveLayeredGrid(path, grid, &error)) << error;
   const std::string again = ReadAll(path);
@@ -249,7 +250,7 @@ TEST(GridIo, LayoutIsLittleEndianFieldByField) {
   Cell(0, 10, Eigen::Vector3d(0.5, 0.5, 0.5), &b);
   Cell(93, 10, Eigen::Vector3d(3.5, 3.5, 3.5), &b);  // (3, 3, 3)
   const std::string bytes = b.WithChecksum();
-  const std::string path = ::testing::TempDir() + "grid_layout.mlndtmap";
+  const std::string path = testing::ScratchPath("layout.mlndtmap");
   WriteAll(path, bytes);
 
   LayeredGrid grid;
@@ -301,7 +302,7 @@ const char kVersion1Map[] =
 TEST(GridIo, Version1FilesFromEarlierBuildsStillLoad) {
   const std::string bytes = FromHex(kVersion1Map);
   ASSERT_EQ(bytes.size(), 712u);
-  const std::string path = ::testing::TempDir() + "grid_v1.mlndtmap";
+  const std::string path = testing::ScratchPath("v1.mlndtmap");
   WriteAll(path, bytes);
   LayeredGrid grid;
   std::string error;
@@ -325,7 +326,7 @@ struct LoadOutcome {
 // Loads `bytes` in a child process and reports the result, the growth of
 // the child's peak resident memory and the time taken.
 LoadOutcome LoadInChild(const std::string& name, const std::string& bytes) {
-  const std::string path = ::testing::TempDir() + "grid_crafted_" + name;
+  const std::string path = testing::ScratchPath("crafted_") + name;
   WriteAll(path, bytes);
   int fds[2];
   CHECK_EQ(::pipe(fds), 0);
@@ -430,7 +431,7 @@ TEST(GridIo, CraftedHeadersFailFastWithSmallMemory) {
                 outcome.seconds * 1e3,
                 outcome.error);
     EXPECT_FALSE(outcome.loaded);
-    EXPECT_NE(std::string(outcome.error).find("grid_crafted_" + c.name),
+    EXPECT_NE(std::string(outcome.error).find("crafted_" + c.name),
               std::string::npos)
         << outcome.error;
     EXPECT_NE(std::string(outcome.error).find(c.keyword), std::string::npos)
@@ -444,7 +445,7 @@ TEST(GridIo, CraftedHeadersFailFastWithSmallMemory) {
 
 TEST(SaveLayeredGrid, TwoThreadsSavingOneMapToOnePathBothSucceed) {
   const LayeredGrid grid = MakeGrid();
-  const std::string folder = ::testing::TempDir() + "grid_concurrent";
+  const std::string folder = testing::ScratchPath("concurrent");
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   const std::string path = folder + "/map.mlndtmap";
@@ -479,7 +480,7 @@ TEST(SaveLayeredGrid, TwoThreadsSavingOneMapToOnePathBothSucceed) {
 
 TEST(SaveLayeredGrid, RefusesSymlinkAndFifoTargetsAndKeepsTheFileMode) {
   const LayeredGrid grid = MakeGrid();
-  const std::string folder = ::testing::TempDir() + "grid_special";
+  const std::string folder = testing::ScratchPath("special");
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   const std::string victim = folder + "/victim.txt";
@@ -508,7 +509,7 @@ TEST(SaveLayeredGrid, RefusesSymlinkAndFifoTargetsAndKeepsTheFileMode) {
 
 TEST(SaveLayeredGrid, FullFileSystemKeepsThePreviousMap) {
   const LayeredGrid big = MakeGrid();
-  const std::string scratch = ::testing::TempDir() + "grid_big.mlndtmap";
+  const std::string scratch = testing::ScratchPath("big.mlndtmap");
   std::string error;
   ASSERT_TRUE(SaveLayeredGrid(scratch, big, &error)) << error;
   ASSERT_GT(ReadAll(scratch).size(), 64u * 1024u);

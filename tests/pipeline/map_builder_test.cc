@@ -9,6 +9,7 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/sampling/point_sampler.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/synthetic_scene.h"
 
 namespace mlndt {
@@ -28,8 +29,7 @@ const Scans& StreetScans() {
   static const Scans* scans = [] {
     auto* s = new Scans;
     // One folder per process: ctest runs the tests of this file in parallel.
-    const std::string dir = ::testing::TempDir() + "map_builder_test_scans_" +
-                            std::to_string(::getpid());
+    const std::string dir = testing::ScratchPath("street_scans");
     fs::remove_all(dir);
     fs::create_directories(dir);
     for (int k = 0; k < 3; ++k) {

@@ -14,6 +14,7 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -47,7 +48,7 @@ PointCloud ThroughFile(const PointCloud& cloud,
   Isometry3d moved = Isometry3d::Identity();
   moved.translation() = shift;
   const PointCloud far = TransformCloud(moved, cloud);
-  const std::string path = ::testing::TempDir() + "large_coordinates_" + name;
+  const std::string path = testing::ScratchPath(name);
   if (float64) {
     WriteFloat64Pcd(path, far);
   } else {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -32,14 +33,18 @@ std::string ReadWholeFile(const std::string& path) {
   return out.str();
 }
 
-ToolRun RunTool(const std::string& name, const std::string& args) {
+ToolRun RunTool(const std::string& name,
+                const std::string& args,
+                int timeout_s) {
   const ::testing::TestInfo* test =
       ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string err_path = ::testing::TempDir() + name + "_" +
                                test->test_suite_name() + "_" + test->name() +
-                               ".stderr";
-  const std::string command =
-      ShellQuote(ToolPath(name)) + " " + args + " 2>" + ShellQuote(err_path);
+                               "_" + std::to_string(::getpid()) + ".stderr";
+  const std::string timeout =
+      timeout_s > 0 ? "timeout -k 5 " + std::to_string(timeout_s) + " " : "";
+  const std::string command = timeout + ShellQuote(ToolPath(name)) + " " +
+                              args + " 2>" + ShellQuote(err_path);
   ToolRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) {
@@ -62,9 +67,11 @@ ToolRun RunTool(const std::string& name, const std::string& args) {
 }
 
 std::string FreshTestDir(const std::string& tool) {
-  const std::string dir =
-      ::testing::TempDir() + tool + "_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const ::testing::TestInfo* test =
+      ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string dir = ::testing::TempDir() + tool + "_test_" +
+                          test->test_suite_name() + "_" + test->name() + "_" +
+                          std::to_string(::getpid());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -23,12 +23,18 @@ std::string ShellQuote(const std::string& text);
 // The whole file, or "" when it cannot be read.
 std::string ReadWholeFile(const std::string& path);
 
-// A fresh, empty folder for the current test:
-// TempDir()/<tool>_test_<test name>, removed first if it exists.
+// A fresh, empty folder for the current test, of its own per test and per
+// process (ctest -j runs tests in parallel, and two test programs may
+// share a test name): TempDir()/<tool>_test_<suite>_<test name>_<pid>,
+// removed first if it exists.
 std::string FreshTestDir(const std::string& tool);
 
 // Runs the tool `name` (ToolPath) with `args`, already quoted where needed.
-ToolRun RunTool(const std::string& name, const std::string& args);
+// With timeout_s > 0 the tool is killed after that many seconds (exit code
+// 124, as timeout(1) reports it).
+ToolRun RunTool(const std::string& name,
+                const std::string& args,
+                int timeout_s = 0);
 
 }  // namespace testing
 }  // namespace mlndt

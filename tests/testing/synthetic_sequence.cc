@@ -6,6 +6,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/synthetic_scene.h"
 
 namespace mlndt {
@@ -15,7 +16,7 @@ SyntheticSequence WriteSyntheticSequence(const std::string& name,
                                          int num_scans,
                                          int points_per_scan,
                                          const Isometry3d& step_motion) {
-  const std::string dir = ::testing::TempDir() + "mlndt_" + name;
+  const std::string dir = ScratchPath(name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   SyntheticSequence sequence;

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "mlndt/common/pose.h"
+#include "tests/testing/scratch_dir.h"
 #include "tools/common/matrix_text.h"
 
 namespace mlndt {
@@ -69,7 +70,7 @@ TEST(RowMajorToRigidTransform, ReadsRowsAndChecksTheRotation) {
 }
 
 TEST(ReadMatrixFile, ReadsTwelveOrSixteenNumbers) {
-  const std::string path = ::testing::TempDir() + "mlndt_matrix_text.txt";
+  const std::string path = testing::ScratchPath("matrix_text.txt");
   {
     std::ofstream out(path);
     out << "1 0 0 5\n0 1 0 6\n0 0 1 7\n0 0 0 1\n";

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "mlndt/cloud/io.h"
 #include "mlndt/cloud/point_cloud.h"
 #include "tests/testing/run_tool.h"
 #include "tests/testing/test_data.h"
@@ -204,6 +205,77 @@ TEST(MlndtAlign, BadInputFailsWithAMessage) {
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
   }
+}
+
+// Issue 27 item 12: 5000 copies of one point are dropped by the saturated-
+// range rule (all at the cloud's largest range), and the message says so
+// instead of blaming min_range; the FAILURE prints no sigma of 0.
+TEST(MlndtAlign, IdenticalPointsNameTheFilterThatDroppedThemAndNoSigma) {
+  const std::string dir = TestDir();
+  const std::string same = dir + "/same.pcd";
+  std::string error;
+  ASSERT_TRUE(WritePointCloud(
+      same,
+      PointCloud(std::vector<Eigen::Vector3d>(5000, Eigen::Vector3d(3, 4, 5))),
+      &error))
+      << error;
+  const ToolRun run =
+      RunAlign(Quote(testing::BundledDataPath("koide3/251370668.pcd")) + " " +
+               Quote(same) + " --output_json=" + Quote(dir + "/result.json"));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  const std::string all = run.out + run.err;
+  EXPECT_NE(all.find("the range filter dropped every input point: 5000 at "
+                     "the cloud's largest range (saturated_range_fraction"),
+            std::string::npos)
+      << all;
+  EXPECT_EQ(all.find("min_range_m"), std::string::npos) << all;
+  EXPECT_NE(all.find("sigma (cov):    not available"), std::string::npos)
+      << all;
+  EXPECT_EQ(all.find("sigma (cov):    t = (0.0000"), std::string::npos) << all;
+}
+
+// Issue 27 item 13: the range filters measure from the cloud's origin;
+// --help says so, and a map-frame cloud (20 km from its origin) with the
+// filters on gets a warning, which turning them off silences.
+TEST(MlndtAlign, RangeFiltersSayTheyWorkAboutTheOriginAndWarnFarFromIt) {
+  const ToolRun help = RunAlign("--help");
+  ASSERT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("closer than this to the cloud's origin"),
+            std::string::npos)
+      << help.out;
+  EXPECT_NE(help.out.find("map-frame (e.g. UTM) cloud set --min_range=0 "
+                          "--saturated_range_fraction=0"),
+            std::string::npos);
+
+  const std::string dir = TestDir();
+  std::string paths[2];
+  const char* names[2] = {"koide3/251370668.pcd", "koide3/251371071.pcd"};
+  for (int k = 0; k < 2; ++k) {
+    PointCloud cloud;
+    std::string error;
+    ASSERT_TRUE(ReadPointCloud(
+        testing::BundledDataPath(names[k]), &cloud, nullptr, &error));
+    std::vector<Eigen::Vector3d> far;
+    for (const Eigen::Vector3d& p : cloud.points()) {
+      far.push_back(p + Eigen::Vector3d(20000.0, 5000.0, 0.0));
+    }
+    paths[k] = dir + "/far" + std::to_string(k) + ".pcd";
+    ASSERT_TRUE(WritePointCloud(paths[k], PointCloud(far), &error)) << error;
+  }
+  const std::string pair = Quote(paths[0]) + " " + Quote(paths[1]);
+  const ToolRun on = RunAlign(pair);
+  EXPECT_NE(on.err.find("m from its origin"), std::string::npos) << on.err;
+  EXPECT_NE(on.err.find("min_range_m = 0, saturated_range_fraction = 0"),
+            std::string::npos)
+      << on.err;
+  const ToolRun off =
+      RunAlign(pair + " --min_range=0 --saturated_range_fraction=0");
+  EXPECT_EQ(off.err.find("from its origin"), std::string::npos) << off.err;
+  // A scan in its sensor frame: no warning.
+  const ToolRun sensor = RunAlign("");
+  EXPECT_EQ(sensor.exit_code, 0) << sensor.err;
+  EXPECT_EQ(sensor.err.find("from its origin"), std::string::npos)
+      << sensor.err;
 }
 
 }  // namespace

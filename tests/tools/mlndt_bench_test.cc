@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tests/testing/run_tool.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 #include "tests/testing/text_table.h"
 
@@ -27,7 +28,7 @@ const auto& Quote = testing::ShellQuote;
 const auto& ReadFile = testing::ReadWholeFile;
 
 std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "mlndt_bench_test_" + name;
+  return testing::ScratchPath(name);
 }
 
 // Runs mlndt_bench with `args` (already quoted where needed); stderr goes to

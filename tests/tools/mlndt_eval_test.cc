@@ -18,6 +18,7 @@
 #include "lab/eval/trajectory_io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "tests/testing/run_tool.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -47,9 +48,7 @@ std::vector<Isometry3d> ReadPoses(const std::string& path) {
 // folder is named after the test).
 const std::string& SequenceTrajectory() {
   static const std::string path = [] {
-    const std::string dir =
-        ::testing::TempDir() + "mlndt_eval_test_sequence_" +
-        ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::string dir = testing::ScratchPath("sequence");
     fs::remove_all(dir);
     const ToolRun run = testing::RunTool(
         "mlndt_sequence",

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tests/testing/run_tool.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -74,7 +75,7 @@ void CheckKittiReach(const QuickReport& q);
 
 TEST(MlndtExperiments, QuickReportIsCompleteAndConsistent) {
   QuickReport q;
-  q.dir = ::testing::TempDir() + "mlndt_experiments_quick";
+  q.dir = testing::ScratchPath("quick");
   fs::remove_all(q.dir);
   const bool plots = std::system("gnuplot --version >/dev/null 2>&1") == 0;
   const testing::ToolRun run = testing::RunTool(

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tests/testing/run_tool.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -29,7 +30,7 @@ void WriteFile(const std::string& path, const std::string& contents) {
 }
 
 std::string TempPath(const std::string& name) {
-  return ::testing::TempDir() + "mlndt_info_test_" + name;
+  return testing::ScratchPath(name);
 }
 
 // Runs mlndt_info with `args` (already quoted where needed). ctest may run

@@ -316,5 +316,66 @@ TEST(MlndtLocalize, RefusesBadFlags) {
   }
 }
 
+// Issue 27 item 12: --map naming a folder says it is one.
+TEST(MlndtLocalize, MapThatIsAFolderIsCalledOne) {
+  const std::string dir = TestDir();
+  const ToolRun run =
+      testing::RunTool("mlndt_localize",
+                       "--map=" + Quote(dir) + " --scans=" + Quote(KittiPcd()) +
+                           " --output_dir=" + Quote(dir + "/out"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--map=" + dir + ": it is a directory"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(run.err.find("no such file"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+// Issue 27 item 14: --help lists only the flags mlndt_localize accepts;
+// the map's flags and conventional NDT's are refused, not listed.
+TEST(MlndtLocalize, HelpListsOnlyTheFlagsItAccepts) {
+  const ToolRun help = testing::RunTool("mlndt_localize", "--help");
+  ASSERT_EQ(help.exit_code, 0);
+  for (const char* refused : {"finest_cell_size",
+                              "num_layers",
+                              "division_constant",
+                              "min_points_per_cell",
+                              "min_eigenvalue",
+                              "min_eigenvalue_ratio",
+                              "coarse_weighting",
+                              "ndt_cell_size",
+                              "ndt_outlier_ratio",
+                              "ndt_neighbors",
+                              "ndt_max_iterations",
+                              "ndt_max_step"}) {
+    EXPECT_EQ(help.out.find(std::string("  --") + refused + "="),
+              std::string::npos)
+        << refused;
+  }
+  for (const char* accepted : {"map",
+                               "initial_guess",
+                               "backend",
+                               "quality_check",
+                               "min_range",
+                               "threads",
+                               "calib"}) {
+    EXPECT_NE(help.out.find(std::string("  --") + accepted + "="),
+              std::string::npos)
+        << accepted;
+  }
+  // The map fixes the coarse layers' weighting too.
+  const std::string dir = TestDir();
+  const KittiMap kitti = BuildKittiMap(dir);
+  const ToolRun run = testing::RunTool(
+      "mlndt_localize",
+      "--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
+          " --coarse_weighting=points --output_dir=" + Quote(dir + "/out"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--coarse_weighting does not apply to mlndt_localize"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
 }  // namespace
 }  // namespace mlndt

@@ -410,5 +410,85 @@ TEST(MlndtMap, RefusesBadFlags) {
       << few.err;
 }
 
+// Issue 27 item 14: --help lists only the flags mlndt_map accepts. Each
+// shared registration flag it does not read is refused (exit 2, named,
+// nothing written) and left out of --help; --coarse_weighting, a property
+// of the map, is read.
+TEST(MlndtMap, HelpListsOnlyTheFlagsItAccepts) {
+  const ToolRun help = testing::RunTool("mlndt_map", "--help");
+  ASSERT_EQ(help.exit_code, 0);
+  const std::string dir = testing::FreshTestDir("mlndt_map");
+  const std::string cloud =
+      " --cloud=" + Quote(testing::BundledDataPath("room/room_scan1.pcd"));
+  const std::string map = dir + "/room.mlndt";
+  const std::pair<const char*, const char*> refused[] = {
+      {"method", "mlndt"},
+      {"ndt_cell_size", "1"},
+      {"ndt_outlier_ratio", "0.5"},
+      {"ndt_neighbors", "direct7"},
+      {"ndt_max_iterations", "9"},
+      {"ndt_max_step", "0.1"},
+      {"backend", "lm"},
+      {"sampling", "all"},
+      {"random_fraction", "0.5"},
+      {"gbs_cell_size", "1"},
+      {"start_layer", "1"},
+      {"iterations_per_layer", "3"},
+      {"max_iterations", "9"},
+      {"step_tolerance", "0.001"},
+      {"coarse_step_tolerance", "0.01"},
+      {"max_coarse_point_stride", "2"},
+      {"unmatched", "zero_residual"},
+      {"loss", "huber"},
+      {"loss_scale", "2"},
+      {"linear_solver", "dense_qr"},
+      {"trust_region", "dogleg"},
+      {"seed", "3"},
+      {"initial_uncertainty", "1,10"},
+      {"quality_check", "true"},
+      {"min_inlier_fraction", "0.3"},
+      {"max_mean_score", "9"},
+      {"inlier_gate", "3"},
+      {"min_constraint_ratio", "0.1"},
+      {"retry_yaw_seeds", "45"}};
+  for (const auto& [flag, value] : refused) {
+    EXPECT_EQ(help.out.find(std::string("  --") + flag + "="),
+              std::string::npos)
+        << flag << " is listed in --help";
+    const ToolRun run = testing::RunTool(
+        "mlndt_map",
+        cloud + " --output=" + Quote(map) + " --" + flag + "=" + value);
+    EXPECT_EQ(run.exit_code, 2) << flag << "\n" << run.err;
+    EXPECT_NE(run.err.find(std::string("--") + flag + " does not apply"),
+              std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(map)) << flag;
+  }
+  for (const char* accepted : {"scans",
+                               "poses",
+                               "calib",
+                               "preset",
+                               "threads",
+                               "finest_cell_size",
+                               "coarse_weighting",
+                               "min_range",
+                               "saturated_range_fraction"}) {
+    EXPECT_NE(help.out.find(std::string("  --") + accepted + "="),
+              std::string::npos)
+        << accepted;
+  }
+  // --coarse_weighting changes the map it builds.
+  const ToolRun finest =
+      testing::RunTool("mlndt_map", cloud + " --output=" + Quote(map));
+  ASSERT_EQ(finest.exit_code, 0) << finest.err;
+  const ToolRun points =
+      testing::RunTool("mlndt_map",
+                       cloud + " --coarse_weighting=points --output=" +
+                           Quote(dir + "/points.mlndt"));
+  ASSERT_EQ(points.exit_code, 0) << points.err;
+  EXPECT_NE(testing::ReadWholeFile(map),
+            testing::ReadWholeFile(dir + "/points.mlndt"));
+}
+
 }  // namespace
 }  // namespace mlndt

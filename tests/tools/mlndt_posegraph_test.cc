@@ -14,6 +14,7 @@
 
 #include "mlndt/cloud/pose_io.h"
 #include "tests/testing/run_tool.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -25,7 +26,7 @@ const auto& ReadFile = testing::ReadWholeFile;
 
 // A fresh folder per test (ctest may run tests in parallel).
 std::string TempDir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "mlndt_posegraph_test_" + name;
+  const std::string dir = testing::ScratchPath(name);
   std::system(("rm -rf " + Quote(dir) + " && mkdir -p " + Quote(dir)).c_str());
   return dir;
 }

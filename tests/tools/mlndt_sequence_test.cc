@@ -26,6 +26,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "tests/testing/run_tool.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/synthetic_scene.h"
 #include "tests/testing/test_data.h"
 
@@ -40,9 +41,7 @@ namespace fs = std::filesystem;
 
 // A fresh folder under the test temp dir, named after the current test.
 std::string TestDir(const std::string& suffix = "") {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_sequence_test_" +
-      ::testing::UnitTest::GetInstance()->current_test_info()->name() + suffix;
+  const std::string dir = testing::ScratchPath("out" + suffix);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

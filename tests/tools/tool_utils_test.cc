@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tests/testing/run_tool.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/small_file_system.h"
 #include "tests/testing/test_data.h"
 #include "tools/common/list_flags.h"
@@ -87,7 +88,7 @@ TEST(MlndtAlign, FullDiskKeepsThePreviousJsonAndExitsWithOne) {
 }
 
 TEST(MlndtAlign, RefusesASymlinkAsOutputJson) {
-  const std::string folder = ::testing::TempDir() + "mlndt_tool_utils_link";
+  const std::string folder = testing::ScratchPath("link");
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   const std::string victim = folder + "/victim.txt";

@@ -3,81 +3,62 @@
 // Plotting through the gnuplot program: the tools write whitespace-separated
 // data files and a .gp script, then run `gnuplot script.gp`. Nothing links
 // against gnuplot; when it is missing the tools say so and skip (or stop).
+//
+// Figures are files like any other output (mlndt/common/atomic_file.h): the
+// script draws into a private folder made for the run, each finished PNG is
+// then checked (it ends with its IEND chunk) and moved onto its target with
+// WriteFileAtomically. A full disk, a symbolic link or a FIFO at a target
+// leaves that target as it was; the gnuplot log is kept the same way, only
+// when gnuplot fails.
 
-#include <cstdio>
-#include <cstdlib>
 #include <string>
-
-#include "mlndt/common/atomic_file.h"
+#include <vector>
 
 namespace mlndt {
 namespace tools {
 
 // Single-quotes `text` for /bin/sh.
-inline std::string ShellQuote(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  return out + "'";
-}
+std::string ShellQuote(const std::string& text);
 
 // Quotes `text` as a gnuplot string literal (single quotes, '' for ').
-inline std::string GnuplotQuote(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) {
-    out += c;
-    if (c == '\'') out += '\'';
-  }
-  return out + "'";
-}
+std::string GnuplotQuote(const std::string& text);
 
 // True when `gnuplot --version` runs (the program `gnuplot` is a path or a
 // name looked up on PATH).
-inline bool GnuplotAvailable(const std::string& gnuplot) {
-  const std::string command =
-      ShellQuote(gnuplot) + " --version >/dev/null 2>&1";
-  return std::system(command.c_str()) == 0;
-}
+bool GnuplotAvailable(const std::string& gnuplot);
 
 // The first lines of every script: a PNG terminal (pngcairo when this
 // gnuplot has it, else libgd's png) of the given size in pixels.
-inline std::string GnuplotPngHeader(int width, int height) {
-  const std::string size = std::to_string(width) + "," + std::to_string(height);
-  return "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
-         "  set terminal pngcairo size " +
-         size +
-         " font 'Sans,10'\n"
-         "} else {\n"
-         "  set terminal png size " +
-         size +
-         "\n"
-         "}\n"
-         "set grid\nset key outside right top\n";
-}
+std::string GnuplotPngHeader(int width, int height);
 
-// Writes `script` to `script_path` and runs gnuplot on it; its stderr goes
-// to script_path + ".log". False with *error naming the log on failure.
-inline bool RunGnuplot(const std::string& gnuplot,
-                       const std::string& script_path,
-                       const std::string& script,
-                       std::string* error) {
-  if (!WriteFileAtomically(script_path, script, error)) return false;
-  const std::string log_path = script_path + ".log";
-  const std::string command = ShellQuote(gnuplot) + " " +
-                              ShellQuote(script_path) + " >" +
-                              ShellQuote(log_path) + " 2>&1";
-  if (std::system(command.c_str()) != 0) {
-    *error = "gnuplot failed on " + script_path + " (see " + log_path + ")";
-    return false;
-  }
-  std::remove(log_path.c_str());
-  return true;
-}
+// The `set output` line of the figure `png_path` (as the script names it):
+// into the private render folder when RunGnuplot runs the script, at
+// `png_path` itself when someone runs the saved script by hand.
+std::string GnuplotSetOutput(const std::string& png_path);
+
+// One gnuplot run: the script (already written) and the figures it draws.
+struct GnuplotRun {
+  std::string gnuplot;      // Program: a path or a name on PATH.
+  std::string working_dir;  // Folder to run in; "" = the current one.
+  std::string script_path;  // Relative to working_dir when that is set.
+  // Figures the script draws with GnuplotSetOutput, as it names them
+  // (relative to working_dir when that is set). Their file names differ.
+  std::vector<std::string> pngs;
+};
+
+// Runs the script, then replaces each figure of `run.pngs` with its new
+// rendering. False with *error on a failing gnuplot (its log is written to
+// script_path + ".log" when that can be done safely, else quoted), a
+// missing or truncated figure, or a figure that cannot be replaced; the
+// figures not yet replaced keep their previous contents.
+bool RenderGnuplot(const GnuplotRun& run, std::string* error);
+
+// Writes `script` to `script_path` (atomically), then RenderGnuplot.
+bool RunGnuplot(const std::string& gnuplot,
+                const std::string& script_path,
+                const std::string& script,
+                const std::vector<std::string>& pngs,
+                std::string* error);
 
 }  // namespace tools
 }  // namespace mlndt

@@ -13,7 +13,23 @@ const std::vector<std::string> kMapFlags = {"finest_cell_size",
                                             "division_constant",
                                             "min_points_per_cell",
                                             "min_eigenvalue",
-                                            "min_eigenvalue_ratio"};
+                                            "min_eigenvalue_ratio",
+                                            "coarse_weighting"};
+
+// The shared flags a localizer (a map file, ML-NDT) refuses: the map's and
+// conventional NDT's.
+const std::vector<std::string> kLocalizerRefusedFlags = {"finest_cell_size",
+                                                         "num_layers",
+                                                         "division_constant",
+                                                         "min_points_per_cell",
+                                                         "min_eigenvalue",
+                                                         "min_eigenvalue_ratio",
+                                                         "coarse_weighting",
+                                                         "ndt_cell_size",
+                                                         "ndt_outlier_ratio",
+                                                         "ndt_neighbors",
+                                                         "ndt_max_iterations",
+                                                         "ndt_max_step"};
 
 // The shared registration flags a map build does not read (--threads and
 // --preset it does).
@@ -39,7 +55,14 @@ const std::vector<std::string> kRegistrationOnlyFlags = {
     "loss_scale",
     "linear_solver",
     "trust_region",
-    "seed"};
+    "seed",
+    "initial_uncertainty",
+    "quality_check",
+    "min_inlier_fraction",
+    "max_mean_score",
+    "inlier_gate",
+    "min_constraint_ratio",
+    "retry_yaw_seeds"};
 
 }  // namespace
 
@@ -74,6 +97,13 @@ bool GridOptionsFromFlags(const std::string& tool,
         "from it): give --finest_cell_size=0 with --num_layers";
     return false;
   }
+  if (FlagGiven("coarse_weighting") &&
+      !StringToCoarseWeighting(FLAGS_coarse_weighting,
+                               &grid->coarse_weighting)) {
+    *error = "--coarse_weighting=" + FLAGS_coarse_weighting +
+             ": expected points or finest_cells";
+    return false;
+  }
   if (FlagGiven("min_points_per_cell")) {
     grid->min_points_per_cell = FLAGS_min_points_per_cell;
   }
@@ -103,6 +133,14 @@ bool GridOptionsFromFlags(const std::string& tool,
     return false;
   }
   return true;
+}
+
+const std::vector<std::string>& MapBuildRefusedFlags() {
+  return kRegistrationOnlyFlags;
+}
+
+const std::vector<std::string>& LocalizerRefusedFlags() {
+  return kLocalizerRefusedFlags;
 }
 
 bool RefuseMapFlags(const std::string& tool, std::string* error) {

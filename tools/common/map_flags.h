@@ -16,7 +16,8 @@ namespace tools {
 
 // The map options of --preset (default | paper) and the map flags given:
 // --finest_cell_size, --num_layers, --division_constant,
-// --min_points_per_cell, --min_eigenvalue, --min_eigenvalue_ratio. False
+// --min_points_per_cell, --min_eigenvalue, --min_eigenvalue_ratio,
+// --coarse_weighting. False
 // with *error naming the flag for a bad value, for --num_layers with
 // --finest_cell_size > 0, and for any other registration flag given
 // (`tool` names the tool in the message).
@@ -24,9 +25,16 @@ bool GridOptionsFromFlags(const std::string& tool,
                           LayeredGridOptions* grid,
                           std::string* error);
 
-// False with *error naming the first of the map flags above given on the
-// command line: a tool that loads a map file cannot change its cells.
+// False with *error naming the first of the map flags above (and
+// --coarse_weighting) given on the command line: a tool that loads a map
+// file cannot change its cells.
 bool RefuseMapFlags(const std::string& tool, std::string* error);
+
+// The shared flags mlndt_map refuses (GridOptionsFromFlags) and those
+// mlndt_localize refuses (RefuseMapFlags, and conventional NDT's): their
+// --help leaves them out (HideFlagsFromHelp, tool_main.h).
+const std::vector<std::string>& MapBuildRefusedFlags();
+const std::vector<std::string>& LocalizerRefusedFlags();
 
 }  // namespace tools
 }  // namespace mlndt

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "mlndt/common/atomic_file.h"
+#include "tools/common/input_files.h"
 
 namespace mlndt {
 namespace tools {
@@ -31,6 +32,7 @@ bool PrepareOutputDir(const std::string& flag,
       *error = name + ": " + why;
       return false;
     }
+    if (!CheckNotAnInput(flag, dir + "/" + file, error)) return false;
   }
   // access() says yes to root on a read-only file system; writing tells.
   const std::string probe =
@@ -52,7 +54,7 @@ bool CheckOutputFile(const std::string& flag,
     *error = "--" + flag + "=" + path + ": " + why;
     return false;
   }
-  return true;
+  return CheckNotAnInput(flag, path, error);
 }
 
 }  // namespace tools

@@ -14,15 +14,17 @@ namespace tools {
 // Creates the folder `dir` of the flag --`flag` (with its parents), then
 // checks that each of `files` (names inside it) can be written there
 // (CheckWritableFilePath) and that a file can really be created in it (a
-// probe file, removed again). False with *error naming the flag.
+// probe file, removed again), and that none of them is an input of the
+// run (CheckNotAnInput). False with *error naming the flag.
 bool PrepareOutputDir(const std::string& flag,
                       const std::string& dir,
                       const std::vector<std::string>& files,
                       std::string* error);
 
 // For an output file flag --`flag`=`path` (empty: not given, true): its
-// folder exists and `path` can be replaced (CheckWritableFilePath). False
-// with *error naming the flag.
+// folder exists and `path` can be replaced (CheckWritableFilePath), and it
+// is not an input of the run (CheckNotAnInput). False with *error naming
+// the flag.
 bool CheckOutputFile(const std::string& flag,
                      const std::string& path,
                      std::string* error);

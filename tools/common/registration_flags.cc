@@ -48,12 +48,17 @@ DEFINE_string(coarse_weighting, "finest_cells",
               "Weights in the coarse layers' moments: points | finest_cells (every finest "
               "cell alike)");
 DEFINE_double(min_range, mlndt::RangeFilterOptions().min_range_m,
-              "Input (and reference) points closer than this to the sensor are dropped [m]");
+              "Input (and reference) points closer than this to the cloud's origin are "
+              "dropped [m]. The range filters measure from the origin: the sensor for a "
+              "scan in its sensor frame; for a map-frame (e.g. UTM) cloud set "
+              "--min_range=0 --saturated_range_fraction=0");
 DEFINE_double(max_range, mlndt::RangeFilterOptions().max_range_m,
-              "Points farther than this are dropped [m]; 0 keeps all");
+              "Points farther than this from the cloud's origin (the sensor, in its "
+              "sensor frame) are dropped [m]; 0 keeps all");
 DEFINE_double(saturated_range_fraction, mlndt::RangeFilterOptions().saturated_range_fraction,
-              "Points at the largest range are dropped when at least this fraction of the "
-              "scan is there (0 = off)");
+              "Points at the largest range (distance from the cloud's origin, the sensor "
+              "in its sensor frame) are dropped when at least this fraction of the scan "
+              "is there (0 = off)");
 DEFINE_int32(iterations_per_layer, mlndt::LayerScheduleOptions().iterations_per_layer,
              "Iterations on each layer before the last");
 DEFINE_int32(max_iterations, mlndt::LayerScheduleOptions().max_final_iterations,

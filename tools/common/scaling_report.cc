@@ -79,8 +79,7 @@ bool WriteScalingPlot(const std::string& gnuplot,
       results.front().total_ms / static_cast<double>(results.front().points);
   std::ostringstream script;
   script
-      << GnuplotPngHeader(900, 600) << "set output "
-      << GnuplotQuote(dir + "/scaling.png") << "\n"
+      << GnuplotPngHeader(900, 600) << GnuplotSetOutput(dir + "/scaling.png")
       << "set title '" << title << "'\n"
       << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
       << "set xlabel 'points N (reference = input size)'\nset ylabel 'time "
@@ -105,7 +104,11 @@ bool WriteScalingPlot(const std::string& gnuplot,
       << Num(static_cast<double>(results.back().points))
       << "] linear(x) with lines dashtype 2 lc rgb 'gray40' lw 1.5 title "
          "'slope 1 (∝ N)'\n";
-  return RunGnuplot(gnuplot, dir + "/scaling.gp", script.str(), error);
+  return RunGnuplot(gnuplot,
+                    dir + "/scaling.gp",
+                    script.str(),
+                    {dir + "/scaling.png"},
+                    error);
 }
 
 }  // namespace tools

@@ -39,8 +39,7 @@ bool ErrorPlots(const std::vector<PairResult>& results,
     return false;
   }
   const std::string data = GnuplotQuote(f.data_dir + "/errors.dat");
-  *f.script << "set output " << GnuplotQuote(f.dir + "/errors_translation.png")
-            << "\n"
+  *f.script << GnuplotSetOutput(f.dir + "/errors_translation.png")
             << "set title 'Translation error per pair (" << f.title_step
             << ")'\n"
             << "set xlabel 'input scan index'\nset ylabel 'error [cm]'\n"
@@ -48,8 +47,7 @@ bool ErrorPlots(const std::vector<PairResult>& results,
             << " using 1:2 with linespoints title 't_x', '' using 1:3 with "
             << "linespoints title 't_y', '' using 1:4 with linespoints title "
                "'t_z'\n"
-            << "set output " << GnuplotQuote(f.dir + "/errors_rotation.png")
-            << "\n"
+            << GnuplotSetOutput(f.dir + "/errors_rotation.png")
             << "set title 'Rotation error per pair (" << f.title_step << ")'\n"
             << "set ylabel 'error [deg]'\n"
             << "plot " << data
@@ -94,7 +92,7 @@ bool TrajectoryPlot(const std::vector<PairResult>& results,
   const Eigen::Vector2d centre = box.center();
   const std::string data = GnuplotQuote(f.data_dir + "/trajectory.dat");
   std::ostringstream& script = *f.script;
-  script << "set output " << GnuplotQuote(f.dir + "/trajectory_xy.png") << "\n"
+  script << GnuplotSetOutput(f.dir + "/trajectory_xy.png")
          << "set title 'Trajectory, top view (" << f.title_step << ")'\n"
          << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\nset "
             "key inside top left\n"
@@ -161,8 +159,7 @@ bool TracePlot(const std::vector<PairResult>& results,
   }
   const std::string data = GnuplotQuote(f.data_dir + "/trace.dat");
   std::ostringstream& script = *f.script;
-  script << "set output " << GnuplotQuote(f.dir + "/score_vs_iteration.png")
-         << "\n";
+  script << GnuplotSetOutput(f.dir + "/score_vs_iteration.png");
   if (has_truth) script << "set multiplot layout 2,1\n";
   script << "set title 'Score per sampled point against iteration (each on "
             "its own layer)'\n"
@@ -219,7 +216,10 @@ bool WriteSequencePlots(const std::string& gnuplot,
   if (!traced.empty() && !TracePlot(results, traced, has_truth, files, error)) {
     return false;
   }
-  return RunGnuplot(gnuplot, data_dir + "/plots.gp", script.str(), error);
+  std::vector<std::string> figures;
+  for (const std::string& png : *pngs) figures.push_back(dir + "/" + png);
+  return RunGnuplot(
+      gnuplot, data_dir + "/plots.gp", script.str(), figures, error);
 }
 
 }  // namespace tools

@@ -261,7 +261,7 @@ bool WriteSuiteQualityPlot(
            ", graph 1 nohead dt 2 lw 1.5 lc rgb 'black'\n";
   };
   std::string script = GnuplotPngHeader(1200, 500);
-  script += "set output " + GnuplotQuote(dir + "/quality.png") + "\n";
+  script += GnuplotSetOutput(dir + "/quality.png");
   script +=
       "set multiplot layout 1,2 title 'Fit at the solution of right "
       "and wrong runs: share of runs at or below a value (dashed: the "
@@ -282,7 +282,8 @@ bool WriteSuiteQualityPlot(
   script += "plot " + curve("mean_score", true) + ", " +
             curve("mean_score", false) + "\n";
   script += "unset multiplot\n";
-  return RunGnuplot(gnuplot, data + "/quality.gp", script, error);
+  return RunGnuplot(
+      gnuplot, data + "/quality.gp", script, {dir + "/quality.png"}, error);
 }
 
 std::string FormatDuration(double seconds) {

@@ -8,8 +8,11 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
+
+#include "tools/common/input_files.h"
 
 // gflags' own help flags (gflags_reporting.cc).
 DECLARE_bool(help);
@@ -25,6 +28,11 @@ const char kExitCodesHelp[] =
     "the message names it).";
 
 namespace {
+
+std::set<std::string>& HiddenFlags() {
+  static std::set<std::string> hidden;
+  return hidden;
+}
 
 std::string FileName(const std::string& path) {
   return std::filesystem::path(path).filename().string();
@@ -84,6 +92,10 @@ void ExitOnBadFlags(const std::string& tool, int argc, char** argv) {
 
 }  // namespace
 
+void HideFlagsFromHelp(const std::vector<std::string>& flags) {
+  HiddenFlags().insert(flags.begin(), flags.end());
+}
+
 std::string VersionLine() { return std::string("mlndt ") + MLNDT_VERSION; }
 
 std::string ToolHelp(const std::string& tool) {
@@ -96,7 +108,8 @@ std::string ToolHelp(const std::string& tool) {
     const std::string path = ShortPath(flag.filename);
     if (path == "tools/" + own_file) {
       own.push_back(flag);
-    } else if (path.rfind("tools/common/", 0) == 0) {
+    } else if (path.rfind("tools/common/", 0) == 0 &&
+               HiddenFlags().count(flag.name) == 0) {
       shared[path].push_back(flag);
     }
   }
@@ -143,6 +156,7 @@ bool StartTool(const char* usage,
     std::exit(0);
   }
   gflags::HandleCommandLineHelpFlags();  // --helpfull, --helpmatch, ...
+  SetToolArguments(std::vector<std::string>(*argv + 1, *argv + *argc));
   google::InitGoogleLogging((*argv)[0]);
   FLAGS_logtostderr = true;
   if (reject_arguments && *argc > 1) {

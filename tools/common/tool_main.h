@@ -4,6 +4,7 @@
 // --version, and the exit codes every tool shares.
 
 #include <string>
+#include <vector>
 
 namespace mlndt {
 namespace tools {
@@ -36,6 +37,10 @@ bool StartTool(const char* usage,
                bool reject_arguments,
                int* argc,
                char*** argv);
+
+// Shared flags (tools/common/) that the tool refuses: --help does not list
+// them. Call before StartTool.
+void HideFlagsFromHelp(const std::vector<std::string>& flags);
 
 // The --help text of the tool `tool` (its file is tools/<tool>.cc).
 std::string ToolHelp(const std::string& tool);

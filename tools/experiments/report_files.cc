@@ -24,10 +24,9 @@ std::string ReportFiles::AddFigure(const std::string& name,
       "# Run from the report folder: gnuplot " + script + "\n" +
           tools::GnuplotPngHeader(width, height) +
           "set termoption noenhanced\n"
-          "set datafile separator ','\n"
-          "set output " +
-          tools::GnuplotQuote(png) + "\n" + body);
-  scripts_.push_back(script);
+          "set datafile separator ','\n" +
+          tools::GnuplotSetOutput(png) + body);
+  scripts_.push_back({script, png});
   return png;
 }
 
@@ -49,18 +48,10 @@ bool ReportFiles::WriteAll(const std::string& out_dir,
       return false;
   }
   if (!plots) return true;
-  for (const std::string& script : scripts_) {
-    const std::string log = script + ".log";
-    const std::string command = "cd " + tools::ShellQuote(out_dir) + " && " +
-                                tools::ShellQuote(gnuplot) + " " +
-                                tools::ShellQuote(script) + " >" +
-                                tools::ShellQuote(log) + " 2>&1";
-    if (std::system(command.c_str()) != 0) {
-      *error = "gnuplot failed on " + out_dir + "/" + script + " (see " +
-               out_dir + "/" + log + ")";
+  for (const auto& [script, png] : scripts_) {
+    if (!tools::RenderGnuplot({gnuplot, out_dir, script, {png}}, error)) {
       return false;
     }
-    fs::remove(out_dir + "/" + log, ec);
   }
   return true;
 }

@@ -31,7 +31,8 @@ class ReportFiles {
 
  private:
   std::vector<std::pair<std::string, std::string>> files_;
-  std::vector<std::string> scripts_;  // Relative paths.
+  // (script, figure), relative paths.
+  std::vector<std::pair<std::string, std::string>> scripts_;
 };
 
 // A markdown table.

@@ -56,9 +56,8 @@ bool SampleInput(const RangeFilterOptions& range_filter,
   summary->input_points = input.size();
   summary->range_filtered_points = input.size() - kept.size();
   if (kept.empty()) {
-    *error = "the range filter (min_range_m " +
-             std::to_string(range_filter.min_range_m) +
-             ") dropped every input point";
+    *error = "the range filter dropped every input point: " +
+             DescribeDroppedPoints(range_filter, filter_summary);
     return false;
   }
   SamplingSummary sampling_summary;
@@ -79,9 +78,11 @@ bool FilterReference(const RangeFilterOptions& range_filter,
                      const PointCloud& reference,
                      PointCloud* filtered,
                      std::string* error) {
-  *filtered = FilterByRange(range_filter, reference, nullptr);
+  RangeFilterSummary summary;
+  *filtered = FilterByRange(range_filter, reference, &summary);
   if (filtered->empty() && !reference.empty()) {
-    *error = "the range filter dropped every reference point";
+    *error = "the range filter dropped every reference point: " +
+             DescribeDroppedPoints(range_filter, summary);
     return false;
   }
   return true;

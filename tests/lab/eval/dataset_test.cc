@@ -10,6 +10,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "tests/testing/eigen_near.h"
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -35,8 +36,7 @@ TEST(ListScanFiles, KittiFolderHasEightScansInOrder) {
 }
 
 TEST(ListScanFiles, SortsByNameSkipsOtherFilesAndExcludes) {
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_dataset_test_list_scan_files";
+  const std::string dir = testing::ScratchPath("list_scan_files");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir + "/sub.pcd");  // A folder.
   for (const char* name : {"b.ply", "a.pcd", "poses.txt", "notes.md", "c.bin"})
@@ -58,7 +58,7 @@ TEST(ListScanFiles, MissingOrEmptyFolderIsAnError) {
   std::string error;
   EXPECT_FALSE(ListScanFiles("/nonexistent/scans", {}, &paths, &error));
   EXPECT_NE(error.find("/nonexistent/scans: not a folder"), std::string::npos);
-  const std::string dir = ::testing::TempDir() + "mlndt_dataset_test_empty";
+  const std::string dir = testing::ScratchPath("empty");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   EXPECT_FALSE(ListScanFiles(dir, {}, &paths, &error));

@@ -6,17 +6,14 @@
 #include <map>
 #include <string>
 
+#include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
 
 std::string WriteFile(const std::string& name, const std::string& text) {
-  const ::testing::TestInfo* test =
-      ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string path = ::testing::TempDir() +
-                           "mlndt_reference_pairs_test_" + test->name() + "_" +
-                           name;
+  const std::string path = testing::ScratchPath(name);
   std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
   return path;
 }

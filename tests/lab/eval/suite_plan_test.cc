@@ -13,6 +13,7 @@
 
 #include "mlndt/common/pose.h"
 #include "tests/testing/eigen_near.h"
+#include "tests/testing/scratch_dir.h"
 
 namespace mlndt {
 namespace {
@@ -69,7 +70,7 @@ TEST(FindScanFile, RefusesAmbiguousAndMissingNumbers) {
 }
 
 TEST(ListDatasetScanFiles, ListsTheFolderAndItsPcdFolder) {
-  const std::string dir = ::testing::TempDir() + "suite_plan_test_list";
+  const std::string dir = testing::ScratchPath("list");
   fs::remove_all(dir);
   fs::create_directories(dir + "/pcd");
   std::ofstream(dir + "/pcd/000003.pcd") << "x";

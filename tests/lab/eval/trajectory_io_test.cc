@@ -9,6 +9,7 @@
 #include <string>
 
 #include "tests/testing/eigen_near.h"
+#include "tests/testing/scratch_dir.h"
 
 namespace mlndt {
 namespace {
@@ -17,10 +18,7 @@ using testing::EigenNear;
 
 // A fresh folder per test.
 std::string TempDir() {
-  const ::testing::TestInfo* test =
-      ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string dir =
-      ::testing::TempDir() + "mlndt_trajectory_io_test_" + test->name();
+  const std::string dir = testing::ScratchPath("files");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir + "/";
