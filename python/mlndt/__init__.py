@@ -27,6 +27,7 @@ from ._mlndt import (
     pose_from_xi,
     read_cloud,
     register,
+    resolve_options,
     write_cloud,
     xi_from_pose,
 )
@@ -42,6 +43,7 @@ __all__ = [
     "pose_from_xi",
     "read_cloud",
     "register",
+    "resolve_options",
     "write_cloud",
     "xi_from_pose",
 ]

@@ -86,23 +86,11 @@ def _cloud(path):
     return _mlndt.read_cloud(path)
 
 
-def _merged(defaults, given):
-    """`defaults` with the (nested) fields of `given` replaced."""
-    merged = dict(defaults)
-    for key, value in given.items():
-        if isinstance(value, dict) and isinstance(merged.get(key), dict):
-            merged[key] = _merged(merged[key], value)
-        else:
-            merged[key] = value
-    return merged
-
-
 @functools.lru_cache(maxsize=_MAP_CACHE_SIZE)
 def _reference_map(path, options_json):
     """The map mlndt.register builds of the reference: its range-filtered
     points on the options' grid."""
-    options = json.loads(options_json)
-    full = _merged(_mlndt.default_options(options.pop("preset", "default")), options)
+    full = _mlndt.resolve_options(**json.loads(options_json))
     points = _mlndt.filter_range(_cloud(path), **full["range_filter"])
     return _mlndt.LayeredMap.build(points, **full["grid"])
 
@@ -205,11 +193,8 @@ def tasks_per_worker(results):
 
 
 def _validate(options, initial_uncertainty, map_given):
-    """Raises the ValueError mlndt.register would, before any work is sent:
-    a registration of a tiny map with the options, which never runs past
-    the option checks' verdict."""
-    register_options = {k: v for k, v in options.items() if not (map_given and k == "grid")}
+    """Raises the ValueError the workers' registrations would, before any
+    task is sent."""
     if map_given and "grid" in options:
-        raise ValueError("invalid option: grid does not apply to a saved map")
-    probe = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
-    _mlndt.register(probe, probe, None, initial_uncertainty, **register_options)
+        raise ValueError("invalid option: grid does not apply to a saved map (it was built with its own)")
+    _mlndt.resolve_options(initial_uncertainty, **options)
