@@ -24,7 +24,8 @@ worker that ran the task, "local" without a client).
 
 import functools
 import json
-from collections import Counter
+import threading
+from collections import Counter, OrderedDict
 from dataclasses import dataclass
 
 import numpy as np
@@ -86,13 +87,26 @@ def _cloud(path):
     return _mlndt.read_cloud(path)
 
 
-@functools.lru_cache(maxsize=_MAP_CACHE_SIZE)
-def _reference_map(path, options_json):
-    """The map mlndt.register builds of the reference: its range-filtered
-    points on the options' grid."""
-    full = _mlndt.resolve_options(**json.loads(options_json))
+_reference_maps = OrderedDict()  # (path, options key) -> LayeredMap, oldest first.
+_reference_maps_lock = threading.Lock()  # Workers may run several threads.
+
+
+def _reference_map(path, options):
+    """The map mlndt.register builds of the reference (its range-filtered
+    points on the options' grid), built once per process and options."""
+    key = (path, json.dumps(options, sort_keys=True, default=repr))
+    with _reference_maps_lock:
+        if key in _reference_maps:
+            _reference_maps.move_to_end(key)
+            return _reference_maps[key]
+    full = _mlndt.resolve_options(**options)
     points = _mlndt.filter_range(_cloud(path), **full["range_filter"])
-    return _mlndt.LayeredMap.build(points, **full["grid"])
+    layered_map = _mlndt.LayeredMap.build(points, **full["grid"])
+    with _reference_maps_lock:
+        _reference_maps[key] = layered_map
+        if len(_reference_maps) > _MAP_CACHE_SIZE:
+            _reference_maps.popitem(last=False)
+    return layered_map
 
 
 @functools.lru_cache(maxsize=2)
@@ -102,7 +116,7 @@ def _saved_map(path):
 
 def _register_pair(task, options):
     reference, input, reference_path, input_path, initial, initial_uncertainty = task
-    layered_map = _reference_map(reference_path, json.dumps(options, sort_keys=True))
+    layered_map = _reference_map(reference_path, options)
     register_options = {k: v for k, v in options.items() if k != "grid"}
     result = layered_map.register(_cloud(input_path), initial, initial_uncertainty, **register_options)
     return PairRegistration(

@@ -133,3 +133,15 @@ def test_the_build_tree_has_the_stub_and_py_typed():
     package = BUILD_DIR / "python" / "mlndt"
     assert (package / "__init__.pyi").read_text() == STUB.read_text()
     assert (package / "py.typed").exists()
+
+
+def test_lab_stub_names_every_public_name():
+    import mlndt.lab
+
+    tree = ast.parse((SOURCE_DIR / "python" / "mlndt" / "lab.pyi").read_text())
+    names = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
+    assert set(mlndt.lab.__all__) - {"__version__"} <= names
+    classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
+    for cls in (mlndt.lab.PairResult, mlndt.lab.ScanStore):
+        stubbed = {node.name for node in classes[cls.__name__].body if isinstance(node, ast.FunctionDef)}
+        assert {name for name in dir(cls) if not name.startswith("_")} <= stubbed, cls.__name__
