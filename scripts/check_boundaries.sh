@@ -3,7 +3,9 @@
 # dependency order is mlndt <- lab <- tools (README, "Modules"):
 #   mlndt/   the installed library: no lab/, tools/, gflags or nlohmann_json;
 #   lab/     evaluation and experiments: no tools/ and no gflags;
-#   python/  the bindings of the library: no lab/ and no tools/.
+#   python/src      the bindings of the library (mlndt._mlndt): no lab/
+#                   and no tools/;
+#   python/lab_src  the bindings of the lab (mlndt._lab): no tools/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,9 +24,10 @@ forbid mlndt 'lab/|tools/' "the lab or the tools (mlndt <- lab <- tools)"
 forbid mlndt 'gflags/|nlohmann/' "gflags or nlohmann_json (the installed package needs neither)"
 forbid lab 'tools/' "the tools (mlndt <- lab <- tools)"
 forbid lab 'gflags/' "gflags (flags belong to tools/)"
-forbid python/src 'lab/|tools/' "the lab or the tools (Python binds the library only)"
+forbid python/src 'lab/|tools/' "the lab or the tools (mlndt._mlndt binds the library only)"
+forbid python/lab_src 'tools/' "the tools (mlndt._lab binds the lab)"
 
 if ((status == 0)); then
-  echo "check_boundaries: mlndt <- lab <- tools, python -> mlndt: ok"
+  echo "check_boundaries: mlndt <- lab <- tools, python/src -> mlndt, python/lab_src -> lab: ok"
 fi
 exit $status

@@ -13,8 +13,11 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev liblzf-dev nlohmann-json3-dev
   gnuplot-nox clang-format ccache
   clang libclang-rt-14-dev libomp-dev
-  # The Python module (python/) and its tests, for Debian's /usr/bin/python3.
+  # The Python module (python/) and its tests, for Debian's /usr/bin/python3;
+  # pip install . into a venv (scripts/check_pip_install.sh) and
+  # mlndt.distributed's Dask.
   pybind11-dev python3-dev python3-numpy python3-pytest
+  python3-venv python3-pip python3-setuptools python3-dask python3-distributed
 )
 
 for arg in "$@"; do

@@ -1,7 +1,11 @@
 """ML-NDT scan matching (Ulas & Temeltas 2013) on numpy arrays.
 
 The Python face of the mlndt C++ library: register two scans, build, save and
-load layered NDT maps and register against them, read and write cloud files.
+load layered NDT maps and register against them, localise a scan sequence
+against a map (Localizer), read and write cloud files. Submodules (imported
+by name): mlndt.lab (trajectory evaluation and sequence runs, as mlndt_eval
+and mlndt_sequence compute them) and mlndt.distributed (pairs and scans
+fanned out to Dask workers).
 
     import mlndt
     reference = mlndt.read_cloud("data/koide3/251370668.pcd")
@@ -14,6 +18,8 @@ help(mlndt.register) lists every option with its default.
 
 from ._mlndt import (
     LayeredMap,
+    LocalizationResult,
+    Localizer,
     RegistrationResult,
     __version__,
     default_options,
@@ -21,12 +27,15 @@ from ._mlndt import (
     pose_from_xi,
     read_cloud,
     register,
+    resolve_options,
     write_cloud,
     xi_from_pose,
 )
 
 __all__ = [
     "LayeredMap",
+    "LocalizationResult",
+    "Localizer",
     "RegistrationResult",
     "__version__",
     "default_options",
@@ -34,10 +43,13 @@ __all__ = [
     "pose_from_xi",
     "read_cloud",
     "register",
+    "resolve_options",
     "write_cloud",
     "xi_from_pose",
 ]
 
 # The classes are defined in mlndt._mlndt; they are used as mlndt.X.
 LayeredMap.__module__ = "mlndt"
+LocalizationResult.__module__ = "mlndt"
+Localizer.__module__ = "mlndt"
 RegistrationResult.__module__ = "mlndt"

@@ -2,6 +2,8 @@
 // saved and loaded (grid/grid_io.h), and registered against, from any
 // number of threads (the map is immutable once built).
 
+#include "python/src/map.h"
+
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -19,143 +21,127 @@
 
 namespace mlndt {
 namespace python {
-namespace {
 
-class LayeredMap {
- public:
-  explicit LayeredMap(std::shared_ptr<const LayeredGrid> grid)
-      : grid_(std::move(grid)) {}
-
-  static LayeredMap Build(const py::object& points,
-                          int num_threads,
-                          const py::kwargs& kwargs) {
-    const LayeredGridOptions options = LayeredGridOptionsFromPython(kwargs);
-    if (num_threads < 1 || num_threads > 256) {
-      throw py::value_error(
-          "invalid option: num_threads = " + std::to_string(num_threads) +
-          "; it must be in [1, 256]");
-    }
-    const PointCloud cloud = PointsFromPython(points, "points", false);
-    auto grid = std::make_shared<LayeredGrid>();
-    std::string error;
-    bool ok = false;
-    {
-      py::gil_scoped_release release;
-      ok = LayeredGrid::Build(options, cloud, num_threads, grid.get(), &error);
-    }
-    if (!ok) throw py::value_error("LayeredMap.build: " + error);
-    return LayeredMap(std::move(grid));
+LayeredMap LayeredMap::Build(const py::object& points,
+                             int num_threads,
+                             const py::kwargs& kwargs) {
+  const LayeredGridOptions options = LayeredGridOptionsFromPython(kwargs);
+  if (num_threads < 1 || num_threads > 256) {
+    throw py::value_error(
+        "invalid option: num_threads = " + std::to_string(num_threads) +
+        "; it must be in [1, 256]");
   }
+  const PointCloud cloud = PointsFromPython(points, "points", false);
+  auto grid = std::make_shared<LayeredGrid>();
+  std::string error;
+  bool ok = false;
+  {
+    py::gil_scoped_release release;
+    ok = LayeredGrid::Build(options, cloud, num_threads, grid.get(), &error);
+  }
+  if (!ok) throw py::value_error("LayeredMap.build: " + error);
+  return LayeredMap(std::move(grid));
+}
 
-  static LayeredMap Load(const py::object& path_like) {
-    const std::string path = PathString(path_like);
-    auto grid = std::make_shared<LayeredGrid>();
-    std::string error;
-    bool ok = false;
-    {
-      py::gil_scoped_release release;
-      ok = LoadLayeredGrid(path, grid.get(), &error);
+LayeredMap LayeredMap::Load(const py::object& path_like) {
+  const std::string path = PathString(path_like);
+  auto grid = std::make_shared<LayeredGrid>();
+  std::string error;
+  bool ok = false;
+  {
+    py::gil_scoped_release release;
+    ok = LoadLayeredGrid(path, grid.get(), &error);
+  }
+  if (!ok) ThrowReadError(path, error);
+  return LayeredMap(std::move(grid));
+}
+
+void LayeredMap::Save(const py::object& path_like) const {
+  const std::string path = PathString(path_like);
+  std::string error;
+  bool ok = false;
+  {
+    py::gil_scoped_release release;
+    ok = SaveLayeredGrid(path, *grid_, &error);
+  }
+  if (!ok) ThrowWriteError(path, error);
+}
+
+py::object LayeredMap::Register(const py::object& input,
+                                const py::object& initial,
+                                const py::object& initial_uncertainty,
+                                const py::kwargs& kwargs) const {
+  const RegistrationOptions options =
+      RegistrationOptionsFromPython(kwargs, initial_uncertainty, true);
+  const Isometry3d guess = TransformFromPython(initial, "initial");
+  const PointCloud input_cloud = PointsFromPython(input, "input", false);
+  // The shared_ptr copy keeps the map alive while the GIL is released.
+  const std::shared_ptr<const LayeredGrid> grid = grid_;
+  return py::cast(
+      RegisterReleasingGil(options, grid.get(), nullptr, input_cloud, guess));
+}
+
+py::list LayeredMap::Layers() const {
+  py::list layers;
+  for (const LayerInfo& info : grid_->layer_info()) {
+    py::dict layer;
+    layer["layer"] = info.layer;
+    layer["cell_size_m"] = info.cell_size_m;
+    layer["dims"] = py::make_tuple(info.dims.x(), info.dims.y(), info.dims.z());
+    layer["occupied_cells"] = info.occupied_cells;
+    layer["sparse_cells"] = info.sparse_cells;
+    layer["degenerate_cells"] = info.degenerate_cells;
+    layers.append(std::move(layer));
+  }
+  return layers;
+}
+
+Eigen::Matrix<double, 2, 3> LayeredMap::Bounds() const {
+  Eigen::Matrix<double, 2, 3> bounds;
+  bounds.row(0) = grid_->bounds().min().transpose();
+  bounds.row(1) = grid_->bounds().max().transpose();
+  return bounds;
+}
+
+py::dict LayeredMap::Cells(int i) const {
+  if (i < 1 || i > grid_->num_layers()) {
+    throw py::index_error("layer " + std::to_string(i) +
+                          " of a map with layers 1.." +
+                          std::to_string(grid_->num_layers()));
+  }
+  const std::vector<NdtCell>& cells = grid_->layer(i).cells();
+  const py::ssize_t n = static_cast<py::ssize_t>(cells.size());
+  py::array_t<double> means({n, py::ssize_t{3}});
+  py::array_t<double> covariances({n, py::ssize_t{3}, py::ssize_t{3}});
+  py::array_t<int64_t> counts(n);
+  auto mean = means.mutable_unchecked<2>();
+  auto covariance = covariances.mutable_unchecked<3>();
+  auto count = counts.mutable_unchecked<1>();
+  for (py::ssize_t k = 0; k < n; ++k) {
+    const NdtCell& cell = cells[static_cast<size_t>(k)];
+    count(k) = cell.count;
+    for (int a = 0; a < 3; ++a) {
+      mean(k, a) = cell.mean(a);
+      for (int b = 0; b < 3; ++b) covariance(k, a, b) = cell.covariance(a, b);
     }
-    if (!ok) ThrowReadError(path, error);
-    return LayeredMap(std::move(grid));
   }
+  py::dict result;
+  result["means"] = means;
+  result["covariances"] = covariances;
+  result["counts"] = counts;
+  return result;
+}
 
-  void Save(const py::object& path_like) const {
-    const std::string path = PathString(path_like);
-    std::string error;
-    bool ok = false;
-    {
-      py::gil_scoped_release release;
-      ok = SaveLayeredGrid(path, *grid_, &error);
-    }
-    if (!ok) ThrowWriteError(path, error);
+std::string LayeredMap::Repr() const {
+  std::ostringstream out;
+  out << "<mlndt.LayeredMap " << grid_->num_layers() << " layers, cells";
+  for (const LayerInfo& info : grid_->layer_info()) {
+    out << " " << info.cell_size_m << "m:" << info.occupied_cells;
   }
-
-  py::object Register(const py::object& input,
-                      const py::object& initial,
-                      const py::object& initial_uncertainty,
-                      const py::kwargs& kwargs) const {
-    const RegistrationOptions options =
-        RegistrationOptionsFromPython(kwargs, initial_uncertainty, true);
-    const Isometry3d guess = TransformFromPython(initial, "initial");
-    const PointCloud input_cloud = PointsFromPython(input, "input", false);
-    // The shared_ptr copy keeps the map alive while the GIL is released.
-    const std::shared_ptr<const LayeredGrid> grid = grid_;
-    return py::cast(
-        RegisterReleasingGil(options, grid.get(), nullptr, input_cloud, guess));
-  }
-
-  py::list Layers() const {
-    py::list layers;
-    for (const LayerInfo& info : grid_->layer_info()) {
-      py::dict layer;
-      layer["layer"] = info.layer;
-      layer["cell_size_m"] = info.cell_size_m;
-      layer["dims"] =
-          py::make_tuple(info.dims.x(), info.dims.y(), info.dims.z());
-      layer["occupied_cells"] = info.occupied_cells;
-      layer["sparse_cells"] = info.sparse_cells;
-      layer["degenerate_cells"] = info.degenerate_cells;
-      layers.append(std::move(layer));
-    }
-    return layers;
-  }
-
-  Eigen::Matrix<double, 2, 3> Bounds() const {
-    Eigen::Matrix<double, 2, 3> bounds;
-    bounds.row(0) = grid_->bounds().min().transpose();
-    bounds.row(1) = grid_->bounds().max().transpose();
-    return bounds;
-  }
-
-  // The occupied cells of layer i (1-based): means, covariances, counts.
-  py::dict Cells(int i) const {
-    if (i < 1 || i > grid_->num_layers()) {
-      throw py::index_error("layer " + std::to_string(i) +
-                            " of a map with layers 1.." +
-                            std::to_string(grid_->num_layers()));
-    }
-    const std::vector<NdtCell>& cells = grid_->layer(i).cells();
-    const py::ssize_t n = static_cast<py::ssize_t>(cells.size());
-    py::array_t<double> means({n, py::ssize_t{3}});
-    py::array_t<double> covariances({n, py::ssize_t{3}, py::ssize_t{3}});
-    py::array_t<int64_t> counts(n);
-    auto mean = means.mutable_unchecked<2>();
-    auto covariance = covariances.mutable_unchecked<3>();
-    auto count = counts.mutable_unchecked<1>();
-    for (py::ssize_t k = 0; k < n; ++k) {
-      const NdtCell& cell = cells[static_cast<size_t>(k)];
-      count(k) = cell.count;
-      for (int a = 0; a < 3; ++a) {
-        mean(k, a) = cell.mean(a);
-        for (int b = 0; b < 3; ++b) covariance(k, a, b) = cell.covariance(a, b);
-      }
-    }
-    py::dict result;
-    result["means"] = means;
-    result["covariances"] = covariances;
-    result["counts"] = counts;
-    return result;
-  }
-
-  std::string Repr() const {
-    std::ostringstream out;
-    out << "<mlndt.LayeredMap " << grid_->num_layers() << " layers, cells";
-    for (const LayerInfo& info : grid_->layer_info()) {
-      out << " " << info.cell_size_m << "m:" << info.occupied_cells;
-    }
-    out << ", " << grid_->num_points() << " points, " << grid_->MemoryBytes()
-        << " bytes>";
-    return out.str();
-  }
-
-  const LayeredGrid& grid() const { return *grid_; }
-
- private:
-  std::shared_ptr<const LayeredGrid> grid_;
-};
-
-}  // namespace
+  out << ", " << grid_->num_points() << " points, " << grid_->MemoryBytes()
+      << " bytes>";
+  return out.str();
+}
 
 void DefineMap(py::module_& m) {
   py::class_<LayeredMap>(

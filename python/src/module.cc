@@ -1,25 +1,10 @@
 // The mlndt Python module (imported as mlndt._mlndt; python/mlndt/__init__.py
-// re-exports it). Registration, maps, clouds and options of the C++ library;
-// python/mlndt/__init__.pyi has the types for editors.
+// re-exports it). Registration, maps, localisation, clouds and options of
+// the C++ library; python/mlndt/__init__.pyi has the types for editors.
 
 #include "python/src/module.h"
 
 #include <pybind11/pybind11.h>
-
-namespace mlndt {
-namespace python {
-
-std::string PathString(const py::object& path) {
-  const py::object text = py::module_::import("os").attr("fspath")(path);
-  if (!py::isinstance<py::str>(text)) {
-    throw py::type_error("path: expected a str or os.PathLike of str, got " +
-                         py::repr(path).cast<std::string>());
-  }
-  return text.cast<std::string>();
-}
-
-}  // namespace python
-}  // namespace mlndt
 
 PYBIND11_MODULE(_mlndt, m) {
   namespace py = pybind11;
@@ -36,4 +21,5 @@ PYBIND11_MODULE(_mlndt, m) {
   mlndt::python::DefinePose(m);
   mlndt::python::DefineRegistration(m);
   mlndt::python::DefineMap(m);
+  mlndt::python::DefineLocalizer(m);
 }

@@ -1,7 +1,8 @@
 #pragma once
 
 // The parts of the mlndt Python module, one file each (module.cc puts them
-// together).
+// together). They are also linked into the lab module mlndt._lab
+// (python/lab_src/), which uses the converters and option parsers.
 
 #include <pybind11/pybind11.h>
 
@@ -17,8 +18,9 @@ void DefineOptions(py::module_& m);       // options.cc
 void DefinePose(py::module_& m);          // pose.cc
 void DefineRegistration(py::module_& m);  // registration.cc
 void DefineMap(py::module_& m);           // map.cc
+void DefineLocalizer(py::module_& m);     // localizer.cc
 
-// A str or os.PathLike as a path string (TypeError otherwise).
+// A str or os.PathLike as a path string (TypeError otherwise; paths.cc).
 std::string PathString(const py::object& path);
 
 }  // namespace python

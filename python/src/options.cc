@@ -517,6 +517,19 @@ void DefineOptions(py::module_& m) {
       "passed back, e.g. mlndt.register(ref, inp, **options) (its "
       "initial_uncertainty entry then goes to the initial_uncertainty "
       "argument).");
+  m.def(
+      "resolve_options",
+      [](const py::object& initial_uncertainty, const py::kwargs& kwargs) {
+        return RegistrationOptionsBinding().ToDict(
+            RegistrationOptionsFromPython(kwargs, initial_uncertainty, false));
+      },
+      py::arg("initial_uncertainty") = py::none(),
+      "resolve_options(initial_uncertainty=None, **options) -> dict\n\n"
+      "The options mlndt.register would use for these arguments: the "
+      "preset with the given\nfields replaced, checked by the library's "
+      "IsValid, as default_options() lays them\nout. Raises ValueError "
+      "naming an unknown or invalid field, as register does\n(without "
+      "reading any cloud): check options before sending work elsewhere.");
 }
 
 }  // namespace python

@@ -10,6 +10,7 @@ source tree:
 
 import json
 import os
+import subprocess
 from pathlib import Path
 
 import numpy as np
@@ -26,6 +27,12 @@ PYTHON = os.environ.get("MLNDT_PYTHON", "/usr/bin/python3")
 KOIDE3_REFERENCE = BUNDLED_DATA_DIR / "koide3" / "251370668.pcd"
 KOIDE3_INPUT = BUNDLED_DATA_DIR / "koide3" / "251371071.pcd"
 KOIDE3_KEY = "251370668_251371071"
+# KITTI 00 frames 0-7 (Velodyne), their pose file in the Velodyne frame and
+# the reference pairs (the consensus of five third-party registrations).
+KITTI_DIR = BUNDLED_DATA_DIR / "kitti"
+KITTI_SCANS = sorted((KITTI_DIR / "pcd").glob("*.pcd"))
+KITTI_POSES = KITTI_DIR / "poses_velo.txt"
+KITTI_PAIRS = KITTI_DIR / "reference_pairs.json"
 
 
 def pytest_sessionfinish(session, exitstatus):
@@ -66,6 +73,22 @@ def same_result(a, b):
         and np.array_equal(a.covariance, b.covariance)
         and [r["score"] for r in a.trace] == [r["score"] for r in b.trace]
     )
+
+
+def run_tool(name, *flags):
+    """Runs build/tools/<name> with the flags; fails the test when it is not built."""
+    tool = TOOLS_DIR / name
+    if not tool.exists():
+        pytest.fail(f"{tool} is not built (MLNDT_BUILD_TOOLS=ON builds it)")
+    return subprocess.run([str(tool), *[str(f) for f in flags]], capture_output=True, text=True)
+
+
+def read_kitti_lines(path):
+    """The (N, 4, 4) poses of a KITTI file written with 17 digits (exact doubles)."""
+    rows = np.loadtxt(path, ndmin=2).reshape(-1, 3, 4)
+    poses = np.tile(np.eye(4), (len(rows), 1, 1))
+    poses[:, :3, :] = rows
+    return poses
 
 
 @pytest.fixture(scope="session")

@@ -188,3 +188,16 @@ def test_invalid_options_raise_before_any_work(small_pair):
     names the option."""
     with pytest.raises(ValueError, match="unknown option"):
         mlndt.register(np.zeros((0, 3)), np.zeros((0, 3)), bogus=1)
+
+
+def test_resolve_options_is_what_register_uses():
+    resolved = mlndt.resolve_options((0.2, 2.0), preset="paper", grid={"finest_cell_size_m": 1.5})
+    paper = mlndt.default_options("paper")
+    assert resolved["grid"]["finest_cell_size_m"] == 1.5
+    assert resolved["grid"]["num_layers"] == paper["grid"]["num_layers"]
+    assert resolved["initial_uncertainty"]["given"] and resolved["initial_uncertainty"]["translation_m"] == 0.2
+    assert resolved["sampling"] == paper["sampling"]
+    with pytest.raises(ValueError, match=r"sampling: random_fraction must be in \(0, 1\]"):
+        mlndt.resolve_options(sampling={"random_fraction": 3.0})
+    with pytest.raises(ValueError, match="no_such_option"):
+        mlndt.resolve_options(no_such_option=1)

@@ -4,6 +4,7 @@ option struct and bound in python/src/options.cc must be added to the stub)."""
 
 import ast
 import pydoc
+import types
 
 import mlndt
 from conftest import BUILD_DIR, SOURCE_DIR
@@ -79,6 +80,8 @@ def test_stub_signatures_list_every_option():
     layered_map = stub_classes()["LayeredMap"]
     map_register = function(layered_map.body, "register")
     assert set(keyword_only(map_register)) == (top_level - {"initial_uncertainty", "grid"}) | {"preset"}
+    localizer = function(stub_classes()["Localizer"].body, "__init__")
+    assert set(keyword_only(localizer)) == (top_level - {"initial_uncertainty", "grid"}) | {"preset"}
     build = function(layered_map.body, "build")
     assert set(keyword_only(build)) == set(mlndt.default_options()["grid"]) | {"preset"}
     filter_range = function(tree.body, "filter_range")
@@ -90,10 +93,14 @@ def test_every_public_name_has_a_stub():
     names = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
     names |= {node.target.id for node in tree.body if isinstance(node, ast.AnnAssign)}
     assert set(mlndt.__all__) <= names
-    assert set(mlndt.__all__) == {name for name in dir(mlndt) if not name.startswith("_")} | {"__version__"}
+    # Submodules (mlndt.lab, mlndt.distributed) are attributes once imported.
+    public = {name for name in dir(mlndt) if not name.startswith("_")}
+    public -= {name for name in public if isinstance(getattr(mlndt, name), types.ModuleType)}
+    assert set(mlndt.__all__) == public | {"__version__"}
     classes = stub_classes()
-    for cls in (mlndt.RegistrationResult, mlndt.LayeredMap):
-        stubbed = {node.name for node in classes[cls.__name__].body if isinstance(node, ast.FunctionDef)}
+    for cls in (mlndt.RegistrationResult, mlndt.LayeredMap, mlndt.Localizer, mlndt.LocalizationResult):
+        body = classes[cls.__name__].body
+        stubbed = {node.name for node in body if isinstance(node, ast.FunctionDef) and node.name != "__init__"}
         public = {name for name in dir(cls) if not name.startswith("_")}
         assert public == stubbed, cls.__name__
 
@@ -126,3 +133,15 @@ def test_the_build_tree_has_the_stub_and_py_typed():
     package = BUILD_DIR / "python" / "mlndt"
     assert (package / "__init__.pyi").read_text() == STUB.read_text()
     assert (package / "py.typed").exists()
+
+
+def test_lab_stub_names_every_public_name():
+    import mlndt.lab
+
+    tree = ast.parse((SOURCE_DIR / "python" / "mlndt" / "lab.pyi").read_text())
+    names = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
+    assert set(mlndt.lab.__all__) - {"__version__"} <= names
+    classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
+    for cls in (mlndt.lab.PairResult, mlndt.lab.ScanStore):
+        stubbed = {node.name for node in classes[cls.__name__].body if isinstance(node, ast.FunctionDef)}
+        assert {name for name in dir(cls) if not name.startswith("_")} <= stubbed, cls.__name__

@@ -1,0 +1,49 @@
+"""The mlndt lab on numpy arrays: what mlndt_eval and mlndt_sequence compute.
+
+Trajectory evaluation (lab/eval): associate, ate, rpe, kitti_segment_errors,
+path_distances_m, read_trajectory, write_trajectory. Sequence runs
+(lab/runs): ScanStore, run_sequence, chain_trajectory, PairResult.
+
+    import numpy as np, mlndt.lab as lab
+    truth = lab.read_trajectory("data/kitti/poses_velo.txt")["poses"]
+    scans = sorted(glob.glob("data/kitti/pcd/*.pcd"))
+    results = lab.run_sequence(scans, truth=truth)
+    estimate = lab.chain_trajectory(results)
+    print(lab.ate(truth[: len(estimate)], estimate)["rmse_m"])
+
+Poses are (N, 4, 4) world_from_sensor arrays; errors raise exceptions naming
+the argument.
+"""
+
+from ._lab import (
+    PairResult,
+    ScanStore,
+    __version__,
+    associate,
+    ate,
+    chain_trajectory,
+    kitti_segment_errors,
+    path_distances_m,
+    read_trajectory,
+    rpe,
+    run_sequence,
+    write_trajectory,
+)
+
+__all__ = [
+    "PairResult",
+    "ScanStore",
+    "__version__",
+    "associate",
+    "ate",
+    "chain_trajectory",
+    "kitti_segment_errors",
+    "path_distances_m",
+    "read_trajectory",
+    "rpe",
+    "run_sequence",
+    "write_trajectory",
+]
+
+PairResult.__module__ = "mlndt.lab"
+ScanStore.__module__ = "mlndt.lab"

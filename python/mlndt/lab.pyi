@@ -1,0 +1,106 @@
+# Type stubs of mlndt.lab (python/lab_src/*.cc). Poses are (N, 4, 4)
+# world_from_sensor arrays; registration options are mlndt.register's.
+
+import os
+from typing import Any, Literal, Sequence, TypedDict, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from . import InitialUncertaintyLike, Preset
+
+__version__: str
+
+PosesLike = npt.ArrayLike  # (N, 4, 4) or (N, 3, 4) rigid transforms.
+PathLike = Union[str, os.PathLike[str]]
+
+class Stats(TypedDict):
+    count: int
+    mean: float
+    std: float
+    min: float
+    max: float
+    median: float
+    p95: float
+
+class ScanStore:
+    def __init__(self, paths: Sequence[PathLike]) -> None: ...
+    def __len__(self) -> int: ...
+    def path(self, i: int) -> str: ...
+    def cloud(self, i: int) -> npt.NDArray[np.float64]: ...
+    @property
+    def num_maps_built(self) -> int: ...
+
+class PairResult:
+    @property
+    def reference(self) -> int: ...
+    @property
+    def input(self) -> int: ...
+    @property
+    def guess(self) -> np.ndarray: ...
+    @property
+    def estimate(self) -> np.ndarray: ...
+    @property
+    def has_truth(self) -> bool: ...
+    @property
+    def truth(self) -> np.ndarray: ...
+    @property
+    def translation_error_m(self) -> float: ...
+    @property
+    def rotation_error_deg(self) -> float: ...
+    @property
+    def success(self) -> bool: ...
+    @property
+    def strict_success(self) -> bool: ...
+    @property
+    def termination(self) -> str: ...
+    @property
+    def message(self) -> str: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def start_layer(self) -> int: ...
+    @property
+    def num_layers(self) -> int: ...
+    @property
+    def sampled_points(self) -> int: ...
+    @property
+    def total_ms(self) -> float: ...
+    @property
+    def map_ms(self) -> float: ...
+
+def run_sequence(
+    scans: Union[ScanStore, Sequence[PathLike]],
+    truth: PosesLike | None = None,
+    odometry: PosesLike | None = None,
+    step: int = 1,
+    init: str = "zero",
+    adaptive_start_layer: bool = False,
+    initial_uncertainty: InitialUncertaintyLike = None,
+    *,
+    preset: Preset = "default",
+    **options: Any,
+) -> list[PairResult]: ...
+def chain_trajectory(results: Sequence[PairResult], step: int = 1, use_truth: bool = False) -> npt.NDArray[np.float64]: ...
+def associate(
+    reference: PosesLike,
+    estimate: PosesLike,
+    reference_timestamps: npt.ArrayLike | None = None,
+    estimate_timestamps: npt.ArrayLike | None = None,
+    max_time_difference_s: float = 0.02,
+) -> dict[str, np.ndarray]: ...
+def ate(
+    reference: PosesLike, estimate: PosesLike, alignment: Literal["se3", "sim3", "first_pose", "none"] = "se3"
+) -> dict[str, Any]: ...
+def rpe(reference: PosesLike, estimate: PosesLike, delta: int = 1) -> dict[str, Any]: ...
+def kitti_segment_errors(
+    reference: PosesLike,
+    estimate: PosesLike,
+    lengths_m: Sequence[float] = (100, 200, 300, 400, 500, 600, 700, 800),
+    first_frame_step: int = 10,
+) -> dict[str, Any]: ...
+def path_distances_m(poses: PosesLike) -> npt.NDArray[np.float64]: ...
+def read_trajectory(path: PathLike, format: Literal["auto", "kitti", "tum"] = "auto") -> dict[str, Any]: ...
+def write_trajectory(
+    path: PathLike, poses: PosesLike, timestamps: npt.ArrayLike | None = None, format: Literal["kitti", "tum"] = "kitti"
+) -> None: ...
