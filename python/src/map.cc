@@ -11,6 +11,7 @@
 
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/grid/map_check.h"
 #include "python/src/arrays.h"
 #include "python/src/errors.h"
 #include "python/src/module.h"
@@ -42,6 +43,12 @@ class LayeredMap {
     {
       py::gil_scoped_release release;
       ok = LayeredGrid::Build(options, cloud, num_threads, grid.get(), &error);
+    }
+    // The library's map check: a map with 0 cells or of absurd size (a
+    // 1e300 point) is refused here, not saved and refused by load.
+    if (ok && !CheckMapUsable(*grid, &error)) {
+      error = "the map is not usable: " + error;
+      ok = false;
     }
     if (!ok) throw py::value_error("LayeredMap.build: " + error);
     return LayeredMap(std::move(grid));

@@ -133,6 +133,22 @@ bool ParseSampling(SamplingOptions* sampling, std::string* error) {
     sampling->random_fraction = FLAGS_random_fraction;
   if (Given("gbs_cell_size")) sampling->gbs_cell_size_m = FLAGS_gbs_cell_size;
   if (Given("seed")) sampling->seed = FLAGS_seed;
+  // A flag the chosen sampling does not read is refused, not ignored.
+  const SamplingMethod method = sampling->method;
+  const char* ignored = nullptr;
+  if (Given("gbs_cell_size") && method != SamplingMethod::GBS) {
+    ignored = "--gbs_cell_size applies to --sampling=gbs only";
+  } else if (Given("random_fraction") && method != SamplingMethod::RANDOM) {
+    ignored = "--random_fraction applies to --sampling=random only";
+  } else if (Given("seed") && method != SamplingMethod::RANDOM &&
+             method != SamplingMethod::GBS) {
+    ignored = "--seed applies to --sampling=random or gbs only";
+  }
+  if (ignored != nullptr) {
+    *error = std::string(ignored) + " (the sampling is " +
+             SamplingMethodToString(method) + "; it would be ignored)";
+    return false;
+  }
   return true;
 }
 
@@ -169,7 +185,14 @@ const std::vector<const char*> kMlNdtOnlyFlags = {"backend",
                                                   "loss",
                                                   "loss_scale",
                                                   "linear_solver",
-                                                  "trust_region"};
+                                                  "trust_region",
+                                                  "quality_check",
+                                                  "min_inlier_fraction",
+                                                  "max_mean_score",
+                                                  "inlier_gate",
+                                                  "min_constraint_ratio",
+                                                  "retry_yaw_seeds",
+                                                  "initial_uncertainty"};
 const std::vector<const char*> kNdtOnlyFlags = {"ndt_cell_size",
                                                 "ndt_outlier_ratio",
                                                 "ndt_neighbors",
@@ -211,6 +234,19 @@ bool ParseTrust(RegistrationOptions* options, std::string* error) {
              ": expected comma-separated angles [deg]";
     return false;
   }
+  if (!check.enabled) {
+    for (const char* flag : {"min_inlier_fraction",
+                             "max_mean_score",
+                             "inlier_gate",
+                             "min_constraint_ratio"}) {
+      if (Given(flag)) {
+        *error = std::string("--") + flag +
+                 " is a quality-check threshold; it is ignored with "
+                 "--quality_check=false";
+        return false;
+      }
+    }
+  }
   if (!FLAGS_initial_uncertainty.empty()) {
     std::vector<double> v;
     if (!ParseNumberList(FLAGS_initial_uncertainty, &v) || v.size() != 2) {
@@ -250,6 +286,21 @@ bool ParseMlNdt(RegistrationOptions* options, std::string* error) {
     return false;
   }
   if (Given("loss_scale")) options->objective.loss_scale = FLAGS_loss_scale;
+  if (Given("loss_scale") && options->objective.loss == LossType::NONE) {
+    *error = "--loss_scale is ignored with --loss=none (no robust loss)";
+    return false;
+  }
+  if (options->backend.type != BackendType::CERES) {
+    for (const char* flag : {"linear_solver", "trust_region"}) {
+      if (Given(flag)) {
+        *error = std::string("--") + flag +
+                 " applies to --backend=ceres only (" + "the backend is " +
+                 BackendTypeToString(options->backend.type) +
+                 "; it would be ignored)";
+        return false;
+      }
+    }
+  }
   if (!ParseTrust(options, error) ||
       !ParseCeres(&options->backend.ceres, error) ||
       !ParseSampling(&options->sampling, error) ||
