@@ -41,11 +41,17 @@ bool ToRigidTransform(const Eigen::Matrix4d& matrix,
     *problem = message.str();
     return false;
   }
+  rigid->setIdentity();
+  rigid->translation() = t;
+  // A rotation exact to rounding (from angles, or written with %.17g) is
+  // kept bit for bit; anything coarser is replaced by the nearest rotation.
+  if (orthogonality <= 1e-12) {
+    rigid->linear() = r;
+    return true;
+  }
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(
       r, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  rigid->setIdentity();
   rigid->linear() = svd.matrixU() * svd.matrixV().transpose();
-  rigid->translation() = t;
   return true;
 }
 

@@ -6,7 +6,8 @@
 // kRigidRotationTolerance and det R > 0, and a translation no longer than
 // kMaxCoordinateM. What passes is re-orthonormalised (the nearest rotation,
 // R = U V^T of the SVD U S V^T), so text with 6 decimals (|R^T R - I| about
-// 1e-6) gives an exact rotation.
+// 1e-6) gives an exact rotation; a rotation already exact to 1e-12 is kept
+// as it is.
 
 #include <Eigen/Core>
 #include <string>

@@ -191,7 +191,8 @@ void DefineMap(py::module_& m) {
            LayeredGridOptionsDoc() +
            "Raises ValueError for invalid options or data, and when the "
            "library refuses the\ncloud (all points coincide, too many "
-           "cells).")
+           "cells) or the map could not be used\n(CheckMapUsable: a layer "
+           "with 0 occupied cells, coordinates beyond 1e8 m).")
               .c_str())
       .def_static("load",
                   &LayeredMap::Load,

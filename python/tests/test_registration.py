@@ -225,7 +225,7 @@ def test_a_registration_that_fails_is_a_result_not_an_exception(small_pair):
 
 
 def test_initial_written_with_six_digits_is_accepted(small_pair):
-    """Issue 27 item 4: the 6-digit matrix of data/koide3 (|R^T R - I| ~ 2e-6)
+    """Issue 27 item 4: the 6-digit matrix of data/koide3 (|R^T R - I| = 1.2e-6)
     is a rigid transform for initial=, as for every pose reader (tolerance
     1e-3, re-orthonormalised); it was refused above 1e-6."""
     initial = np.loadtxt(BUNDLED_DATA_DIR / "koide3" / "T_target_source.txt")

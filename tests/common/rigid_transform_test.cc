@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "mlndt/common/pose.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -39,6 +40,15 @@ TEST(ToRigidTransform, AcceptsAndReorthonormalisesSixDigitRotations) {
   EXPECT_LT((rigid.linear() - m.topLeftCorner<3, 3>()).cwiseAbs().maxCoeff(),
             1e-5);
   EXPECT_EQ(rigid.translation(), Eigen::Vector3d(m.topRightCorner<3, 1>()));
+}
+
+TEST(ToRigidTransform, KeepsAnExactRotationBitForBit) {
+  const Isometry3d exact =
+      PoseVectorToIsometry(PoseVectorFromDegrees(1, -2, 3, 10, -20, 45));
+  Isometry3d rigid;
+  std::string problem;
+  ASSERT_TRUE(ToRigidTransform(exact.matrix(), &rigid, &problem)) << problem;
+  EXPECT_EQ(rigid.matrix(), exact.matrix());
 }
 
 TEST(ToRigidTransform, RefusesWhatIsNoPlaceAndNoRotation) {

@@ -301,7 +301,7 @@ TEST(MlndtMap, RefusesWhatExceedsTheMemoryLimit) {
            " --voxel_size=0.2 --max_memory_gb=0.06",
        "the voxel filter of 991949 points"},
       {"--cloud=" + Quote(KittiPcd() + "/000000.pcd") +
-           " --finest_cell_size=0.05 --max_memory_gb=0.01",
+           " --finest_cell_size=0.1 --max_memory_gb=0.01",
        "to build the map"},
   };
   for (const Case& c : cases) {
@@ -312,10 +312,11 @@ TEST(MlndtMap, RefusesWhatExceedsTheMemoryLimit) {
     EXPECT_NE(run.err.find("memory limit of"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
   }
-  // No limit: the same fine map builds.
+  // No limit: the same fine map builds. (At 0.05 m its finest layer would
+  // have no occupied cell, a map CheckMapUsable refuses.)
   const ToolRun unlimited = RunMap(
       "--cloud=" + Quote(KittiPcd() + "/000000.pcd") +
-      " --finest_cell_size=0.05 --max_memory_gb=0 --output=" + Quote(out));
+      " --finest_cell_size=0.1 --max_memory_gb=0 --output=" + Quote(out));
   EXPECT_EQ(unlimited.exit_code, 0) << unlimited.err;
 }
 
