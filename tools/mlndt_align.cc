@@ -174,6 +174,10 @@ int Run(int argc, char** argv) {
       !tools::CheckOutputFile("output_cloud", FLAGS_output_cloud, &error)) {
     return Fail(error, tools::kExitUsage);
   }
+  if (!FLAGS_output_cloud.empty() &&
+      !CanWritePointCloud(FLAGS_output_cloud, &error)) {
+    return Fail("--output_cloud: " + error, tools::kExitUsage);
+  }
   Isometry3d expected = Isometry3d::Identity();
   if (!in.expected.empty() &&
       !tools::ReadMatrixFile(in.expected, &expected, &error)) {

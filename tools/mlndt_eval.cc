@@ -16,13 +16,21 @@
 // convention) or, when both files are TUM, by timestamp within
 // --max_time_difference (--association). --reference_calib converts a
 // KITTI camera (cam0) reference into the Velodyne frame with the Tr line.
+// By index (--association=auto) the two files must hold equally many poses;
+// --association=index pairs the common prefix explicitly (the JSON's
+// "poses" and "pairs" say how many).
 //
-// `chain PAIRS OUT` writes the KITTI pose file of the chained consecutive
-// pairs of a reference_pairs.json (eval/reference_pairs.h): pose 0 is the
-// identity and pose i+1 = pose i * reference_from_input of pair "i_(i+1)",
-// from the smallest reference index for as long as the next pair exists.
+// `chain PAIRS OUT` writes the KITTI pose file of the chained pairs of a
+// reference_pairs.json (eval/reference_pairs.h): from the smallest
+// reference index, each next scan is the nearest input of a pair from the
+// current one ("i_(i+1)", or "0_2", "2_4", ... when the scan numbering has
+// gaps); pose 0 is the identity and pose k+1 = pose k * reference_from_input
+// of that pair, for as long as a next pair exists. One line per chained
+// scan; the printed line lists the scans when they are not consecutive.
 //
-// Exit code 1 on a bad flag (before any work) or unreadable files.
+// Exit codes: 2 on a bad flag or an input refused before any work (an
+// unreadable file, trajectories of different lengths paired by index); 1
+// when an evaluation fails or an output cannot be written.
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -93,6 +101,26 @@ const std::vector<std::string> kEvalFlags = {"reference",
 
 // ---- chain --------------------------------------------------------------
 
+// The scans of the chain: from the smallest reference index, each next scan
+// is the nearest input index of a pair from the current one ("i_(i+1)"
+// when it exists; "0_2", "2_4", ... when the numbering has gaps).
+std::vector<int64_t> ChainedScans(
+    const std::map<std::string, ReferencePair>& pairs) {
+  std::map<int64_t, int64_t> next;  // reference -> nearest input.
+  for (const auto& [key, pair] : pairs) {
+    if (pair.input_index <= pair.reference_index) continue;
+    auto [it, added] = next.emplace(pair.reference_index, pair.input_index);
+    if (!added) it->second = std::min(it->second, pair.input_index);
+  }
+  std::vector<int64_t> scans;
+  if (next.empty()) return scans;
+  scans.push_back(next.begin()->first);
+  for (auto it = next.begin(); it != next.end(); it = next.find(scans.back())) {
+    scans.push_back(it->second);
+  }
+  return scans;
+}
+
 int Chain(const std::string& pairs_path, const std::string& output) {
   std::string error;
   if (!tools::RefuseGivenFlags(
@@ -101,27 +129,28 @@ int Chain(const std::string& pairs_path, const std::string& output) {
   }
   std::map<std::string, ReferencePair> pairs;
   if (!ReadReferencePairs(pairs_path, &pairs, &error)) return Refuse(error);
-  int64_t first = -1;
-  for (const auto& [key, pair] : pairs) {
-    if (pair.input_index == pair.reference_index + 1 &&
-        (first < 0 || pair.reference_index < first)) {
-      first = pair.reference_index;
-    }
-  }
-  if (first < 0) {
-    return Fail(pairs_path + ": no consecutive pair \"i_(i+1)\" to chain");
+  const std::vector<int64_t> scans = ChainedScans(pairs);
+  if (scans.size() < 2) {
+    return Fail(pairs_path + ": no pair \"i_j\" (i < j) to chain");
   }
   std::vector<Isometry3d> poses = {Isometry3d::Identity()};
-  for (int64_t i = first;; ++i) {
-    const auto it = pairs.find(ReferencePairKey(i, i + 1));
-    if (it == pairs.end()) break;
-    poses.push_back(poses.back() * it->second.reference_from_input);
+  for (size_t k = 1; k < scans.size(); ++k) {
+    const ReferencePair& pair =
+        pairs.at(ReferencePairKey(scans[k - 1], scans[k]));
+    poses.push_back(poses.back() * pair.reference_from_input);
   }
   if (!WriteKittiPoses(output, poses, &error)) return Fail(error);
-  std::printf("chained %zu poses (scans %lld..%lld) from %s -> %s\n",
+  const bool gaps =
+      scans.back() - scans.front() + 1 != static_cast<int64_t>(scans.size());
+  std::string list;
+  for (size_t k = 0; gaps && k < scans.size(); ++k) {
+    list += (k ? ", " : ": ") + std::to_string(scans[k]);
+  }
+  std::printf("chained %zu poses (scans %lld..%lld%s) from %s -> %s\n",
               poses.size(),
-              static_cast<long long>(first),
-              static_cast<long long>(first + poses.size() - 1),
+              static_cast<long long>(scans.front()),
+              static_cast<long long>(scans.back()),
+              list.c_str(),
               pairs_path.c_str(),
               output.c_str());
   return 0;
@@ -393,6 +422,23 @@ int Run() {
                  &results[i].format,
                  &error)) {
       return Refuse(error);
+    }
+    // Pairing by index needs equal lengths; a common prefix only when
+    // asked for with --association=index.
+    const bool by_time =
+        flags.association == EvalFlags::Association::TIMESTAMP ||
+        (flags.association == EvalFlags::Association::AUTO &&
+         results[i].format == TrajectoryFormat::TUM &&
+         reference_format == TrajectoryFormat::TUM);
+    if (!by_time && flags.association == EvalFlags::Association::AUTO &&
+        estimates[i].size() != reference.size()) {
+      return Refuse(
+          results[i].path + " has " + std::to_string(estimates[i].size()) +
+          " poses, --reference " + std::to_string(reference.size()) +
+          ": poses are paired by index, so the lengths must match "
+          "(--association=index evaluates the first " +
+          std::to_string(std::min(estimates[i].size(), reference.size())) +
+          " explicitly; TUM files pair by timestamp)");
     }
   }
   for (size_t i = 0; i < flags.estimates.size(); ++i) {

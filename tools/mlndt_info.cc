@@ -14,12 +14,17 @@
 // first, with "layer", "cell_size_m", "dims", "occupied_cells",
 // "sparse_cells" and "degenerate_cells" (layered_grid.h LayerInfo).
 //
-// A file that cannot be read, or whose map cannot be built, is reported on
-// stderr; the tool goes on with the other files and exits with 1 at the end.
+// Exit codes: 2 when a file is missing or cannot be opened (checked for
+// every file before any is described; nothing is printed) or a flag is
+// bad; 1 when a file's contents cannot be read as a cloud or its map cannot
+// be built (reported on stderr; the tool goes on with the other files and
+// exits with 1 at the end); 0 otherwise.
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -159,6 +164,16 @@ int Run(const std::vector<std::string>& files) {
     PrintError(error);
     return tools::kExitUsage;
   }
+  // Every file can be opened before any is described: a missing or
+  // unreadable one is bad input (exit 2, nothing printed).
+  for (const std::string& file : files) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec) ||
+        !std::ifstream(file).good()) {
+      PrintError(file + ": no such readable file");
+      return tools::kExitUsage;
+    }
+  }
   bool all_ok = true;
   for (const std::string& file : files) {
     all_ok = DescribeFile(file, grid_options) && all_ok;
@@ -175,7 +190,10 @@ int main(int argc, char** argv) {
       "bounding box and, with "
       "--layers, the layers of its ML-NDT map.\n"
       "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]] "
-      "FILE...";
+      "FILE...\n"
+      "Exit 2 when a FILE is missing or cannot be opened (before any is "
+      "described), 1 when one cannot be parsed or its map cannot be built "
+      "(the others are still described).";
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

@@ -22,9 +22,16 @@
 // prediction, times), summary.json, and with --plots (default) the top view
 // trajectory_xy.png of the map's finest cells (subsampled to
 // --plot_max_cells) and the trajectory (gnuplot; data and script in
-// plot_data/). Exit code 1 on a bad flag (before any work), unreadable data,
-// and when plots were requested but gnuplot is missing (the other files are
-// still written).
+// plot_data/). The summary counts the scans by verdict (CONVERGENCE,
+// NO_CONVERGENCE, LOW_QUALITY, DEGENERATE, FAILURE); only CONVERGENCE and
+// NO_CONVERGENCE are usable (IsUsableTermination), the others keep their
+// prediction as their pose.
+//
+// Exit codes: 2 on a bad flag or input refused before any work; 1 when any
+// scan's result is not usable (every file is still written), a scan cannot
+// be read, an output cannot be written, or plots were requested but
+// gnuplot is missing (the other files are still written); 0 when every
+// scan has a usable pose.
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -53,6 +60,7 @@
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
+#include "tools/common/verdict_counts.h"
 
 // clang-format off
 DEFINE_string(map, "", "The map file (mlndt_map --output)");
@@ -244,12 +252,10 @@ tools::Json SummaryJson(const LocalizerOptions& options,
                         const std::vector<LocalizationResult>& results,
                         double map_load_s,
                         double total_s) {
-  size_t converged = 0, no_convergence = 0, failed = 0;
+  tools::VerdictCounts verdicts;
   std::vector<double> registration_ms, inliers, own;
   for (const LocalizationResult& r : results) {
-    converged += r.termination_type == TerminationType::CONVERGENCE;
-    no_convergence += r.termination_type == TerminationType::NO_CONVERGENCE;
-    failed += r.termination_type == TerminationType::FAILURE;
+    verdicts.Add(r.termination_type);
     registration_ms.push_back(r.registration_time_s * 1e3);
     inliers.push_back(r.quality.inlier_fraction);
     own.push_back(r.quality.own_cell_fraction);
@@ -269,9 +275,12 @@ tools::Json SummaryJson(const LocalizerOptions& options,
   json["motion_model"] = MotionModelToString(options.motion_model);
   json["backend"] = BackendTypeToString(options.registration.backend.type);
   json["first_guess"] = tools::PoseJson(first_guess);
-  json["terminations"] = {{"CONVERGENCE", converged},
-                          {"NO_CONVERGENCE", no_convergence},
-                          {"FAILURE", failed}};
+  json["terminations"] = verdicts.ToJson();
+  json["usable"] = verdicts.usable();
+  json["unusable"] = verdicts.unusable();
+  json["unusable_pose"] =
+      "the prediction (dead reckoning): LOW_QUALITY, DEGENERATE and FAILURE "
+      "scans are not to be used";
   json["inlier_fraction"] = tools::StatsJson(ComputeStats(inliers));
   json["own_cell_fraction"] = tools::StatsJson(ComputeStats(own));
   json["time_ms"] = {{"total", tools::Number(total_s * 1e3)},
@@ -439,7 +448,7 @@ int Run() {
               "load [ms]",
               "reg [ms]");
   std::vector<double> registration_ms;
-  size_t usable = 0;
+  tools::VerdictCounts verdicts;
   for (const LocalizationResult& r : results) {
     const Vector6d xi = IsometryToPoseVector(r.map_from_scan);
     std::printf(
@@ -457,14 +466,15 @@ int Run() {
         r.load_time_s * 1e3,
         r.registration_time_s * 1e3);
     registration_ms.push_back(r.registration_time_s * 1e3);
-    usable += r.IsSolutionUsable();
+    verdicts.Add(r.termination_type);
   }
   const Stats t = ComputeStats(registration_ms);
   std::printf(
-      "scans: %zu, usable %zu; registration [ms]: mean %.1f, median %.1f, "
-      "max %.1f; peak memory %s\n",
+      "scans: %zu, usable %zu (%s); registration [ms]: mean %.1f, median "
+      "%.1f, max %.1f; peak memory %s\n",
       results.size(),
-      usable,
+      verdicts.usable(),
+      verdicts.Line().c_str(),
       t.mean,
       t.median,
       t.max,
@@ -479,6 +489,13 @@ int Run() {
     if (!WritePlot(FLAGS_output_dir, map, results, &error)) return Fail(error);
     std::printf("plot: trajectory_xy.png\n");
   }
+  if (verdicts.unusable() > 0) {
+    return Fail(std::to_string(verdicts.unusable()) + " of " +
+                std::to_string(verdicts.total()) +
+                " scans have no usable pose (" + verdicts.Line() +
+                "): their poses in the trajectories are the predictions; "
+                "see the termination column of scans.csv");
+  }
   return 0;
 }
 
@@ -489,7 +506,10 @@ int main(int argc, char** argv) {
   const char* usage =
       "Registers every scan of a folder onto a saved map (mlndt_map).\n"
       "  mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT "
-      "[--initial_guess=tx,ty,tz,a,b,g]";
+      "[--initial_guess=tx,ty,tz,a,b,g]\n"
+      "Exit 1 when any scan's result is not usable (LOW_QUALITY, DEGENERATE "
+      "or FAILURE; counted by verdict in the summary and summary.json): its "
+      "pose is the prediction.";
   mlndt::tools::HideFlagsFromHelp(mlndt::tools::LocalizerRefusedFlags());
   if (!mlndt::tools::StartTool(usage, true, &argc, &argv)) {
     return mlndt::tools::kExitUsage;

@@ -27,8 +27,15 @@
 // `info MAP` prints the map's layers (cell size, grid, occupied cells,
 // index, bytes), its cells and bytes in all, its extent and its options.
 //
-// Exit code 1 on a bad flag (before any work), unreadable data, or a map
-// that does not fit.
+// A map that cannot be used (0 occupied cells, a cell edge or extent that
+// is not finite or beyond 1e8 m: grid/map_check.h) is not written. Pose
+// files must hold one pose per scan (more poses only with --max_scans);
+// a scan without a finite point is named in a warning.
+//
+// Exit codes: 2 on a bad flag or input found before any work (a pose file
+// that is unreadable, holds a non-rigid or 1e300 pose or has the wrong
+// count, a missing --scan_list file); 1 when the build fails or its map is
+// not usable (nothing written), or an output cannot be written.
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -334,10 +341,15 @@ int Build() {
             FLAGS_poses, detect, format, FLAGS_calib, &poses, &error)) {
       return Refuse("--poses: " + error);
     }
-    if (poses.size() < paths.size()) {
+    // Pose k belongs to scan k: a count that differs (more poses than
+    // scans, unless --max_scans cut the scans) means a wrong file or folder.
+    if (poses.size() < paths.size() ||
+        (poses.size() > paths.size() && FLAGS_max_scans == 0)) {
       return Refuse("--poses=" + FLAGS_poses + " has " +
                     std::to_string(poses.size()) + " poses for " +
-                    std::to_string(paths.size()) + " scans");
+                    std::to_string(paths.size()) +
+                    " scans (pose k belongs to scan k; use --max_scans to "
+                    "take the first scans of a longer run)");
     }
     tools::Progress progress(kTool, paths.size());
     const bool ok = BuildMapFromScans(
@@ -353,6 +365,11 @@ int Build() {
         &error);
     progress.Finish();
     if (!ok) return Fail(error);
+    for (const size_t k : summary.scans_without_points) {
+      std::cerr << kTool << ": warning: scan " << k << " (" << paths[k]
+                << ") has no finite point (all NaN or empty): it adds "
+                   "nothing to the map\n";
+    }
   }
   if (!SaveLayeredGrid(FLAGS_output, map, &error)) return Fail(error);
 

@@ -38,8 +38,16 @@
 // format, first pose identity), gt_trajectory.txt (same scans, from the
 // ground truth), and with --plots the PNGs errors_translation,
 // errors_rotation, trajectory_xy and score_vs_iteration (gnuplot; data and
-// scripts in plot_data/). Exit code 1 on bad flags or data, and when plots
-// were requested but gnuplot is missing (the other files are still written).
+// scripts in plot_data/). Pairs are counted by verdict (summary.json
+// "terminations", the printed "verdicts:" line); a pair whose result is not
+// usable (LOW_QUALITY, DEGENERATE, FAILURE) keeps its --init guess as its
+// estimate, chained into trajectory.txt, and is flagged in pairs.csv
+// (usable 0, estimate_source guess) and summary.json (unusable_pair_list).
+//
+// Exit codes: 2 on bad flags or input refused before any work; 1 when any
+// pair's result is not usable (every file is still written), data cannot be
+// read, or plots were requested but gnuplot is missing (the other files are
+// still written); 0 when every pair is usable.
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -52,6 +60,7 @@
 #include <sstream>
 
 #include "lab/eval/dataset.h"
+#include "lab/eval/pose_convention.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
 #include "lab/runs/sequence_totals.h"
@@ -69,6 +78,7 @@
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
+#include "tools/common/verdict_counts.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
@@ -195,6 +205,16 @@ bool ReadScansAndPoses(const SequenceOptions& options,
   if (!FLAGS_gt_poses.empty() &&
       !ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, truth, error)) {
     return false;
+  }
+  std::string evidence;
+  if (!FLAGS_poses_are_camera && LooksLikeCameraPoses(*truth, &evidence)) {
+    std::cerr << "mlndt_sequence: WARNING: --gt_poses=" << FLAGS_gt_poses
+              << " looks like KITTI camera (cam0) poses read as the scans' "
+                 "own: "
+              << evidence
+              << ". If it is KITTI's poses/XX.txt, add --poses_are_camera "
+                 "--calib=calib.txt; else every error below is measured "
+                 "against the wrong frame.\n";
   }
   if (!truth->empty() && truth->size() < paths->size()) {
     *error = FLAGS_gt_poses + " has " + std::to_string(truth->size()) +
@@ -324,6 +344,30 @@ int WritePlots(const SequenceOptions& options,
   return 0;
 }
 
+// 1 when any pair's result is not usable (LOW_QUALITY, DEGENERATE, FAILURE):
+// its --init guess stands in for it in trajectory.txt, flagged in pairs.csv
+// and summary.json.
+int ExitForVerdicts(const SequenceOptions& options,
+                    const std::vector<PairResult>& results) {
+  tools::VerdictCounts verdicts;
+  std::string pairs;
+  for (const PairResult& r : results) {
+    verdicts.Add(r.termination);
+    if (!IsUsableTermination(r.termination) && pairs.size() < 200) {
+      pairs += (pairs.empty() ? "" : ", ") + std::to_string(r.reference) +
+               "->" + std::to_string(r.input) + " " +
+               TerminationTypeToString(r.termination);
+    }
+  }
+  if (verdicts.unusable() == 0) return 0;
+  return Fail(std::to_string(verdicts.unusable()) + " of " +
+              std::to_string(verdicts.total()) +
+              " pairs have no usable result (" + pairs +
+              "): trajectory.txt chains their --init=" +
+              InitSpecToString(options.init) +
+              " guess instead (estimate_source 'guess' in pairs.csv)");
+}
+
 int Run() {
   SequenceOptions options;
   std::string error;
@@ -371,7 +415,8 @@ int Run() {
     return Fail(error);
   }
   tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
-  return FLAGS_plots ? WritePlots(options, results, gnuplot_ok) : 0;
+  const int plots = FLAGS_plots ? WritePlots(options, results, gnuplot_ok) : 0;
+  return plots != 0 ? plots : ExitForVerdicts(options, results);
 }
 
 }  // namespace
@@ -382,7 +427,10 @@ int main(int argc, char** argv) {
           "Registers a scan sequence pair by pair and evaluates it against "
           "ground truth.\n"
           "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
-          "[--step=1] [--init=zero]",
+          "[--step=1] [--init=zero]\n"
+          "Exit 1 when any pair's result is not usable (LOW_QUALITY, "
+          "DEGENERATE or FAILURE; counted by verdict in the summary and "
+          "summary.json): trajectory.txt holds its --init guess instead.",
           true,
           &argc,
           &argv)) {

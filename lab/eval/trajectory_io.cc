@@ -11,6 +11,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/rigid_transform.h"
 #include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
@@ -61,10 +62,11 @@ bool ParseTumLine(const std::vector<std::string_view>& tokens,
     return false;
   }
   *timestamp_s = v[0];
-  world_from_sensor->setIdentity();
-  world_from_sensor->linear() = q.normalized().toRotationMatrix();
-  world_from_sensor->translation() = Vector3d(v[1], v[2], v[3]);
-  return true;
+  // The translation bound of every pose read (rigid_transform.h).
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.topLeftCorner<3, 3>() = q.normalized().toRotationMatrix();
+  m.topRightCorner<3, 1>() = Vector3d(v[1], v[2], v[3]);
+  return ToRigidTransform(m, world_from_sensor, problem);
 }
 
 bool ReadTum(const std::string& path,

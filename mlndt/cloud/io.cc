@@ -97,10 +97,21 @@ bool ReadPointCloud(const std::string& path,
   return true;
 }
 
+bool CanWritePointCloud(const std::string& path, std::string* error) {
+  CHECK(error != nullptr);
+  CloudFormat format;
+  if (!CloudFormatFromPath(path, &format, error)) return false;
+  if (format == CloudFormat::PCD || format == CloudFormat::PLY) return true;
+  *error = path + ": writing " + std::string(CloudFormatToString(format)) +
+           " is not supported (write .pcd or .ply)";
+  return false;
+}
+
 bool WritePointCloud(const std::string& path,
                      const PointCloud& cloud,
                      std::string* error) {
   CHECK(error != nullptr);
+  if (!CanWritePointCloud(path, error)) return false;
   CloudFormat format;
   if (!CloudFormatFromPath(path, &format, error)) return false;
   std::string bytes;

@@ -90,4 +90,9 @@ bool WritePointCloud(const std::string& path,
                      const PointCloud& cloud,
                      std::string* error);
 
+// True when WritePointCloud can write `path`'s format (.pcd or .ply); false
+// with *error naming the path and the formats otherwise. Tools call it
+// before any work.
+bool CanWritePointCloud(const std::string& path, std::string* error);
+
 }  // namespace mlndt

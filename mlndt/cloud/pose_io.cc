@@ -9,46 +9,27 @@
 #include <vector>
 
 #include "mlndt/common/atomic_file.h"
+#include "mlndt/common/rigid_transform.h"
 #include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace {
 
-// How far R^T R may be from the identity (and det R from 1) for a pose to be
-// accepted. KITTI's 10-digit text poses are within ~1e-7.
-constexpr double kRotationTolerance = 1e-3;
-
-// Parses 12 tokens of a row-major 3x4 matrix into *transform. Returns false
-// with *problem when a token is not a number or the 3x3 part is not a
-// rotation.
+// Parses 12 tokens of a row-major 3x4 matrix into *transform, checked and
+// re-orthonormalised by ToRigidTransform (rigid_transform.h). Returns false
+// with *problem when a token is not a number or the matrix is not a rigid
+// transform (non-finite, not a rotation, absurd translation).
 bool MatrixFromTokens(const std::vector<std::string_view>& tokens,
                       Eigen::Isometry3d* transform,
                       std::string* problem) {
-  Eigen::Matrix<double, 3, 4> rows;
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   for (int i = 0; i < 12; ++i) {
-    if (!internal::ParseDouble(tokens[i], &rows(i / 4, i % 4))) {
+    if (!internal::ParseDouble(tokens[i], &m(i / 4, i % 4))) {
       *problem = "cannot parse number '" + std::string(tokens[i]) + "'";
       return false;
     }
   }
-  if (!rows.allFinite()) {
-    *problem = "non-finite number";
-    return false;
-  }
-  const Eigen::Matrix3d rotation = rows.leftCols<3>();
-  const double orthogonality =
-      (rotation.transpose() * rotation - Eigen::Matrix3d::Identity())
-          .cwiseAbs()
-          .maxCoeff();
-  if (orthogonality > kRotationTolerance ||
-      std::abs(rotation.determinant() - 1.0) > kRotationTolerance) {
-    *problem = "the 3x3 part is not a rotation matrix";
-    return false;
-  }
-  transform->setIdentity();
-  transform->linear() = rotation;
-  transform->translation() = rows.col(3);
-  return true;
+  return ToRigidTransform(m, transform, problem);
 }
 
 }  // namespace

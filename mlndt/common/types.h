@@ -34,6 +34,14 @@ enum class TerminationType {
   DEGENERATE,
 };
 
+// The one definition of a result to be used: CONVERGENCE or NO_CONVERGENCE
+// (the pose passed the quality check). LOW_QUALITY, DEGENERATE and FAILURE
+// are not to be used.
+inline bool IsUsableTermination(TerminationType type) {
+  return type == TerminationType::CONVERGENCE ||
+         type == TerminationType::NO_CONVERGENCE;
+}
+
 const char* TerminationTypeToString(TerminationType type);
 bool StringToTerminationType(std::string value, TerminationType* type);
 

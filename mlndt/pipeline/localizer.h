@@ -14,9 +14,10 @@
 // the pose given to the constructor; with CONSTANT_VELOCITY scan k starts
 // from pose_{k-1} * (pose_{k-2}^-1 * pose_{k-1}), the previous pose moved
 // by the last relative motion (identity motion until two poses exist); with
-// CONSTANT_POSE from pose_{k-1}. A registration that fails (FAILURE: no
-// usable solution) gets its prediction as its pose and leaves the motion
-// unchanged, so the next prediction dead-reckons through it.
+// CONSTANT_POSE from pose_{k-1}. A registration whose result is not to be
+// used (FAILURE, LOW_QUALITY or DEGENERATE: !IsSolutionUsable()) gets its
+// prediction as its pose and leaves the motion unchanged, so the next
+// prediction dead-reckons through it.
 //
 // LocalizeScans runs the loop over a scan source that loads one scan at a
 // time: the map and the current scan are the only clouds held.
@@ -54,8 +55,8 @@ struct LocalizerOptions {
 // One scan's localisation.
 struct LocalizationResult {
   size_t index = 0;  // 0-based position of the scan in the sequence.
-  // The initial guess (the prediction) and the estimate; on FAILURE the
-  // estimate is the prediction.
+  // The initial guess (the prediction) and the estimate; when the result is
+  // not usable (IsSolutionUsable) the estimate is the prediction.
   Isometry3d predicted_map_from_scan = Isometry3d::Identity();
   Isometry3d map_from_scan = Isometry3d::Identity();
   TerminationType termination_type = TerminationType::FAILURE;
@@ -71,8 +72,10 @@ struct LocalizationResult {
   double solve_time_s = 0.0;
   double registration_time_s = 0.0;  // RegistrationSummary::total_time_s.
 
+  // As RegistrationSummary::IsSolutionUsable (IsUsableTermination,
+  // types.h): CONVERGENCE or NO_CONVERGENCE.
   bool IsSolutionUsable() const {
-    return termination_type != TerminationType::FAILURE;
+    return IsUsableTermination(termination_type);
   }
 };
 

@@ -7,7 +7,9 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/rigid_transform.h"
 #include "mlndt/common/timer.h"
+#include "mlndt/grid/map_check.h"
 #include "mlndt/sampling/point_sampler.h"
 
 namespace mlndt {
@@ -72,6 +74,12 @@ bool FilterAndBuild(const MapBuildOptions& options,
           options.grid, cloud, options.num_threads, &built, error)) {
     return false;
   }
+  // A map without cells (or of absurd size) is refused here, not written
+  // and found unusable later (map_check.h).
+  if (!CheckMapUsable(built, error)) {
+    *error = "the map is not usable: " + *error;
+    return false;
+  }
   summary->build_time_s = NowSeconds() - start;
   summary->map_bytes = built.MemoryBytes();
   *map = std::move(built);
@@ -110,12 +118,22 @@ bool BuildMapFromScans(const MapBuildOptions& options,
              " scans: every scan needs a world_from_scan pose";
     return false;
   }
+  for (size_t k = 0; k < scan_paths.size(); ++k) {
+    Isometry3d rigid;
+    std::string problem;
+    if (!ToRigidTransform(world_from_scan[k].matrix(), &rigid, &problem)) {
+      *error = "the pose of scan " + std::to_string(k) + " (" + scan_paths[k] +
+               "): " + problem;
+      return false;
+    }
+  }
   const size_t limit = options.max_memory_bytes;
   std::vector<Eigen::Vector3d> merged;
   PointCloud scan;
   for (size_t k = 0; k < scan_paths.size(); ++k) {
     if (!ReadPointCloud(scan_paths[k], &scan, nullptr, error)) return false;
     summary->input_points += scan.size();
+    if (scan.empty()) summary->scans_without_points.push_back(k);
     const size_t read = scan.size();
     scan = FilterByRange(options.range_filter, scan, nullptr);
     summary->cropped_points += read - scan.size();

@@ -49,8 +49,11 @@ struct MapBuildOptions {
 };
 
 struct MapBuildSummary {
-  size_t scans = 0;           // Scans merged.
-  size_t input_points = 0;    // Finite points read (or given).
+  size_t scans = 0;         // Scans merged.
+  size_t input_points = 0;  // Finite points read (or given).
+  // Indices of the scans that gave no finite point (all NaN, or empty): they
+  // add nothing to the map; the caller reports them.
+  std::vector<size_t> scans_without_points;
   size_t cropped_points = 0;  // Removed by the range crop.
   size_t merged_points = 0;   // In the merged cloud.
   size_t map_points = 0;      // After the voxel filter: the map's input.
@@ -69,10 +72,13 @@ using MapBuildProgress = std::function<void(size_t done, size_t total)>;
 // Reads scan_paths[k] (any format ReadPointCloud reads), crops it, maps it
 // with world_from_scan[k] and merges it, for every k; then filters and
 // builds. world_from_scan needs a pose for every scan (extra poses are
-// ignored). `on_scan` may be empty. False with *error (naming the file, the
-// option or the memory needed) on invalid options, a scan that cannot be
-// read, no points left, or what exceeds the memory limit; *map is then
-// unchanged.
+// ignored), each a rigid transform by ToRigidTransform
+// (mlndt/common/rigid_transform.h: no 1e300 translation). `on_scan` may be
+// empty. False with *error (naming the file, the pose, the option or the
+// memory needed) on invalid options, a bad pose, a scan that cannot be
+// read, no points left, what exceeds the memory limit, or a map that
+// CheckMapUsable (grid/map_check.h) refuses (0 occupied cells); *map is
+// then unchanged.
 bool BuildMapFromScans(const MapBuildOptions& options,
                        const std::vector<std::string>& scan_paths,
                        const std::vector<Isometry3d>& world_from_scan,
@@ -82,8 +88,8 @@ bool BuildMapFromScans(const MapBuildOptions& options,
                        std::string* error);
 
 // The same from one cloud already in the world frame (a merged map cloud):
-// filters and builds. options.crop must be off (a merged cloud has no
-// sensor origin).
+// filters and builds (and refuses an unusable map, as above). options.crop must
+// be off (a merged cloud has no sensor origin).
 bool BuildMapFromCloud(const MapBuildOptions& options,
                        PointCloud cloud,
                        LayeredGrid* map,

@@ -74,8 +74,7 @@ struct RegistrationSummary {
   std::string FullReport() const;
   // CONVERGENCE or NO_CONVERGENCE: the pose passed the quality check.
   bool IsSolutionUsable() const {
-    return termination_type == TerminationType::CONVERGENCE ||
-           termination_type == TerminationType::NO_CONVERGENCE;
+    return IsUsableTermination(termination_type);
   }
 };
 

@@ -146,9 +146,10 @@ bool SamplingOptions::IsValid(std::string* error) const {
   std::ostringstream message;
   if (!(random_fraction > 0.0 && random_fraction <= 1.0)) {
     message << "random_fraction must be in (0, 1]; got " << random_fraction;
-  } else if (!IsPositiveFinite(gbs_cell_size_m)) {
-    message << "gbs_cell_size_m must be finite and > 0; got "
-            << gbs_cell_size_m;
+  } else if (!IsPositiveFinite(gbs_cell_size_m) ||
+             gbs_cell_size_m > kMaxSamplingCellM) {
+    message << "gbs_cell_size_m must be in (0, " << kMaxSamplingCellM
+            << "] m; got " << gbs_cell_size_m;
   } else if (gbs_min_points_per_cell < 1) {
     message << "gbs_min_points_per_cell must be >= 1; got "
             << gbs_min_points_per_cell;
@@ -156,8 +157,10 @@ bool SamplingOptions::IsValid(std::string* error) const {
     message << "gbs_points_per_cell (" << gbs_points_per_cell
             << ") must be >= gbs_min_points_per_cell ("
             << gbs_min_points_per_cell << ")";
-  } else if (!IsPositiveFinite(voxel_size_m)) {
-    message << "voxel_size_m must be finite and > 0; got " << voxel_size_m;
+  } else if (!IsPositiveFinite(voxel_size_m) ||
+             voxel_size_m > kMaxSamplingCellM) {
+    message << "voxel_size_m must be in (0, " << kMaxSamplingCellM
+            << "] m; got " << voxel_size_m;
   } else {
     return true;
   }

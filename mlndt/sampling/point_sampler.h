@@ -34,6 +34,10 @@ const char* SamplingMethodToString(SamplingMethod method);
 // Case-insensitive: "all", "random", "gbs", "voxel_centroid".
 bool StringToSamplingMethod(std::string value, SamplingMethod* method);
 
+// Largest GBS cell or voxel edge [m]: 10 km, far above any scan's extent;
+// larger values (1e300) are typing errors, refused by IsValid.
+constexpr double kMaxSamplingCellM = 1e4;
+
 struct SamplingOptions {
   SamplingMethod method = SamplingMethod::GBS;
 
@@ -43,7 +47,7 @@ struct SamplingOptions {
   // RANDOM: exact number of points kept (capped at the input size) when > 0.
   size_t random_count = 0;
 
-  // GBS: cell edge [m], finite and > 0.
+  // GBS: cell edge [m], in (0, kMaxSamplingCellM].
   double gbs_cell_size_m = 1.0;
   // GBS: a cell with more points than this gives this many, picked at
   // random; must be >= gbs_min_points_per_cell.
@@ -52,7 +56,7 @@ struct SamplingOptions {
   // with gbs_min_points_per_cell..gbs_points_per_cell points give them all.
   int gbs_min_points_per_cell = 3;
 
-  // VOXEL_CENTROID: voxel edge [m], finite and > 0.
+  // VOXEL_CENTROID: voxel edge [m], in (0, kMaxSamplingCellM].
   double voxel_size_m = 0.5;
 
   // Seed of the std::mt19937_64 behind every random choice.

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "mlndt/common/rigid_transform.h"
+
 namespace mlndt {
 namespace python {
 namespace {
@@ -154,19 +156,13 @@ Isometry3d TransformFromPython(py::handle matrix, const char* what) {
                           ": the last row of a 4x4 transform must be "
                           "[0, 0, 0, 1]");
   }
-  const Eigen::Matrix3d r = t.topLeftCorner<3, 3>();
-  const double orthogonality =
-      (r.transpose() * r - Eigen::Matrix3d::Identity()).norm();
-  if (orthogonality > 1e-6 || r.determinant() < 0.0) {
-    std::ostringstream message;
-    message << what
-            << ": not a rigid transform (|R^T R - I| = " << orthogonality
-            << ", det R = " << r.determinant()
-            << "): give a rotation, not a reflection or a scaled matrix";
-    throw py::value_error(message.str());
-  }
+  // The library's one check and re-orthonormalisation (rigid_transform.h).
   Isometry3d transform;
-  transform.matrix() = t;
+  std::string problem;
+  if (!ToRigidTransform(t, &transform, &problem)) {
+    throw py::value_error(std::string(what) + ": not a rigid transform (" +
+                          problem + ")");
+  }
   return transform;
 }
 

@@ -13,6 +13,7 @@
 
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/grid/map_check.h"
 #include "python/src/arrays.h"
 #include "python/src/errors.h"
 #include "python/src/module.h"
@@ -38,6 +39,12 @@ LayeredMap LayeredMap::Build(const py::object& points,
   {
     py::gil_scoped_release release;
     ok = LayeredGrid::Build(options, cloud, num_threads, grid.get(), &error);
+  }
+  // The library's map check: a map with 0 cells or of absurd size (a 1e300
+  // point) is refused here, not saved and refused by load.
+  if (ok && !CheckMapUsable(*grid, &error)) {
+    error = "the map is not usable: " + error;
+    ok = false;
   }
   if (!ok) throw py::value_error("LayeredMap.build: " + error);
   return LayeredMap(std::move(grid));
@@ -170,7 +177,8 @@ void DefineMap(py::module_& m) {
            LayeredGridOptionsDoc() +
            "Raises ValueError for invalid options or data, and when the "
            "library refuses the\ncloud (all points coincide, too many "
-           "cells).")
+           "cells) or the map could not be used\n(CheckMapUsable: a layer "
+           "with 0 occupied cells, coordinates beyond 1e8 m).")
               .c_str())
       .def_static("load",
                   &LayeredMap::Load,

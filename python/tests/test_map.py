@@ -152,3 +152,16 @@ def test_load_and_save_errors(tmp_path, reference_map):
         reference_map.save(tmp_path / "no_such_folder" / "map.mlndtmap")
     with pytest.raises(TypeError):
         reference_map.save(42)
+
+
+def test_build_refuses_a_map_that_cannot_be_used(koide3, tmp_path):
+    """Issue 27 item 3: a 1e300 point (the map's cells would be infinite) or
+    too few points for one cell give no map, instead of one save writes and
+    load refuses."""
+    points = np.vstack([koide3[0], [[1e300, 0.0, 0.0]]])
+    with pytest.raises(ValueError, match=r"LayeredMap.build: the map is not usable: .*beyond 1e\+08 m"):
+        mlndt.LayeredMap.build(points)
+    five = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 1.0]]
+    with pytest.raises(ValueError, match=r"LayeredMap.build: the map is not usable: the map has 0 occupied cells"):
+        mlndt.LayeredMap.build(five)
+    assert list(tmp_path.iterdir()) == []

@@ -142,7 +142,7 @@ def test_numbers_of_numpy_types_and_ints_for_floats_are_accepted(small_pair):
         ({"backend": {"ceres": {"linear_solver_type": "qr"}}}, r"backend.ceres.linear_solver_type = 'qr'"),
         ({"grid": {"finest_cell_size_m": -1.0}}, r"invalid option: grid.finest_cell_size_m = -1; it must be in \[0.001, 100000\]"),
         ({"grid": {"regularization": {"min_eigenvalue_ratio": 0.0}}}, r"invalid option: grid.regularization.min_eigenvalue_ratio = 0"),
-        ({"sampling": {"gbs_cell_size_m": 0.0}}, r"sampling: gbs_cell_size_m must be finite and > 0"),
+        ({"sampling": {"gbs_cell_size_m": 0.0}}, r"sampling: gbs_cell_size_m must be in \(0, 10000\] m"),
         ({"schedule": {"iterations_per_layer": 0}}, r"invalid option: schedule.iterations_per_layer = 0"),
         ({"objective": {"loss_scale": 0.0}}, r"invalid option: objective.loss_scale = 0"),
         ({"backend": {"newton": {"max_line_search_steps": 0}}}, r"invalid option: backend.newton.max_line_search_steps = 0"),

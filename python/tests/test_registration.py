@@ -222,3 +222,15 @@ def test_a_registration_that_fails_is_a_result_not_an_exception(small_pair):
     assert result.termination == "FAILURE"
     assert not result.usable and not result.converged
     assert "range filter" in result.message
+
+
+def test_initial_written_with_six_digits_is_accepted(small_pair):
+    """Issue 27 item 4: the 6-digit matrix of data/koide3 (|R^T R - I| = 1.2e-6)
+    is a rigid transform for initial=, as for every pose reader (tolerance
+    1e-3, re-orthonormalised); it was refused above 1e-6."""
+    initial = np.loadtxt(BUNDLED_DATA_DIR / "koide3" / "T_target_source.txt")
+    rotation = initial[:3, :3]
+    assert np.linalg.norm(rotation.T @ rotation - np.eye(3)) > 1e-6
+    result = mlndt.register(*small_pair, initial=initial)
+    assert result.usable, result.message
+    assert np.linalg.norm(result.reference_from_input[:3, 3] - initial[:3, 3]) < 0.2

@@ -154,6 +154,10 @@ TEST(ReadKittiPosesErrors, BadLines) {
       {"1 0 0 0 0 1 0 0 0 0 1 zero\n", "line 1: cannot parse number 'zero'"},
       {"2 0 0 0 0 2 0 0 0 0 2 0\n", "line 1: the 3x3 part is not a rotation"},
       {"-1 0 0 0 0 1 0 0 0 0 1 0\n", "not a rotation"},  // A reflection.
+      // Issue 27 item 3: a number no place has (it built a map of infinite
+      // cells).
+      {"1 0 0 1e300 0 1 0 0 0 0 1 0\n",
+       "line 1: translation (1e+300, 0, 0) m is beyond 1e+08 m"},
       {"\n\n", "no poses"},
   };
   for (const Case& c : cases) {

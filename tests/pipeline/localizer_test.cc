@@ -149,6 +149,27 @@ TEST(Localizer, FailureDeadReckons) {
   EXPECT_LT(TranslationErrorM(drive.map_from_scan[3], r3.map_from_scan), 0.05);
 }
 
+// Issue 27 item 1: a scan's result is usable exactly when a registration's
+// is (LOW_QUALITY and DEGENERATE were counted as usable by the localiser).
+TEST(LocalizationResult, UsableExactlyWhenTheRegistrationIs) {
+  for (const TerminationType type : {TerminationType::CONVERGENCE,
+                                     TerminationType::NO_CONVERGENCE,
+                                     TerminationType::LOW_QUALITY,
+                                     TerminationType::DEGENERATE,
+                                     TerminationType::FAILURE}) {
+    LocalizationResult result;
+    result.termination_type = type;
+    RegistrationSummary summary;
+    summary.termination_type = type;
+    EXPECT_EQ(result.IsSolutionUsable(), summary.IsSolutionUsable())
+        << TerminationTypeToString(type);
+    EXPECT_EQ(result.IsSolutionUsable(),
+              type == TerminationType::CONVERGENCE ||
+                  type == TerminationType::NO_CONVERGENCE)
+        << TerminationTypeToString(type);
+  }
+}
+
 TEST(LocalizeScans, StopsAtAScanThatCannotBeLoaded) {
   const Drive& drive = StreetDrive();
   std::vector<LocalizationResult> results;

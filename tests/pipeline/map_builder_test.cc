@@ -193,6 +193,20 @@ TEST(BuildMapFromScans, Refusals) {
   EXPECT_FALSE(build(scans.paths, scans.world_from_scan));
   EXPECT_NE(error.find("merging scan 0"), std::string::npos) << error;
   EXPECT_NE(error.find("memory limit of 100.0 kB"), std::string::npos) << error;
+  // Issue 27 item 3: a 1e300 pose and a map without occupied cells.
+  options = MapBuildOptions();
+  std::vector<Isometry3d> huge = scans.world_from_scan;
+  huge[1].translation().x() = 1e300;
+  EXPECT_FALSE(build(scans.paths, huge));
+  EXPECT_NE(error.find("the pose of scan 1 (" + scans.paths[1] +
+                       "): translation (1e+300, "),
+            std::string::npos)
+      << error;
+  options.grid.min_points_per_cell = 1000000;  // No cell gets that many.
+  EXPECT_FALSE(build(scans.paths, scans.world_from_scan));
+  EXPECT_NE(error.find("the map is not usable: the map has 0 occupied cells"),
+            std::string::npos)
+      << error;
   EXPECT_TRUE(map.empty());
 }
 

@@ -464,6 +464,8 @@ TEST(PointSampler, InvalidOptionsNameTheField) {
   ExpectInvalid(options, "gbs_cell_size_m");
   options.gbs_cell_size_m = std::numeric_limits<double>::infinity();
   ExpectInvalid(options, "gbs_cell_size_m");
+  options.gbs_cell_size_m = 1e300;  // Finite, but no cell edge (issue 27).
+  ExpectInvalid(options, "gbs_cell_size_m");
 
   options = GbsOptions();
   options.gbs_points_per_cell = 2;  // < gbs_min_points_per_cell == 3.

@@ -181,10 +181,13 @@ TEST(MlndtEval, ChainWritesTheChainedConsecutivePairs) {
     for (int e = 0; e < 12; ++e) step(e / 4, e % 4) = m[e].get<double>();
     expected.push_back(expected.back() * step);
   }
+  // The pose reader re-orthonormalises (mlndt/common/rigid_transform.h):
+  // the product of the file's 6-9 digit rotations moves by < 1e-5 (2.3e-6
+  // measured on pose 7).
   const std::vector<Isometry3d> chained = ReadPoses(out);
   ASSERT_EQ(chained.size(), expected.size());
   for (size_t k = 0; k < chained.size(); ++k) {
-    EXPECT_LT((chained[k].matrix() - expected[k]).cwiseAbs().maxCoeff(), 1e-12)
+    EXPECT_LT((chained[k].matrix() - expected[k]).cwiseAbs().maxCoeff(), 1e-5)
         << k;
   }
 }
@@ -368,6 +371,69 @@ TEST(MlndtEval, RefusesBadFlags) {
     EXPECT_NE(run.err.find(c.message), std::string::npos)
         << c.args << "\nstderr: " << run.err;
   }
+}
+
+// Issue 27 item 8: `chain` follows scan numbering with gaps (0, 2, 4, 6:
+// each next scan is the nearest input of a pair from the current one; it
+// failed with "no consecutive pair" before).
+TEST(MlndtEval, ChainFollowsScanNumberingWithGaps) {
+  const std::string dir = TestDir();
+  const Json all =
+      ReadJson(testing::BundledDataPath("kitti/reference_pairs.json"));
+  Json gaps = Json::object();
+  for (const char* key : {"0_2", "2_4", "4_6", "0_3"}) gaps[key] = all[key];
+  {
+    std::ofstream out(dir + "/gaps.json");
+    out << gaps.dump(1);
+  }
+  const std::string out = dir + "/chained.txt";
+  const ToolRun run = testing::RunTool(
+      "mlndt_eval", "chain " + Quote(dir + "/gaps.json") + " " + Quote(out));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("chained 4 poses (scans 0..6: 0, 2, 4, 6)"),
+            std::string::npos)
+      << run.out;
+  const std::vector<Isometry3d> chained = ReadPoses(out);
+  ASSERT_EQ(chained.size(), 4u);
+  Eigen::Matrix4d expected = Eigen::Matrix4d::Identity();
+  for (size_t k = 1; k < chained.size(); ++k) {
+    const Json& m = gaps[std::to_string(2 * (k - 1)) + "_" +
+                         std::to_string(2 * k)]["reference_from_input"];
+    Eigen::Matrix4d step = Eigen::Matrix4d::Identity();
+    for (int e = 0; e < 12; ++e) step(e / 4, e % 4) = m[e].get<double>();
+    expected = expected * step;
+    EXPECT_LT((chained[k].matrix() - expected).cwiseAbs().maxCoeff(), 1e-5)
+        << k;
+  }
+}
+
+// Issue 27 item 8: trajectories of different lengths paired by index are
+// refused (exit 2, no output), not evaluated on their common prefix in
+// silence; --association=index asks for the prefix explicitly.
+TEST(MlndtEval, DifferentLengthsAreRefusedUnlessIndexPairingIsAskedFor) {
+  const std::string dir = TestDir();
+  {
+    std::ifstream in(KittiGt());
+    std::ofstream out(dir + "/five.txt");
+    std::string line;
+    for (int k = 0; k < 5 && std::getline(in, line); ++k) out << line << "\n";
+  }
+  const std::string args = "--reference=" + Quote(KittiGt()) +
+                           " --estimate=" + Quote(dir + "/five.txt") +
+                           " --output_json=" + Quote(dir + "/eval.json");
+  const ToolRun refused = testing::RunTool("mlndt_eval", args);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find(dir + "/five.txt has 5 poses, --reference 8: "
+                                   "poses are paired by index"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(fs::exists(dir + "/eval.json"));
+  const ToolRun prefix =
+      testing::RunTool("mlndt_eval", args + " --association=index");
+  ASSERT_EQ(prefix.exit_code, 0) << prefix.err;
+  const Json json = ReadJson(dir + "/eval.json");
+  EXPECT_EQ(json["estimates"][0]["pairs"].get<int>(), 5);
+  EXPECT_EQ(json["estimates"][0]["association"].get<std::string>(), "index");
 }
 
 }  // namespace

@@ -194,14 +194,17 @@ TEST(MlndtInfo, FinestCellSizeChoosesTheLayerCount) {
   EXPECT_GT(layers[layers.size() - 2].cell_size_m, 1.0);
 }
 
-TEST(MlndtInfo, MissingFileFailsButOtherFilesAreDescribed) {
+// Issue 27 item 6: a missing file is bad input, found before any work
+// (exit 2, nothing described); it used to exit 1 after describing the rest.
+TEST(MlndtInfo, MissingFileIsRefusedBeforeAnyFileIsDescribed) {
   const std::string missing = TempPath("does_not_exist.pcd");
   const std::string reference = testing::BundledDataPath(kReference);
-  const ToolRun run = RunInfo(Quote(missing) + " " + Quote(reference));
-  EXPECT_EQ(run.exit_code, 1);
-  EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
-  ASSERT_EQ(run.lines.size(), 1u);
-  ExpectCloudLine(run.lines[0], reference, "PCD", 69088);
+  const ToolRun run = RunInfo(Quote(reference) + " " + Quote(missing));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find(missing + ": no such readable file"),
+            std::string::npos)
+      << run.err;
+  EXPECT_TRUE(run.lines.empty()) << run.out;
 }
 
 TEST(MlndtInfo, NoArgumentsPrintsUsage) {

@@ -379,3 +379,54 @@ TEST(MlndtLocalize, HelpListsOnlyTheFlagsItAccepts) {
 
 }  // namespace
 }  // namespace mlndt
+
+namespace mlndt {
+namespace {
+
+// Issue 27 item 1: scans whose result fails the quality check (LOW_QUALITY,
+// here forced by demanding every point be an inlier) are not usable: the
+// summary counts them by verdict, their pose is the prediction, and the
+// tool exits 1 (it printed "usable 3" and exited 0 before).
+TEST(MlndtLocalize, LowQualityScansAreCountedAndExitOne) {
+  const std::string dir = TestDir();
+  const KittiMap kitti = BuildKittiMap(dir);
+  const std::string out = dir + "/out";
+  const ToolRun run = testing::RunTool(
+      "mlndt_localize",
+      "--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
+          " --max_scans=3 --min_inlier_fraction=1 --retry_yaw_seeds= "
+          "--plots=false --output_dir=" +
+          Quote(out));
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_NE(run.out.find("scans: 3, usable 0 (CONVERGENCE 0, NO_CONVERGENCE "
+                         "0, LOW_QUALITY 3, DEGENERATE 0, FAILURE 0)"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.err.find("3 of 3 scans have no usable pose"), std::string::npos)
+      << run.err;
+  std::ifstream json_file(out + "/summary.json");
+  Json summary;
+  json_file >> summary;
+  const Json& verdicts = summary["terminations"];
+  EXPECT_EQ(verdicts["LOW_QUALITY"].get<int>(), 3);
+  int sum = 0;
+  for (const char* key : {"CONVERGENCE",
+                          "NO_CONVERGENCE",
+                          "LOW_QUALITY",
+                          "DEGENERATE",
+                          "FAILURE"}) {
+    ASSERT_TRUE(verdicts.contains(key)) << key;
+    sum += verdicts[key].get<int>();
+  }
+  EXPECT_EQ(sum, 3);
+  EXPECT_EQ(summary["usable"].get<int>(), 0);
+  EXPECT_EQ(summary["unusable"].get<int>(), 3);
+  // Dead reckoning: no correction of any prediction is kept.
+  for (const auto& row : ReadCsv(out + "/scans.csv")) {
+    EXPECT_EQ(row.at("termination"), "LOW_QUALITY");
+    EXPECT_EQ(std::stod(row.at("correction_m")), 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace mlndt

@@ -301,7 +301,7 @@ TEST(MlndtMap, RefusesWhatExceedsTheMemoryLimit) {
            " --voxel_size=0.2 --max_memory_gb=0.06",
        "the voxel filter of 991949 points"},
       {"--cloud=" + Quote(KittiPcd() + "/000000.pcd") +
-           " --finest_cell_size=0.05 --max_memory_gb=0.01",
+           " --finest_cell_size=0.1 --max_memory_gb=0.01",
        "to build the map"},
   };
   for (const Case& c : cases) {
@@ -312,10 +312,11 @@ TEST(MlndtMap, RefusesWhatExceedsTheMemoryLimit) {
     EXPECT_NE(run.err.find("memory limit of"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
   }
-  // No limit: the same fine map builds.
+  // No limit: the same fine map builds. (At 0.05 m its finest layer would
+  // have no occupied cell, a map CheckMapUsable refuses.)
   const ToolRun unlimited = RunMap(
       "--cloud=" + Quote(KittiPcd() + "/000000.pcd") +
-      " --finest_cell_size=0.05 --max_memory_gb=0 --output=" + Quote(out));
+      " --finest_cell_size=0.1 --max_memory_gb=0 --output=" + Quote(out));
   EXPECT_EQ(unlimited.exit_code, 0) << unlimited.err;
 }
 
@@ -488,6 +489,127 @@ TEST(MlndtMap, HelpListsOnlyTheFlagsItAccepts) {
   ASSERT_EQ(points.exit_code, 0) << points.err;
   EXPECT_NE(testing::ReadWholeFile(map),
             testing::ReadWholeFile(dir + "/points.mlndt"));
+}
+
+}  // namespace
+}  // namespace mlndt
+
+namespace mlndt {
+namespace {
+
+void WriteText(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+}
+
+std::string AsciiPcd(const std::vector<std::string>& points) {
+  std::string text =
+      "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT "
+      "1 1 1\nWIDTH " +
+      std::to_string(points.size()) +
+      "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
+      std::to_string(points.size()) + "\nDATA ascii\n";
+  for (const std::string& p : points) text += p + "\n";
+  return text;
+}
+
+// Issue 27 item 3: a map that cannot be used is not written. A pose with
+// 1e300 in it is refused by the pose reader (exit 2); five points give 0
+// occupied cells (exit 1). The file at --output stays as it was.
+TEST(MlndtMap, RefusesToWriteAnUnusableMap) {
+  const std::string dir = TestDir();
+  const std::string output = dir + "/map.mlndt";
+  WriteText(output, "the previous map");
+  std::vector<Isometry3d> poses;
+  std::string error;
+  ASSERT_TRUE(ReadKittiPoses(ChainedPoses(dir), &poses, &error)) << error;
+  std::string text;
+  for (size_t k = 0; k < poses.size(); ++k) {
+    for (int e = 0; e < 12; ++e) {
+      const double v =
+          k == 2 && e == 3 ? 1e300 : poses[k].matrix()(e / 4, e % 4);
+      text += (e ? " " : "") + std::to_string(v);
+    }
+    text += "\n";
+  }
+  WriteText(dir + "/huge.txt", text);
+  const ToolRun huge = RunMap("--scans=" + Quote(KittiPcd()) +
+                              " --poses=" + Quote(dir + "/huge.txt") +
+                              " --output=" + Quote(output));
+  EXPECT_EQ(huge.exit_code, 2) << huge.err;
+  EXPECT_NE(huge.err.find("huge.txt: line 3: translation"), std::string::npos)
+      << huge.err;
+  EXPECT_NE(huge.err.find("is beyond 1e+08 m"), std::string::npos) << huge.err;
+
+  WriteText(dir + "/five.pcd",
+            AsciiPcd({"0 0 0", "1 0 0", "0 1 0", "0 0 1", "1 1 1"}));
+  const ToolRun five = RunMap("--cloud=" + Quote(dir + "/five.pcd") +
+                              " --output=" + Quote(output));
+  EXPECT_EQ(five.exit_code, 1) << five.err;
+  EXPECT_NE(five.err.find("the map is not usable: the map has 0 occupied "
+                          "cells"),
+            std::string::npos)
+      << five.err;
+  EXPECT_EQ(five.out.find("map written"), std::string::npos) << five.out;
+  EXPECT_EQ(testing::ReadWholeFile(output), "the previous map");
+  EXPECT_EQ(
+      std::distance(fs::directory_iterator(dir), fs::directory_iterator()),
+      4);  // chained.txt, huge.txt, five.pcd, map.mlndt: nothing new.
+}
+
+// Issue 27 item 6: a --scan_list entry that does not exist is found before
+// any scan is read (exit 2), not after the others were merged (exit 1).
+TEST(MlndtMap, MissingScanOfAListIsRefusedBeforeAnyWork) {
+  const std::string dir = TestDir();
+  const std::string missing = dir + "/missing.pcd";
+  WriteText(dir + "/scans.txt", KittiPcd() + "/000000.pcd\n" + missing + "\n");
+  const ToolRun run =
+      RunMap("--scan_list=" + Quote(dir + "/scans.txt") +
+             " --poses=" + Quote(ChainedPoses(dir)) +
+             " --max_scans=2 --output=" + Quote(dir + "/map.mlndt"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--scan_list=" + dir + "/scans.txt: scan 1 (" +
+                         missing + ") is not a readable file"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(run.err.find("000000.pcd"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir + "/map.mlndt"));
+}
+
+// Issue 27 item 8: more poses than scans is refused (pose k belongs to
+// scan k; --max_scans takes a prefix on purpose), and a scan without a
+// finite point is named in a warning instead of adding nothing silently.
+TEST(MlndtMap, PoseCountMismatchAndAnAllNanScan) {
+  const std::string dir = TestDir();
+  const std::string poses = ChainedPoses(dir);  // 8 poses.
+  std::string list;
+  for (int k = 0; k < 7; ++k) {
+    list += KittiPcd() + "/00000" + std::to_string(k) + ".pcd\n";
+  }
+  WriteText(dir + "/seven.txt", list);
+  const ToolRun seven = RunMap("--scan_list=" + Quote(dir + "/seven.txt") +
+                               " --poses=" + Quote(poses) +
+                               " --output=" + Quote(dir + "/seven.mlndt"));
+  EXPECT_EQ(seven.exit_code, 2) << seven.err;
+  EXPECT_NE(seven.err.find("has 8 poses for 7 scans"), std::string::npos)
+      << seven.err;
+  EXPECT_FALSE(fs::exists(dir + "/seven.mlndt"));
+
+  const std::string nan = dir + "/all_nan.pcd";
+  WriteText(nan, AsciiPcd({"nan nan nan", "nan nan nan", "nan nan nan"}));
+  WriteText(
+      dir + "/with_nan.txt",
+      KittiPcd() + "/000000.pcd\n" + nan + "\n" + KittiPcd() + "/000002.pcd\n");
+  const ToolRun with_nan =
+      RunMap("--scan_list=" + Quote(dir + "/with_nan.txt") +
+             " --poses=" + Quote(poses) +
+             " --max_scans=3 --output=" + Quote(dir + "/nan.mlndt"));
+  EXPECT_EQ(with_nan.exit_code, 0) << with_nan.err;
+  EXPECT_NE(
+      with_nan.err.find("warning: scan 1 (" + nan + ") has no finite point"),
+      std::string::npos)
+      << with_nan.err;
+  EXPECT_TRUE(fs::exists(dir + "/nan.mlndt"));
 }
 
 }  // namespace

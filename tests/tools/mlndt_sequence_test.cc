@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -541,6 +543,120 @@ TEST(MlndtSequence, MissingGnuplotExitsOneUnlessPlotsAreOff) {
   const ToolRun off =
       RunSequence(args + " --gnuplot=/nonexistent/gnuplot --plots=false");
   EXPECT_EQ(off.exit_code, 0) << off.err;
+}
+
+}  // namespace
+}  // namespace mlndt
+
+namespace mlndt {
+namespace {
+
+// Issue 27 item 2: pairs whose result fails the quality check (forced here
+// by demanding every point be an inlier) are counted by verdict, flagged
+// where their --init guess stands in for them, and make the tool exit 1 (it
+// exited 0 with "registration_failures: 0" before).
+TEST(MlndtSequence, UnusablePairsAreCountedFlaggedAndExitOne) {
+  const std::string dir = TestDir();
+  const ToolRun run =
+      RunSequence(KittiArgs(dir) +
+                  " --max_scans=3 --min_inlier_fraction=1 --retry_yaw_seeds= "
+                  "--plots=false");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_NE(run.out.find("verdicts: CONVERGENCE 0, NO_CONVERGENCE 0, "
+                         "LOW_QUALITY 2, DEGENERATE 0, FAILURE 0; usable 0 "
+                         "of 2"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.err.find("2 of 2 pairs have no usable result (0->1 "
+                         "LOW_QUALITY, 1->2 LOW_QUALITY): trajectory.txt "
+                         "chains their --init=zero guess"),
+            std::string::npos)
+      << run.err;
+  const FlatJson summary(ReadFile(dir + "/summary.json"));
+  ASSERT_TRUE(summary.ok());
+  EXPECT_EQ(summary.Number("terminations.LOW_QUALITY"), 2.0);
+  EXPECT_EQ(summary.Number("terminations.CONVERGENCE"), 0.0);
+  EXPECT_TRUE(summary.Has("terminations.DEGENERATE"));
+  EXPECT_EQ(summary.Number("usable_pairs"), 0.0);
+  EXPECT_EQ(summary.Number("unusable_pairs"), 2.0);
+  const auto rows = ReadCsv(dir + "/pairs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    EXPECT_EQ(row.at("termination"), "LOW_QUALITY");
+    EXPECT_EQ(row.at("usable"), "0");
+    EXPECT_EQ(row.at("estimate_source"), "guess");
+  }
+}
+
+// Issue 27 item 4: a pose file written with 5 decimals (|R^T R - I| well
+// above 1e-6, below 1e-3) is odometry --init=poses:FILE can use, as every
+// other pose reader does: no pair fails as "not a rigid transform".
+TEST(MlndtSequence, InitPosesAcceptsPosesWrittenWithFewDecimals) {
+  const std::string dir = TestDir();
+  const std::string odometry = dir + "/odometry_5_decimals.txt";
+  double worst = 0.0;
+  {
+    std::ifstream in(testing::BundledDataPath("kitti/poses_velo.txt"));
+    std::ofstream out(odometry);
+    std::vector<double> v(12);
+    while (in >> v[0]) {
+      for (int k = 1; k < 12; ++k) in >> v[static_cast<size_t>(k)];
+      Eigen::Matrix3d r;
+      for (int k = 0; k < 12; ++k) {
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.5f", v[static_cast<size_t>(k)]);
+        out << (k ? " " : "") << text;
+        if (k % 4 != 3) r(k / 4, k % 4) = std::stod(text);
+      }
+      out << "\n";
+      worst = std::max(
+          worst, (r.transpose() * r - Eigen::Matrix3d::Identity()).norm());
+    }
+  }
+  ASSERT_GT(worst, 1e-6);  // The old limit of the registration's check.
+  ASSERT_LT(worst, 1e-3);
+  const std::string out = dir + "/out";
+  const ToolRun run = RunSequence(
+      KittiArgs(out) + " --max_scans=3 --init=" + "poses:" + Quote(odometry) +
+      " --plots=false");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_EQ(run.err.find("not a rigid transform"), std::string::npos)
+      << run.err;
+  const auto rows = ReadCsv(out + "/pairs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    EXPECT_EQ(row.at("termination"), "CONVERGENCE");
+    EXPECT_LT(Field(row, "translation_error_cm"), 50.0);
+  }
+}
+
+// Issue 27 item 8: KITTI camera poses given as --gt_poses without
+// --poses_are_camera are named in a warning with the evidence (the motion
+// runs along the poses' z axis); the Velodyne poses of the same frames are
+// not.
+TEST(MlndtSequence, WarnsAboutCameraPosesReadAsLidarPoses) {
+  const std::string dir = TestDir();
+  const std::string scans =
+      "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
+      " --max_scans=2 --plots=false --output_dir=";
+  const ToolRun camera =
+      RunSequence(scans + Quote(dir + "/camera") + " --gt_poses=" +
+                  Quote(testing::BundledDataPath("kitti/poses_cam0.txt")));
+  EXPECT_NE(camera.err.find("WARNING: --gt_poses=" +
+                            testing::BundledDataPath("kitti/poses_cam0.txt") +
+                            " looks like KITTI camera (cam0) poses"),
+            std::string::npos)
+      << camera.err;
+  EXPECT_NE(camera.err.find("is along the poses' z axis"), std::string::npos)
+      << camera.err;
+  EXPECT_NE(camera.err.find("add --poses_are_camera --calib=calib.txt"),
+            std::string::npos)
+      << camera.err;
+  const ToolRun velodyne =
+      RunSequence(scans + Quote(dir + "/velodyne") + " --gt_poses=" +
+                  Quote(testing::BundledDataPath("kitti/poses_velo.txt")));
+  EXPECT_EQ(velodyne.exit_code, 0) << velodyne.err;
+  EXPECT_EQ(velodyne.err.find("WARNING"), std::string::npos) << velodyne.err;
 }
 
 }  // namespace

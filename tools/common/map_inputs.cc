@@ -1,11 +1,13 @@
 #include "tools/common/map_inputs.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "lab/eval/dataset.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/common/rigid_transform.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/tool_utils.h"
@@ -60,6 +62,16 @@ bool ScanPathsFromFlags(const std::string& scans_dir,
     return false;
   }
   if (max_scans > 0 && paths->size() > max_scans) paths->resize(max_scans);
+  // Every listed scan exists before any work (a missing one would stop the
+  // run after the others were read).
+  for (size_t k = 0; !scan_list.empty() && k < paths->size(); ++k) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file((*paths)[k], ec)) {
+      *error = "--scan_list=" + scan_list + ": scan " + std::to_string(k) +
+               " (" + (*paths)[k] + ") is not a readable file";
+      return false;
+    }
+  }
   return true;
 }
 
@@ -111,8 +123,25 @@ bool ParseInitialPose(const std::string& guess,
                "(m, deg)";
       return false;
     }
-    *pose = PoseVectorToIsometry(
-        PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]));
+    // Angles beyond a full turn and translations beyond kMaxCoordinateM
+    // (1e8 m) are typing errors or corrupt numbers, not poses.
+    for (int a = 3; a < 6; ++a) {
+      if (std::abs(v[static_cast<size_t>(a)]) > 360.0) {
+        *error = "--initial_guess=" + guess +
+                 ": angles must be within [-360, 360] deg";
+        return false;
+      }
+    }
+    std::string problem;
+    if (!ToRigidTransform(
+            PoseVectorToIsometry(
+                PoseVectorFromDegrees(v[0], v[1], v[2], v[3], v[4], v[5]))
+                .matrix(),
+            pose,
+            &problem)) {
+      *error = "--initial_guess=" + guess + ": " + problem;
+      return false;
+    }
     return true;
   }
   if (!matrix.empty()) {

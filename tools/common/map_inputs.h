@@ -22,7 +22,8 @@ bool ReadScanList(const std::string& path,
 
 // The scans of --scans=DIR (ListScanFiles: the cloud files in DIR sorted by
 // name, without the files in `exclude`) or of --scan_list=FILE, exactly one
-// of them; the first `max_scans` when > 0. Messages name the flags.
+// of them; the first `max_scans` when > 0; every listed file must exist.
+// Messages name the flags.
 bool ScanPathsFromFlags(const std::string& scans_dir,
                         const std::string& scan_list,
                         const std::vector<std::string>& exclude,
@@ -52,6 +53,9 @@ bool ReadPoseFile(const std::string& path,
 // An initial pose from --initial_guess=tx,ty,tz,alpha,beta,gamma (m, deg,
 // R = Rx Ry Rz) or --initial_matrix= 12 numbers (row-major 3x4, the rotation
 // re-orthonormalised); at most one of them. *given tells whether one was.
+// Refused: angles beyond +-360 deg, a translation beyond kMaxCoordinateM
+// (1e8 m, mlndt/common/rigid_transform.h), a matrix that is not a rotation
+// within 1e-3.
 bool ParseInitialPose(const std::string& guess,
                       const std::string& matrix,
                       Isometry3d* pose,

@@ -5,6 +5,8 @@
 #include <Eigen/Geometry>
 #include <fstream>
 
+#include "mlndt/common/rigid_transform.h"
+
 namespace mlndt {
 namespace tools {
 
@@ -23,16 +25,12 @@ bool RowMajorToRigidTransform(const std::vector<double>& values,
     *error = what + " needs 12 comma-separated numbers (row-major 3x4)";
     return false;
   }
-  const Eigen::Matrix4d m = RowMajorMatrix(values);
-  const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
-  if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-3 ||
-      r.determinant() < 0) {
-    *error = what + ": the 3x3 part is not a rotation";
+  // Checked and re-orthonormalised as every pose read (rigid_transform.h).
+  std::string problem;
+  if (!ToRigidTransform(RowMajorMatrix(values), transform, &problem)) {
+    *error = what + ": " + problem;
     return false;
   }
-  transform->matrix() = m;
-  // Re-orthonormalise the rotation read from text.
-  transform->linear() = Eigen::Quaterniond(r).normalized().toRotationMatrix();
   return true;
 }
 
@@ -52,7 +50,15 @@ bool ReadMatrixFile(const std::string& path,
         path + ": expected 12 or 16 numbers (a row-major 3x4 or 4x4 matrix)";
     return false;
   }
-  transform->matrix() = RowMajorMatrix(v);
+  Eigen::Matrix4d m = RowMajorMatrix(v);
+  if (v.size() == 16) {
+    for (int c = 0; c < 4; ++c) m(3, c) = v[static_cast<size_t>(12 + c)];
+  }
+  std::string problem;
+  if (!ToRigidTransform(m, transform, &problem)) {
+    *error = path + ": " + problem;
+    return false;
+  }
   return true;
 }
 

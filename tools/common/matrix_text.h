@@ -16,16 +16,18 @@ namespace tools {
 // them); the last row is 0 0 0 1.
 Eigen::Matrix4d RowMajorMatrix(const std::vector<double>& values);
 
-// The transform of exactly 12 row-major numbers whose 3x3 part is a
-// rotation within 1e-3, re-orthonormalised; false with *error naming `what`
-// (e.g. "--initial_matrix") otherwise.
+// The transform of exactly 12 row-major numbers that passes
+// ToRigidTransform (mlndt/common/rigid_transform.h: a rotation within 1e-3,
+// re-orthonormalised; a translation within 1e8 m); false with *error naming
+// `what` (e.g. "--initial_matrix") otherwise.
 bool RowMajorToRigidTransform(const std::vector<double>& values,
                               const std::string& what,
                               Isometry3d* transform,
                               std::string* error);
 
-// Reads 12 or 16 whitespace-separated numbers (row-major 3x4 or 4x4), kept
-// as written (not re-orthonormalised).
+// Reads 12 or 16 whitespace-separated numbers (row-major 3x4 or 4x4) that
+// pass ToRigidTransform (a reflection, a scaled matrix or a 1e300
+// translation is refused; the rotation is re-orthonormalised).
 bool ReadMatrixFile(const std::string& path,
                     Isometry3d* transform,
                     std::string* error);

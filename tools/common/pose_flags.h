@@ -10,9 +10,10 @@
 //                        into the scans' (Velodyne) frame: V = Tr^-1 P Tr;
 //                        refused without --poses_are_camera
 //
-// Nothing is guessed from a file's name or contents: a camera pose file
-// read as Velodyne poses gives a wrong, plausible trajectory, so the user
-// says which it is.
+// Nothing is converted on a guess from a file's name or contents: a camera
+// pose file read as Velodyne poses gives a wrong, plausible trajectory, so
+// the user says which it is. mlndt_sequence warns (with the evidence) when
+// --gt_poses moves along z as camera poses do (lab/eval/pose_convention.h).
 
 #include <gflags/gflags.h>
 

@@ -138,6 +138,22 @@ bool ParseSampling(SamplingOptions* sampling, std::string* error) {
     sampling->random_fraction = FLAGS_random_fraction;
   if (Given("gbs_cell_size")) sampling->gbs_cell_size_m = FLAGS_gbs_cell_size;
   if (Given("seed")) sampling->seed = FLAGS_seed;
+  // A flag the chosen sampling does not read is refused, not ignored.
+  const SamplingMethod method = sampling->method;
+  const char* ignored = nullptr;
+  if (Given("gbs_cell_size") && method != SamplingMethod::GBS) {
+    ignored = "--gbs_cell_size applies to --sampling=gbs only";
+  } else if (Given("random_fraction") && method != SamplingMethod::RANDOM) {
+    ignored = "--random_fraction applies to --sampling=random only";
+  } else if (Given("seed") && method != SamplingMethod::RANDOM &&
+             method != SamplingMethod::GBS) {
+    ignored = "--seed applies to --sampling=random or gbs only";
+  }
+  if (ignored != nullptr) {
+    *error = std::string(ignored) + " (the sampling is " +
+             SamplingMethodToString(method) + "; it would be ignored)";
+    return false;
+  }
   return true;
 }
 
@@ -174,7 +190,9 @@ const std::vector<const char*> kMlNdtOnlyFlags = {"backend",
                                                   "loss",
                                                   "loss_scale",
                                                   "linear_solver",
-                                                  "trust_region"};
+                                                  "trust_region",
+                                                  "retry_yaw_seeds",
+                                                  "initial_uncertainty"};
 const std::vector<const char*> kNdtOnlyFlags = {"ndt_cell_size",
                                                 "ndt_outlier_ratio",
                                                 "ndt_neighbors",
@@ -199,8 +217,9 @@ bool ParseSchedule(LayerScheduleOptions* schedule) {
   return true;
 }
 
-// The verdict's flags: both methods are judged by the same check.
-void ParseQualityCheck(QualityCheckOptions* check) {
+// The verdict's flags: both methods are judged by the same check. The
+// thresholds are refused with --quality_check=false, which ignores them.
+bool ParseQualityCheck(QualityCheckOptions* check, std::string* error) {
   if (Given("quality_check")) check->enabled = FLAGS_quality_check;
   if (Given("min_inlier_fraction")) {
     check->min_inlier_fraction = FLAGS_min_inlier_fraction;
@@ -210,10 +229,23 @@ void ParseQualityCheck(QualityCheckOptions* check) {
   if (Given("min_constraint_ratio")) {
     check->min_constraint_ratio = FLAGS_min_constraint_ratio;
   }
+  if (check->enabled) return true;
+  for (const char* flag : {"min_inlier_fraction",
+                           "max_mean_score",
+                           "inlier_gate",
+                           "min_constraint_ratio"}) {
+    if (Given(flag)) {
+      *error = std::string("--") + flag +
+               " is a quality-check threshold; it is ignored with "
+               "--quality_check=false";
+      return false;
+    }
+  }
+  return true;
 }
 
 bool ParseTrust(RegistrationOptions* options, std::string* error) {
-  ParseQualityCheck(&options->quality_check);
+  if (!ParseQualityCheck(&options->quality_check, error)) return false;
   if (Given("retry_yaw_seeds") &&
       !ParseNumberList(FLAGS_retry_yaw_seeds, &options->retry.yaw_seeds_deg)) {
     *error = "--retry_yaw_seeds=" + FLAGS_retry_yaw_seeds +
@@ -259,6 +291,21 @@ bool ParseMlNdt(RegistrationOptions* options, std::string* error) {
     return false;
   }
   if (Given("loss_scale")) options->objective.loss_scale = FLAGS_loss_scale;
+  if (Given("loss_scale") && options->objective.loss == LossType::NONE) {
+    *error = "--loss_scale is ignored with --loss=none (no robust loss)";
+    return false;
+  }
+  if (options->backend.type != BackendType::CERES) {
+    for (const char* flag : {"linear_solver", "trust_region"}) {
+      if (Given(flag)) {
+        *error = std::string("--") + flag +
+                 " applies to --backend=ceres only (" + "the backend is " +
+                 BackendTypeToString(options->backend.type) +
+                 "; it would be ignored)";
+        return false;
+      }
+    }
+  }
   if (!ParseTrust(options, error) ||
       !ParseCeres(&options->backend.ceres, error) ||
       !ParseSampling(&options->sampling, error) ||
@@ -302,7 +349,7 @@ bool ParseNdt(NdtOptions* options, std::string* error) {
   options->outlier_ratio = FLAGS_ndt_outlier_ratio;
   options->max_iterations = FLAGS_ndt_max_iterations;
   options->max_step_norm = FLAGS_ndt_max_step;
-  ParseQualityCheck(&options->quality_check);
+  if (!ParseQualityCheck(&options->quality_check, error)) return false;
   options->step_tolerance = FLAGS_step_tolerance;
   options->num_threads = FLAGS_threads;
   ParseCells(&options->min_points_per_cell, &options->regularization);

@@ -8,6 +8,7 @@
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/tool_utils.h"
+#include "tools/common/verdict_counts.h"
 
 namespace mlndt {
 namespace tools {
@@ -37,7 +38,7 @@ bool WritePairsCsv(const std::string& path,
          "guess_deviation_m,guess_deviation_deg,guess_check_failed,running_"
          "fail_rate,"
          "est_tx_m,est_ty_m,est_tz_m,est_alpha_deg,est_beta_deg,est_gamma_"
-         "deg\n";
+         "deg,usable,estimate_source\n";
   for (const PairResult& r : results) {
     out << r.reference << "," << r.input << ","
         << CsvField(store.file_name(r.reference)) << ","
@@ -62,7 +63,10 @@ bool WritePairsCsv(const std::string& path,
     const Vector6d xi = IsometryToPoseVector(r.estimate);
     for (int k = 0; k < 6; ++k)
       out << "," << Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
-    out << "\n";
+    // An unusable result keeps its --init guess as its estimate: say so.
+    const bool usable = IsUsableTermination(r.termination);
+    out << "," << int(usable) << "," << (usable ? "registration" : "guess")
+        << "\n";
   }
   return WriteFileAtomically(path, out.str(), error);
 }
@@ -117,6 +121,24 @@ Json SummaryJson(const Json& header, const std::vector<PairResult>& results) {
   for (const auto& [layer, count] : start_layers) {
     layers[std::to_string(layer)] = count;
   }
+  VerdictCounts verdicts;
+  Json unusable = Json::array();
+  for (const PairResult& r : results) {
+    verdicts.Add(r.termination);
+    if (!IsUsableTermination(r.termination)) {
+      unusable.push_back(
+          {{"reference", r.reference},
+           {"input", r.input},
+           {"termination", TerminationTypeToString(r.termination)}});
+    }
+  }
+  o["terminations"] = verdicts.ToJson();
+  o["usable_pairs"] = verdicts.usable();
+  o["unusable_pairs"] = verdicts.unusable();
+  o["unusable_pair_list"] = unusable;
+  o["unusable_estimate"] =
+      "the pair's --init guess (pairs.csv estimate_source 'guess'), chained "
+      "into trajectory.txt in place of a registration";
   o["registration_failures"] = t.registration_failures;
   o["guess_check_failures"] = t.guess_check_failures;
   o["time_note"] = "per pair: pair = map + registration; p95 = nearest rank";
@@ -167,6 +189,12 @@ void PrintSequenceTotals(const SequenceOptions& options,
       t.time_ms.max,
       t.map_time_ms.mean,
       t.iterations.mean);
+  VerdictCounts verdicts;
+  for (const PairResult& r : results) verdicts.Add(r.termination);
+  std::printf("verdicts: %s; usable %zu of %zu\n",
+              verdicts.Line().c_str(),
+              verdicts.usable(),
+              verdicts.total());
   std::printf("output: %s\n", output_dir.c_str());
 }
 

@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "mlndt/common/rigid_transform.h"
 #include "mlndt/common/timer.h"
 
 namespace mlndt {
@@ -36,18 +37,13 @@ bool SampleInput(const RangeFilterOptions& range_filter,
     *error = "the initial guess is not finite";
     return false;
   }
-  const Eigen::Matrix3d r = initial_reference_from_input.linear();
-  const double orthogonality =
-      (r.transpose() * r - Eigen::Matrix3d::Identity()).norm();
-  const Eigen::RowVector4d last_row =
-      initial_reference_from_input.matrix().row(3);
-  if (orthogonality > 1e-6 || r.determinant() < 0.0 ||
-      (last_row - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-12) {
-    std::ostringstream message;
-    message << "the initial guess is not a rigid transform (|R^T R - I| = "
-            << orthogonality << ", det R = " << r.determinant()
-            << "): give a rotation, not a reflection or a scaled matrix";
-    *error = message.str();
+  // The one rigidity check (rigid_transform.h); the solver parameterises the
+  // guess by Eq. (11)'s angles, which re-orthonormalises what passes.
+  Isometry3d rigid;
+  std::string problem;
+  if (!ToRigidTransform(
+          initial_reference_from_input.matrix(), &rigid, &problem)) {
+    *error = "the initial guess is not a rigid transform: " + problem;
     return false;
   }
   const double t0 = NowSeconds();

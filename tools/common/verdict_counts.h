@@ -1,0 +1,42 @@
+#pragma once
+
+// Results counted by verdict, for the printed summaries and summary.json of
+// the tools that run many registrations (mlndt_localize, mlndt_sequence):
+// one count per TerminationType (CONVERGENCE, NO_CONVERGENCE, LOW_QUALITY,
+// DEGENERATE, FAILURE; every key always present) and the usable ones by the
+// library's one definition (IsUsableTermination, mlndt/common/types.h). A
+// tool exits 1 when unusable() > 0.
+
+#include <array>
+#include <cstddef>
+#include <string>
+
+#include "mlndt/common/types.h"
+#include "tools/common/json_output.h"
+
+namespace mlndt {
+namespace tools {
+
+class VerdictCounts {
+ public:
+  void Add(TerminationType type);
+
+  size_t count(TerminationType type) const;
+  size_t total() const { return total_; }
+  size_t usable() const { return usable_; }
+  size_t unusable() const { return total_ - usable_; }
+
+  // "CONVERGENCE 3, NO_CONVERGENCE 0, LOW_QUALITY 5, DEGENERATE 0,
+  // FAILURE 0".
+  std::string Line() const;
+  // {"CONVERGENCE": 3, ..., "FAILURE": 0}, every verdict a key.
+  Json ToJson() const;
+
+ private:
+  std::array<size_t, 5> counts_{};
+  size_t total_ = 0;
+  size_t usable_ = 0;
+};
+
+}  // namespace tools
+}  // namespace mlndt
