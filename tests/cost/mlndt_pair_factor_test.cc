@@ -142,6 +142,36 @@ INSTANTIATE_TEST_SUITE_P(Losses,
                                            LossType::HUBER,
                                            LossType::CAUCHY));
 
+TEST(PairResidualOptions, InformationScaleScalesCostGradientAndInformation) {
+  for (const bool one_block : {false, true}) {
+    SCOPED_TRACE(one_block ? "one block" : "per point");
+    PairResidualOptions unit;
+    unit.one_block_per_pair = one_block;
+    unit.information_scale = 1.0;
+    PairResidualOptions weighted = unit;
+    weighted.information_scale = 0.055;
+    const Evaluation a = Evaluate(unit, Poses());
+    const Evaluation b = Evaluate(weighted, Poses());
+    EXPECT_NEAR(b.cost, 0.055 * a.cost, 1e-9 * a.cost);
+    EXPECT_LT((b.gradient - 0.055 * a.gradient).norm(),
+              1e-8 * a.gradient.norm());
+    EXPECT_LT((b.gauss_newton - 0.055 * a.gauss_newton).norm(),
+              1e-8 * a.gauss_newton.norm());
+  }
+  // The default is the calibrated scale; bad scales are refused by name.
+  EXPECT_EQ(PairResidualOptions().information_scale,
+            kCalibratedPairInformationScale);
+  std::string error;
+  PairResidualOptions bad;
+  bad.information_scale = 0.0;
+  EXPECT_FALSE(bad.IsValid(&error));
+  EXPECT_NE(error.find("information_scale"), std::string::npos) << error;
+  bad.information_scale = 1.0;
+  bad.objective.loss_scale = -1.0;
+  EXPECT_FALSE(bad.IsValid(&error));
+  EXPECT_NE(error.find("objective: "), std::string::npos) << error;
+}
+
 TEST(MlNdtPairFactor, SolvesToThePointBlocksSolution) {
   Poses start;
   Isometry3d solutions[2];
