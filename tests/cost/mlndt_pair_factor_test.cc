@@ -15,6 +15,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/registration/registration.h"
 #include "mlndt/sampling/point_sampler.h"
 #include "tests/testing/test_data.h"
 
@@ -170,6 +171,74 @@ TEST(PairResidualOptions, InformationScaleScalesCostGradientAndInformation) {
   bad.objective.loss_scale = -1.0;
   EXPECT_FALSE(bad.IsValid(&error));
   EXPECT_NE(error.find("objective: "), std::string::npos) << error;
+}
+
+// The weighted pair's covariance (ceres::Covariance of the one-block
+// problem, mapped to the pose vector xi) is Register's covariance for the
+// same pair divided by w: what docs/embedding.md calibrates w on.
+TEST(MlNdtPairFactor, CovarianceIsRegistersOverTheInformationScale) {
+  PointCloud scan1;
+  std::string error;
+  ASSERT_TRUE(ReadPointCloud(testing::BundledDataPath("kitti/pcd/000001.pcd"),
+                             &scan1,
+                             nullptr,
+                             &error))
+      << error;
+  RegistrationSummary summary;
+  Register(RegistrationOptions(),
+           Pair().map,
+           scan1,
+           Isometry3d::Identity(),
+           &summary);
+  ASSERT_TRUE(summary.IsSolutionUsable()) << summary.message;
+  double q0[4] = {0, 0, 0, 1}, t0[3] = {0, 0, 0}, q1[4], t1[3];
+  const Eigen::Quaterniond rotation(summary.reference_from_input.linear());
+  for (int k = 0; k < 4; ++k) q1[k] = rotation.coeffs()[k];
+  for (int k = 0; k < 3; ++k)
+    t1[k] = summary.reference_from_input.translation()[k];
+  PairResidualOptions options;
+  options.one_block_per_pair = true;
+  ceres::Problem problem;
+  const LayeredGrid& map = Pair().map;
+  AddMlNdtPairResiduals(map.layer(map.num_layers()),
+                        Pair().samples,
+                        options,
+                        q0,
+                        t0,
+                        q1,
+                        t1,
+                        &problem);
+  problem.SetParameterBlockConstant(q0);
+  problem.SetParameterBlockConstant(t0);
+  ceres::Covariance covariance{ceres::Covariance::Options()};
+  ASSERT_TRUE(covariance.Compute({{q1, q1}, {q1, t1}, {t1, t1}}, &problem));
+  Eigen::Matrix<double, 6, 6, Eigen::RowMajor> tangent;
+  ASSERT_TRUE(
+      covariance.GetCovarianceMatrixInTangentSpace({q1, t1}, tangent.data()));
+  // d xi / d (rotation tangent, translation), central differences through
+  // the quaternion manifold's Plus.
+  const ceres::EigenQuaternionManifold manifold;
+  const auto xi_at = [&](const Vector6d& delta) {
+    double q[4];
+    manifold.Plus(q1, delta.data(), q);
+    Isometry3d pose = Isometry3d::Identity();
+    pose.linear() = Eigen::Map<Eigen::Quaterniond>(q).toRotationMatrix();
+    pose.translation() = Eigen::Map<Eigen::Vector3d>(t1) + delta.tail<3>();
+    return IsometryToPoseVector(pose);
+  };
+  Matrix6d jacobian;
+  for (int c = 0; c < 6; ++c) {
+    Vector6d h = Vector6d::Zero();
+    h(c) = 1e-6;
+    jacobian.col(c) = (xi_at(h) - xi_at(-h)) / 2e-6;
+  }
+  const Matrix6d pair_covariance =
+      jacobian * Matrix6d(tangent) * jacobian.transpose();
+  const Matrix6d expected = summary.covariance / options.information_scale;
+  EXPECT_LT((pair_covariance - expected).norm(), 1e-3 * expected.norm())
+      << "pair:\n"
+      << pair_covariance << "\nRegister / w:\n"
+      << expected;
 }
 
 TEST(MlNdtPairFactor, SolvesToThePointBlocksSolution) {
