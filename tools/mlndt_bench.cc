@@ -1,6 +1,11 @@
 // mlndt_bench: times solver choices on real scan pairs with references and
 // reports speed and accuracy per configuration.
 //
+//   mlndt_bench [--data_dir=FOLDER_WITH_reference_pairs.json]
+//               [--starts=identity,prior,offsets] [--offsets=...]
+//               [--max_pairs=N] [--minimizers=trust_region,bfgs,lbfgs]
+//               [--jacobians=autodiff,analytic] [--losses=none,huber,cauchy]
+//               [--loss_scales=1.5] [--output_plot=FILE.png]
 //   mlndt_bench [--pairs=koide3,kitti] [--defaults=current]
 //               [--backends=ceres,newton,lm]
 //   [--samplings=gbs]
@@ -10,15 +15,28 @@
 //               [--repetitions=5]
 //               [--compare_pcl] [--output_csv=FILE]
 //
-// Pairs: koide3 (the bundled Velodyne pair) and kitti (frame gaps of the
-// bundled KITTI frames), see tools/common/bench_pairs.h.
-// Every registration starts from the identity.
+// Pairs: the pairs of any folder with a reference_pairs.json (--data_dir),
+// else koide3 (the bundled Velodyne pair) and kitti (frame gaps of the
+// bundled KITTI frames), each from every start of --starts; see
+// tools/common/bench_pairs.h. Rows group the pairs by set and start kind.
 //
 // The grid is defaults x backends x samplings (x GBS cell sizes for gbs) x
-// start layers x threads, and for the Ceres backend also x linear solvers x
-// trust regions. Each repetition round runs every configuration once on every
-// pair, alternating configurations pair by pair and rotating their order from
-// round to round, so that machine noise hits all configurations alike. With
+// start layers x losses x loss scales x threads, and for the Ceres backend
+// also x minimizers (trust region, or line search with BFGS or LBFGS
+// directions) x Jacobians (auto-diff, or the analytic
+// mlndt_point_cost_analytic.h of the same residual) x, for the trust
+// region, linear solvers x trust-region strategies.
+//
+// nees: per usable run e^T P^-1 e, e the pose-vector difference estimate -
+// reference, P = RegistrationSummary::covariance (lab/eval/nees.h; 6 when P
+// is consistent with the errors against the references); its mean and
+// median per row. --output_plot writes FILE (PNG), FILE.dat and FILE.gp:
+// per set, median time against mean translation error, one point per
+// configuration, the Pareto front (no other configuration both faster and
+// more accurate) joined and labelled. Each repetition round runs every
+// configuration once on every pair, alternating configurations pair by pair and
+// rotating their order from round to round, so that machine noise hits all
+// configurations alike. With
 // --compare_pcl (built with -DMLNDT_WITH_PCL=ON)
 // pcl::NormalDistributionsTransform takes part in the same rotation: a 0.1 m
 // VoxelGrid on both clouds and 1.0 m cells as its peers (PEERS.md 1a), at most
@@ -50,6 +68,7 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/nees.h"
 #include "lab/eval/statistics.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
@@ -59,7 +78,9 @@
 #include "mlndt/registration/registration.h"
 #include "tools/common/bench_configurations.h"
 #include "tools/common/bench_pairs.h"
+#include "tools/common/bench_plot.h"
 #include "tools/common/bench_report.h"
+#include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/output_files.h"
@@ -73,8 +94,28 @@
 #endif
 
 // clang-format off
-DEFINE_string(pairs, "koide3,kitti", "Comma-separated sets of pairs: koide3, kitti");
-DEFINE_string(data_dir, MLNDT_DATA_DIR, "Folder with koide3/ and kitti/ (the repository's data/)");
+DEFINE_string(pairs, "koide3,kitti",
+              "Comma-separated bundled sets of pairs: koide3, kitti (when --data_dir has no "
+              "reference_pairs.json)");
+DEFINE_string(data_dir, MLNDT_DATA_DIR,
+              "A data set folder with reference_pairs.json (scans in it or its pcd/), or a "
+              "folder with koide3/ and kitti/ (the repository's data/)");
+DEFINE_string(starts, "identity", "Comma-separated starts: identity, prior, offsets");
+DEFINE_string(offsets, "x:0.5,2;yaw:10,30",
+              "--starts=offsets: ';'-separated families AXES:values of the reference pushed "
+              "off (x, y, z [m], roll, pitch, yaw [deg]; mlndt_suite's syntax)");
+DEFINE_int32(max_pairs, 0, "At most this many pairs per folder, smallest steps first; 0: all");
+DEFINE_string(minimizers, "trust_region",
+              "Comma-separated Ceres minimizers (ceres backend only): trust_region, bfgs, lbfgs "
+              "(line search)");
+DEFINE_string(jacobians, "autodiff",
+              "Comma-separated Ceres Jacobians (ceres backend only): autodiff, analytic");
+DEFINE_string(losses, "cauchy", "Comma-separated robust losses: none, huber, cauchy");
+DEFINE_string(loss_scales, "1.5", "Comma-separated loss scales (Mahalanobis distance)");
+DEFINE_string(output_plot, "",
+              "Write a PNG of time against error per configuration (Pareto front marked), with "
+              "FILE.dat and FILE.gp beside it");
+DEFINE_string(gnuplot, "gnuplot", "The gnuplot program for --output_plot");
 DEFINE_string(kitti_gaps, "1", "Comma-separated frame gaps of the kitti pairs: i+gap onto i");
 DEFINE_string(defaults, "current",
               "Comma-separated defaults the configurations start from: current "
@@ -146,11 +187,20 @@ BenchRun Evaluate(const Isometry3d& truth,
 
 BenchRun RunMlndt(const RegistrationOptions& options, const ScanPair& pair) {
   RegistrationSummary summary;
-  Register(
-      options, pair.reference, pair.input, Isometry3d::Identity(), &summary);
+  Register(options,
+           *pair.reference,
+           *pair.input,
+           pair.initial_reference_from_input,
+           &summary);
   BenchRun r = Evaluate(pair.reference_from_input_truth,
                         summary.reference_from_input,
                         summary.IsSolutionUsable());
+  if (summary.IsSolutionUsable() && summary.covariance.allFinite() &&
+      summary.covariance.trace() > 0.0) {
+    const Vector6d e = IsometryToPoseVector(summary.reference_from_input) -
+                       IsometryToPoseVector(pair.reference_from_input_truth);
+    r.nees = Nees(e, summary.covariance);
+  }
   r.time_ms = summary.total_time_s * 1e3;
   r.iterations = summary.num_iterations;
   r.score = summary.final_score;
@@ -259,7 +309,7 @@ void PrintPreamble(const std::vector<std::string>& sets,
   for (const std::string& set : sets) {
     size_t count = 0;
     for (const ScanPair& pair : pairs) count += pair.set == set;
-    std::cout << "  " << set << ": " << count << " pair(s)"
+    std::cout << "  " << set << ": " << count << " run(s) a round"
               << (set == "kitti" ? " (gaps " + FLAGS_kitti_gaps + ")" : "")
               << "\n";
   }
@@ -274,7 +324,9 @@ void PrintNotes(bool with_pcl, const std::vector<std::string>& notes) {
                "iteration cap\n"
             << "- iters, score, err_t, err_r: means over runs; score is Eq. "
                "(10) on the last "
-               "layer (mlndt only)\n";
+               "layer (mlndt only)\n"
+            << "- nees: e^T P^-1 e of the usable runs against the reference, "
+               "P = the registration covariance (6 if consistent)\n";
   if (with_pcl) {
     std::cout << "- pcl/ours: median over rounds of the per-round time ratio; "
                  "pcl_ndt is "
@@ -294,6 +346,7 @@ int Report(const std::vector<std::string>& sets,
   std::vector<std::vector<std::string>> table = {tools::BenchTableHeader()};
   if (csv != nullptr) *csv << tools::BenchCsvHeader();
   std::vector<std::string> notes;
+  std::vector<tools::BenchPlotPoint> plot;
   for (const std::string& set : sets) {
     std::vector<size_t> indices;
     for (size_t p = 0; p < pairs.size(); ++p) {
@@ -309,6 +362,10 @@ int Report(const std::vector<std::string>& sets,
           is_pcl ? tools::PclLabels(FLAGS_pcl_leaf_size)
                  : tools::ConfigurationLabels(configurations[m]);
       table.push_back(tools::BenchTableRow(set, labels, stats[m], pcl));
+      plot.push_back({set,
+                      tools::ShortLabel(labels),
+                      ComputeStats(stats[m].round_times_ms).median,
+                      stats[m].mean_translation_error_m});
       if (csv != nullptr)
         *csv << tools::BenchCsvRow(set, labels, stats[m], pcl) << "\n";
       if (is_pcl) {
@@ -328,6 +385,10 @@ int Report(const std::vector<std::string>& sets,
       !WriteFileAtomically(FLAGS_output_csv, csv->str(), &error)) {
     return Fail(error);
   }
+  if (!FLAGS_output_plot.empty() &&
+      !tools::WriteBenchPlot(FLAGS_gnuplot, FLAGS_output_plot, plot, &error)) {
+    return Fail(error);
+  }
   return tools::kExitOk;
 }
 
@@ -340,9 +401,7 @@ int Run() {
         "-DMLNDT_WITH_PCL=ON");
   }
 #endif
-  std::vector<std::string> sets;
   std::string error;
-  if (!tools::ParseBenchSets(FLAGS_pairs, &sets, &error)) return Refuse(error);
   const tools::BenchGridFlags grid{FLAGS_defaults,
                                    FLAGS_backends,
                                    FLAGS_samplings,
@@ -350,19 +409,35 @@ int Run() {
                                    FLAGS_start_layers,
                                    FLAGS_linear_solvers,
                                    FLAGS_trust_regions,
+                                   FLAGS_minimizers,
+                                   FLAGS_jacobians,
+                                   FLAGS_losses,
+                                   FLAGS_loss_scales,
                                    FLAGS_threads,
                                    FLAGS_seed};
   std::vector<tools::BenchConfiguration> configurations;
   if (!tools::ParseBenchConfigurations(grid, &configurations, &error))
     return Refuse(error);
+  if (!tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error) ||
+      !tools::CheckOutputFile("output_plot", FLAGS_output_plot, &error)) {
+    return Refuse(error);
+  }
+  if (!FLAGS_output_plot.empty() && !tools::GnuplotAvailable(FLAGS_gnuplot)) {
+    return Refuse("--output_plot: '" + FLAGS_gnuplot +
+                  "' does not run (install gnuplot or pass --gnuplot)");
+  }
+  tools::BenchPairsOptions pair_options;
+  pair_options.data_dir = FLAGS_data_dir;
+  pair_options.sets = FLAGS_pairs;
+  pair_options.kitti_gaps = FLAGS_kitti_gaps;
+  pair_options.starts = FLAGS_starts;
+  pair_options.offsets = FLAGS_offsets;
+  pair_options.max_pairs = FLAGS_max_pairs;
   std::vector<ScanPair> pairs;
-  if (!tools::LoadBenchPairs(
-          FLAGS_data_dir, sets, FLAGS_kitti_gaps, &pairs, &error)) {
+  if (!tools::LoadBenchPairs(pair_options, &pairs, &error)) {
     return Refuse(error);
   }
-  if (!tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
-    return Refuse(error);
-  }
+  const std::vector<std::string> sets = tools::BenchSets(pairs);
   std::ostringstream csv;
 
   // Methods: the configurations, then PCL (when compared).
@@ -374,7 +449,7 @@ int Run() {
   std::vector<PclPair> pcl_pairs;
   if (with_pcl) {
     for (const ScanPair& pair : pairs) {
-      pcl_pairs.push_back({ToPcl(pair.reference), ToPcl(pair.input)});
+      pcl_pairs.push_back({ToPcl(*pair.reference), ToPcl(*pair.input)});
     }
   }
 #endif

@@ -1,10 +1,13 @@
 #include "mlndt/cost/add_pair_residuals.h"
 
+#include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 #include <glog/logging.h>
 
 #include "mlndt/cost/internal/loss_for.h"
 #include "mlndt/cost/mlndt_pair_cost.h"
+#include "mlndt/cost/mlndt_pair_cost_analytic.h"
+#include "mlndt/cost/mlndt_pair_factor.h"
 
 namespace mlndt {
 namespace {
@@ -15,12 +18,59 @@ void SetQuaternionManifoldUnlessSet(double* rotation, ceres::Problem* problem) {
   }
 }
 
+// The loss of every block of one call: the objective's, scaled by w unless
+// w is 1 (nullptr when nothing will be added).
+ceres::LossFunction* PairLoss(const PairResidualOptions& options,
+                              const std::vector<Eigen::Vector3d>& points) {
+  ceres::LossFunction* loss = internal::LossFor(options.objective, points);
+  if (points.empty() || options.information_scale == 1.0) return loss;
+  return new ceres::ScaledLoss(
+      loss, options.information_scale, ceres::TAKE_OWNERSHIP);
+}
+
+// One block per point, all with one loss.
+void AddPointBlocks(LayerSource layer,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const PairResidualOptions& options,
+                    double* rotation_i,
+                    double* translation_i,
+                    double* rotation_j,
+                    double* translation_j,
+                    ceres::Problem* problem,
+                    std::vector<ceres::ResidualBlockId>* ids) {
+  ceres::LossFunction* loss = PairLoss(options, points);
+  const UnmatchedPolicy policy = options.objective.unmatched_policy;
+  ids->reserve(points.size());
+  for (const Eigen::Vector3d& point : points) {
+    ceres::CostFunction* cost =
+        options.analytic_jacobians
+            ? static_cast<ceres::CostFunction*>(
+                  new MlNdtPairCostAnalytic(layer, point, policy))
+            : MlNdtPairCost::Create(layer, point, policy);
+    ids->push_back(problem->AddResidualBlock(
+        cost, loss, rotation_i, translation_i, rotation_j, translation_j));
+  }
+}
+
 }  // namespace
 
+bool PairResidualOptions::IsValid(std::string* error) const {
+  if (!objective.IsValid(error)) {
+    *error = "objective: " + *error;
+    return false;
+  }
+  if (!(information_scale > 0.0 && information_scale <= 1e3)) {
+    *error = "information_scale must be in (0, 1e3], got " +
+             std::to_string(information_scale);
+    return false;
+  }
+  return true;
+}
+
 std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(
-    const NdtLayer& reference_layer_of_scan_i,
+    LayerSource reference_layer_of_scan_i,
     const std::vector<Eigen::Vector3d>& input_points_of_scan_j,
-    const ObjectiveOptions& objective,
+    const PairResidualOptions& options,
     double* world_from_scan_i_rotation,
     double* world_from_scan_i_translation,
     double* world_from_scan_j_rotation,
@@ -34,25 +84,56 @@ std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(
   CHECK(world_from_scan_i_rotation != world_from_scan_j_rotation &&
         world_from_scan_i_translation != world_from_scan_j_translation)
       << "AddMlNdtPairResiduals: scan i and scan j need their own pose blocks";
-  ceres::LossFunction* loss =
-      internal::LossFor(objective, input_points_of_scan_j);
+  std::string error;
+  CHECK(options.IsValid(&error)) << "AddMlNdtPairResiduals: " << error;
+  if (input_points_of_scan_j.empty()) return {};
   std::vector<ceres::ResidualBlockId> ids;
-  ids.reserve(input_points_of_scan_j.size());
-  for (const Eigen::Vector3d& point : input_points_of_scan_j) {
+  if (options.one_block_per_pair) {
     ids.push_back(problem->AddResidualBlock(
-        MlNdtPairCost::Create(
-            reference_layer_of_scan_i, point, objective.unmatched_policy),
-        loss,
+        new MlNdtPairFactor(reference_layer_of_scan_i,
+                            input_points_of_scan_j,
+                            options.objective,
+                            options.information_scale),
+        nullptr,
         world_from_scan_i_rotation,
         world_from_scan_i_translation,
         world_from_scan_j_rotation,
         world_from_scan_j_translation));
+  } else {
+    AddPointBlocks(reference_layer_of_scan_i,
+                   input_points_of_scan_j,
+                   options,
+                   world_from_scan_i_rotation,
+                   world_from_scan_i_translation,
+                   world_from_scan_j_rotation,
+                   world_from_scan_j_translation,
+                   problem,
+                   &ids);
   }
-  if (!input_points_of_scan_j.empty()) {
-    SetQuaternionManifoldUnlessSet(world_from_scan_i_rotation, problem);
-    SetQuaternionManifoldUnlessSet(world_from_scan_j_rotation, problem);
-  }
+  SetQuaternionManifoldUnlessSet(world_from_scan_i_rotation, problem);
+  SetQuaternionManifoldUnlessSet(world_from_scan_j_rotation, problem);
   return ids;
+}
+
+std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(
+    LayerSource reference_layer_of_scan_i,
+    const std::vector<Eigen::Vector3d>& input_points_of_scan_j,
+    const ObjectiveOptions& objective,
+    double* world_from_scan_i_rotation,
+    double* world_from_scan_i_translation,
+    double* world_from_scan_j_rotation,
+    double* world_from_scan_j_translation,
+    ceres::Problem* problem) {
+  PairResidualOptions options;
+  options.objective = objective;
+  return AddMlNdtPairResiduals(reference_layer_of_scan_i,
+                               input_points_of_scan_j,
+                               options,
+                               world_from_scan_i_rotation,
+                               world_from_scan_i_translation,
+                               world_from_scan_j_rotation,
+                               world_from_scan_j_translation,
+                               problem);
 }
 
 }  // namespace mlndt

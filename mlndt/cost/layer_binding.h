@@ -22,12 +22,20 @@ class LayerBinding {
   LayerBinding(const LayerBinding&) = delete;
   LayerBinding& operator=(const LayerBinding&) = delete;
 
-  void Rebind(const NdtLayer& layer) { layer_ = &layer; }
-  void Rebind(NdtLayer&&) = delete;
+  // `point_stride`: consumers that can thin their points (MlNdtPairFactor)
+  // use every point_stride-th on this layer, as Register does on coarse
+  // layers (layer_scheduler.h); per-point cost functions ignore it. >= 1.
+  void Rebind(const NdtLayer& layer, int point_stride = 1) {
+    layer_ = &layer;
+    point_stride_ = point_stride < 1 ? 1 : point_stride;
+  }
+  void Rebind(NdtLayer&&, int = 1) = delete;
   const NdtLayer& layer() const { return *layer_; }
+  int point_stride() const { return point_stride_; }
 
  private:
   const NdtLayer* layer_;
+  int point_stride_ = 1;
 };
 
 // Where a cost functor finds its layer: fixed, or through a binding. Converts
@@ -41,6 +49,10 @@ class LayerSource {
 
   const NdtLayer& layer() const {
     return binding_ != nullptr ? binding_->layer() : *layer_;
+  }
+  // The binding's point stride; 1 for a fixed layer.
+  int point_stride() const {
+    return binding_ != nullptr ? binding_->point_stride() : 1;
   }
 
  private:

@@ -18,8 +18,12 @@
 // pose j. The cell lookup (scalar part of the Jet) and the unmatched-point
 // rule are those of WhitenedCellResidual (mlndt_point_cost.h).
 //
-// Lifetime: the functor keeps a reference to the NdtLayer, which must
-// outlive every ceres::Problem that uses it.
+// The layer is fixed at construction, or read through a LayerBinding at every
+// evaluation (layer_binding.h): one set of residual blocks per pair then
+// serves every layer of the schedule (schedule/problem_schedule.h).
+//
+// Lifetime: the functor keeps a pointer to the NdtLayer (or the binding),
+// which must outlive every ceres::Problem that uses it.
 
 #include <ceres/autodiff_cost_function.h>
 #include <ceres/cost_function.h>
@@ -28,6 +32,7 @@
 #include <Eigen/Geometry>
 
 #include "mlndt/cost/cell_match.h"
+#include "mlndt/cost/layer_binding.h"
 #include "mlndt/cost/mlndt_point_cost.h"
 #include "mlndt/grid/ndt_layer.h"
 
@@ -35,9 +40,9 @@ namespace mlndt {
 
 class MlNdtPairCost {
  public:
-  // `layer`: a layer of scan i's map; `input_point`: a point of scan j, in
-  // scan j's frame [m].
-  MlNdtPairCost(const NdtLayer& layer,
+  // `layer`: a layer of scan i's map (or a binding to one); `input_point`: a
+  // point of scan j, in scan j's frame [m].
+  MlNdtPairCost(LayerSource layer,
                 const Eigen::Vector3d& input_point,
                 UnmatchedPolicy policy)
       : layer_(layer), input_point_(input_point), policy_(policy) {}
@@ -56,11 +61,11 @@ class MlNdtPairCost {
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t_j(translation_j);
     const Eigen::Matrix<T, 3, 1> world = q_j * input_point_.cast<T>() + t_j;
     const Eigen::Matrix<T, 3, 1> in_scan_i = q_i.conjugate() * (world - t_i);
-    WhitenedCellResidual(layer_, policy_, in_scan_i, residual);
+    WhitenedCellResidual(layer_.layer(), policy_, in_scan_i, residual);
     return true;
   }
 
-  static ceres::CostFunction* Create(const NdtLayer& layer,
+  static ceres::CostFunction* Create(LayerSource layer,
                                      const Eigen::Vector3d& input_point,
                                      UnmatchedPolicy policy) {
     return new ceres::AutoDiffCostFunction<MlNdtPairCost, 3, 4, 3, 4, 3>(
@@ -68,7 +73,7 @@ class MlNdtPairCost {
   }
 
  private:
-  const NdtLayer& layer_;
+  const LayerSource layer_;
   const Eigen::Vector3d input_point_;
   const UnmatchedPolicy policy_;
 };

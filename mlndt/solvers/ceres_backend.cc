@@ -7,6 +7,7 @@
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/layer_binding.h"
 #include "mlndt/cost/mlndt_point_cost.h"
+#include "mlndt/cost/mlndt_point_cost_analytic.h"
 
 namespace mlndt {
 
@@ -14,8 +15,13 @@ namespace mlndt {
 // stage's layer.
 class CeresBackend::CostPool {
  public:
-  CostPool(const std::vector<Eigen::Vector3d>& points, UnmatchedPolicy policy)
-      : points_(points), policy_(policy), costs_(points.size()) {}
+  CostPool(const std::vector<Eigen::Vector3d>& points,
+           UnmatchedPolicy policy,
+           bool analytic)
+      : points_(points),
+        policy_(policy),
+        analytic_(analytic),
+        costs_(points.size()) {}
 
   size_t size() const { return points_.size(); }
 
@@ -30,7 +36,11 @@ class CeresBackend::CostPool {
 
   ceres::CostFunction* Get(size_t i) {
     if (costs_[i] == nullptr) {
-      costs_[i].reset(MlNdtPointCost::Create(*binding_, points_[i], policy_));
+      costs_[i].reset(
+          analytic_
+              ? static_cast<ceres::CostFunction*>(
+                    new MlNdtPointCostAnalytic(*binding_, points_[i], policy_))
+              : MlNdtPointCost::Create(*binding_, points_[i], policy_));
     }
     return costs_[i].get();
   }
@@ -38,6 +48,7 @@ class CeresBackend::CostPool {
  private:
   const std::vector<Eigen::Vector3d>& points_;
   const UnmatchedPolicy policy_;
+  const bool analytic_;
   std::unique_ptr<LayerBinding> binding_;
   std::vector<std::unique_ptr<ceres::CostFunction>> costs_;
 };
@@ -85,6 +96,8 @@ bool CeresBackendOptions::IsValid(std::string* error) const {
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = linear_solver_type;
   solver_options.trust_region_strategy_type = trust_region_strategy_type;
+  solver_options.minimizer_type = minimizer_type;
+  solver_options.line_search_direction_type = line_search_direction_type;
   if (!solver_options.IsValid(error)) {
     *error = "invalid Ceres options: " + *error;
     return false;
@@ -101,7 +114,8 @@ void CeresBackend::SetProblem(const std::vector<Eigen::Vector3d>& input_points,
                               int num_threads) {
   objective_ = objective;
   num_threads_ = num_threads;
-  pool_ = std::make_unique<CostPool>(input_points, objective.unmatched_policy);
+  pool_ = std::make_unique<CostPool>(
+      input_points, objective.unmatched_policy, options_.analytic_jacobians);
 }
 
 void CeresBackend::SolveStage(const NdtLayer& layer,
@@ -135,6 +149,9 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   solver_options.linear_solver_type = options_.linear_solver_type;
   solver_options.trust_region_strategy_type =
       options_.trust_region_strategy_type;
+  solver_options.minimizer_type = options_.minimizer_type;
+  solver_options.line_search_direction_type =
+      options_.line_search_direction_type;
   solver_options.num_threads = num_threads_;
   solver_options.max_num_iterations = control.max_iterations;
   solver_options.minimizer_progress_to_stdout = false;

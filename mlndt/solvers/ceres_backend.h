@@ -26,6 +26,14 @@ struct CeresBackendOptions {
   ceres::LinearSolverType linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   ceres::TrustRegionStrategyType trust_region_strategy_type =
       ceres::LEVENBERG_MARQUARDT;
+  // LINE_SEARCH minimises without the linear solver (Ceres' BFGS or LBFGS
+  // directions, line_search_direction_type); the trust-region fields then
+  // do not apply.
+  ceres::MinimizerType minimizer_type = ceres::TRUST_REGION;
+  ceres::LineSearchDirectionType line_search_direction_type = ceres::LBFGS;
+  // Hand-written Jacobians (mlndt_point_cost_analytic.h) instead of
+  // auto-diff of the same residual.
+  bool analytic_jacobians = false;
 
   // Ceres checks the combination (e.g. a sparse solver without a sparse
   // library, DOGLEG with an iterative solver).

@@ -1,4 +1,5 @@
-// Tests of MlNdtPairCost (mlndt_pair_cost.h) and AddMlNdtPairResiduals
+// Tests of MlNdtPairCost (mlndt_pair_cost.h), MlNdtPairCostAnalytic
+// (mlndt_pair_cost_analytic.h) and AddMlNdtPairResiduals
 // (add_pair_residuals.h).
 
 #include "mlndt/cost/mlndt_pair_cost.h"
@@ -9,12 +10,14 @@
 #include <ceres/numeric_diff_options.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "mlndt/cost/add_pair_residuals.h"
+#include "mlndt/cost/mlndt_pair_cost_analytic.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
@@ -188,6 +191,69 @@ TEST(MlNdtPairCost, GradientCheckerAgreesWithQuaternionManifolds) {
         cell->whitening * pose_i.rotation.toRotationMatrix().transpose();
     EXPECT_TRUE(EigenNear(results.jacobians[3], w_rt, 1e-10));
     EXPECT_TRUE(EigenNear(results.jacobians[1], Matrix3d(-w_rt), 1e-10));
+  }
+}
+
+TEST(MlNdtPairCostAnalytic, EqualsAutoDiffResidualAndAmbientJacobians) {
+  const HandLayer hand;
+  const Pose pose_i = PoseI();
+  // A quaternion off the unit sphere too: both extend Eigen's product the
+  // same way, so even the ambient Jacobians agree there.
+  Pose pose_j_off = PoseJ();
+  pose_j_off.rotation.coeffs() *= 1.03;
+  // In A, in B, next to A (NEAREST_CELL), and outside every cell.
+  for (const bool on_sphere : {true, false}) {
+    const Pose pose_j = on_sphere ? PoseJ() : pose_j_off;
+    for (const auto& [target, policy] :
+         {std::make_pair(Vector3d(2.8, 3.3, 1.1),
+                         UnmatchedPolicy::ZERO_RESIDUAL),
+          std::make_pair(Vector3d(6.5, 2.4, 3.6),
+                         UnmatchedPolicy::ZERO_RESIDUAL),
+          std::make_pair(Vector3d(4.6, 3.0, 1.0),
+                         UnmatchedPolicy::NEAREST_CELL),
+          std::make_pair(Vector3d(4.6, 3.0, 1.0),
+                         UnmatchedPolicy::ZERO_RESIDUAL)}) {
+      SCOPED_TRACE(UnmatchedPolicyToString(policy));
+      const Vector3d p = InputPointFor(pose_i, PoseJ(), target);
+      std::unique_ptr<ceres::CostFunction> autodiff(
+          MlNdtPairCost::Create(hand.layer, p, policy));
+      const MlNdtPairCostAnalytic analytic(hand.layer, p, policy);
+      ASSERT_EQ(analytic.parameter_block_sizes(),
+                autodiff->parameter_block_sizes());
+      const double* parameters[] = {pose_i.rotation.coeffs().data(),
+                                    pose_i.translation.data(),
+                                    pose_j.rotation.coeffs().data(),
+                                    pose_j.translation.data()};
+      const int sizes[] = {4, 3, 4, 3};
+      std::vector<std::vector<double>> expected(4), actual(4);
+      double* expected_ptrs[4];
+      double* actual_ptrs[4];
+      for (int b = 0; b < 4; ++b) {
+        expected[b].assign(3 * sizes[b], kNaN);
+        actual[b].assign(3 * sizes[b], kNaN);
+        expected_ptrs[b] = expected[b].data();
+        actual_ptrs[b] = actual[b].data();
+      }
+      Vector3d r_expected = Vector3d::Constant(kNaN);
+      Vector3d r_actual = Vector3d::Constant(kNaN);
+      ASSERT_TRUE(
+          autodiff->Evaluate(parameters, r_expected.data(), expected_ptrs));
+      ASSERT_TRUE(analytic.Evaluate(parameters, r_actual.data(), actual_ptrs));
+      EXPECT_TRUE(EigenNear(r_actual, r_expected, 1e-12));
+      double jacobian_norm = 0.0;
+      for (int b = 0; b < 4; ++b) {
+        for (size_t k = 0; k < expected[b].size(); ++k) {
+          EXPECT_NEAR(actual[b][k], expected[b][k], 1e-10)
+              << "block " << b << " entry " << k;
+          jacobian_norm += std::abs(expected[b][k]);
+        }
+      }
+      // On the sphere the targets are where they say: only the point
+      // outside every cell under ZERO_RESIDUAL has zero Jacobians.
+      const bool unmatched =
+          target.x() == 4.6 && policy == UnmatchedPolicy::ZERO_RESIDUAL;
+      if (on_sphere) EXPECT_EQ(jacobian_norm == 0.0, unmatched);
+    }
   }
 }
 

@@ -39,12 +39,12 @@ ToolRun RunBench(const std::string& args) {
 
 const char kCsvHeader[] =
     "pairs,defaults,method,backend,sampling,start_layer,linear_solver,trust_"
-    "region,"
+    "region,minimizer,jacobians,loss,"
     "threads,runs,"
     "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_score,"
     "mean_translation_error_m,max_translation_error_m,mean_rotation_error_deg,"
-    "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_ms,pcl_"
-    "over_ours";
+    "max_rotation_error_deg,converged_rate,success_rate,nees_mean,nees_median,"
+    "pcl_time_median_ms,pcl_over_ours";
 
 TEST(MlndtBench, NewtonAndLmOnTheKoide3Pair) {
   const std::string csv_path = TempPath("koide3.csv");
@@ -141,6 +141,81 @@ TEST(MlndtBench, CurrentAndPreviousDefaultsOnTheKoide3Pair) {
   }
 }
 
+// The CSV's rows by column name.
+std::vector<std::map<std::string, std::string>> CsvRows(
+    const std::string& path) {
+  const std::vector<std::string> lines = Split(ReadFile(path), '\n');
+  std::vector<std::map<std::string, std::string>> rows;
+  if (lines.empty()) return rows;
+  const std::vector<std::string> names = Split(lines[0], ',');
+  for (size_t r = 1; r < lines.size(); ++r) {
+    if (lines[r].empty()) continue;
+    const std::vector<std::string> values = Split(lines[r], ',');
+    EXPECT_EQ(values.size(), names.size()) << lines[r];
+    std::map<std::string, std::string> row;
+    for (size_t c = 0; c < names.size() && c < values.size(); ++c)
+      row[names[c]] = values[c];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Any folder with a reference_pairs.json (here data/kitti) from its priors
+// and an offset, with the Jacobian and loss axes, the CSV and the plot.
+TEST(MlndtBench, AnyFolderFromPriorsAndOffsetsWithNewAxes) {
+  const std::string csv_path = TempPath("folder.csv");
+  const std::string png_path = TempPath("folder.png");
+  for (const std::string& f : {csv_path, png_path, png_path + ".dat"})
+    std::remove(f.c_str());
+  const ToolRun run = RunBench(
+      "--data_dir=" + Quote(testing::BundledDataPath("kitti")) +
+      " --starts=prior,offsets --offsets=x:1 --max_pairs=2 --repetitions=1 "
+      "--warmup=false --backends=ceres --jacobians=autodiff,analytic "
+      "--losses=none,cauchy --output_csv=" +
+      Quote(csv_path) + " --output_plot=" + Quote(png_path));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto rows = CsvRows(csv_path);
+  // 2 sets (kitti/prior, kitti/offsets) x 2 Jacobians x 2 losses.
+  ASSERT_EQ(rows.size(), 8u);
+  std::map<std::string, double> error;  // By set, loss and Jacobians.
+  for (const auto& row : rows) {
+    const std::string set = row.at("pairs");
+    EXPECT_TRUE(set == "kitti/prior" || set == "kitti/offsets") << set;
+    EXPECT_EQ(row.at("runs"), "2") << set;
+    EXPECT_EQ(row.at("minimizer"), "trust_region");
+    // Consistent covariances give 6; these are optimistic, never below 1.
+    EXPECT_GT(ToNumber(row.at("nees_mean")), 1.0) << set;
+    error[set + row.at("loss") + row.at("jacobians")] =
+        ToNumber(row.at("mean_translation_error_m"));
+    if (row.at("loss") == "cauchy@1.5") {
+      EXPECT_EQ(ToNumber(row.at("success_rate")), 1.0) << set;
+      EXPECT_LT(ToNumber(row.at("mean_translation_error_m")), 0.05) << set;
+    }
+  }
+  for (const std::string set : {"kitti/prior", "kitti/offsets"}) {
+    for (const std::string loss : {"none", "cauchy@1.5"}) {
+      // The same residual differentiated two ways: the same answers.
+      EXPECT_NEAR(
+          error[set + loss + "analytic"], error[set + loss + "autodiff"], 1e-4)
+          << set << " " << loss;
+    }
+    // Without a loss the nearest-cell residuals of the far points pull the
+    // pose off (22 cm here): the loss axis measures something.
+    EXPECT_GT(error[set + "noneautodiff"],
+              2.0 * error[set + "cauchy@1.5autodiff"])
+        << set;
+  }
+  // The plot: a PNG and its data, one Pareto point at least per set.
+  std::ifstream png(png_path, std::ios::binary);
+  char magic[4] = {};
+  png.read(magic, 4);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+  const std::string data = ReadFile(png_path + ".dat");
+  EXPECT_NE(data.find("# kitti/prior"), std::string::npos) << data;
+  EXPECT_NE(data.find("# kitti/offsets"), std::string::npos) << data;
+  EXPECT_NE(data.find(" 1 \""), std::string::npos) << data;
+}
+
 TEST(MlndtBench, UnknownBackendFails) {
   const ToolRun run =
       RunBench("--repetitions=1 --pairs=koide3 --backends=newton,foo");
@@ -164,6 +239,15 @@ TEST(MlndtBench, RejectsBadFlagValues) {
         "--linear_solvers=cholesky",
         "--trust_regions=newton",
         "--kitti_gaps=0",
+        "--starts=constant_velocity",
+        "--starts=offsets --offsets=q:1",
+        "--max_pairs=-1",
+        "--minimizers=newton",
+        "--jacobians=numeric",
+        "--losses=tukey",
+        "--loss_scales=x",
+        "--data_dir=/nonexistent",
+        "--pairs=koide3 --output_plot=/nonexistent/x.png",
         "--repetitions=0",
         "--pairs=koide3 --output_csv=/nonexistent/x.csv",
         "unexpected_argument"}) {

@@ -18,6 +18,13 @@ struct GridAxes {
   // (method, GBS cell size): one entry per GBS size, one for other methods.
   std::vector<std::pair<SamplingMethod, double>> samplings;
   std::vector<int> start_layers, threads;
+  // (minimizer, line-search direction); the direction is unused for
+  // TRUST_REGION.
+  std::vector<std::pair<ceres::MinimizerType, ceres::LineSearchDirectionType>>
+      minimizers;
+  std::vector<bool> analytic_jacobians;
+  std::vector<LossType> losses;
+  std::vector<double> loss_scales;
   std::vector<ceres::LinearSolverType> linear_solvers;
   std::vector<ceres::TrustRegionStrategyType> trust_regions;
 };
@@ -126,7 +133,74 @@ bool ParseCeresList(const std::string& text,
   return true;
 }
 
+bool ParseMinimizers(const std::string& text,
+                     GridAxes* axes,
+                     std::string* error) {
+  std::vector<std::string> items;
+  if (!SplitList(text, &items)) {
+    *error =
+        "--minimizers: expected a comma-separated list of trust_region, "
+        "bfgs, lbfgs";
+    return false;
+  }
+  for (const std::string& item : items) {
+    if (item == "trust_region") {
+      axes->minimizers.emplace_back(ceres::TRUST_REGION, ceres::LBFGS);
+    } else if (item == "bfgs") {
+      axes->minimizers.emplace_back(ceres::LINE_SEARCH, ceres::BFGS);
+    } else if (item == "lbfgs") {
+      axes->minimizers.emplace_back(ceres::LINE_SEARCH, ceres::LBFGS);
+    } else {
+      *error =
+          "--minimizers: '" + item + "' is not trust_region, bfgs or lbfgs";
+      return false;
+    }
+  }
+  return true;
+}
+
+// --jacobians, --losses and --loss_scales.
+bool ParseObjectiveAxes(const BenchGridFlags& flags,
+                        GridAxes* axes,
+                        std::string* error) {
+  std::vector<std::string> items;
+  if (!SplitList(flags.jacobians, &items)) {
+    *error =
+        "--jacobians: expected a comma-separated list of autodiff, analytic";
+    return false;
+  }
+  for (const std::string& item : items) {
+    if (item != "autodiff" && item != "analytic") {
+      *error = "--jacobians: '" + item + "' is not autodiff or analytic";
+      return false;
+    }
+    axes->analytic_jacobians.push_back(item == "analytic");
+  }
+  if (!SplitList(flags.losses, &items)) {
+    *error = "--losses: expected a comma-separated list of none, huber, cauchy";
+    return false;
+  }
+  for (const std::string& item : items) {
+    LossType loss;
+    if (!StringToLossType(item, &loss)) {
+      *error = "--losses: '" + item + "' is not none, huber or cauchy";
+      return false;
+    }
+    axes->losses.push_back(loss);
+  }
+  if (!ParseNumberList(flags.loss_scales, &axes->loss_scales) ||
+      axes->loss_scales.empty()) {
+    *error = "--loss_scales: expected comma-separated numbers";
+    return false;
+  }
+  return true;
+}
+
 bool ParseAxes(const BenchGridFlags& flags, GridAxes* axes, std::string* e) {
+  if (!ParseMinimizers(flags.minimizers, axes, e) ||
+      !ParseObjectiveAxes(flags, axes, e)) {
+    return false;
+  }
   if (!ParseDefaults(flags.defaults, &axes->defaults, e) ||
       !ParseBackends(flags.backends, &axes->backends, e) ||
       !ParseSamplings(flags, &axes->samplings, e)) {
@@ -156,6 +230,36 @@ bool ParseAxes(const BenchGridFlags& flags, GridAxes* axes, std::string* e) {
              e);
 }
 
+// The backend's solver choices: for Ceres every minimizer x Jacobians, the
+// trust-region minimizer also x linear solvers x trust regions; one for the
+// other backends.
+std::vector<BenchConfiguration> SolverChoices(const GridAxes& axes,
+                                              BackendType backend) {
+  BenchConfiguration c;
+  c.backend = backend;
+  if (backend != BackendType::CERES) return {c};
+  std::vector<BenchConfiguration> choices;
+  for (const auto& [minimizer, direction] : axes.minimizers) {
+    for (const bool analytic : axes.analytic_jacobians) {
+      c.minimizer = minimizer;
+      c.line_search_direction = direction;
+      c.analytic_jacobians = analytic;
+      if (minimizer == ceres::LINE_SEARCH) {
+        choices.push_back(c);
+        continue;
+      }
+      for (const auto solver : axes.linear_solvers) {
+        for (const auto region : axes.trust_regions) {
+          c.linear_solver = solver;
+          c.trust_region = region;
+          choices.push_back(c);
+        }
+      }
+    }
+  }
+  return choices;
+}
+
 }  // namespace
 
 const char* BenchDefaultsName(BenchDefaults defaults) {
@@ -177,6 +281,11 @@ RegistrationOptions BenchConfiguration::Options(uint64_t seed) const {
   options.schedule.start_layer = start_layer;
   options.backend.ceres.linear_solver_type = linear_solver;
   options.backend.ceres.trust_region_strategy_type = trust_region;
+  options.backend.ceres.minimizer_type = minimizer;
+  options.backend.ceres.line_search_direction_type = line_search_direction;
+  options.backend.ceres.analytic_jacobians = analytic_jacobians;
+  options.objective.loss = loss;
+  options.objective.loss_scale = loss_scale;
   options.num_threads = threads;
   return options;
 }
@@ -188,31 +297,32 @@ bool ParseBenchConfigurations(const BenchGridFlags& flags,
   if (!ParseAxes(flags, &axes, error)) return false;
   std::vector<BenchConfiguration> grid;  // With the current defaults.
   for (const BackendType backend : axes.backends) {
-    const bool ceres_backend = backend == BackendType::CERES;
-    const size_t num_solvers = ceres_backend ? axes.linear_solvers.size() : 1;
-    const size_t num_regions = ceres_backend ? axes.trust_regions.size() : 1;
-    for (const auto& [sampling, gbs_cell_size] : axes.samplings) {
-      for (const int start_layer : axes.start_layers) {
-        for (size_t s = 0; s < num_solvers; ++s) {
-          for (size_t t = 0; t < num_regions; ++t) {
-            for (const int thread_count : axes.threads) {
-              BenchConfiguration c;
-              c.backend = backend;
-              c.sampling = sampling;
-              c.gbs_cell_size_m = gbs_cell_size;
-              c.start_layer = start_layer;
-              if (ceres_backend) {
-                c.linear_solver = axes.linear_solvers[s];
-                c.trust_region = axes.trust_regions[t];
+    for (const BenchConfiguration& base : SolverChoices(axes, backend)) {
+      for (const auto& [sampling, gbs_cell_size] : axes.samplings) {
+        for (const int start_layer : axes.start_layers) {
+          for (const LossType loss : axes.losses) {
+            // A scale means nothing without a loss: one row.
+            const size_t num_scales =
+                loss == LossType::NONE ? 1 : axes.loss_scales.size();
+            for (size_t k = 0; k < num_scales; ++k) {
+              for (const int thread_count : axes.threads) {
+                BenchConfiguration c = base;
+                c.sampling = sampling;
+                c.gbs_cell_size_m = gbs_cell_size;
+                c.start_layer = start_layer;
+                c.loss = loss;
+                c.loss_scale = loss == LossType::NONE
+                                   ? ObjectiveOptions().loss_scale
+                                   : axes.loss_scales[k];
+                c.threads = thread_count;
+                if (!c.Options(flags.seed).IsValid(error)) {
+                  *error = std::string("invalid configuration (backend ") +
+                           BackendFlagName(backend) + ", threads " +
+                           std::to_string(thread_count) + "): " + *error;
+                  return false;
+                }
+                grid.push_back(c);
               }
-              c.threads = thread_count;
-              if (!c.Options(flags.seed).IsValid(error)) {
-                *error = std::string("invalid configuration (backend ") +
-                         BackendFlagName(backend) + ", threads " +
-                         std::to_string(thread_count) + "): " + *error;
-                return false;
-              }
-              grid.push_back(c);
             }
           }
         }
@@ -227,6 +337,12 @@ bool ParseBenchConfigurations(const BenchGridFlags& flags,
     }
   }
   return true;
+}
+
+std::string MinimizerFlagName(const BenchConfiguration& c) {
+  if (c.backend != BackendType::CERES) return "";
+  if (c.minimizer == ceres::TRUST_REGION) return "trust_region";
+  return c.line_search_direction == ceres::BFGS ? "bfgs" : "lbfgs";
 }
 
 std::string BackendFlagName(BackendType type) {

@@ -1,8 +1,10 @@
 #pragma once
 
 // The grid of registration configurations mlndt_bench times: defaults x
-// backends x samplings (x GBS cell sizes for gbs) x start layers x threads,
-// and for the Ceres backend also x linear solvers x trust regions.
+// backends x samplings (x GBS cell sizes for gbs) x start layers x losses x
+// loss scales x threads, and for the Ceres backend also x minimizers x
+// Jacobians x (for the trust-region minimizer) linear solvers x trust
+// regions.
 
 #include <ceres/types.h>
 
@@ -35,6 +37,12 @@ struct BenchConfiguration {
   int start_layer = 1;
   ceres::LinearSolverType linear_solver = ceres::DENSE_NORMAL_CHOLESKY;
   ceres::TrustRegionStrategyType trust_region = ceres::LEVENBERG_MARQUARDT;
+  // TRUST_REGION, or LINE_SEARCH with line_search_direction.
+  ceres::MinimizerType minimizer = ceres::TRUST_REGION;
+  ceres::LineSearchDirectionType line_search_direction = ceres::LBFGS;
+  bool analytic_jacobians = false;
+  LossType loss = ObjectiveOptions().loss;
+  double loss_scale = ObjectiveOptions().loss_scale;
   int threads = 1;
 
   // The `defaults` with this point's choices; sampling `seed`.
@@ -50,6 +58,10 @@ struct BenchGridFlags {
   std::string start_layers;
   std::string linear_solvers;  // Ceres linear solver types.
   std::string trust_regions;   // levenberg_marquardt, dogleg
+  std::string minimizers;      // trust_region, bfgs, lbfgs
+  std::string jacobians;       // autodiff, analytic
+  std::string losses;          // none, huber, cauchy
+  std::string loss_scales;     // Mahalanobis distances.
   std::string threads;
   uint64_t seed = 1;
 };
@@ -59,6 +71,9 @@ struct BenchGridFlags {
 bool ParseBenchConfigurations(const BenchGridFlags& flags,
                               std::vector<BenchConfiguration>* configurations,
                               std::string* error);
+
+// The flag spelling of a Ceres minimizer: trust_region, bfgs, lbfgs.
+std::string MinimizerFlagName(const BenchConfiguration& c);
 
 // The flag spelling of a backend: ceres, newton, lm.
 std::string BackendFlagName(BackendType type);

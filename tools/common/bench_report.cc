@@ -60,7 +60,7 @@ std::string CsvNumber(double v) {
 BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
                             const std::vector<size_t>& pair_indices) {
   BenchRowStats s;
-  std::vector<double> iterations, scores, translation, rotation;
+  std::vector<double> iterations, scores, translation, rotation, nees;
   for (const std::vector<BenchRun>& round : results) {
     std::vector<double> times, align;
     for (const size_t p : pair_indices) {
@@ -71,6 +71,7 @@ BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
       scores.push_back(r.score);
       translation.push_back(r.translation_error_m);
       rotation.push_back(r.rotation_error_deg);
+      if (std::isfinite(r.nees)) nees.push_back(r.nees);
       ++s.runs;
       s.converged += r.converged;
       s.successes += r.success;
@@ -84,6 +85,10 @@ BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
   s.max_translation_error_m =
       *std::max_element(translation.begin(), translation.end());
   s.mean_rotation_error_deg = Mean(rotation);
+  if (!nees.empty()) {
+    s.nees_mean = Mean(nees);
+    s.nees_median = Median(nees);
+  }
   s.max_rotation_error_deg =
       *std::max_element(rotation.begin(), rotation.end());
   return s;
@@ -107,6 +112,14 @@ BenchMethodLabels ConfigurationLabels(const BenchConfiguration& c) {
         LowerCase(ceres::TrustRegionStrategyTypeToString(c.trust_region));
   }
   labels.threads = std::to_string(c.threads);
+  if (ceres_backend) {
+    labels.minimizer = MinimizerFlagName(c);
+    labels.jacobians = c.analytic_jacobians ? "analytic" : "autodiff";
+    if (c.minimizer == ceres::LINE_SEARCH) labels.solver = labels.region = "";
+  }
+  labels.loss = LowerCase(LossTypeToString(c.loss));
+  if (c.loss != LossType::NONE)
+    labels.loss += "@" + BenchFormat("%g", c.loss_scale);
   return labels;
 }
 
@@ -114,6 +127,23 @@ BenchMethodLabels PclLabels(double leaf_size_m) {
   BenchMethodLabels labels;
   labels.sampling = "voxel_grid_" + BenchFormat("%g", leaf_size_m);
   return labels;
+}
+
+std::string ShortLabel(const BenchMethodLabels& labels) {
+  if (labels.is_pcl) return labels.method;
+  std::string out;
+  for (const std::string& part : {labels.backend,
+                                  labels.minimizer,
+                                  labels.jacobians,
+                                  labels.loss,
+                                  labels.solver,
+                                  labels.region,
+                                  labels.sampling,
+                                  "s" + labels.start,
+                                  "t" + labels.threads}) {
+    if (!part.empty()) out += (out.empty() ? "" : " ") + part;
+  }
+  return out;
 }
 
 std::string BenchFormat(const char* format, double value) {
@@ -124,24 +154,17 @@ std::string BenchFormat(const char* format, double value) {
 }
 
 std::vector<std::string> BenchTableHeader() {
-  return {"pairs",
-          "defaults",
-          "method",
-          "sampling",
-          "start",
-          "linear solver",
-          "trust region",
-          "threads",
-          "runs",
-          "time med [ms]",
-          "time min-max [ms]",
-          "iters",
-          "score",
-          "err_t [m]",
-          "err_r [deg]",
-          "converged",
-          "success",
-          "pcl/ours"};
+  return {"pairs",         "defaults",
+          "method",        "sampling",
+          "start",         "linear solver",
+          "trust region",  "minimizer",
+          "jacobians",     "loss",
+          "threads",       "runs",
+          "time med [ms]", "time min-max [ms]",
+          "iters",         "score",
+          "err_t [m]",     "err_r [deg]",
+          "converged",     "success",
+          "nees mean/med", "pcl/ours"};
 }
 
 std::vector<std::string> BenchTableRow(const std::string& set,
@@ -158,6 +181,9 @@ std::vector<std::string> BenchTableRow(const std::string& set,
           Dash(labels.start),
           Dash(labels.solver),
           Dash(labels.region),
+          Dash(labels.minimizer),
+          Dash(labels.jacobians),
+          Dash(labels.loss),
           labels.threads,
           runs,
           BenchFormat("%.1f", t.median),
@@ -169,19 +195,21 @@ std::vector<std::string> BenchTableRow(const std::string& set,
           std::to_string(s.converged) + "/" + runs,
           std::to_string(s.successes) + "/" + runs + " (" +
               BenchFormat("%.0f", 100.0 * success_rate) + "%)",
+          BenchFormat("%.1f", s.nees_mean) + "/" +
+              BenchFormat("%.1f", s.nees_median),
           BenchFormat("%.2f", t.pcl_ratio)};
 }
 
 std::string BenchCsvHeader() {
   return "pairs,defaults,method,backend,sampling,start_layer,linear_solver,"
          "trust_"
-         "region,threads,runs,"
+         "region,minimizer,jacobians,loss,threads,runs,"
          "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_"
          "score,"
          "mean_translation_error_m,max_translation_error_m,mean_rotation_"
          "error_deg,"
-         "max_rotation_error_deg,converged_rate,success_rate,pcl_time_median_"
-         "ms,pcl_over_ours\n";
+         "max_rotation_error_deg,converged_rate,success_rate,nees_mean,nees_"
+         "median,pcl_time_median_ms,pcl_over_ours\n";
 }
 
 std::string BenchCsvRow(const std::string& set,
@@ -198,6 +226,9 @@ std::string BenchCsvRow(const std::string& set,
       labels.start,
       labels.solver,
       labels.region,
+      labels.minimizer,
+      labels.jacobians,
+      labels.loss,
       labels.threads,
       std::to_string(s.runs),
       CsvNumber(t.median),
@@ -211,6 +242,8 @@ std::string BenchCsvRow(const std::string& set,
       CsvNumber(s.max_rotation_error_deg),
       CsvNumber(static_cast<double>(s.converged) / s.runs),
       CsvNumber(static_cast<double>(s.successes) / s.runs),
+      CsvNumber(s.nees_mean),
+      CsvNumber(s.nees_median),
       CsvNumber(pcl != nullptr ? Median(pcl->round_times_ms) : std::nan("")),
       CsvNumber(t.pcl_ratio)};
   std::string row;

@@ -23,6 +23,9 @@ struct BenchRun {
   // Stopped on its convergence test, not on an iteration cap.
   bool converged = false;
   bool success = false;
+  // e^T P^-1 e against the reference (mlndt_bench.cc); NaN when the run has
+  // no usable covariance (and for PCL).
+  double nees = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What a table row reports for one set of pairs and one method.
@@ -38,6 +41,8 @@ struct BenchRowStats {
   int runs = 0;
   int converged = 0;
   int successes = 0;
+  double nees_mean = std::numeric_limits<double>::quiet_NaN();
+  double nees_median = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Over results[round][pair] of one method, for the pairs in `pair_indices`.
@@ -48,6 +53,7 @@ BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
 struct BenchMethodLabels {
   std::string method = "pcl_ndt";
   std::string defaults, backend, sampling, start, solver, region;
+  std::string minimizer, jacobians, loss;  // loss: "cauchy@1.5", "none".
   std::string threads = "1";
   bool is_pcl = true;
 };
@@ -55,6 +61,11 @@ struct BenchMethodLabels {
 BenchMethodLabels ConfigurationLabels(const BenchConfiguration& c);
 // pcl::NDT on clouds voxel-filtered with `leaf_size_m`.
 BenchMethodLabels PclLabels(double leaf_size_m);
+
+// The configuration in one short line (plots): backend, minimizer,
+// Jacobians, loss, linear solver, trust region, sampling, start layer,
+// threads, without the parts that do not apply.
+std::string ShortLabel(const BenchMethodLabels& labels);
 
 // `value` printed with `format`; "-" when not finite.
 std::string BenchFormat(const char* format, double value);
