@@ -15,6 +15,9 @@ packages=(
   clang libclang-rt-14-dev libomp-dev
   # The Python module (python/) and its tests, for Debian's /usr/bin/python3.
   pybind11-dev python3-dev python3-numpy python3-pytest
+  # ROS 1 bags in the tools (lab/io, MLNDT_WITH_ROSBAG) and the bag written
+  # by the tests (python3-rosbag, python3-sensor-msgs).
+  librosbag-storage-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs
 )
 
 for arg in "$@"; do

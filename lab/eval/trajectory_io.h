@@ -56,5 +56,13 @@ bool WriteTrajectory(const std::string& path,
                      TrajectoryFormat format,
                      const Trajectory& trajectory,
                      std::string* error);
+// The same; TUM files start with "# <comment>" when `comment` (one line) is
+// not empty: where the time stamps come from (a times file, bag header
+// stamps) or that they are scan indices.
+bool WriteTrajectory(const std::string& path,
+                     TrajectoryFormat format,
+                     const Trajectory& trajectory,
+                     const std::string& comment,
+                     std::string* error);
 
 }  // namespace mlndt

@@ -1,0 +1,16 @@
+#include "mlndt/odometry/odometry_options.h"
+
+#include "mlndt/common/internal/check_option.h"
+
+namespace mlndt {
+
+bool OdometryOptions::IsValid(std::string* error) const {
+  if (!registration.IsValid(error) || !local_map.IsValid(error) ||
+      !keyframes.IsValid(error) || !prediction.IsValid(error)) {
+    return false;
+  }
+  MLNDT_OPTION_GE(gate_factor, 1.0);
+  return true;
+}
+
+}  // namespace mlndt
