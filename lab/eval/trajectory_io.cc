@@ -1,5 +1,7 @@
 #include "lab/eval/trajectory_io.h"
 
+#include <fstream>
+
 #include <glog/logging.h>
 
 #include <cmath>
@@ -212,6 +214,15 @@ bool ReadTrajectory(const std::string& path,
   TrajectoryFormat format;
   if (!DetectTrajectoryFormat(path, &format, error)) return false;
   return ReadTrajectory(path, format, trajectory, error);
+}
+
+bool TumStampsAreScanIndices(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+    if (line.find(kTumIndexStampsComment) != std::string::npos) return true;
+  }
+  return false;
 }
 
 bool WriteTrajectory(const std::string& path,

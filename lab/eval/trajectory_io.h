@@ -49,6 +49,13 @@ bool ReadTrajectory(const std::string& path,
                     Trajectory* trajectory,
                     std::string* error);
 
+// The comment WriteTrajectory's callers put first in a TUM file whose time
+// stamps are scan indices (no times were known), and whether the file at
+// `path` starts with it: such a file is associated by index, not by time.
+constexpr char kTumIndexStampsComment[] =
+    "time stamps: scan indices (0, 1, 2, ...), not times";
+bool TumStampsAreScanIndices(const std::string& path);
+
 // Writes with 17 significant digits, so every number reads back as the same
 // double. KITTI drops the timestamps. TUM writes a '#' header line and the
 // quaternion of each rotation with w >= 0.

@@ -87,6 +87,8 @@ void MotionPredictor::AddPose(double stamp_s,
 
 void MotionPredictor::AddPrediction(double stamp_s,
                                     const Isometry3d& predicted) {
+  errors_.clear();
+  velocity_.setZero();
   last_pose_ = predicted;
   last_stamp_s_ = stamp_s;
   ++num_poses_;

@@ -28,7 +28,8 @@ struct MotionPredictionOptions {
   double max_translation_m = 2.0;
   double min_rotation_deg = 2.0;
   double max_rotation_deg = 30.0;
-  // Before two poses exist (no velocity yet) the uncertainty is the maximum.
+  // Before two poses exist (no velocity yet), and after a scan whose pose
+  // was not found, the uncertainty is the maximum.
 
   bool IsValid(std::string* error) const;
 };
@@ -59,7 +60,9 @@ class MotionPredictor {
                const Isometry3d& world_from_sensor);
 
   // Adds a scan whose pose is not known (its prediction stood in for it):
-  // the velocity is kept.
+  // the next scans are predicted at this pose (velocity zero: dead
+  // reckoning through a run of lost scans would carry the sensor away from
+  // its map), with the maximum uncertainty until the next AddPose.
   void AddPrediction(double stamp_s, const Isometry3d& predicted);
 
   size_t num_poses() const { return num_poses_; }

@@ -2,6 +2,7 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -98,17 +99,21 @@ void Odometry::Register(const PointCloud& cloud, OdometryResult* result) {
   result->correction_deg =
       RotationErrorRad(result->predicted, summary.reference_from_input) *
       kRadToDeg;
-  const double gate = options_.gate_factor;
+  // The gate: gate_factor x the uncertainty, at most the largest
+  // uncertainty the prediction can have.
+  const double gate_m =
+      std::min(options_.gate_factor * result->uncertainty.translation_m,
+               options_.prediction.max_translation_m);
+  const double gate_deg =
+      std::min(options_.gate_factor * result->uncertainty.rotation_deg,
+               options_.prediction.max_rotation_deg);
   if (summary.IsSolutionUsable() &&
-      (result->correction_m > gate * result->uncertainty.translation_m ||
-       result->correction_deg > gate * result->uncertainty.rotation_deg)) {
+      (result->correction_m > gate_m || result->correction_deg > gate_deg)) {
     std::ostringstream message;
     message.precision(3);
     message << "the pose moved " << result->correction_m << " m, "
             << result->correction_deg << " deg from the prediction, beyond "
-            << gate << " x its uncertainty ("
-            << result->uncertainty.translation_m << " m, "
-            << result->uncertainty.rotation_deg << " deg)";
+            << "the gate (" << gate_m << " m, " << gate_deg << " deg)";
     result->termination = TerminationType::LOW_QUALITY;
     result->message = message.str();
   }

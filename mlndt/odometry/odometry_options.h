@@ -23,8 +23,9 @@ struct OdometryOptions {
   // are given (deskew.h).
   bool deskew = true;
   // A usable registration whose pose is farther from the prediction than
-  // gate_factor times the prediction's uncertainty is reported LOW_QUALITY
-  // and the prediction stands in for it. >= 1.
+  // gate_factor times the prediction's uncertainty (or than the largest
+  // uncertainty, prediction.max_*) is reported LOW_QUALITY and the
+  // prediction stands in for it. >= 1.
   double gate_factor = 3.0;
 
   bool IsValid(std::string* error) const;

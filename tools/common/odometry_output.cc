@@ -39,12 +39,6 @@ std::string ScanRow(const ScanInput& input, const OdometryResult& r) {
   return row;
 }
 
-Json StatsJson(const Stats& s) {
-  return {{"mean", Number(s.mean)},
-          {"median", Number(s.median)},
-          {"max", Number(s.max)}};
-}
-
 }  // namespace
 
 bool WriteOdometryFiles(const std::string& dir,

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "lab/eval/scan_times.h"
+#include "lab/eval/trajectory_io.h"
 #include "mlndt/cloud/io.h"
 
 // clang-format off
@@ -137,8 +138,8 @@ double ScanInput::StampOf(size_t i) const {
 
 std::string ScanInput::TumComment() const {
   if (has_stamps()) return "time stamps: " + time_source_;
-  return "time stamps: scan indices (0, 1, 2, ...), not times: give --times "
-         "or --bag for real stamps";
+  return std::string(kTumIndexStampsComment) +
+         ": give --times or --bag for real stamps";
 }
 
 }  // namespace tools
