@@ -185,7 +185,8 @@ bool ReadScansAndPoses(const SequenceOptions& options,
   const auto list_folder = [&](std::vector<std::string>* paths,
                                std::string* list_error) {
     return ListScanFiles(FLAGS_scans,
-                         {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path},
+                         {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path,
+                          FLAGS_times},
                          paths,
                          list_error);
   };
