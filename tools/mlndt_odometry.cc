@@ -60,6 +60,12 @@ DEFINE_int32(local_map_keyframes, mlndt::LocalMapOptions().max_keyframes,
              "Keyframes in the local map");
 DEFINE_double(local_map_radius, mlndt::LocalMapOptions().radius_m,
               "Local map points farther than this from the last keyframe are left out [m]");
+DEFINE_double(max_uncertainty_m, mlndt::MotionPredictionOptions().max_translation_m,
+              "Largest uncertainty of the prediction [m] (also the largest correction accepted)");
+DEFINE_double(max_uncertainty_deg, mlndt::MotionPredictionOptions().max_rotation_deg,
+              "Largest uncertainty of the prediction [deg] (also the largest correction accepted)");
+DEFINE_int32(max_consecutive_fallbacks, mlndt::OdometryOptions().max_consecutive_fallbacks,
+             "After this many scans in a row without a pose the local map restarts");
 DEFINE_bool(deskew, true, "Deskew scans whose bag messages have per-point times");
 DEFINE_double(gate_factor, mlndt::OdometryOptions().gate_factor,
               "A pose farther from the prediction than this times its uncertainty is refused");
@@ -112,6 +118,9 @@ bool OptionsFromFlags(OdometryOptions* options,
   options->local_map.radius_m = FLAGS_local_map_radius;
   options->keyframes.min_translation_m = FLAGS_keyframe_distance;
   options->keyframes.min_rotation_deg = FLAGS_keyframe_angle;
+  options->prediction.max_translation_m = FLAGS_max_uncertainty_m;
+  options->prediction.max_rotation_deg = FLAGS_max_uncertainty_deg;
+  options->max_consecutive_fallbacks = FLAGS_max_consecutive_fallbacks;
   options->deskew = FLAGS_deskew;
   options->gate_factor = FLAGS_gate_factor;
   if (!options->IsValid(error)) {

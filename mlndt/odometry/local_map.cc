@@ -11,6 +11,12 @@ bool LocalMapOptions::IsValid(std::string* error) const {
   return grid.IsValid(error);
 }
 
+void LocalMap::Clear() {
+  keyframes_.clear();
+  grid_ = LayeredGrid();
+  num_points_ = 0;
+}
+
 bool LocalMap::AddKeyframe(const PointCloud& scan,
                            const Isometry3d& world_from_sensor,
                            int num_threads,

@@ -40,6 +40,8 @@ class LocalMap {
                    std::string* error);
 
   bool empty() const { return keyframes_.empty(); }
+  // Drops every keyframe (the next AddKeyframe starts a new map).
+  void Clear();
   size_t num_keyframes() const { return keyframes_.size(); }
   size_t num_points() const { return num_points_; }
   const LayeredGrid& grid() const { return grid_; }

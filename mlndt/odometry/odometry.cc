@@ -66,6 +66,7 @@ void OdometrySummary::Add(const OdometryResult& result) {
   }
   fallbacks += result.fallback;
   keyframes += result.keyframe;
+  map_restarts += result.map_restarted;
 }
 
 Odometry::Odometry(const OdometryOptions& options)
@@ -172,7 +173,17 @@ bool Odometry::Process(const OdometryScan& scan,
       return false;
     result->deskewed = true;
   }
-  if (local_map_.empty()) {
+  if (consecutive_fallbacks_ >=
+      static_cast<size_t>(options_.max_consecutive_fallbacks)) {
+    local_map_.Clear();
+    result->map_restarted = true;
+    result->fallback = true;
+    result->termination = TerminationType::FAILURE;
+    result->message = "no pose for " + std::to_string(consecutive_fallbacks_) +
+                      " scans: the local map restarts from this scan, at "
+                      "its prediction";
+    result->world_from_sensor = result->predicted;
+  } else if (local_map_.empty()) {
     result->termination = TerminationType::CONVERGENCE;
     result->message = "first scan: the origin of the odometry frame";
     result->world_from_sensor = result->predicted;
@@ -180,6 +191,11 @@ bool Odometry::Process(const OdometryScan& scan,
     Register(cloud, result);
   }
   if (!UpdateMap(cloud, result, error)) return false;
+  if (result->map_restarted || !result->fallback) {
+    consecutive_fallbacks_ = 0;
+  } else {
+    ++consecutive_fallbacks_;
+  }
   if (result->fallback) {
     predictor_.AddPrediction(scan.stamp_s, result->predicted);
   } else {

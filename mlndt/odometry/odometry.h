@@ -20,7 +20,9 @@
 // the prediction stands in for the pose, flagged (`fallback`), and the
 // verdict says why: no wrong pose is reported as CONVERGENCE. Accepted
 // scans that moved far enough (keyframe_policy.h) join the local map. The
-// first scan defines the world frame (identity).
+// first scan defines the world frame (identity). After
+// max_consecutive_fallbacks scans without a pose the local map restarts
+// from the next scan, at its prediction.
 
 #include <string>
 #include <vector>
@@ -54,6 +56,10 @@ struct OdometryResult {
   // The prediction stands in for the pose (the verdict was not usable).
   bool fallback = false;
   bool keyframe = false;  // The scan joined the local map.
+  // The local map was dropped before this scan (max_consecutive_fallbacks
+  // scans without a pose) and restarted from it: its pose is the
+  // prediction (a fallback) and the trajectory may jump here.
+  bool map_restarted = false;
   bool deskewed = false;
   int start_layer = 0;
   int num_layers = 0;
@@ -80,6 +86,7 @@ struct OdometrySummary {
   size_t failure = 0;
   size_t fallbacks = 0;
   size_t keyframes = 0;
+  size_t map_restarts = 0;
 
   void Add(const OdometryResult& result);
   // Every scan got a pose from its registration.
@@ -112,6 +119,7 @@ class Odometry {
   MotionPredictor predictor_;
   LocalMap local_map_;
   size_t num_processed_ = 0;
+  size_t consecutive_fallbacks_ = 0;
   double last_stamp_s_ = 0.0;
 };
 

@@ -10,6 +10,7 @@ bool OdometryOptions::IsValid(std::string* error) const {
     return false;
   }
   MLNDT_OPTION_GE(gate_factor, 1.0);
+  MLNDT_OPTION_GE(max_consecutive_fallbacks, 1);
   return true;
 }
 

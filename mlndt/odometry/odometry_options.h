@@ -27,6 +27,11 @@ struct OdometryOptions {
   // uncertainty, prediction.max_*) is reported LOW_QUALITY and the
   // prediction stands in for it. >= 1.
   double gate_factor = 3.0;
+  // After this many scans in a row without a pose, the local map is
+  // dropped and restarted from the next scan at its prediction: the
+  // trajectory takes one jump there instead of drifting off a map the
+  // sensor has left. >= 1.
+  int max_consecutive_fallbacks = 3;
 
   bool IsValid(std::string* error) const;
 };

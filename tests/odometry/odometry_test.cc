@@ -101,6 +101,37 @@ TEST(Odometry, AScanOfAnotherPlaceFallsBackToThePrediction) {
   EXPECT_LT(TranslationErrorM(results[4].world_from_sensor, reference[4]), 0.1);
 }
 
+// Three foreign scans in a row: the local map is dropped and restarts from
+// the next scan, at its prediction, flagged; the scan after it registers
+// onto the new map.
+TEST(Odometry, TheLocalMapRestartsAfterConsecutiveFallbacks) {
+  std::vector<std::string> paths = {
+      KittiScan(0), KittiScan(1), KittiScan(2),
+      BundledDataPath("koide3/251370668.pcd"),
+      BundledDataPath("koide3/251371071.pcd"),
+      BundledDataPath("room/room_scan1.pcd"), KittiScan(6), KittiScan(7)};
+  OdometryOptions options;
+  options.max_consecutive_fallbacks = 3;
+  std::vector<OdometryResult> results;
+  OdometrySummary summary;
+  std::string error;
+  ASSERT_TRUE(RunOdometry(options, paths.size(), KittiLoader(paths), {},
+                          &results, &summary, &error))
+      << error;
+  for (size_t k = 3; k < 6; ++k) {
+    EXPECT_TRUE(results[k].fallback) << k << ": " << results[k].message;
+    EXPECT_FALSE(results[k].map_restarted) << k;
+  }
+  EXPECT_TRUE(results[6].map_restarted);
+  EXPECT_TRUE(results[6].fallback);
+  EXPECT_TRUE(results[6].keyframe);
+  EXPECT_EQ(results[6].map_keyframes, 1u);
+  EXPECT_NE(results[6].message.find("no pose for 3 scans"), std::string::npos)
+      << results[6].message;
+  EXPECT_FALSE(results[7].fallback) << results[7].message;
+  EXPECT_EQ(summary.map_restarts, 1u);
+}
+
 TEST(Odometry, RefusesStampsThatDoNotIncreaseAndEmptyScans) {
   Odometry odometry{OdometryOptions()};
   PointCloud cloud;

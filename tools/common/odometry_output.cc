@@ -107,6 +107,7 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
                       {"FAILURE", summary.failure}};
   json["fallbacks"] = summary.fallbacks;
   json["keyframes"] = summary.keyframes;
+  json["map_restarts"] = summary.map_restarts;
   std::vector<double> total_ms;
   for (const OdometryResult& r : results) total_ms.push_back(r.total_time_s * 1e3);
   json["time_per_scan_ms"] = StatsJson(ComputeStats(total_ms));
@@ -137,10 +138,12 @@ void PrintOdometrySummary(const OdometrySummary& summary,
   std::printf(
       "scans: %zu; CONVERGENCE %zu, NO_CONVERGENCE %zu, LOW_QUALITY %zu, "
       "DEGENERATE %zu, FAILURE %zu; prediction used (fallback) for %zu; "
-      "keyframes %zu\ntime per scan [ms]: mean %.1f, median %.1f, max %.1f\n",
+      "keyframes %zu; local map restarts %zu\ntime per scan [ms]: mean %.1f, "
+      "median %.1f, max %.1f\n",
       summary.scans, summary.convergence, summary.no_convergence,
       summary.low_quality, summary.degenerate, summary.failure,
-      summary.fallbacks, summary.keyframes, t.mean, t.median, t.max);
+      summary.fallbacks, summary.keyframes, summary.map_restarts, t.mean,
+      t.median, t.max);
   if (metrics == nullptr) return;
   std::printf("ATE (SE3-aligned): rmse %.3f m, max %.3f m\n",
               metrics->ate.rmse_m, metrics->ate.errors.max);
