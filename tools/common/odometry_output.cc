@@ -189,7 +189,7 @@ bool WriteOdometryPlot(const std::string& gnuplot,
                        GnuplotQuote(dir + "/trajectory_xy.png") +
                        "\nset size ratio -1\nset xlabel 'x [m]'\n"
                        "set ylabel 'y [m]'\nset title 'mlndt_odometry: top "
-                       "view (first scan frame)'\nplot " +
+                       "view (first scan frame)' noenhanced\nplot " +
                        GnuplotQuote(data_dir + "/estimate.dat") +
                        " with linespoints pt 7 ps 0.4 title 'odometry', " +
                        GnuplotQuote(data_dir + "/fallbacks.dat") +
