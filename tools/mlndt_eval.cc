@@ -416,17 +416,17 @@ int Run() {
   }
   if (!FLAGS_reference_times.empty()) {
     if (reference_format != TrajectoryFormat::KITTI) {
-      return Refuse("--reference_times applies to a KITTI --reference (a TUM "
-                    "file has its own stamps)");
+      return Refuse(
+          "--reference_times applies to a KITTI --reference (a TUM "
+          "file has its own stamps)");
     }
     if (!StampReference(&reference, &error)) {
       return Refuse("--reference_times=" + error);
     }
   }
-  const bool reference_timed =
-      !FLAGS_reference_times.empty() ||
-      (reference_format == TrajectoryFormat::TUM &&
-       !TumStampsAreScanIndices(FLAGS_reference));
+  const bool reference_timed = !FLAGS_reference_times.empty() ||
+                               (reference_format == TrajectoryFormat::TUM &&
+                                !TumStampsAreScanIndices(FLAGS_reference));
   std::vector<EstimateResult> results(flags.estimates.size());
   std::vector<Trajectory> estimates(flags.estimates.size());
   for (size_t i = 0; i < flags.estimates.size(); ++i) {

@@ -48,8 +48,8 @@
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
-#include "tools/common/scan_input.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/scan_input.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
@@ -183,8 +183,8 @@ int Info(const std::string& path) {
 }
 
 bool CheckFlags(MapBuildOptions* options, std::string* error) {
-  const bool from_scans = !FLAGS_scans.empty() || !FLAGS_scan_list.empty() ||
-                          !FLAGS_bag.empty();
+  const bool from_scans =
+      !FLAGS_scans.empty() || !FLAGS_scan_list.empty() || !FLAGS_bag.empty();
   if (FLAGS_output.empty()) {
     *error =
         "--output=MAP is required. Usage: mlndt_map --scans=DIR "

@@ -92,8 +92,9 @@ bool OptionsFromFlags(OdometryOptions* options,
                       std::vector<double>* lengths,
                       std::string* error) {
   if ((FLAGS_scans.empty() && FLAGS_bag.empty()) || FLAGS_output_dir.empty()) {
-    *error = "give --scans=DIR (or --bag=FILE --topic=NAME) and "
-             "--output_dir=DIR";
+    *error =
+        "give --scans=DIR (or --bag=FILE --topic=NAME) and "
+        "--output_dir=DIR";
     return false;
   }
   if (FLAGS_max_scans < 0 || FLAGS_rpe_delta < 1) {
@@ -109,8 +110,8 @@ bool OptionsFromFlags(OdometryOptions* options,
     return false;
   }
   if (!tools::RegistrationOptionsFromFlags(&options->registration, error) ||
-      !tools::CheckCameraPoseFlags("--gt_poses", !FLAGS_gt_poses.empty(),
-                                   error)) {
+      !tools::CheckCameraPoseFlags(
+          "--gt_poses", !FLAGS_gt_poses.empty(), error)) {
     return false;
   }
   options->local_map.grid = options->registration.grid;
@@ -136,18 +137,21 @@ bool ReadInputs(tools::ScanInput* input,
                 std::string* error) {
   const auto list_folder = [](std::vector<std::string>* paths,
                               std::string* list_error) {
-    return ListScanFiles(
-        FLAGS_scans, {FLAGS_gt_poses, FLAGS_calib, FLAGS_times}, paths,
-        list_error);
+    return ListScanFiles(FLAGS_scans,
+                         {FLAGS_gt_poses, FLAGS_calib, FLAGS_times},
+                         paths,
+                         list_error);
   };
-  if (!tools::ScanInputFromFlags(!FLAGS_scans.empty(), list_folder,
-                                 static_cast<size_t>(FLAGS_max_scans), input,
+  if (!tools::ScanInputFromFlags(!FLAGS_scans.empty(),
+                                 list_folder,
+                                 static_cast<size_t>(FLAGS_max_scans),
+                                 input,
                                  error)) {
     return false;
   }
   if (input->size() < 2) {
-    *error = "odometry needs at least 2 scans, got " +
-             std::to_string(input->size());
+    *error =
+        "odometry needs at least 2 scans, got " + std::to_string(input->size());
     return false;
   }
   if (FLAGS_gt_poses.empty()) return true;
@@ -166,12 +170,15 @@ bool ReadInputs(tools::ScanInput* input,
 
 std::string ScanDetail(const tools::ScanInput& input, const OdometryResult& r) {
   char detail[200];
-  std::snprintf(detail, sizeof(detail),
+  std::snprintf(detail,
+                sizeof(detail),
                 "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
                 input.name(r.index).c_str(),
                 TerminationTypeToString(r.termination),
-                r.fallback ? " (prediction used)" : "", r.start_layer,
-                r.uncertainty.translation_m, r.uncertainty.rotation_deg,
+                r.fallback ? " (prediction used)" : "",
+                r.start_layer,
+                r.uncertainty.translation_m,
+                r.uncertainty.rotation_deg,
                 r.total_time_s * 1e3);
   return detail;
 }
@@ -187,16 +194,21 @@ int Run() {
   tools::ScanInput input;
   std::vector<Isometry3d> reference;
   if (!ReadInputs(&input, &reference, &error)) return Refuse(error);
-  if (!tools::PrepareOutputDir("output_dir", FLAGS_output_dir,
-                               {"scans.csv", "summary.json"}, &error)) {
+  if (!tools::PrepareOutputDir("output_dir",
+                               FLAGS_output_dir,
+                               {"scans.csv", "summary.json"},
+                               &error)) {
     return Refuse(error);
   }
-  const bool gnuplot_ok = !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
+  const bool gnuplot_ok =
+      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
 
   tools::Progress progress(kTool, input.size());
-  const OdometryScanLoader load = [&](size_t i, PointCloud* cloud,
+  const OdometryScanLoader load = [&](size_t i,
+                                      PointCloud* cloud,
                                       std::vector<double>* times,
-                                      double* stamp_s, std::string* e) {
+                                      double* stamp_s,
+                                      std::string* e) {
     if (!input.Load(i, cloud, times, e)) return false;
     *stamp_s = input.StampOf(i);
     return true;
@@ -204,19 +216,23 @@ int Run() {
   std::vector<OdometryResult> results;
   OdometrySummary summary;
   const bool ok = RunOdometry(
-      options, input.size(), load,
+      options,
+      input.size(),
+      load,
       [&](const OdometryResult& r) {
         progress.Update(r.index + 1, ScanDetail(input, r));
       },
-      &results, &summary, &error);
+      &results,
+      &summary,
+      &error);
   progress.Finish();
   if (!ok) return Fail(error);
 
   tools::OdometryMetrics metrics;
   const bool has_metrics = !reference.empty();
-  if (has_metrics && !tools::ComputeOdometryMetrics(reference, results,
-                                                    FLAGS_rpe_delta, lengths,
-                                                    &metrics, &error)) {
+  if (has_metrics &&
+      !tools::ComputeOdometryMetrics(
+          reference, results, FLAGS_rpe_delta, lengths, &metrics, &error)) {
     return Fail("metrics: " + error);
   }
   const tools::OdometryMetrics* m = has_metrics ? &metrics : nullptr;
@@ -234,16 +250,17 @@ int Run() {
                   "') not found; the other outputs are written. Install "
                   "gnuplot-nox or pass --plots=false");
     }
-    if (!tools::WriteOdometryPlot(FLAGS_gnuplot, FLAGS_output_dir, results,
-                                  reference, &error)) {
+    if (!tools::WriteOdometryPlot(
+            FLAGS_gnuplot, FLAGS_output_dir, results, reference, &error)) {
       return Fail(error);
     }
     std::printf("plot: trajectory_xy.png\n");
   }
   if (!summary.AllUsable()) {
-    return Fail(std::to_string(summary.fallbacks) +
-                " scan(s) have no registered pose (their prediction stands in, "
-                "flagged in scans.csv): the trajectory is not to be used as is");
+    return Fail(
+        std::to_string(summary.fallbacks) +
+        " scan(s) have no registered pose (their prediction stands in, "
+        "flagged in scans.csv): the trajectory is not to be used as is");
   }
   return 0;
 }
@@ -257,7 +274,9 @@ int main(int argc, char** argv) {
           "ROS 1 bag.\n"
           "  mlndt_odometry (--scans=DIR [--times=FILE] | --bag=FILE "
           "--topic=NAME) --output_dir=OUT [--gt_poses=FILE]",
-          true, &argc, &argv)) {
+          true,
+          &argc,
+          &argv)) {
     return mlndt::tools::kExitUsage;
   }
   return mlndt::Run();

@@ -12,8 +12,9 @@
 // Scans are the point-cloud files in DIR (by extension), sorted by file
 // name; pose and calibration files given on the command line are left out
 // even when they sit in DIR. Or the sensor_msgs/PointCloud2 messages of
-// --topic in the ROS 1 bag --bag, in bag order (tools/common/scan_input.h). Ground-truth poses are KITTI lines, one per
-// scan, world_from_scan in the scans' own frame; with --poses_are_camera
+// --topic in the ROS 1 bag --bag, in bag order (tools/common/scan_input.h).
+// Ground-truth poses are KITTI lines, one per scan, world_from_scan in the
+// scans' own frame; with --poses_are_camera
 // --calib they are KITTI camera poses and are converted with the Tr line
 // (V = Tr^-1 P Tr; pose_flags.h). --calib applies to --init=poses:FILE too.
 //
@@ -184,11 +185,11 @@ bool ReadScansAndPoses(const SequenceOptions& options,
                        std::string* error) {
   const auto list_folder = [&](std::vector<std::string>* paths,
                                std::string* list_error) {
-    return ListScanFiles(FLAGS_scans,
-                         {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path,
-                          FLAGS_times},
-                         paths,
-                         list_error);
+    return ListScanFiles(
+        FLAGS_scans,
+        {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
+        paths,
+        list_error);
   };
   if (!tools::ScanInputFromFlags(!FLAGS_scans.empty(),
                                  list_folder,

@@ -1,12 +1,11 @@
 #include "lab/eval/trajectory_io.h"
 
-#include <fstream>
-
 #include <glog/logging.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string_view>
 #include <vector>
 

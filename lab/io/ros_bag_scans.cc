@@ -156,9 +156,8 @@ bool Decode(const sensor_msgs::PointCloud2& message,
   scan->cloud.Reserve(size_t{message.width} * message.height);
   for (uint32_t r = 0; r < message.height; ++r) {
     for (uint32_t c = 0; c < message.width; ++c) {
-      const uint8_t* p =
-          message.data.data() + size_t{r} * message.row_step +
-          size_t{c} * message.point_step;
+      const uint8_t* p = message.data.data() + size_t{r} * message.row_step +
+                         size_t{c} * message.point_step;
       const Eigen::Vector3d point(
           ReadValue(p, x), ReadValue(p, y), ReadValue(p, z));
       if (!point.allFinite()) continue;
@@ -201,8 +200,8 @@ bool RosBagScans::Open(const std::string& path,
   auto impl = std::make_unique<Impl>();
   try {
     impl->bag.open(path, rosbag::bagmode::Read);
-    impl->view = std::make_unique<rosbag::View>(
-        impl->bag, rosbag::TopicQuery(topic));
+    impl->view =
+        std::make_unique<rosbag::View>(impl->bag, rosbag::TopicQuery(topic));
     for (const rosbag::ConnectionInfo* info : impl->view->getConnections()) {
       if (info->datatype != kPointCloud2) {
         *error = path + ": topic " + topic + " is " + info->datatype +
@@ -230,7 +229,9 @@ bool RosBagScans::Open(const std::string& path,
 RosBagScans::RosBagScans(std::string path,
                          std::string topic,
                          std::unique_ptr<Impl> impl)
-    : path_(std::move(path)), topic_(std::move(topic)), impl_(std::move(impl)) {}
+    : path_(std::move(path)),
+      topic_(std::move(topic)),
+      impl_(std::move(impl)) {}
 
 RosBagScans::~RosBagScans() = default;
 

@@ -22,7 +22,9 @@ bool RosBagScans::Open(const std::string& path,
 RosBagScans::RosBagScans(std::string path,
                          std::string topic,
                          std::unique_ptr<Impl> impl)
-    : path_(std::move(path)), topic_(std::move(topic)), impl_(std::move(impl)) {}
+    : path_(std::move(path)),
+      topic_(std::move(topic)),
+      impl_(std::move(impl)) {}
 
 RosBagScans::~RosBagScans() = default;
 

@@ -27,8 +27,9 @@ const PointCloud* ScanStore::Cloud(size_t i, std::string* error) {
   CHECK(error != nullptr);
   if (clouds_.at(i) == nullptr) {
     auto cloud = std::make_unique<PointCloud>();
-    const bool read = load_ ? load_(i, cloud.get(), error)
-                            : ReadPointCloud(paths_[i], cloud.get(), nullptr, error);
+    const bool read =
+        load_ ? load_(i, cloud.get(), error)
+              : ReadPointCloud(paths_[i], cloud.get(), nullptr, error);
     if (!read) return nullptr;
     if (cloud->size() == 0) {
       *error = paths_[i] + ": no finite points";

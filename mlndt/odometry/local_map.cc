@@ -23,8 +23,8 @@ bool LocalMap::AddKeyframe(const PointCloud& scan,
                            std::string* error) {
   const double start = NowSeconds();
   std::deque<Keyframe> keyframes = keyframes_;
-  keyframes.push_back({TransformCloud(world_from_sensor, scan),
-                       world_from_sensor});
+  keyframes.push_back(
+      {TransformCloud(world_from_sensor, scan), world_from_sensor});
   while (keyframes.size() > static_cast<size_t>(options_.max_keyframes)) {
     keyframes.pop_front();
   }

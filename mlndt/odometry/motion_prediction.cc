@@ -58,8 +58,9 @@ PredictionUncertainty MotionPredictor::Uncertainty() const {
   u.translation_m = std::clamp(t * options_.factor,
                                options_.min_translation_m,
                                options_.max_translation_m);
-  u.rotation_deg = std::clamp(
-      r * options_.factor, options_.min_rotation_deg, options_.max_rotation_deg);
+  u.rotation_deg = std::clamp(r * options_.factor,
+                              options_.min_rotation_deg,
+                              options_.max_rotation_deg);
   return u;
 }
 
@@ -72,9 +73,9 @@ void MotionPredictor::AddPose(double stamp_s,
       velocity_ = MotionToTwist(last_pose_.inverse() * world_from_sensor) / dt;
     }
     if (num_poses_ > 1) {
-      errors_.push_back({TranslationErrorM(predicted, world_from_sensor),
-                         RotationErrorRad(predicted, world_from_sensor) *
-                             kRadToDeg});
+      errors_.push_back(
+          {TranslationErrorM(predicted, world_from_sensor),
+           RotationErrorRad(predicted, world_from_sensor) * kRadToDeg});
       while (errors_.size() > static_cast<size_t>(options_.window)) {
         errors_.pop_front();
       }

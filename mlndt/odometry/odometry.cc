@@ -31,13 +31,11 @@ bool CheckScan(const OdometryScan& scan,
     *error = message.str();
     return false;
   }
-  if (scan.point_times_s != nullptr &&
-      !scan.point_times_s->empty() &&
+  if (scan.point_times_s != nullptr && !scan.point_times_s->empty() &&
       scan.point_times_s->size() != scan.cloud->size()) {
     *error = "scan " + std::to_string(num_processed) + ": " +
-             std::to_string(scan.point_times_s->size()) +
-             " point times for " + std::to_string(scan.cloud->size()) +
-             " points";
+             std::to_string(scan.point_times_s->size()) + " point times for " +
+             std::to_string(scan.cloud->size()) + " points";
     return false;
   }
   return true;
@@ -118,9 +116,8 @@ void Odometry::Register(const PointCloud& cloud, OdometryResult* result) {
     result->termination = TerminationType::LOW_QUALITY;
     result->message = message.str();
   }
-  result->fallback =
-      result->termination != TerminationType::CONVERGENCE &&
-      result->termination != TerminationType::NO_CONVERGENCE;
+  result->fallback = result->termination != TerminationType::CONVERGENCE &&
+                     result->termination != TerminationType::NO_CONVERGENCE;
   if (result->fallback) result->world_from_sensor = result->predicted;
 }
 
@@ -128,10 +125,10 @@ bool Odometry::UpdateMap(const PointCloud& cloud,
                          OdometryResult* result,
                          std::string* error) {
   const bool first = local_map_.empty();
-  if (!first && (result->fallback ||
-                 !IsNewKeyframe(options_.keyframes,
-                                local_map_.last_keyframe(),
-                                result->world_from_sensor))) {
+  if (!first &&
+      (result->fallback || !IsNewKeyframe(options_.keyframes,
+                                          local_map_.last_keyframe(),
+                                          result->world_from_sensor))) {
     return true;
   }
   std::string map_error;

@@ -15,11 +15,12 @@ namespace mlndt {
 
 // Loads scan `index`: its points (sensor frame), its per-point times
 // relative to its stamp (cleared when it has none) and its stamp [s].
-using OdometryScanLoader = std::function<bool(size_t index,
-                                              PointCloud* cloud,
-                                              std::vector<double>* point_times_s,
-                                              double* stamp_s,
-                                              std::string* error)>;
+using OdometryScanLoader =
+    std::function<bool(size_t index,
+                       PointCloud* cloud,
+                       std::vector<double>* point_times_s,
+                       double* stamp_s,
+                       std::string* error)>;
 using OdometryCallback = std::function<void(const OdometryResult&)>;
 
 // Runs scans 0..num_scans-1. `on_result` may be empty. False with *error on

@@ -160,14 +160,8 @@ bool BuildMapFromScans(const MapBuildOptions& options,
   const ScanLoader read = [&](size_t k, PointCloud* scan, std::string* e) {
     return ReadPointCloud(scan_paths[k], scan, nullptr, e);
   };
-  return BuildMapFromScans(options,
-                           scan_paths,
-                           read,
-                           world_from_scan,
-                           on_scan,
-                           map,
-                           summary,
-                           error);
+  return BuildMapFromScans(
+      options, scan_paths, read, world_from_scan, on_scan, map, summary, error);
 }
 
 bool BuildMapFromCloud(const MapBuildOptions& options,

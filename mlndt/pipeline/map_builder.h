@@ -23,8 +23,8 @@
 #include "mlndt/cloud/range_filter.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
-#include "mlndt/pipeline/localizer.h"
 #include "mlndt/grid/map_memory.h"
+#include "mlndt/pipeline/localizer.h"
 
 namespace mlndt {
 

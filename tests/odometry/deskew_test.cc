@@ -15,9 +15,10 @@ namespace {
 TEST(DeskewScan, UndoesTheMotionOfAKnownVelocityOnAKittiSweep) {
   PointCloud cloud;
   std::string error;
-  ASSERT_TRUE(ReadPointCloud(
-      testing::BundledDataPath("kitti/pcd/000000.pcd"), &cloud, nullptr,
-      &error))
+  ASSERT_TRUE(ReadPointCloud(testing::BundledDataPath("kitti/pcd/000000.pcd"),
+                             &cloud,
+                             nullptr,
+                             &error))
       << error;
   Vector6d velocity;
   velocity << 5.0, 0.2, 0.0, 0.0, 0.01, 0.5;

@@ -21,8 +21,11 @@ std::string KittiScan(size_t i) {
 
 // Scans 0..7 of the bundled KITTI frames, stamped 0.1 s apart (10 Hz).
 OdometryScanLoader KittiLoader(const std::vector<std::string>& paths) {
-  return [paths](size_t i, PointCloud* cloud, std::vector<double>* times,
-                 double* stamp_s, std::string* error) {
+  return [paths](size_t i,
+                 PointCloud* cloud,
+                 std::vector<double>* times,
+                 double* stamp_s,
+                 std::string* error) {
     times->clear();
     *stamp_s = 0.1 * static_cast<double>(i);
     return ReadPointCloud(paths.at(i), cloud, nullptr, error);
@@ -34,8 +37,8 @@ OdometryScanLoader KittiLoader(const std::vector<std::string>& paths) {
 std::vector<Isometry3d> ReferenceChain(size_t n) {
   std::map<std::string, ReferencePair> pairs;
   std::string error;
-  EXPECT_TRUE(ReadReferencePairs(BundledDataPath("kitti/reference_pairs.json"),
-                                 &pairs, &error))
+  EXPECT_TRUE(ReadReferencePairs(
+      BundledDataPath("kitti/reference_pairs.json"), &pairs, &error))
       << error;
   std::vector<Isometry3d> chain = {Isometry3d::Identity()};
   for (size_t k = 1; k < n; ++k) {
@@ -54,8 +57,13 @@ TEST(Odometry, BundledKittiFramesFollowTheConsensusChain) {
   std::vector<OdometryResult> results;
   OdometrySummary summary;
   std::string error;
-  ASSERT_TRUE(RunOdometry(OdometryOptions(), paths.size(), KittiLoader(paths),
-                          {}, &results, &summary, &error))
+  ASSERT_TRUE(RunOdometry(OdometryOptions(),
+                          paths.size(),
+                          KittiLoader(paths),
+                          {},
+                          &results,
+                          &summary,
+                          &error))
       << error;
   const std::vector<Isometry3d> reference = ReferenceChain(paths.size());
   ASSERT_EQ(results.size(), reference.size());
@@ -80,14 +88,21 @@ TEST(Odometry, BundledKittiFramesFollowTheConsensusChain) {
 // registration cannot place it, so the prediction stands in, flagged, and
 // the verdict is not CONVERGENCE; the next KITTI frame is placed again.
 TEST(Odometry, AScanOfAnotherPlaceFallsBackToThePrediction) {
-  std::vector<std::string> paths = {KittiScan(0), KittiScan(1), KittiScan(2),
+  std::vector<std::string> paths = {KittiScan(0),
+                                    KittiScan(1),
+                                    KittiScan(2),
                                     BundledDataPath("koide3/251370668.pcd"),
                                     KittiScan(4)};
   std::vector<OdometryResult> results;
   OdometrySummary summary;
   std::string error;
-  ASSERT_TRUE(RunOdometry(OdometryOptions(), paths.size(), KittiLoader(paths),
-                          {}, &results, &summary, &error))
+  ASSERT_TRUE(RunOdometry(OdometryOptions(),
+                          paths.size(),
+                          KittiLoader(paths),
+                          {},
+                          &results,
+                          &summary,
+                          &error))
       << error;
   ASSERT_EQ(results.size(), 5u);
   EXPECT_TRUE(results[3].fallback) << results[3].message;
@@ -105,18 +120,26 @@ TEST(Odometry, AScanOfAnotherPlaceFallsBackToThePrediction) {
 // the next scan, at its prediction, flagged; the scan after it registers
 // onto the new map.
 TEST(Odometry, TheLocalMapRestartsAfterConsecutiveFallbacks) {
-  std::vector<std::string> paths = {
-      KittiScan(0), KittiScan(1), KittiScan(2),
-      BundledDataPath("koide3/251370668.pcd"),
-      BundledDataPath("koide3/251371071.pcd"),
-      BundledDataPath("room/room_scan1.pcd"), KittiScan(6), KittiScan(7)};
+  std::vector<std::string> paths = {KittiScan(0),
+                                    KittiScan(1),
+                                    KittiScan(2),
+                                    BundledDataPath("koide3/251370668.pcd"),
+                                    BundledDataPath("koide3/251371071.pcd"),
+                                    BundledDataPath("room/room_scan1.pcd"),
+                                    KittiScan(6),
+                                    KittiScan(7)};
   OdometryOptions options;
   options.max_consecutive_fallbacks = 3;
   std::vector<OdometryResult> results;
   OdometrySummary summary;
   std::string error;
-  ASSERT_TRUE(RunOdometry(options, paths.size(), KittiLoader(paths), {},
-                          &results, &summary, &error))
+  ASSERT_TRUE(RunOdometry(options,
+                          paths.size(),
+                          KittiLoader(paths),
+                          {},
+                          &results,
+                          &summary,
+                          &error))
       << error;
   for (size_t k = 3; k < 6; ++k) {
     EXPECT_TRUE(results[k].fallback) << k << ": " << results[k].message;
@@ -141,8 +164,7 @@ TEST(Odometry, RefusesStampsThatDoNotIncreaseAndEmptyScans) {
   ASSERT_TRUE(odometry.Process({5.0, &cloud, nullptr}, &result, &error))
       << error;
   EXPECT_FALSE(odometry.Process({5.0, &cloud, nullptr}, &result, &error));
-  EXPECT_NE(error.find("is not after the previous scan's 5"),
-            std::string::npos)
+  EXPECT_NE(error.find("is not after the previous scan's 5"), std::string::npos)
       << error;
   const PointCloud empty;
   EXPECT_FALSE(odometry.Process({6.0, &empty, nullptr}, &result, &error));

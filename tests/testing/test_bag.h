@@ -25,8 +25,8 @@ bool WriteTestBag(const std::string& out,
 
 // Skips the current test when this build reads no ROS bags
 // (MLNDT_WITH_ROSBAG=OFF: the ROS 1 packages were not installed).
-#define MLNDT_REQUIRE_ROSBAG()                                           \
-  if (!::mlndt::RosBagSupported()) {                                     \
-    GTEST_SKIP() << "built without ROS bag support (MLNDT_WITH_ROSBAG="  \
+#define MLNDT_REQUIRE_ROSBAG()                                             \
+  if (!::mlndt::RosBagSupported()) {                                       \
+    GTEST_SKIP() << "built without ROS bag support (MLNDT_WITH_ROSBAG="    \
                     "OFF; scripts/install_deps.sh installs the packages)"; \
   }

@@ -43,23 +43,22 @@ Trajectory ReadTum(const std::string& path) {
 TEST(MlndtLocalizeTimes, TumStampsAreTheScanTimesOrSayTheyAreIndices) {
   const std::string dir = testing::FreshTestDir("mlndt_localize_times");
   const std::string chain = Chain(dir);
-  const ToolRun map = RunTool(
-      "mlndt_map", "--scans=" + Quote(KittiPcd()) + " --poses=" +
-                       Quote(chain) + kMapFlags +
-                       " --output=" + Quote(dir + "/map.mlndt"));
+  const ToolRun map =
+      RunTool("mlndt_map",
+              "--scans=" + Quote(KittiPcd()) + " --poses=" + Quote(chain) +
+                  kMapFlags + " --output=" + Quote(dir + "/map.mlndt"));
   ASSERT_EQ(map.exit_code, 0) << map.err;
   {
     std::ofstream times(dir + "/times.txt");
     for (int k = 0; k < 8; ++k) times << 50.0 + 0.1 * k << "\n";
   }
-  const std::string common = "--map=" + Quote(dir + "/map.mlndt") +
-                             " --scans=" + Quote(KittiPcd()) +
-                             " --max_scans=3 --initial_poses=" + Quote(chain) +
-                             " --plots=false";
+  const std::string common =
+      "--map=" + Quote(dir + "/map.mlndt") + " --scans=" + Quote(KittiPcd()) +
+      " --max_scans=3 --initial_poses=" + Quote(chain) + " --plots=false";
   const ToolRun timed =
-      RunTool("mlndt_localize", common + " --times=" +
-                                    Quote(dir + "/times.txt") +
-                                    " --output_dir=" + Quote(dir + "/timed"));
+      RunTool("mlndt_localize",
+              common + " --times=" + Quote(dir + "/times.txt") +
+                  " --output_dir=" + Quote(dir + "/timed"));
   const ToolRun untimed = RunTool(
       "mlndt_localize", common + " --output_dir=" + Quote(dir + "/untimed"));
   ASSERT_EQ(timed.exit_code, 0) << timed.err;
@@ -72,12 +71,12 @@ TEST(MlndtLocalizeTimes, TumStampsAreTheScanTimesOrSayTheyAreIndices) {
   EXPECT_TRUE(TumStampsAreScanIndices(dir + "/untimed/trajectory_tum.txt"));
   // A times file with a stamp per scan or none at all.
   std::ofstream(dir + "/short.txt") << "1\n2\n";
-  const ToolRun short_times = RunTool(
-      "mlndt_localize", common + " --times=" + Quote(dir + "/short.txt") +
-                            " --output_dir=" + Quote(dir + "/short"));
+  const ToolRun short_times =
+      RunTool("mlndt_localize",
+              common + " --times=" + Quote(dir + "/short.txt") +
+                  " --output_dir=" + Quote(dir + "/short"));
   EXPECT_EQ(short_times.exit_code, 2);
-  EXPECT_NE(short_times.err.find("has 2 stamps for 8 scans"),
-            std::string::npos)
+  EXPECT_NE(short_times.err.find("has 2 stamps for 8 scans"), std::string::npos)
       << short_times.err;
 }
 
@@ -93,24 +92,24 @@ TEST(MlndtLocalizeTimes, MapAndLocalizeReadABagAsTheFolder) {
   ASSERT_TRUE(
       testing::WriteTestBag(dir + "/k.bag", "/points", scans, "", &error))
       << error;
-  const ToolRun folder = RunTool(
-      "mlndt_map", "--scans=" + Quote(KittiPcd()) + " --poses=" +
-                       Quote(chain) + kMapFlags +
-                       " --output=" + Quote(dir + "/folder.mlndt"));
-  const ToolRun bag = RunTool(
-      "mlndt_map", "--bag=" + Quote(dir + "/k.bag") + " --topic=/points" +
-                       " --poses=" + Quote(chain) + kMapFlags +
-                       " --output=" + Quote(dir + "/bag.mlndt"));
+  const ToolRun folder =
+      RunTool("mlndt_map",
+              "--scans=" + Quote(KittiPcd()) + " --poses=" + Quote(chain) +
+                  kMapFlags + " --output=" + Quote(dir + "/folder.mlndt"));
+  const ToolRun bag =
+      RunTool("mlndt_map",
+              "--bag=" + Quote(dir + "/k.bag") + " --topic=/points" +
+                  " --poses=" + Quote(chain) + kMapFlags +
+                  " --output=" + Quote(dir + "/bag.mlndt"));
   ASSERT_EQ(folder.exit_code, 0) << folder.err;
   ASSERT_EQ(bag.exit_code, 0) << bag.err;
   EXPECT_EQ(ReadWholeFile(dir + "/bag.mlndt"),
             ReadWholeFile(dir + "/folder.mlndt"));
   const ToolRun localize = RunTool(
-      "mlndt_localize", "--map=" + Quote(dir + "/bag.mlndt") + " --bag=" +
-                            Quote(dir + "/k.bag") +
-                            " --topic=/points --max_scans=2 --initial_poses=" +
-                            Quote(chain) + " --plots=false --output_dir=" +
-                            Quote(dir + "/out"));
+      "mlndt_localize",
+      "--map=" + Quote(dir + "/bag.mlndt") + " --bag=" + Quote(dir + "/k.bag") +
+          " --topic=/points --max_scans=2 --initial_poses=" + Quote(chain) +
+          " --plots=false --output_dir=" + Quote(dir + "/out"));
   ASSERT_EQ(localize.exit_code, 0) << localize.err;
   const Trajectory t = ReadTum(dir + "/out/trajectory_tum.txt");
   ASSERT_EQ(t.size(), 2u);

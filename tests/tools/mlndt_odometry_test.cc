@@ -55,11 +55,11 @@ Trajectory ReadTum(const std::string& path) {
 TEST(MlndtOdometry, KittiFramesWithTimesGiveStampedTrajectoriesAndMetrics) {
   const std::string dir = testing::FreshTestDir("mlndt_odometry");
   const std::string times = WriteTimes(dir, 8);
-  const ToolRun run = RunTool(
-      "mlndt_odometry",
-      "--scans=" + Quote(KittiPcd()) + " --times=" + Quote(times) +
-          " --gt_poses=" + Quote(ReferenceChain(dir)) +
-          " --output_dir=" + Quote(dir + "/out") + " --plots=false");
+  const ToolRun run =
+      RunTool("mlndt_odometry",
+              "--scans=" + Quote(KittiPcd()) + " --times=" + Quote(times) +
+                  " --gt_poses=" + Quote(ReferenceChain(dir)) +
+                  " --output_dir=" + Quote(dir + "/out") + " --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("CONVERGENCE 8,"), std::string::npos) << run.out;
   const std::string tum_text = ReadWholeFile(dir + "/out/trajectory_tum.txt");
@@ -68,8 +68,7 @@ TEST(MlndtOdometry, KittiFramesWithTimesGiveStampedTrajectoriesAndMetrics) {
   const Trajectory tum = ReadTum(dir + "/out/trajectory_tum.txt");
   ASSERT_EQ(tum.size(), 8u);
   EXPECT_NEAR(tum.timestamp_s(7), 100.7, 1e-9);
-  const Json summary =
-      Json::parse(ReadWholeFile(dir + "/out/summary.json"));
+  const Json summary = Json::parse(ReadWholeFile(dir + "/out/summary.json"));
   EXPECT_EQ(summary["verdicts"]["CONVERGENCE"].get<int>(), 8);
   EXPECT_EQ(summary["fallbacks"].get<int>(), 0);
   // Against the consensus chain: a few centimetres after alignment.
@@ -84,9 +83,9 @@ TEST(MlndtOdometry, KittiFramesWithTimesGiveStampedTrajectoriesAndMetrics) {
 TEST(MlndtOdometry, EvalAssociatesItsTumFileByTimeWithAReferenceOfAnotherRate) {
   const std::string dir = testing::FreshTestDir("mlndt_odometry");
   const ToolRun run = RunTool(
-      "mlndt_odometry", "--scans=" + Quote(KittiPcd()) + " --times=" +
-                            Quote(WriteTimes(dir, 8)) + " --output_dir=" +
-                            Quote(dir + "/out") + " --plots=false");
+      "mlndt_odometry",
+      "--scans=" + Quote(KittiPcd()) + " --times=" + Quote(WriteTimes(dir, 8)) +
+          " --output_dir=" + Quote(dir + "/out") + " --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   std::vector<Isometry3d> chain;
   std::string error;
@@ -108,13 +107,14 @@ TEST(MlndtOdometry, EvalAssociatesItsTumFileByTimeWithAReferenceOfAnotherRate) {
   ASSERT_TRUE(WriteTrajectory(ref, TrajectoryFormat::TUM, reference, &error));
   const auto eval = [&](const std::string& association) {
     const ToolRun e = RunTool(
-        "mlndt_eval", "--reference=" + Quote(ref) + " --estimate=" +
-                          Quote(dir + "/out/trajectory_tum.txt") +
-                          " --association=" + association + " --output_json=" +
-                          Quote(dir + "/" + association + ".json"));
+        "mlndt_eval",
+        "--reference=" + Quote(ref) +
+            " --estimate=" + Quote(dir + "/out/trajectory_tum.txt") +
+            " --association=" + association +
+            " --output_json=" + Quote(dir + "/" + association + ".json"));
     EXPECT_EQ(e.exit_code, 0) << e.err;
-    return Json::parse(ReadWholeFile(dir + "/" + association + ".json"))
-        ["estimates"][0];
+    return Json::parse(
+        ReadWholeFile(dir + "/" + association + ".json"))["estimates"][0];
   };
   const Json by_time = eval("auto");
   EXPECT_EQ(by_time["association"].get<std::string>(), "timestamp");
@@ -128,16 +128,17 @@ TEST(MlndtOdometry, EvalAssociatesItsTumFileByTimeWithAReferenceOfAnotherRate) {
 // refuses to associate it by time.
 TEST(MlndtOdometry, IndexStampsAreSaidAndNotAssociatedByTime) {
   const std::string dir = testing::FreshTestDir("mlndt_odometry");
-  const ToolRun run = RunTool(
-      "mlndt_odometry", "--scans=" + Quote(KittiPcd()) + " --max_scans=3" +
-                            " --output_dir=" + Quote(dir + "/out") +
-                            " --plots=false");
+  const ToolRun run =
+      RunTool("mlndt_odometry",
+              "--scans=" + Quote(KittiPcd()) + " --max_scans=3" +
+                  " --output_dir=" + Quote(dir + "/out") + " --plots=false");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string tum = dir + "/out/trajectory_tum.txt";
   EXPECT_TRUE(TumStampsAreScanIndices(tum)) << ReadWholeFile(tum);
-  const ToolRun e = RunTool("mlndt_eval", "--reference=" + Quote(tum) +
-                                              " --estimate=" + Quote(tum) +
-                                              " --association=timestamp");
+  const ToolRun e =
+      RunTool("mlndt_eval",
+              "--reference=" + Quote(tum) + " --estimate=" + Quote(tum) +
+                  " --association=timestamp");
   EXPECT_EQ(e.exit_code, 1);
   EXPECT_NE(e.err.find("no time stamps"), std::string::npos) << e.err;
 }
@@ -152,15 +153,15 @@ TEST(MlndtOdometry, BagGivesTheFolderPosesWithTheBagStamps) {
     scans.push_back(KittiPcd() + "/00000" + std::to_string(i) + ".pcd");
   }
   std::string error;
-  ASSERT_TRUE(testing::WriteTestBag(dir + "/k.bag", "/points", scans, "",
-                                    &error))
+  ASSERT_TRUE(
+      testing::WriteTestBag(dir + "/k.bag", "/points", scans, "", &error))
       << error;
   std::ofstream(dir + "/times.txt") << "1000\n1000.1\n1000.2\n1000.3\n";
-  const ToolRun folder = RunTool(
-      "mlndt_odometry", "--scans=" + Quote(KittiPcd()) + " --max_scans=4" +
-                            " --times=" + Quote(dir + "/times.txt") +
-                            " --output_dir=" + Quote(dir + "/folder") +
-                            " --plots=false");
+  const ToolRun folder =
+      RunTool("mlndt_odometry",
+              "--scans=" + Quote(KittiPcd()) + " --max_scans=4" +
+                  " --times=" + Quote(dir + "/times.txt") +
+                  " --output_dir=" + Quote(dir + "/folder") + " --plots=false");
   ASSERT_EQ(folder.exit_code, 2);  // --times lists 4 stamps for 8 scans.
   EXPECT_NE(folder.err.find("has 4 stamps for 8 scans"), std::string::npos)
       << folder.err;
@@ -168,23 +169,25 @@ TEST(MlndtOdometry, BagGivesTheFolderPosesWithTheBagStamps) {
   for (const std::string& s : scans) {
     fs::copy_file(s, dir + "/pcd/" + fs::path(s).filename().string());
   }
-  const ToolRun folder4 = RunTool(
-      "mlndt_odometry", "--scans=" + Quote(dir + "/pcd") + " --times=" +
-                            Quote(dir + "/times.txt") + " --output_dir=" +
-                            Quote(dir + "/folder") + " --plots=false");
-  const ToolRun bag = RunTool(
-      "mlndt_odometry", "--bag=" + Quote(dir + "/k.bag") +
-                            " --topic=/points --output_dir=" +
-                            Quote(dir + "/bag") + " --plots=false");
+  const ToolRun folder4 =
+      RunTool("mlndt_odometry",
+              "--scans=" + Quote(dir + "/pcd") +
+                  " --times=" + Quote(dir + "/times.txt") +
+                  " --output_dir=" + Quote(dir + "/folder") + " --plots=false");
+  const ToolRun bag =
+      RunTool("mlndt_odometry",
+              "--bag=" + Quote(dir + "/k.bag") +
+                  " --topic=/points --output_dir=" + Quote(dir + "/bag") +
+                  " --plots=false");
   ASSERT_EQ(folder4.exit_code, 0) << folder4.err;
   ASSERT_EQ(bag.exit_code, 0) << bag.err;
   // The bag's stamps are integer nanoseconds: the time steps (and so the
   // predictions) differ from the text file's in the last digits only.
   std::vector<Isometry3d> from_bag, from_folder;
-  ASSERT_TRUE(ReadKittiPoses(dir + "/bag/trajectory_kitti.txt", &from_bag,
-                             &error));
-  ASSERT_TRUE(ReadKittiPoses(dir + "/folder/trajectory_kitti.txt",
-                             &from_folder, &error));
+  ASSERT_TRUE(
+      ReadKittiPoses(dir + "/bag/trajectory_kitti.txt", &from_bag, &error));
+  ASSERT_TRUE(ReadKittiPoses(
+      dir + "/folder/trajectory_kitti.txt", &from_folder, &error));
   ASSERT_EQ(from_bag.size(), 4u);
   ASSERT_EQ(from_folder.size(), 4u);
   for (size_t k = 0; k < 4; ++k) {
@@ -193,9 +196,9 @@ TEST(MlndtOdometry, BagGivesTheFolderPosesWithTheBagStamps) {
   const Trajectory tum = ReadTum(dir + "/bag/trajectory_tum.txt");
   ASSERT_EQ(tum.size(), 4u);
   EXPECT_NEAR(tum.timestamp_s(3), 1000.3, 1e-6);
-  EXPECT_NE(ReadWholeFile(dir + "/bag/trajectory_tum.txt")
-                .find("header stamps"),
-            std::string::npos);
+  EXPECT_NE(
+      ReadWholeFile(dir + "/bag/trajectory_tum.txt").find("header stamps"),
+      std::string::npos);
 }
 
 // Misuse exits 2 before any work, names the flag and writes nothing.
@@ -212,8 +215,8 @@ TEST(MlndtOdometry, RefusesBadInputFlagsBeforeAnyWork) {
        "--topic applies only with --bag"},
       {"--scans=" + Quote(KittiPcd()) + " --bag=x.bag --topic=/p" + out,
        "either --bag or a folder"},
-      {"--scans=" + Quote(KittiPcd()) + " --times=" +
-           Quote(dir + "/bad_times.txt") + out,
+      {"--scans=" + Quote(KittiPcd()) +
+           " --times=" + Quote(dir + "/bad_times.txt") + out,
        "line 2: time 0.5 is not after the previous line's"},
       {"--scans=" + Quote(KittiPcd()) + " --gate_factor=0.5" + out,
        "gate_factor"},
@@ -222,8 +225,8 @@ TEST(MlndtOdometry, RefusesBadInputFlagsBeforeAnyWork) {
   for (const auto& c : cases) {
     const ToolRun run = RunTool("mlndt_odometry", c.args);
     EXPECT_EQ(run.exit_code, 2) << c.args << "\n" << run.err;
-    EXPECT_NE(run.err.find(c.message), std::string::npos)
-        << c.args << "\n" << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.args << "\n"
+                                                          << run.err;
   }
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }

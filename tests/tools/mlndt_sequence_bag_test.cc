@@ -26,20 +26,19 @@ TEST(MlndtSequenceBag, BagOfTheKittiFramesGivesTheFolderPoses) {
     scans.push_back(pcd + "/00000" + std::to_string(i) + ".pcd");
   }
   std::string error;
-  ASSERT_TRUE(testing::WriteTestBag(dir + "/kitti.bag", "/velodyne_points",
-                                    scans, "--point_time", &error))
+  ASSERT_TRUE(testing::WriteTestBag(
+      dir + "/kitti.bag", "/velodyne_points", scans, "--point_time", &error))
       << error;
   const std::string gt =
       " --gt_poses=" + Quote(testing::BundledDataPath("kitti/poses_velo.txt"));
   const ToolRun folder =
-      RunTool("mlndt_sequence", "--scans=" + Quote(pcd) + gt +
-                                    " --output_dir=" + Quote(dir + "/folder") +
-                                    " --plots=false");
+      RunTool("mlndt_sequence",
+              "--scans=" + Quote(pcd) + gt +
+                  " --output_dir=" + Quote(dir + "/folder") + " --plots=false");
   const ToolRun bag = RunTool(
-      "mlndt_sequence", "--bag=" + Quote(dir + "/kitti.bag") +
-                            " --topic=/velodyne_points" + gt +
-                            " --output_dir=" + Quote(dir + "/bag") +
-                            " --plots=false");
+      "mlndt_sequence",
+      "--bag=" + Quote(dir + "/kitti.bag") + " --topic=/velodyne_points" + gt +
+          " --output_dir=" + Quote(dir + "/bag") + " --plots=false");
   ASSERT_EQ(folder.exit_code, 0) << folder.err;
   ASSERT_EQ(bag.exit_code, 0) << bag.err;
   const std::string poses = ReadWholeFile(dir + "/bag/trajectory.txt");
@@ -49,17 +48,18 @@ TEST(MlndtSequenceBag, BagOfTheKittiFramesGivesTheFolderPoses) {
   EXPECT_TRUE(TumStampsAreScanIndices(dir + "/folder/trajectory_tum.txt"));
   EXPECT_FALSE(TumStampsAreScanIndices(dir + "/bag/trajectory_tum.txt"));
   Trajectory tum;
-  ASSERT_TRUE(ReadTrajectory(dir + "/bag/trajectory_tum.txt",
-                             TrajectoryFormat::TUM, &tum, &error))
+  ASSERT_TRUE(ReadTrajectory(
+      dir + "/bag/trajectory_tum.txt", TrajectoryFormat::TUM, &tum, &error))
       << error;
   ASSERT_EQ(tum.size(), 8u);
   EXPECT_NEAR(tum.timestamp_s(0), 1000.0, 1e-6);
   EXPECT_NEAR(tum.timestamp_s(7), 1000.7, 1e-6);
   // A topic the bag does not have: exit 2, naming the topics it has.
-  const ToolRun wrong = RunTool(
-      "mlndt_sequence", "--bag=" + Quote(dir + "/kitti.bag") +
-                            " --topic=/points --output_dir=" +
-                            Quote(dir + "/wrong") + " --plots=false");
+  const ToolRun wrong =
+      RunTool("mlndt_sequence",
+              "--bag=" + Quote(dir + "/kitti.bag") +
+                  " --topic=/points --output_dir=" + Quote(dir + "/wrong") +
+                  " --plots=false");
   EXPECT_EQ(wrong.exit_code, 2);
   EXPECT_NE(wrong.err.find("/velodyne_points (sensor_msgs/PointCloud2)"),
             std::string::npos)

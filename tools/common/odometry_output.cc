@@ -16,26 +16,22 @@ namespace {
 
 std::string ScanRow(const ScanInput& input, const OdometryResult& r) {
   const Vector6d xi = IsometryToPoseVector(r.world_from_sensor);
-  std::string row = std::to_string(r.index) + "," +
-                    CsvField(input.name(r.index)) + "," + Fmt(r.stamp_s, 9) +
-                    "," + TerminationTypeToString(r.termination) + "," +
-                    (r.fallback ? "1" : "0") + "," + (r.keyframe ? "1" : "0") +
-                    "," + (r.deskewed ? "1" : "0") + "," +
-                    std::to_string(r.start_layer) + "," +
-                    std::to_string(r.num_layers) + "," +
-                    std::to_string(r.iterations) + "," +
-                    Num(r.uncertainty.translation_m) + "," +
-                    Num(r.uncertainty.rotation_deg) + "," +
-                    Num(r.correction_m) + "," + Num(r.correction_deg) + "," +
-                    Num(r.quality.inlier_fraction) + "," +
-                    std::to_string(r.map_keyframes) + "," +
-                    std::to_string(r.map_points);
+  std::string row =
+      std::to_string(r.index) + "," + CsvField(input.name(r.index)) + "," +
+      Fmt(r.stamp_s, 9) + "," + TerminationTypeToString(r.termination) + "," +
+      (r.fallback ? "1" : "0") + "," + (r.keyframe ? "1" : "0") + "," +
+      (r.deskewed ? "1" : "0") + "," + std::to_string(r.start_layer) + "," +
+      std::to_string(r.num_layers) + "," + std::to_string(r.iterations) + "," +
+      Num(r.uncertainty.translation_m) + "," + Num(r.uncertainty.rotation_deg) +
+      "," + Num(r.correction_m) + "," + Num(r.correction_deg) + "," +
+      Num(r.quality.inlier_fraction) + "," + std::to_string(r.map_keyframes) +
+      "," + std::to_string(r.map_points);
   for (int k = 0; k < 6; ++k) {
     row += "," + Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
   }
   row += "," + Fmt(r.registration_time_s * 1e3, 3) + "," +
-         Fmt(r.map_time_s * 1e3, 3) + "," + Fmt(r.total_time_s * 1e3, 3) +
-         "," + CsvField(r.message) + "\n";
+         Fmt(r.map_time_s * 1e3, 3) + "," + Fmt(r.total_time_s * 1e3, 3) + "," +
+         CsvField(r.message) + "\n";
   return row;
 }
 
@@ -109,15 +105,17 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
   json["keyframes"] = summary.keyframes;
   json["map_restarts"] = summary.map_restarts;
   std::vector<double> total_ms;
-  for (const OdometryResult& r : results) total_ms.push_back(r.total_time_s * 1e3);
+  for (const OdometryResult& r : results)
+    total_ms.push_back(r.total_time_s * 1e3);
   json["time_per_scan_ms"] = StatsJson(ComputeStats(total_ms));
   if (metrics == nullptr) return json;
   Json lengths = Json::array();
   for (const KittiLengthErrors& l : metrics->segments.lengths) {
-    lengths.push_back({{"length_m", Number(l.length_m)},
-                       {"segments", l.num_segments},
-                       {"translation_percent", Number(l.translation_error_percent)},
-                       {"rotation_deg_per_m", Number(l.rotation_error_deg_per_m)}});
+    lengths.push_back(
+        {{"length_m", Number(l.length_m)},
+         {"segments", l.num_segments},
+         {"translation_percent", Number(l.translation_error_percent)},
+         {"rotation_deg_per_m", Number(l.rotation_error_deg_per_m)}});
   }
   json["metrics"] = {
       {"ate_se3_rmse_m", Number(metrics->ate.rmse_m)},
@@ -133,27 +131,43 @@ void PrintOdometrySummary(const OdometrySummary& summary,
                           const std::vector<OdometryResult>& results,
                           const OdometryMetrics* metrics) {
   std::vector<double> total_ms;
-  for (const OdometryResult& r : results) total_ms.push_back(r.total_time_s * 1e3);
+  for (const OdometryResult& r : results)
+    total_ms.push_back(r.total_time_s * 1e3);
   const Stats t = ComputeStats(total_ms);
   std::printf(
       "scans: %zu; CONVERGENCE %zu, NO_CONVERGENCE %zu, LOW_QUALITY %zu, "
       "DEGENERATE %zu, FAILURE %zu; prediction used (fallback) for %zu; "
       "keyframes %zu; local map restarts %zu\ntime per scan [ms]: mean %.1f, "
       "median %.1f, max %.1f\n",
-      summary.scans, summary.convergence, summary.no_convergence,
-      summary.low_quality, summary.degenerate, summary.failure,
-      summary.fallbacks, summary.keyframes, summary.map_restarts, t.mean,
-      t.median, t.max);
+      summary.scans,
+      summary.convergence,
+      summary.no_convergence,
+      summary.low_quality,
+      summary.degenerate,
+      summary.failure,
+      summary.fallbacks,
+      summary.keyframes,
+      summary.map_restarts,
+      t.mean,
+      t.median,
+      t.max);
   if (metrics == nullptr) return;
   std::printf("ATE (SE3-aligned): rmse %.3f m, max %.3f m\n",
-              metrics->ate.rmse_m, metrics->ate.errors.max);
-  std::printf("RPE over %d scans: translation rmse %.3f m, rotation rmse %.3f deg\n",
-              metrics->rpe_delta, metrics->rpe.translation_rmse_m,
-              metrics->rpe.rotation_rmse_deg);
+              metrics->ate.rmse_m,
+              metrics->ate.errors.max);
+  std::printf(
+      "RPE over %d scans: translation rmse %.3f m, rotation rmse %.3f deg\n",
+      metrics->rpe_delta,
+      metrics->rpe.translation_rmse_m,
+      metrics->rpe.rotation_rmse_deg);
   for (const KittiLengthErrors& l : metrics->segments.lengths) {
-    std::printf("KITTI segments of %.0f m (%zu): translation %.2f %%, rotation "
-                "%.4f deg/m\n", l.length_m, l.num_segments,
-                l.translation_error_percent, l.rotation_error_deg_per_m);
+    std::printf(
+        "KITTI segments of %.0f m (%zu): translation %.2f %%, rotation "
+        "%.4f deg/m\n",
+        l.length_m,
+        l.num_segments,
+        l.translation_error_percent,
+        l.rotation_error_deg_per_m);
   }
 }
 

@@ -31,8 +31,9 @@ bool OpenBag(size_t max_scans,
     return false;
   }
   if (!FLAGS_times.empty()) {
-    *error = "--times does not apply to --bag (the bag's header stamps are "
-             "the scans' times)";
+    *error =
+        "--times does not apply to --bag (the bag's header stamps are "
+        "the scans' times)";
     return false;
   }
   std::unique_ptr<RosBagScans> scans;
@@ -51,13 +52,12 @@ bool OpenBag(size_t max_scans,
 
 }  // namespace
 
-bool ScanInputFromFlags(
-    bool folder_given,
-    const std::function<bool(std::vector<std::string>*, std::string*)>&
-        list_folder,
-    size_t max_scans,
-    ScanInput* input,
-    std::string* error) {
+bool ScanInputFromFlags(bool folder_given,
+                        const std::function<bool(std::vector<std::string>*,
+                                                 std::string*)>& list_folder,
+                        size_t max_scans,
+                        ScanInput* input,
+                        std::string* error) {
   *input = ScanInput();
   if (!FLAGS_bag.empty()) {
     if (folder_given) {
@@ -66,8 +66,8 @@ bool ScanInputFromFlags(
     }
     if (!OpenBag(max_scans, &input->names_, &input->bag_, error)) return false;
     input->stamps_s_.assign(input->names_.size(), kUnknown);
-    input->time_source_ = "bag " + FLAGS_bag + " topic " + FLAGS_topic +
-                          ": header stamps";
+    input->time_source_ =
+        "bag " + FLAGS_bag + " topic " + FLAGS_topic + ": header stamps";
     return true;
   }
   if (!FLAGS_topic.empty()) {

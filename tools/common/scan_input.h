@@ -74,13 +74,12 @@ class ScanInput {
 // --bag, which has its stamps; exactly one stamp per scan before
 // max_scans). False with *error naming the flag or file: the tool's usage
 // error (exit 2, before any work).
-bool ScanInputFromFlags(
-    bool folder_given,
-    const std::function<bool(std::vector<std::string>*, std::string*)>&
-        list_folder,
-    size_t max_scans,
-    ScanInput* input,
-    std::string* error);
+bool ScanInputFromFlags(bool folder_given,
+                        const std::function<bool(std::vector<std::string>*,
+                                                 std::string*)>& list_folder,
+                        size_t max_scans,
+                        ScanInput* input,
+                        std::string* error);
 
 }  // namespace tools
 }  // namespace mlndt

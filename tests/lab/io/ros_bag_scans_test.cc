@@ -15,8 +15,8 @@ using testing::BundledDataPath;
 std::vector<std::string> KittiScans(int n) {
   std::vector<std::string> scans;
   for (int i = 0; i < n; ++i) {
-    scans.push_back(BundledDataPath("kitti/pcd/00000" + std::to_string(i) +
-                                    ".pcd"));
+    scans.push_back(
+        BundledDataPath("kitti/pcd/00000" + std::to_string(i) + ".pcd"));
   }
   return scans;
 }
@@ -55,8 +55,7 @@ TEST(RosBagScans, BundledKittiScansReadPointForPointAsTheirPcdFiles) {
   }
   BagScan beyond;
   EXPECT_FALSE(reader->Read(scans.size(), &beyond, &error));
-  EXPECT_NE(error.find("the topic has 2 messages"), std::string::npos)
-      << error;
+  EXPECT_NE(error.find("the topic has 2 messages"), std::string::npos) << error;
 }
 
 TEST(RosBagScans, MissingTopicWrongTypeAndMissingFileNameWhatTheBagHas) {
@@ -79,8 +78,8 @@ TEST(RosBagScans, MissingTopicWrongTypeAndMissingFileNameWhatTheBagHas) {
                        "sensor_msgs/PointCloud2"),
             std::string::npos)
       << error;
-  EXPECT_FALSE(RosBagScans::Open(dir + "/missing.bag", "/points", &reader,
-                                 &error));
+  EXPECT_FALSE(
+      RosBagScans::Open(dir + "/missing.bag", "/points", &reader, &error));
   EXPECT_NE(error.find("missing.bag"), std::string::npos) << error;
   EXPECT_EQ(reader, nullptr);
 }
