@@ -183,6 +183,24 @@ std::string ScanDetail(const tools::ScanInput& input, const OdometryResult& r) {
   return detail;
 }
 
+// trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
+int WritePlot(bool gnuplot_ok,
+              const std::vector<OdometryResult>& results,
+              const std::vector<Isometry3d>& reference) {
+  if (!gnuplot_ok) {
+    return Fail("plot skipped: gnuplot ('" + FLAGS_gnuplot +
+                "') not found; the other outputs are written. Install "
+                "gnuplot-nox or pass --plots=false");
+  }
+  std::string error;
+  if (!tools::WriteOdometryPlot(
+          FLAGS_gnuplot, FLAGS_output_dir, results, reference, &error)) {
+    return Fail(error);
+  }
+  std::printf("plot: trajectory_xy.png\n");
+  return 0;
+}
+
 int Run() {
   OdometryOptions options;
   std::vector<double> lengths;
@@ -245,16 +263,8 @@ int Run() {
   tools::PrintOdometrySummary(summary, results, m);
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
   if (FLAGS_plots) {
-    if (!gnuplot_ok) {
-      return Fail("plot skipped: gnuplot ('" + FLAGS_gnuplot +
-                  "') not found; the other outputs are written. Install "
-                  "gnuplot-nox or pass --plots=false");
-    }
-    if (!tools::WriteOdometryPlot(
-            FLAGS_gnuplot, FLAGS_output_dir, results, reference, &error)) {
-      return Fail(error);
-    }
-    std::printf("plot: trajectory_xy.png\n");
+    const int plot = WritePlot(gnuplot_ok, results, reference);
+    if (plot != 0) return plot;
   }
   if (!summary.AllUsable()) {
     return Fail(
