@@ -18,6 +18,9 @@ packages=(
   # mlndt.distributed's Dask.
   pybind11-dev python3-dev python3-numpy python3-pytest
   python3-venv python3-pip python3-setuptools python3-dask python3-distributed
+  # ROS 1 bags in the tools (lab/io, MLNDT_WITH_ROSBAG) and the bag written
+  # by the tests (python3-rosbag, python3-sensor-msgs).
+  librosbag-storage-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs
 )
 
 for arg in "$@"; do

@@ -13,12 +13,17 @@
 // ("t tx ty tz qx qy qz qw"); the format is detected (extension .kitti /
 // .tum, else the first line) or given (--format for the estimates,
 // --reference_format). Poses are paired by index (KITTI, the devkit's
-// convention) or, when both files are TUM, by timestamp within
-// --max_time_difference (--association). --reference_calib converts a
-// KITTI camera (cam0) reference into the Velodyne frame with the Tr line.
-// By index (--association=auto) the two files must hold equally many poses;
-// --association=index pairs the common prefix explicitly (the JSON's
-// "poses" and "pairs" say how many).
+// convention) or, when both have time stamps, by timestamp within
+// --max_time_difference (--association; evo's nearest-stamp matching, so
+// trajectories of different rates and offsets pair up by time). TUM files
+// have stamps unless their header says they are scan indices (as the mlndt
+// tools write when no times were known); a KITTI reference gets them from
+// --reference_times (one stamp per pose, e.g. times.txt). --reference_calib
+// converts a KITTI camera (cam0) reference into the Velodyne frame with the
+// Tr line.
+// By index (--association=auto without stamps) the two files must hold
+// equally many poses; --association=index pairs the common prefix
+// explicitly (the JSON's "poses" and "pairs" say how many).
 //
 // `chain PAIRS OUT` writes the KITTI pose file of the chained pairs of a
 // reference_pairs.json (eval/reference_pairs.h): from the smallest
@@ -40,6 +45,7 @@
 
 #include "lab/eval/kitti_segment_errors.h"
 #include "lab/eval/reference_pairs.h"
+#include "lab/eval/scan_times.h"
 #include "lab/eval/trajectory_association.h"
 #include "lab/eval/trajectory_io.h"
 #include "lab/eval/trajectory_metrics.h"
@@ -57,6 +63,8 @@ DEFINE_string(reference, "", "The reference trajectory (KITTI or TUM)");
 DEFINE_string(estimate, "", "Comma-separated trajectory files to evaluate (KITTI or TUM)");
 DEFINE_string(format, "auto", "Format of the --estimate files: auto | kitti | tum");
 DEFINE_string(reference_format, "auto", "Format of --reference: auto | kitti | tum");
+DEFINE_string(reference_times, "", "Time stamps of a KITTI --reference: a file of one stamp [s] "
+              "per pose (times.txt); then TUM estimates are associated by time");
 DEFINE_string(reference_calib, "", "KITTI calib.txt: --reference holds camera (cam0) poses, "
               "converted into the Velodyne frame with its Tr line");
 DEFINE_string(alignment, "se3", "ATE alignment: se3 | sim3 | first_pose | none");
@@ -255,6 +263,23 @@ bool ParseFlags(EvalFlags* flags, std::string* error) {
   return true;
 }
 
+// Stamps the poses of a KITTI reference with --reference_times.
+bool StampReference(Trajectory* reference, std::string* error) {
+  std::vector<double> stamps;
+  if (!ReadScanTimes(FLAGS_reference_times, &stamps, error)) return false;
+  if (stamps.size() != reference->size()) {
+    *error = FLAGS_reference_times + " has " + std::to_string(stamps.size()) +
+             " stamps for " + std::to_string(reference->size()) + " poses";
+    return false;
+  }
+  Trajectory stamped;
+  for (size_t k = 0; k < stamps.size(); ++k) {
+    stamped.Add(stamps[k], reference->world_from_sensor(k));
+  }
+  *reference = stamped;
+  return true;
+}
+
 bool ReadOne(const std::string& path,
              bool detect,
              TrajectoryFormat given,
@@ -294,20 +319,28 @@ struct EstimateResult {
 // `estimate` was read from result->path in result->format.
 bool Evaluate(const EvalFlags& flags,
               const Trajectory& reference,
-              TrajectoryFormat reference_format,
+              bool reference_timed,
               const Trajectory& estimate,
               EstimateResult* result,
               std::string* error) {
   result->poses = estimate.size();
+  const bool estimate_timed = result->format == TrajectoryFormat::TUM &&
+                              !TumStampsAreScanIndices(result->path);
   bool by_time = false;
   switch (flags.association) {
     case EvalFlags::Association::AUTO:
-      by_time = result->format == TrajectoryFormat::TUM &&
-                reference_format == TrajectoryFormat::TUM;
+      by_time = estimate_timed && reference_timed;
       break;
     case EvalFlags::Association::INDEX:
       break;
     case EvalFlags::Association::TIMESTAMP:
+      if (!estimate_timed || !reference_timed) {
+        *error = (estimate_timed ? FLAGS_reference : result->path) +
+                 ": no time stamps (KITTI, or a TUM file whose header says "
+                 "its stamps are scan indices): --association=timestamp "
+                 "needs stamps on both sides";
+        return false;
+      }
       by_time = true;
       break;
   }
@@ -410,6 +443,19 @@ int Run() {
                &error)) {
     return Refuse("--reference: " + error);
   }
+  if (!FLAGS_reference_times.empty()) {
+    if (reference_format != TrajectoryFormat::KITTI) {
+      return Refuse(
+          "--reference_times applies to a KITTI --reference (a TUM "
+          "file has its own stamps)");
+    }
+    if (!StampReference(&reference, &error)) {
+      return Refuse("--reference_times=" + error);
+    }
+  }
+  const bool reference_timed = !FLAGS_reference_times.empty() ||
+                               (reference_format == TrajectoryFormat::TUM &&
+                                !TumStampsAreScanIndices(FLAGS_reference));
   std::vector<EstimateResult> results(flags.estimates.size());
   std::vector<Trajectory> estimates(flags.estimates.size());
   for (size_t i = 0; i < flags.estimates.size(); ++i) {
@@ -444,7 +490,7 @@ int Run() {
   for (size_t i = 0; i < flags.estimates.size(); ++i) {
     if (!Evaluate(flags,
                   reference,
-                  reference_format,
+                  reference_timed,
                   estimates[i],
                   &results[i],
                   &error)) {

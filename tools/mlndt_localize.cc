@@ -1,7 +1,8 @@
 // mlndt_localize: registers every scan of a folder (or a list file) onto a
 // saved layered map (mlndt_map) with ML-NDT, one scan at a time.
 //
-//   mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT
+//   mlndt_localize --map=map.mlndt (--scans=DIR [--times=FILE]
+//                  | --bag=FILE --topic=NAME) --output_dir=OUT
 //                  [--initial_guess=tx,ty,tz,a,b,g | --initial_matrix=...
 //                   | --initial_poses=FILE [--poses_are_camera
 //                   --calib=calib.txt]]
@@ -16,8 +17,13 @@
 // in mlndt/pipeline/localizer.h). The map and the current scan are the only
 // clouds in memory: each scan is read when its turn comes.
 //
+// Scans come from a folder, a --scan_list or a ROS 1 bag's PointCloud2
+// topic (tools/common/scan_input.h).
+//
 // Writes into --output_dir: trajectory_kitti.txt and trajectory_tum.txt
-// (map_from_scan of every scan; TUM timestamps are the scan indices),
+// (map_from_scan of every scan; TUM time stamps are the bag's header stamps
+// or the --times file's, else the scan indices, as the file's first line
+// says),
 // scans.csv (per scan: verdict, fit quality, pose, correction from the
 // prediction, times), summary.json, and with --plots (default) the top view
 // trajectory_xy.png of the map's finest cells (subsampled to
@@ -57,6 +63,7 @@
 #include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/scan_input.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
@@ -102,12 +109,13 @@ int Refuse(const std::string& message) {
 
 // Every flag is checked here, before the map or any scan is read.
 bool CheckFlags(LocalizerOptions* options,
-                std::vector<std::string>* paths,
+                tools::ScanInput* input,
                 std::string* error) {
   if (FLAGS_map.empty() || FLAGS_output_dir.empty() ||
-      (FLAGS_scans.empty() && FLAGS_scan_list.empty())) {
+      (FLAGS_scans.empty() && FLAGS_scan_list.empty() && FLAGS_bag.empty())) {
     *error =
-        "give --map=FILE, --scans=DIR (or --scan_list=FILE) and "
+        "give --map=FILE, --scans=DIR (or --scan_list=FILE, or --bag=FILE "
+        "--topic=NAME) and "
         "--output_dir=DIR. Usage: mlndt_localize --map=map.mlndt --scans=DIR "
         "--output_dir=OUT [--initial_guess=tx,ty,tz,a,b,g]";
     return false;
@@ -149,12 +157,21 @@ bool CheckFlags(LocalizerOptions* options,
     return false;
   }
   if (!options->IsValid(error)) return false;
-  return tools::ScanPathsFromFlags(
-      FLAGS_scans,
-      FLAGS_scan_list,
-      {FLAGS_map, FLAGS_initial_poses, FLAGS_calib},
+  const auto list_folder = [](std::vector<std::string>* paths,
+                              std::string* list_error) {
+    return tools::ScanPathsFromFlags(
+        FLAGS_scans,
+        FLAGS_scan_list,
+        {FLAGS_map, FLAGS_initial_poses, FLAGS_calib, FLAGS_times},
+        0,
+        paths,
+        list_error);
+  };
+  return tools::ScanInputFromFlags(
+      !FLAGS_scans.empty() || !FLAGS_scan_list.empty(),
+      list_folder,
       static_cast<size_t>(FLAGS_max_scans),
-      paths,
+      input,
       error);
 }
 
@@ -350,9 +367,10 @@ bool WritePlot(const std::string& dir,
 int Run() {
   const double start = NowSeconds();
   LocalizerOptions options;
-  std::vector<std::string> paths;
+  tools::ScanInput input;
   std::string error;
-  if (!CheckFlags(&options, &paths, &error)) return Refuse(error);
+  if (!CheckFlags(&options, &input, &error)) return Refuse(error);
+  const std::vector<std::string>& paths = input.names();
   Isometry3d first_guess;
   if (!FirstPose(&first_guess, &error)) return Refuse(error);
   LayeredGrid map;
@@ -387,9 +405,7 @@ int Run() {
               FormatBytes(static_cast<double>(map.MemoryBytes())).c_str());
 
   tools::Progress progress(kTool, paths.size());
-  const ScanLoader load = [&](size_t k, PointCloud* scan, std::string* e) {
-    return ReadPointCloud(paths[k], scan, nullptr, e);
-  };
+  const ScanLoader load = input.Loader();
   const LocalizationCallback report = [&](const LocalizationResult& r) {
     char detail[200];
     std::snprintf(detail,
@@ -411,7 +427,7 @@ int Run() {
   const std::string out = FLAGS_output_dir + "/";
   Trajectory trajectory;
   for (const LocalizationResult& r : results) {
-    trajectory.Add(static_cast<double>(r.index), r.map_from_scan);
+    trajectory.Add(input.StampOf(r.index), r.map_from_scan);
   }
   if (!WriteTrajectory(out + "trajectory_kitti.txt",
                        TrajectoryFormat::KITTI,
@@ -420,6 +436,7 @@ int Run() {
       !WriteTrajectory(out + "trajectory_tum.txt",
                        TrajectoryFormat::TUM,
                        trajectory,
+                       input.TumComment(),
                        &error) ||
       !WriteScansCsv(out + "scans.csv", paths, results, &error)) {
     return Fail(error);

@@ -6,11 +6,13 @@
 //             --max_range=80]
 //             [--voxel_size=0.2] [--finest_cell_size=2 ...]
 //   mlndt_map --scan_list=scans.txt --poses=poses.tum --output=map.mlndt
+//   mlndt_map --bag=run.bag --topic=/points --poses=poses.txt --output=...
 //   mlndt_map --cloud=merged.pcd --output=map.mlndt [--voxel_size=0.2]
 //   mlndt_map info map.mlndt
 //
 // Building (the default): every scan of --scans (the cloud files in DIR,
-// sorted by name) or --scan_list (one path per line) is read in turn,
+// sorted by name), --scan_list (one path per line) or the PointCloud2
+// messages of --topic in the ROS 1 bag --bag is read in turn,
 // cropped by range from its sensor (--min_range, --max_range), moved into
 // the world frame by its pose and merged; pose k of --poses (KITTI
 // 12-number lines or TUM lines, format detected or --poses_format;
@@ -54,6 +56,7 @@
 #include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/scan_input.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 
@@ -92,6 +95,9 @@ int Refuse(const std::string& message) {
 // The flags of this file (the build's), for refusing them with `info`.
 const std::vector<std::string> kBuildFlags = {"scans",
                                               "scan_list",
+                                              "bag",
+                                              "topic",
+                                              "times",
                                               "poses",
                                               "poses_format",
                                               "calib",
@@ -184,7 +190,8 @@ int Info(const std::string& path) {
 }
 
 bool CheckFlags(MapBuildOptions* options, std::string* error) {
-  const bool from_scans = !FLAGS_scans.empty() || !FLAGS_scan_list.empty();
+  const bool from_scans =
+      !FLAGS_scans.empty() || !FLAGS_scan_list.empty() || !FLAGS_bag.empty();
   if (FLAGS_output.empty()) {
     *error =
         "--output=MAP is required. Usage: mlndt_map --scans=DIR "
@@ -192,11 +199,17 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
     return false;
   }
   if (!from_scans && FLAGS_cloud.empty()) {
-    *error = "give --scans=DIR (or --scan_list=FILE) with --poses, or --cloud";
+    *error =
+        "give --scans=DIR (or --scan_list=FILE, or --bag=FILE --topic=NAME) "
+        "with --poses, or --cloud";
+    return false;
+  }
+  if (!FLAGS_times.empty()) {
+    *error = "--times does not apply to mlndt_map (a map has no time)";
     return false;
   }
   if (from_scans && !FLAGS_cloud.empty()) {
-    *error = "give --cloud or --scans/--scan_list, not both";
+    *error = "give --cloud or --scans/--scan_list/--bag, not both";
     return false;
   }
   if (!FLAGS_cloud.empty() &&
@@ -327,15 +340,25 @@ int Build() {
     if (!BuildMapFromCloud(options, std::move(cloud), &map, &summary, &error))
       return Fail(error);
   } else {
-    std::vector<std::string> paths;
-    if (!tools::ScanPathsFromFlags(FLAGS_scans,
-                                   FLAGS_scan_list,
-                                   {FLAGS_poses, FLAGS_calib},
-                                   static_cast<size_t>(FLAGS_max_scans),
-                                   &paths,
-                                   &error)) {
+    tools::ScanInput input;
+    const auto list_folder = [](std::vector<std::string>* paths,
+                                std::string* list_error) {
+      return tools::ScanPathsFromFlags(FLAGS_scans,
+                                       FLAGS_scan_list,
+                                       {FLAGS_poses, FLAGS_calib},
+                                       0,
+                                       paths,
+                                       list_error);
+    };
+    if (!tools::ScanInputFromFlags(
+            !FLAGS_scans.empty() || !FLAGS_scan_list.empty(),
+            list_folder,
+            static_cast<size_t>(FLAGS_max_scans),
+            &input,
+            &error)) {
       return Refuse(error);
     }
+    const std::vector<std::string>& paths = input.names();
     std::vector<Isometry3d> poses;
     if (!tools::ReadPoseFile(
             FLAGS_poses, detect, format, FLAGS_calib, &poses, &error)) {
@@ -355,6 +378,7 @@ int Build() {
     const bool ok = BuildMapFromScans(
         options,
         paths,
+        input.Loader(),
         poses,
         [&](size_t done, size_t) {
           progress.Update(

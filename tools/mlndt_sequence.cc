@@ -2,7 +2,8 @@
 // scan i), chains the estimates into a trajectory and, with ground truth,
 // reports per-pair errors and totals in the layout of the paper's Tables 2-4.
 //
-//   mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=poses.txt
+//   mlndt_sequence (--scans=DIR [--times=FILE] | --bag=FILE --topic=NAME)
+//                  --output_dir=OUT [--gt_poses=poses.txt
 //   [--poses_are_camera --calib=calib.txt]]
 //                  [--step=1]
 //                  [--init=zero|gt_fraction:c|constant_velocity|poses:FILE]
@@ -10,8 +11,10 @@
 //
 // Scans are the point-cloud files in DIR (by extension), sorted by file
 // name; pose and calibration files given on the command line are left out
-// even when they sit in DIR. Ground-truth poses are KITTI lines, one per
-// scan, world_from_scan in the scans' own frame; with --poses_are_camera
+// even when they sit in DIR. Or the sensor_msgs/PointCloud2 messages of
+// --topic in the ROS 1 bag --bag, in bag order (tools/common/scan_input.h).
+// Ground-truth poses are KITTI lines, one per scan, world_from_scan in the
+// scans' own frame; with --poses_are_camera
 // --calib they are KITTI camera poses and are converted with the Tr line
 // (V = Tr^-1 P Tr; pose_flags.h). --calib applies to --init=poses:FILE too.
 //
@@ -35,7 +38,9 @@
 //
 // Writes into --output_dir: pairs.csv, summary.json, trace.csv,
 // trajectory.txt (chained estimates of scans 0, step, 2 step, ...; KITTI
-// format, first pose identity), gt_trajectory.txt (same scans, from the
+// format, first pose identity), trajectory_tum.txt (the same, stamped with
+// the bag's header stamps or --times, else the scan indices, as its header
+// line says), gt_trajectory.txt (same scans, from the
 // ground truth), and with --plots the PNGs errors_translation,
 // errors_rotation, trajectory_xy and score_vs_iteration (gnuplot; data and
 // scripts in plot_data/). Pairs are counted by verdict (summary.json
@@ -61,6 +66,7 @@
 
 #include "lab/eval/dataset.h"
 #include "lab/eval/pose_convention.h"
+#include "lab/eval/trajectory_io.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
 #include "lab/runs/sequence_totals.h"
@@ -73,6 +79,7 @@
 #include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
+#include "tools/common/scan_input.h"
 #include "tools/common/sequence_output.h"
 #include "tools/common/sequence_plots.h"
 #include "tools/common/start_layer_check.h"
@@ -140,10 +147,10 @@ bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
 
 // The run's options from the flags; false with *error for bad values.
 bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
-  if (FLAGS_scans.empty() || FLAGS_output_dir.empty()) {
+  if ((FLAGS_scans.empty() && FLAGS_bag.empty()) || FLAGS_output_dir.empty()) {
     *error =
-        "Usage: mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
-        "...";
+        "Usage: mlndt_sequence (--scans=DIR | --bag=FILE --topic=NAME) "
+        "--output_dir=OUT [--gt_poses=FILE] ...";
     return false;
   }
   if (FLAGS_step < 1) {
@@ -182,23 +189,29 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
 // The scans (at most --max_scans) and, when given, the ground truth and
 // the odometry of --init=poses:FILE, one pose per scan.
 bool ReadScansAndPoses(const SequenceOptions& options,
-                       std::vector<std::string>* paths,
+                       tools::ScanInput* input,
                        std::vector<Isometry3d>* truth,
                        std::vector<Isometry3d>* odometry,
                        std::string* error) {
-  if (!ListScanFiles(FLAGS_scans,
-                     {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path},
-                     paths,
-                     error)) {
+  const auto list_folder = [&](std::vector<std::string>* paths,
+                               std::string* list_error) {
+    return ListScanFiles(
+        FLAGS_scans,
+        {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
+        paths,
+        list_error);
+  };
+  if (!tools::ScanInputFromFlags(!FLAGS_scans.empty(),
+                                 list_folder,
+                                 static_cast<size_t>(FLAGS_max_scans),
+                                 input,
+                                 error)) {
     return false;
   }
-  if (FLAGS_max_scans > 0 &&
-      paths->size() > static_cast<size_t>(FLAGS_max_scans)) {
-    paths->resize(static_cast<size_t>(FLAGS_max_scans));
-  }
+  const std::vector<std::string>* paths = &input->names();
   const std::string scans = std::to_string(paths->size()) + " scans";
   if (paths->size() <= options.step) {
-    *error = FLAGS_scans + ": " + scans +
+    *error = (FLAGS_bag.empty() ? FLAGS_scans : FLAGS_bag) + ": " + scans +
              ", too few for --step=" + std::to_string(options.step);
     return false;
   }
@@ -264,6 +277,10 @@ tools::Json SummaryHeader(const SequenceOptions& options, size_t num_scans) {
   const MatcherOptions& registration = options.registration;
   tools::Json header = tools::ToolJson("mlndt_sequence");
   header["scans_dir"] = FLAGS_scans;
+  if (!FLAGS_bag.empty()) {
+    header["bag"] = FLAGS_bag;
+    header["topic"] = FLAGS_topic;
+  }
   header["scans"] = num_scans;
   header["step"] = options.step;
   header["init"] = InitSpecToString(options.init);
@@ -290,7 +307,22 @@ tools::Json SummaryHeader(const SequenceOptions& options, size_t num_scans) {
 }
 
 // pairs.csv, trace.csv, summary.json and the trajectories.
+// The chained trajectory in TUM format, stamped with the scans' times.
+bool WriteTumTrajectory(const std::string& path,
+                        const std::vector<Isometry3d>& poses,
+                        size_t step,
+                        const tools::ScanInput& input,
+                        std::string* error) {
+  Trajectory trajectory;
+  for (size_t k = 0; k < poses.size(); ++k) {
+    trajectory.Add(input.StampOf(k * step), poses[k]);
+  }
+  return WriteTrajectory(
+      path, TrajectoryFormat::TUM, trajectory, input.TumComment(), error);
+}
+
 bool WriteFiles(const SequenceOptions& options,
+                const tools::ScanInput& input,
                 const ScanStore& store,
                 const std::vector<PairResult>& results,
                 bool has_truth,
@@ -306,9 +338,11 @@ bool WriteFiles(const SequenceOptions& options,
           error)) {
     return false;
   }
-  if (!WriteKittiPoses(out + "trajectory.txt",
-                       ChainTrajectory(results, options.step, false),
-                       error)) {
+  const std::vector<Isometry3d> chained =
+      ChainTrajectory(results, options.step, false);
+  if (!WriteKittiPoses(out + "trajectory.txt", chained, error) ||
+      !WriteTumTrajectory(
+          out + "trajectory_tum.txt", chained, options.step, input, error)) {
     return false;
   }
   return !has_truth ||
@@ -376,9 +410,9 @@ int Run() {
       !tools::CheckStartLayerBeforeMap(options.registration.mlndt, &error)) {
     return Refuse(error);
   }
-  std::vector<std::string> paths;
+  tools::ScanInput input;
   std::vector<Isometry3d> truth, odometry;
-  if (!ReadScansAndPoses(options, &paths, &truth, &odometry, &error)) {
+  if (!ReadScansAndPoses(options, &input, &truth, &odometry, &error)) {
     return Refuse(error);
   }
   if (!tools::PrepareOutputDir("output_dir",
@@ -396,8 +430,9 @@ int Run() {
                  "scripts/install_deps.sh, or pass --plots=false)\n";
   }
 
-  ScanStore store(paths);
-  tools::Progress progress("mlndt_sequence", paths.size() - options.step);
+  ScanStore store = input.from_bag() ? ScanStore(input.names(), input.Loader())
+                                     : ScanStore(input.paths());
+  tools::Progress progress("mlndt_sequence", input.size() - options.step);
   std::vector<PairResult> results;
   const auto on_pair = [&](const PairResult& r, size_t done, size_t) {
     progress.Update(done, PairDetail(r));
@@ -411,7 +446,7 @@ int Run() {
                               &error);
   progress.Finish();
   if (!ok) return Fail(error);
-  if (!WriteFiles(options, store, results, !truth.empty(), &error)) {
+  if (!WriteFiles(options, input, store, results, !truth.empty(), &error)) {
     return Fail(error);
   }
   tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
@@ -426,7 +461,8 @@ int main(int argc, char** argv) {
   if (!mlndt::tools::StartTool(
           "Registers a scan sequence pair by pair and evaluates it against "
           "ground truth.\n"
-          "  mlndt_sequence --scans=DIR --output_dir=OUT [--gt_poses=FILE] "
+          "  mlndt_sequence (--scans=DIR | --bag=FILE --topic=NAME) "
+          "--output_dir=OUT [--gt_poses=FILE] "
           "[--step=1] [--init=zero]\n"
           "Exit 1 when any pair's result is not usable (LOW_QUALITY, "
           "DEGENERATE or FAILURE; counted by verdict in the summary and "

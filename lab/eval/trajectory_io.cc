@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string_view>
 #include <vector>
 
@@ -113,8 +114,11 @@ bool ReadTum(const std::string& path,
   return true;
 }
 
-std::string FormatTum(const Trajectory& trajectory) {
-  std::string text = "# timestamp tx ty tz qx qy qz qw\n";
+std::string FormatTum(const Trajectory& trajectory,
+                      const std::string& comment) {
+  std::string text;
+  if (!comment.empty()) text += "# " + comment + "\n";
+  text += "# timestamp tx ty tz qx qy qz qw\n";
   char line[512];
   for (size_t i = 0; i < trajectory.size(); ++i) {
     const Isometry3d& pose = trajectory.world_from_sensor(i);
@@ -213,15 +217,36 @@ bool ReadTrajectory(const std::string& path,
   return ReadTrajectory(path, format, trajectory, error);
 }
 
+bool TumStampsAreScanIndices(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+    if (line.find(kTumIndexStampsComment) != std::string::npos) return true;
+  }
+  return false;
+}
+
 bool WriteTrajectory(const std::string& path,
                      TrajectoryFormat format,
                      const Trajectory& trajectory,
+                     std::string* error) {
+  return WriteTrajectory(path, format, trajectory, "", error);
+}
+
+bool WriteTrajectory(const std::string& path,
+                     TrajectoryFormat format,
+                     const Trajectory& trajectory,
+                     const std::string& comment,
                      std::string* error) {
   CHECK(error != nullptr);
   if (format == TrajectoryFormat::KITTI) {
     return WriteKittiPoses(path, trajectory.poses(), error);
   }
-  return WriteTextFile(path, FormatTum(trajectory), error);
+  if (comment.find('\n') != std::string::npos) {
+    *error = path + ": a TUM header comment must be one line";
+    return false;
+  }
+  return WriteTextFile(path, FormatTum(trajectory, comment), error);
 }
 
 }  // namespace mlndt

@@ -49,12 +49,27 @@ bool ReadTrajectory(const std::string& path,
                     Trajectory* trajectory,
                     std::string* error);
 
+// The comment WriteTrajectory's callers put first in a TUM file whose time
+// stamps are scan indices (no times were known), and whether the file at
+// `path` starts with it: such a file is associated by index, not by time.
+constexpr char kTumIndexStampsComment[] =
+    "time stamps: scan indices (0, 1, 2, ...), not times";
+bool TumStampsAreScanIndices(const std::string& path);
+
 // Writes with 17 significant digits, so every number reads back as the same
 // double. KITTI drops the timestamps. TUM writes a '#' header line and the
 // quaternion of each rotation with w >= 0.
 bool WriteTrajectory(const std::string& path,
                      TrajectoryFormat format,
                      const Trajectory& trajectory,
+                     std::string* error);
+// The same; TUM files start with "# <comment>" when `comment` (one line) is
+// not empty: where the time stamps come from (a times file, bag header
+// stamps) or that they are scan indices.
+bool WriteTrajectory(const std::string& path,
+                     TrajectoryFormat format,
+                     const Trajectory& trajectory,
+                     const std::string& comment,
                      std::string* error);
 
 }  // namespace mlndt

@@ -13,6 +13,12 @@ namespace mlndt {
 ScanStore::ScanStore(std::vector<std::string> paths)
     : paths_(std::move(paths)), clouds_(paths_.size()), maps_(paths_.size()) {}
 
+ScanStore::ScanStore(std::vector<std::string> names, ScanLoader load)
+    : paths_(std::move(names)),
+      load_(std::move(load)),
+      clouds_(paths_.size()),
+      maps_(paths_.size()) {}
+
 std::string ScanStore::file_name(size_t i) const {
   return std::filesystem::path(paths_.at(i)).filename().string();
 }
@@ -21,9 +27,10 @@ const PointCloud* ScanStore::Cloud(size_t i, std::string* error) {
   CHECK(error != nullptr);
   if (clouds_.at(i) == nullptr) {
     auto cloud = std::make_unique<PointCloud>();
-    if (!ReadPointCloud(paths_[i], cloud.get(), nullptr, error)) {
-      return nullptr;
-    }
+    const bool read =
+        load_ ? load_(i, cloud.get(), error)
+              : ReadPointCloud(paths_[i], cloud.get(), nullptr, error);
+    if (!read) return nullptr;
     if (cloud->size() == 0) {
       *error = paths_[i] + ": no finite points";
       return nullptr;

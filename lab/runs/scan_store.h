@@ -18,6 +18,7 @@
 
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/pipeline/localizer.h"
 
 namespace mlndt {
 
@@ -27,6 +28,9 @@ namespace mlndt {
 class ScanStore {
  public:
   explicit ScanStore(std::vector<std::string> paths);
+  // Scans from `load` (a ROS bag, tools/common/scan_input.h) instead of
+  // files; `names` name them in messages and reports, one per scan.
+  ScanStore(std::vector<std::string> names, ScanLoader load);
 
   size_t size() const { return paths_.size(); }
   const std::string& path(size_t i) const { return paths_.at(i); }
@@ -62,6 +66,7 @@ class ScanStore {
       std::pair<LayeredGridOptions, std::unique_ptr<const LayeredGrid>>;
 
   std::vector<std::string> paths_;
+  ScanLoader load_;  // Empty: read paths_ with ReadPointCloud.
   std::vector<std::unique_ptr<const PointCloud>> clouds_;
   std::vector<std::vector<CachedMap>> maps_;  // Per scan.
   size_t num_maps_built_ = 0;

@@ -97,6 +97,7 @@ bool MapBuildOptions::IsValid(std::string* error) const {
 
 bool BuildMapFromScans(const MapBuildOptions& options,
                        const std::vector<std::string>& scan_paths,
+                       const ScanLoader& load_scan,
                        const std::vector<Isometry3d>& world_from_scan,
                        const MapBuildProgress& on_scan,
                        LayeredGrid* map,
@@ -131,7 +132,7 @@ bool BuildMapFromScans(const MapBuildOptions& options,
   std::vector<Eigen::Vector3d> merged;
   PointCloud scan;
   for (size_t k = 0; k < scan_paths.size(); ++k) {
-    if (!ReadPointCloud(scan_paths[k], &scan, nullptr, error)) return false;
+    if (!load_scan(k, &scan, error)) return false;
     summary->input_points += scan.size();
     if (scan.empty()) summary->scans_without_points.push_back(k);
     const size_t read = scan.size();
@@ -166,6 +167,19 @@ bool BuildMapFromScans(const MapBuildOptions& options,
       options, PointCloud(std::move(merged)), map, summary, error);
   summary->total_time_s = NowSeconds() - start;
   return ok;
+}
+bool BuildMapFromScans(const MapBuildOptions& options,
+                       const std::vector<std::string>& scan_paths,
+                       const std::vector<Isometry3d>& world_from_scan,
+                       const MapBuildProgress& on_scan,
+                       LayeredGrid* map,
+                       MapBuildSummary* summary,
+                       std::string* error) {
+  const ScanLoader read = [&](size_t k, PointCloud* scan, std::string* e) {
+    return ReadPointCloud(scan_paths[k], scan, nullptr, e);
+  };
+  return BuildMapFromScans(
+      options, scan_paths, read, world_from_scan, on_scan, map, summary, error);
 }
 
 bool BuildMapFromCloud(const MapBuildOptions& options,

@@ -24,6 +24,7 @@
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/grid/map_memory.h"
+#include "mlndt/pipeline/localizer.h"
 
 namespace mlndt {
 
@@ -81,6 +82,17 @@ using MapBuildProgress = std::function<void(size_t done, size_t total)>;
 // then unchanged.
 bool BuildMapFromScans(const MapBuildOptions& options,
                        const std::vector<std::string>& scan_paths,
+                       const std::vector<Isometry3d>& world_from_scan,
+                       const MapBuildProgress& on_scan,
+                       LayeredGrid* map,
+                       MapBuildSummary* summary,
+                       std::string* error);
+
+// The same with scan k loaded by `load_scan` (a ROS bag, ...); scan_names
+// name the scans in messages, one per scan.
+bool BuildMapFromScans(const MapBuildOptions& options,
+                       const std::vector<std::string>& scan_names,
+                       const ScanLoader& load_scan,
                        const std::vector<Isometry3d>& world_from_scan,
                        const MapBuildProgress& on_scan,
                        LayeredGrid* map,

@@ -334,7 +334,9 @@ TEST(MlndtMap, RefusesBadFlags) {
     std::string message;
   } cases[] = {
       {scans, "--output=MAP is required"},
-      {to, "give --scans=DIR (or --scan_list=FILE) with --poses, or --cloud"},
+      {to,
+       "give --scans=DIR (or --scan_list=FILE, or --bag=FILE --topic=NAME) "
+       "with --poses, or --cloud"},
       {"--scans=" + Quote(KittiPcd()) + to, "need --poses"},
       {scans + " --cloud=x.pcd" + to, "give --cloud or --scans/--scan_list"},
       {scans + " --scan_list=x.txt" + to,

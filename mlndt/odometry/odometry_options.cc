@@ -1,0 +1,17 @@
+#include "mlndt/odometry/odometry_options.h"
+
+#include "mlndt/common/internal/check_option.h"
+
+namespace mlndt {
+
+bool OdometryOptions::IsValid(std::string* error) const {
+  if (!registration.IsValid(error) || !local_map.IsValid(error) ||
+      !keyframes.IsValid(error) || !prediction.IsValid(error)) {
+    return false;
+  }
+  MLNDT_OPTION_GE(gate_factor, 1.0);
+  MLNDT_OPTION_GE(max_consecutive_fallbacks, 1);
+  return true;
+}
+
+}  // namespace mlndt

@@ -1,0 +1,39 @@
+#pragma once
+
+// Everything the scan-to-local-map odometry (odometry.h) is configured by.
+
+#include <string>
+
+#include "mlndt/odometry/keyframe_policy.h"
+#include "mlndt/odometry/local_map.h"
+#include "mlndt/odometry/motion_prediction.h"
+#include "mlndt/registration/registration_options.h"
+
+namespace mlndt {
+
+struct OdometryOptions {
+  // The registration of each scan onto the local map. Its grid does not
+  // apply (local_map.grid builds the map) and its initial_uncertainty is set
+  // per scan from the prediction.
+  RegistrationOptions registration;
+  LocalMapOptions local_map;
+  KeyframeOptions keyframes;
+  MotionPredictionOptions prediction;
+  // Move each point into the frame of its scan's stamp when per-point times
+  // are given (deskew.h).
+  bool deskew = true;
+  // A usable registration whose pose is farther from the prediction than
+  // gate_factor times the prediction's uncertainty (or than the largest
+  // uncertainty, prediction.max_*) is reported LOW_QUALITY and the
+  // prediction stands in for it. >= 1.
+  double gate_factor = 3.0;
+  // After this many scans in a row without a pose, the local map is
+  // dropped and restarted from the next scan at its prediction: the
+  // trajectory takes one jump there instead of drifting off a map the
+  // sensor has left. >= 1.
+  int max_consecutive_fallbacks = 3;
+
+  bool IsValid(std::string* error) const;
+};
+
+}  // namespace mlndt

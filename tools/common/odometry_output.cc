@@ -1,0 +1,221 @@
+#include "tools/common/odometry_output.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "lab/eval/statistics.h"
+#include "lab/eval/trajectory_io.h"
+#include "mlndt/common/atomic_file.h"
+#include "mlndt/common/pose.h"
+#include "tools/common/gnuplot.h"
+#include "tools/common/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+std::string ScanRow(const ScanInput& input, const OdometryResult& r) {
+  const Vector6d xi = IsometryToPoseVector(r.world_from_sensor);
+  std::string row =
+      std::to_string(r.index) + "," + CsvField(input.name(r.index)) + "," +
+      Fmt(r.stamp_s, 9) + "," + TerminationTypeToString(r.termination) + "," +
+      (r.fallback ? "1" : "0") + "," + (r.keyframe ? "1" : "0") + "," +
+      (r.deskewed ? "1" : "0") + "," + std::to_string(r.start_layer) + "," +
+      std::to_string(r.num_layers) + "," + std::to_string(r.iterations) + "," +
+      Num(r.uncertainty.translation_m) + "," + Num(r.uncertainty.rotation_deg) +
+      "," + Num(r.correction_m) + "," + Num(r.correction_deg) + "," +
+      Num(r.quality.inlier_fraction) + "," + std::to_string(r.map_keyframes) +
+      "," + std::to_string(r.map_points);
+  for (int k = 0; k < 6; ++k) {
+    row += "," + Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
+  }
+  row += "," + Fmt(r.registration_time_s * 1e3, 3) + "," +
+         Fmt(r.map_time_s * 1e3, 3) + "," + Fmt(r.total_time_s * 1e3, 3) + "," +
+         CsvField(r.message) + "\n";
+  return row;
+}
+
+}  // namespace
+
+bool WriteOdometryFiles(const std::string& dir,
+                        const ScanInput& input,
+                        const std::vector<OdometryResult>& results,
+                        std::string* error) {
+  Trajectory trajectory;
+  std::string csv =
+      "scan,name,stamp_s,verdict,fallback,keyframe,deskewed,start_layer,"
+      "num_layers,iterations,uncertainty_m,uncertainty_deg,correction_m,"
+      "correction_deg,inlier_fraction,map_keyframes,map_points,x_m,y_m,z_m,"
+      "alpha_deg,beta_deg,gamma_deg,registration_ms,map_ms,total_ms,"
+      "message\n";
+  for (const OdometryResult& r : results) {
+    trajectory.Add(r.stamp_s, r.world_from_sensor);
+    csv += ScanRow(input, r);
+  }
+  return WriteTrajectory(dir + "/trajectory_kitti.txt",
+                         TrajectoryFormat::KITTI,
+                         trajectory,
+                         error) &&
+         WriteTrajectory(dir + "/trajectory_tum.txt",
+                         TrajectoryFormat::TUM,
+                         trajectory,
+                         input.TumComment(),
+                         error) &&
+         WriteFileAtomically(dir + "/scans.csv", csv, error);
+}
+
+bool ComputeOdometryMetrics(const std::vector<Isometry3d>& reference,
+                            const std::vector<OdometryResult>& results,
+                            int rpe_delta,
+                            const std::vector<double>& lengths_m,
+                            OdometryMetrics* metrics,
+                            std::string* error) {
+  std::vector<Isometry3d> truth(reference.begin(),
+                                reference.begin() + results.size());
+  std::vector<Isometry3d> estimate;
+  for (const OdometryResult& r : results) {
+    estimate.push_back(r.world_from_sensor);
+  }
+  // Both start at the first scan (the odometry's frame).
+  const Isometry3d first_inverse = truth.front().inverse();
+  for (Isometry3d& pose : truth) pose = first_inverse * pose;
+  metrics->rpe_delta = rpe_delta;
+  KittiSegmentOptions segments;
+  segments.lengths_m = lengths_m;
+  segments.first_frame_step = 1;
+  RpeOptions rpe;
+  rpe.delta = std::min<int>(rpe_delta, static_cast<int>(truth.size()) - 1);
+  return ComputeAte(AteOptions(), truth, estimate, &metrics->ate, error) &&
+         ComputeRpe(rpe, truth, estimate, &metrics->rpe, error) &&
+         ComputeKittiSegmentErrors(
+             segments, truth, estimate, &metrics->segments, error);
+}
+
+Json OdometrySummaryJson(const OdometrySummary& summary,
+                         const std::vector<OdometryResult>& results,
+                         const OdometryMetrics* metrics) {
+  Json json = ToolJson("mlndt_odometry");
+  json["scans"] = summary.scans;
+  json["verdicts"] = {{"CONVERGENCE", summary.convergence},
+                      {"NO_CONVERGENCE", summary.no_convergence},
+                      {"LOW_QUALITY", summary.low_quality},
+                      {"DEGENERATE", summary.degenerate},
+                      {"FAILURE", summary.failure}};
+  json["fallbacks"] = summary.fallbacks;
+  json["keyframes"] = summary.keyframes;
+  json["map_restarts"] = summary.map_restarts;
+  std::vector<double> total_ms;
+  for (const OdometryResult& r : results)
+    total_ms.push_back(r.total_time_s * 1e3);
+  json["time_per_scan_ms"] = StatsJson(ComputeStats(total_ms));
+  if (metrics == nullptr) return json;
+  Json lengths = Json::array();
+  for (const KittiLengthErrors& l : metrics->segments.lengths) {
+    lengths.push_back(
+        {{"length_m", Number(l.length_m)},
+         {"segments", l.num_segments},
+         {"translation_percent", Number(l.translation_error_percent)},
+         {"rotation_deg_per_m", Number(l.rotation_error_deg_per_m)}});
+  }
+  json["metrics"] = {
+      {"ate_se3_rmse_m", Number(metrics->ate.rmse_m)},
+      {"ate_se3_max_m", Number(metrics->ate.errors.max)},
+      {"rpe_delta_scans", metrics->rpe_delta},
+      {"rpe_translation_rmse_m", Number(metrics->rpe.translation_rmse_m)},
+      {"rpe_rotation_rmse_deg", Number(metrics->rpe.rotation_rmse_deg)},
+      {"segments", lengths}};
+  return json;
+}
+
+void PrintOdometrySummary(const OdometrySummary& summary,
+                          const std::vector<OdometryResult>& results,
+                          const OdometryMetrics* metrics) {
+  std::vector<double> total_ms;
+  for (const OdometryResult& r : results)
+    total_ms.push_back(r.total_time_s * 1e3);
+  const Stats t = ComputeStats(total_ms);
+  std::printf(
+      "scans: %zu; CONVERGENCE %zu, NO_CONVERGENCE %zu, LOW_QUALITY %zu, "
+      "DEGENERATE %zu, FAILURE %zu; prediction used (fallback) for %zu; "
+      "keyframes %zu; local map restarts %zu\ntime per scan [ms]: mean %.1f, "
+      "median %.1f, max %.1f\n",
+      summary.scans,
+      summary.convergence,
+      summary.no_convergence,
+      summary.low_quality,
+      summary.degenerate,
+      summary.failure,
+      summary.fallbacks,
+      summary.keyframes,
+      summary.map_restarts,
+      t.mean,
+      t.median,
+      t.max);
+  if (metrics == nullptr) return;
+  std::printf("ATE (SE3-aligned): rmse %.3f m, max %.3f m\n",
+              metrics->ate.rmse_m,
+              metrics->ate.errors.max);
+  std::printf(
+      "RPE over %d scans: translation rmse %.3f m, rotation rmse %.3f deg\n",
+      metrics->rpe_delta,
+      metrics->rpe.translation_rmse_m,
+      metrics->rpe.rotation_rmse_deg);
+  for (const KittiLengthErrors& l : metrics->segments.lengths) {
+    std::printf(
+        "KITTI segments of %.0f m (%zu): translation %.2f %%, rotation "
+        "%.4f deg/m\n",
+        l.length_m,
+        l.num_segments,
+        l.translation_error_percent,
+        l.rotation_error_deg_per_m);
+  }
+}
+
+bool WriteOdometryPlot(const std::string& gnuplot,
+                       const std::string& dir,
+                       const std::vector<OdometryResult>& results,
+                       const std::vector<Isometry3d>& reference,
+                       std::string* error) {
+  const std::string data_dir = dir + "/plot_data";
+  std::filesystem::create_directories(data_dir);
+  std::string estimate, fallbacks, truth;
+  for (const OdometryResult& r : results) {
+    const Vector3d& t = r.world_from_sensor.translation();
+    const std::string line = Num(t.x()) + " " + Num(t.y()) + "\n";
+    estimate += line;
+    if (r.fallback) fallbacks += line;
+  }
+  if (!reference.empty()) {
+    const Isometry3d first_inverse = reference.front().inverse();
+    for (size_t k = 0; k < results.size() && k < reference.size(); ++k) {
+      const Vector3d t = (first_inverse * reference[k]).translation();
+      truth += Num(t.x()) + " " + Num(t.y()) + "\n";
+    }
+  }
+  if (fallbacks.empty()) fallbacks = "NaN NaN\n";
+  if (!WriteFileAtomically(data_dir + "/estimate.dat", estimate, error) ||
+      !WriteFileAtomically(data_dir + "/fallbacks.dat", fallbacks, error) ||
+      (!truth.empty() &&
+       !WriteFileAtomically(data_dir + "/reference.dat", truth, error))) {
+    return false;
+  }
+  std::string script = GnuplotPngHeader(900, 700) + "set output " +
+                       GnuplotQuote(dir + "/trajectory_xy.png") +
+                       "\nset size ratio -1\nset xlabel 'x [m]'\n"
+                       "set ylabel 'y [m]'\nset title 'mlndt_odometry: top "
+                       "view (first scan frame)' noenhanced\nplot " +
+                       GnuplotQuote(data_dir + "/estimate.dat") +
+                       " with linespoints pt 7 ps 0.4 title 'odometry', " +
+                       GnuplotQuote(data_dir + "/fallbacks.dat") +
+                       " with points pt 6 ps 1.5 lc rgb 'red' title "
+                       "'prediction used (fallback)'";
+  if (!truth.empty()) {
+    script += ", " + GnuplotQuote(data_dir + "/reference.dat") +
+              " with lines lc rgb 'black' title 'reference'";
+  }
+  script += "\n";
+  return RunGnuplot(gnuplot, data_dir + "/trajectory_xy.gp", script, error);
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,293 @@
+// mlndt_odometry: scan-to-local-map LiDAR odometry with ML-NDT over a folder
+// of scans or a ROS 1 bag (mlndt/odometry/odometry.h has the method).
+//
+//   mlndt_odometry (--scans=DIR [--times=FILE] | --bag=FILE --topic=NAME)
+//                  --output_dir=OUT [--gt_poses=poses.txt [--poses_are_camera
+//                  --calib=calib.txt]] [--max_scans=N] [odometry flags]
+//                  [any mlndt_align registration flag]
+//
+// Each scan is predicted with constant velocity at its time stamp, deskewed
+// when the bag has per-point times, and registered onto a local layered map
+// of the last keyframes; the prediction's uncertainty (from how far recent
+// predictions missed) sets the registration's initial_uncertainty and so
+// its start layer. A scan whose registration is not usable gets its
+// prediction as its pose, flagged as a fallback in scans.csv.
+//
+// Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
+// (stamped with the bag's header stamps or --times; else the scan indices,
+// as its header line says), scans.csv (per scan: verdict, fallback,
+// keyframe, start layer, uncertainty, correction, pose, times),
+// summary.json, and with --plots trajectory_xy.png. With --gt_poses (one
+// world_from_sensor pose per scan): ATE after SE(3) alignment, RPE over
+// --rpe_delta scans and the KITTI devkit's segment errors over
+// --segment_lengths. Exit code 0 when every scan got a registered pose, 1
+// when any scan fell back to its prediction (or on unreadable data, or
+// missing gnuplot with --plots), 2 on bad flags (before any work).
+
+#include <gflags/gflags.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "lab/eval/dataset.h"
+#include "mlndt/odometry/run_odometry.h"
+#include "tools/common/gnuplot.h"
+#include "tools/common/list_flags.h"
+#include "tools/common/odometry_output.h"
+#include "tools/common/output_files.h"
+#include "tools/common/pose_flags.h"
+#include "tools/common/progress.h"
+#include "tools/common/registration_flags.h"
+#include "tools/common/scan_input.h"
+#include "tools/common/start_layer_check.h"
+#include "tools/common/tool_main.h"
+#include "tools/common/tool_utils.h"
+
+// clang-format off
+DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
+DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
+DEFINE_string(output_dir, "", "Folder for the trajectories, scans.csv, summary.json and the plot");
+DEFINE_string(gt_poses, "", "Optional KITTI reference poses, one line per scan (world_from_sensor)");
+DEFINE_int32(rpe_delta, 100, "RPE: scans between the two poses of a motion (>= 1; shorter "
+             "sequences use their length - 1)");
+DEFINE_string(segment_lengths, "10,100", "KITTI devkit segment lengths [m], comma-separated");
+DEFINE_double(keyframe_distance, mlndt::KeyframeOptions().min_translation_m,
+              "A scan joins the local map when this far [m] from the last keyframe");
+DEFINE_double(keyframe_angle, mlndt::KeyframeOptions().min_rotation_deg,
+              "... or turned this much [deg]");
+DEFINE_int32(local_map_keyframes, mlndt::LocalMapOptions().max_keyframes,
+             "Keyframes in the local map");
+DEFINE_double(local_map_radius, mlndt::LocalMapOptions().radius_m,
+              "Local map points farther than this from the last keyframe are left out [m]");
+DEFINE_double(max_uncertainty_m, mlndt::MotionPredictionOptions().max_translation_m,
+              "Largest uncertainty of the prediction [m] (also the largest correction accepted)");
+DEFINE_double(max_uncertainty_deg, mlndt::MotionPredictionOptions().max_rotation_deg,
+              "Largest uncertainty of the prediction [deg] (also the largest correction accepted)");
+DEFINE_int32(max_consecutive_fallbacks, mlndt::OdometryOptions().max_consecutive_fallbacks,
+             "After this many scans in a row without a pose the local map restarts");
+DEFINE_bool(deskew, true, "Deskew scans whose bag messages have per-point times");
+DEFINE_double(gate_factor, mlndt::OdometryOptions().gate_factor,
+              "A pose farther from the prediction than this times its uncertainty is refused");
+DEFINE_bool(plots, true, "Write trajectory_xy.png with gnuplot (exit 1 when gnuplot is missing)");
+DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
+// clang-format on
+
+namespace mlndt {
+namespace {
+
+constexpr char kTool[] = "mlndt_odometry";
+
+int Fail(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitFailed;
+}
+
+int Refuse(const std::string& message) {
+  std::cerr << kTool << ": " << message << std::endl;
+  return tools::kExitUsage;
+}
+
+bool OptionsFromFlags(OdometryOptions* options,
+                      std::vector<double>* lengths,
+                      std::string* error) {
+  if ((FLAGS_scans.empty() && FLAGS_bag.empty()) || FLAGS_output_dir.empty()) {
+    *error =
+        "give --scans=DIR (or --bag=FILE --topic=NAME) and "
+        "--output_dir=DIR";
+    return false;
+  }
+  if (FLAGS_max_scans < 0 || FLAGS_rpe_delta < 1) {
+    *error = "--max_scans must be >= 0 and --rpe_delta >= 1";
+    return false;
+  }
+  if (!tools::ParseNumberList(FLAGS_segment_lengths, lengths) ||
+      std::any_of(lengths->begin(), lengths->end(), [](double v) {
+        return !(v > 0);
+      })) {
+    *error = "--segment_lengths=" + FLAGS_segment_lengths +
+             ": expected positive lengths [m], e.g. 10,100";
+    return false;
+  }
+  if (!tools::RegistrationOptionsFromFlags(&options->registration, error) ||
+      !tools::CheckCameraPoseFlags(
+          "--gt_poses", !FLAGS_gt_poses.empty(), error)) {
+    return false;
+  }
+  options->local_map.grid = options->registration.grid;
+  options->local_map.max_keyframes = FLAGS_local_map_keyframes;
+  options->local_map.radius_m = FLAGS_local_map_radius;
+  options->keyframes.min_translation_m = FLAGS_keyframe_distance;
+  options->keyframes.min_rotation_deg = FLAGS_keyframe_angle;
+  options->prediction.max_translation_m = FLAGS_max_uncertainty_m;
+  options->prediction.max_rotation_deg = FLAGS_max_uncertainty_deg;
+  options->max_consecutive_fallbacks = FLAGS_max_consecutive_fallbacks;
+  options->deskew = FLAGS_deskew;
+  options->gate_factor = FLAGS_gate_factor;
+  if (!options->IsValid(error)) {
+    *error = "odometry flags: " + *error;
+    return false;
+  }
+  return true;
+}
+
+// The scans and the reference poses; every check before any work.
+bool ReadInputs(tools::ScanInput* input,
+                std::vector<Isometry3d>* reference,
+                std::string* error) {
+  const auto list_folder = [](std::vector<std::string>* paths,
+                              std::string* list_error) {
+    return ListScanFiles(FLAGS_scans,
+                         {FLAGS_gt_poses, FLAGS_calib, FLAGS_times},
+                         paths,
+                         list_error);
+  };
+  if (!tools::ScanInputFromFlags(!FLAGS_scans.empty(),
+                                 list_folder,
+                                 static_cast<size_t>(FLAGS_max_scans),
+                                 input,
+                                 error)) {
+    return false;
+  }
+  if (input->size() < 2) {
+    *error =
+        "odometry needs at least 2 scans, got " + std::to_string(input->size());
+    return false;
+  }
+  if (FLAGS_gt_poses.empty()) return true;
+  if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, reference, error)) {
+    *error = "--gt_poses: " + *error;
+    return false;
+  }
+  if (reference->size() < input->size()) {
+    *error = "--gt_poses=" + FLAGS_gt_poses + " has " +
+             std::to_string(reference->size()) + " poses for " +
+             std::to_string(input->size()) + " scans";
+    return false;
+  }
+  return true;
+}
+
+std::string ScanDetail(const tools::ScanInput& input, const OdometryResult& r) {
+  char detail[200];
+  std::snprintf(detail,
+                sizeof(detail),
+                "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
+                input.name(r.index).c_str(),
+                TerminationTypeToString(r.termination),
+                r.fallback ? " (prediction used)" : "",
+                r.start_layer,
+                r.uncertainty.translation_m,
+                r.uncertainty.rotation_deg,
+                r.total_time_s * 1e3);
+  return detail;
+}
+
+// trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
+int WritePlot(bool gnuplot_ok,
+              const std::vector<OdometryResult>& results,
+              const std::vector<Isometry3d>& reference) {
+  if (!gnuplot_ok) {
+    return Fail("plot skipped: gnuplot ('" + FLAGS_gnuplot +
+                "') not found; the other outputs are written. Install "
+                "gnuplot-nox or pass --plots=false");
+  }
+  std::string error;
+  if (!tools::WriteOdometryPlot(
+          FLAGS_gnuplot, FLAGS_output_dir, results, reference, &error)) {
+    return Fail(error);
+  }
+  std::printf("plot: trajectory_xy.png\n");
+  return 0;
+}
+
+int Run() {
+  OdometryOptions options;
+  std::vector<double> lengths;
+  std::string error;
+  if (!OptionsFromFlags(&options, &lengths, &error)) return Refuse(error);
+  if (!tools::CheckStartLayerBeforeMap(options.registration, &error)) {
+    return Refuse(error);
+  }
+  tools::ScanInput input;
+  std::vector<Isometry3d> reference;
+  if (!ReadInputs(&input, &reference, &error)) return Refuse(error);
+  if (!tools::PrepareOutputDir("output_dir",
+                               FLAGS_output_dir,
+                               {"scans.csv", "summary.json"},
+                               &error)) {
+    return Refuse(error);
+  }
+  const bool gnuplot_ok =
+      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
+
+  tools::Progress progress(kTool, input.size());
+  const OdometryScanLoader load = [&](size_t i,
+                                      PointCloud* cloud,
+                                      std::vector<double>* times,
+                                      double* stamp_s,
+                                      std::string* e) {
+    if (!input.Load(i, cloud, times, e)) return false;
+    *stamp_s = input.StampOf(i);
+    return true;
+  };
+  std::vector<OdometryResult> results;
+  OdometrySummary summary;
+  const bool ok = RunOdometry(
+      options,
+      input.size(),
+      load,
+      [&](const OdometryResult& r) {
+        progress.Update(r.index + 1, ScanDetail(input, r));
+      },
+      &results,
+      &summary,
+      &error);
+  progress.Finish();
+  if (!ok) return Fail(error);
+
+  tools::OdometryMetrics metrics;
+  const bool has_metrics = !reference.empty();
+  if (has_metrics &&
+      !tools::ComputeOdometryMetrics(
+          reference, results, FLAGS_rpe_delta, lengths, &metrics, &error)) {
+    return Fail("metrics: " + error);
+  }
+  const tools::OdometryMetrics* m = has_metrics ? &metrics : nullptr;
+  if (!tools::WriteOdometryFiles(FLAGS_output_dir, input, results, &error) ||
+      !tools::WriteJsonFile(FLAGS_output_dir + "/summary.json",
+                            tools::OdometrySummaryJson(summary, results, m),
+                            &error)) {
+    return Fail(error);
+  }
+  tools::PrintOdometrySummary(summary, results, m);
+  std::printf("output: %s\n", FLAGS_output_dir.c_str());
+  if (FLAGS_plots) {
+    const int plot = WritePlot(gnuplot_ok, results, reference);
+    if (plot != 0) return plot;
+  }
+  if (!summary.AllUsable()) {
+    return Fail(
+        std::to_string(summary.fallbacks) +
+        " scan(s) have no registered pose (their prediction stands in, "
+        "flagged in scans.csv): the trajectory is not to be used as is");
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace mlndt
+
+int main(int argc, char** argv) {
+  if (!mlndt::tools::StartTool(
+          "Scan-to-local-map LiDAR odometry with ML-NDT over a folder or a "
+          "ROS 1 bag.\n"
+          "  mlndt_odometry (--scans=DIR [--times=FILE] | --bag=FILE "
+          "--topic=NAME) --output_dir=OUT [--gt_poses=FILE]",
+          true,
+          &argc,
+          &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
+  return mlndt::Run();
+}
