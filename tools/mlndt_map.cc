@@ -378,7 +378,7 @@ int Build() {
     const bool ok = BuildMapFromScans(
         options,
         paths,
-        input.Loader(),
+        input.Loader(/*allow_empty=*/true),
         poses,
         [&](size_t done, size_t) {
           progress.Update(
@@ -390,7 +390,8 @@ int Build() {
     progress.Finish();
     if (!ok) return Fail(error);
     for (const size_t k : summary.scans_without_points) {
-      std::cerr << kTool << ": warning: scan " << k << " (" << paths[k]
+      std::cerr << kTool << ": warning: scan " << k << " ("
+                << (input.from_bag() ? paths[k] : input.paths()[k])
                 << ") has no finite point (all NaN or empty): it adds "
                    "nothing to the map\n";
     }

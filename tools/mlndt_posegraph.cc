@@ -441,7 +441,13 @@ int Run() {
       !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
     return Fail(error);
   }
-  return 0;
+  if (chained_failures > 0) {
+    return Fail(std::to_string(chained_failures) +
+                " chained registration(s) were not usable (they kept the "
+                "previous relative pose): the trajectories are not to be "
+                "used");
+  }
+  return tools::kExitOk;
 }
 
 }  // namespace
@@ -452,7 +458,9 @@ int main(int argc, char** argv) {
           "Chained ML-NDT odometry and a joint refinement of all scan "
           "poses.\n"
           "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
-          "[--output_dir=DIR]",
+          "[--output_dir=DIR]\n"
+          "Exit 1 when a chained registration was not usable (LOW_QUALITY, "
+          "DEGENERATE or FAILURE), after writing every file.",
           false,
           &argc,
           &argv)) {

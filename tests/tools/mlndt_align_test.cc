@@ -276,71 +276,71 @@ TEST(MlndtAlign, RangeFiltersSayTheyWorkAboutTheOriginAndWarnFarFromIt) {
   EXPECT_EQ(sensor.exit_code, 0) << sensor.err;
   EXPECT_EQ(sensor.err.find("from its origin"), std::string::npos)
       << sensor.err;
+}
 
-  // Issue 27 items 5, 6 and 7: flags the run would ignore, an --output_cloud
-  // it cannot write, a reflection as the expected matrix and 1e300-class
-  // numbers are refused before any work: exit 2, the flag named, no
-  // registration run and no output file written.
-  TEST(MlndtAlign, IgnoredFlagsUnwritableCloudsAndAbsurdNumbersAreRefused) {
-    const std::string dir = TestDir();
-    const std::string json = dir + "/result.json";
-    {
-      std::ofstream reflection(dir + "/reflection.txt");
-      reflection << "-1 0 0 0\n0 1 0 0\n0 0 1 0\n";
-    }
-    struct Case {
-      std::string args;
-      std::string message;
-    } cases[] = {
-        // Item 5: the four reported, then the same kind in the same code.
-        {"--sampling=random --gbs_cell_size=2",
-         "--gbs_cell_size applies to --sampling=gbs only (the sampling is "
-         "RANDOM; it would be ignored)"},
-        {"--sampling=all --random_fraction=0.5",
-         "--random_fraction applies to --sampling=random only"},
-        {"--backend=newton --linear_solver=dense_qr",
-         "--linear_solver applies to --backend=ceres only"},
-        {"--method=ndt --quality_check=false --max_mean_score=20",
-         "--max_mean_score is a quality-check threshold; it is ignored with "
-         "--quality_check=false"},
-        {"--sampling=all --seed=7",
-         "--seed applies to --sampling=random or gbs"},
-        {"--backend=lm --trust_region=dogleg",
-         "--trust_region applies to --backend=ceres only"},
-        {"--loss=none --loss_scale=2",
-         "--loss_scale is ignored with --loss=none"},
-        {"--quality_check=false --min_inlier_fraction=0.5",
-         "--min_inlier_fraction is a quality-check threshold"},
-        {"--method=ndt --retry_yaw_seeds=45",
-         "--retry_yaw_seeds does not apply to --method=ndt"},
-        // Item 6: the cloud's format is checked before the work.
-        {"--output_cloud=" + Quote(dir + "/x.json"),
-         "--output_cloud: " + dir + "/x.json"},
-        {"--output_cloud=" + Quote(dir + "/x.bin"),
-         "is not supported (write .pcd or .ply)"},
-        // Item 7: a reflection and 1e300-class numbers.
-        {"--expected_matrix_file=" + Quote(dir + "/reflection.txt"),
-         "reflection.txt: the 3x3 part is not a rotation"},
-        {"--gbs_cell_size=1e300", "gbs_cell_size_m must be in (0, 10000] m"},
-        {"--initial_guess=0,0,0,0,0,1e300",
-         "--initial_guess=0,0,0,0,0,1e300: angles must be within [-360, 360]"},
-        {"--initial_guess=1e300,0,0,0,0,0", "is beyond 1e+08 m"},
-        {"--initial_matrix=1,0,0,1e300,0,1,0,0,0,0,1,0",
-         "--initial_matrix: translation"},
-    };
-    for (const Case& c : cases) {
-      const ToolRun run = RunAlign(c.args + " --output_json=" + Quote(json));
-      EXPECT_EQ(run.exit_code, 2) << c.args << "\nstderr: " << run.err;
-      EXPECT_NE(run.err.find(c.message), std::string::npos)
-          << c.args << "\nstderr: " << run.err;
-      EXPECT_EQ(run.out.find("reference_from_input"), std::string::npos)
-          << c.args << ": the registration ran";
-      EXPECT_FALSE(std::filesystem::exists(json)) << c.args;
-      std::filesystem::remove(json);
-    }
-    EXPECT_FALSE(std::filesystem::exists(dir + "/x.json"));
-    EXPECT_FALSE(std::filesystem::exists(dir + "/x.bin"));
+// Issue 27 items 5, 6 and 7: flags the run would ignore, an --output_cloud
+// it cannot write, a reflection as the expected matrix and 1e300-class
+// numbers are refused before any work: exit 2, the flag named, no
+// registration run and no output file written.
+TEST(MlndtAlign, IgnoredFlagsUnwritableCloudsAndAbsurdNumbersAreRefused) {
+  const std::string dir = TestDir();
+  const std::string json = dir + "/result.json";
+  {
+    std::ofstream reflection(dir + "/reflection.txt");
+    reflection << "-1 0 0 0\n0 1 0 0\n0 0 1 0\n";
   }
+  struct Case {
+    std::string args;
+    std::string message;
+  } cases[] = {
+      // Item 5: the four reported, then the same kind in the same code.
+      {"--sampling=random --gbs_cell_size=2",
+       "--gbs_cell_size applies to --sampling=gbs only (the sampling is "
+       "RANDOM; it would be ignored)"},
+      {"--sampling=all --random_fraction=0.5",
+       "--random_fraction applies to --sampling=random only"},
+      {"--backend=newton --linear_solver=dense_qr",
+       "--linear_solver applies to --backend=ceres only"},
+      {"--method=ndt --quality_check=false --max_mean_score=20",
+       "--max_mean_score is a quality-check threshold; it is ignored with "
+       "--quality_check=false"},
+      {"--sampling=all --seed=7", "--seed applies to --sampling=random or gbs"},
+      {"--backend=lm --trust_region=dogleg",
+       "--trust_region applies to --backend=ceres only"},
+      {"--loss=none --loss_scale=2",
+       "--loss_scale is ignored with --loss=none"},
+      {"--quality_check=false --min_inlier_fraction=0.5",
+       "--min_inlier_fraction is a quality-check threshold"},
+      {"--method=ndt --retry_yaw_seeds=45",
+       "--retry_yaw_seeds does not apply to --method=ndt"},
+      // Item 6: the cloud's format is checked before the work.
+      {"--output_cloud=" + Quote(dir + "/x.json"),
+       "--output_cloud: " + dir + "/x.json"},
+      {"--output_cloud=" + Quote(dir + "/x.bin"),
+       "is not supported (write .pcd or .ply)"},
+      // Item 7: a reflection and 1e300-class numbers.
+      {"--expected_matrix_file=" + Quote(dir + "/reflection.txt"),
+       "reflection.txt: the 3x3 part is not a rotation"},
+      {"--gbs_cell_size=1e300", "gbs_cell_size_m must be in (0, 10000] m"},
+      {"--initial_guess=0,0,0,0,0,1e300",
+       "--initial_guess=0,0,0,0,0,1e300: angles must be within [-360, 360]"},
+      {"--initial_guess=1e300,0,0,0,0,0", "is beyond 1e+08 m"},
+      {"--initial_matrix=1,0,0,1e300,0,1,0,0,0,0,1,0",
+       "--initial_matrix: translation"},
+  };
+  for (const Case& c : cases) {
+    const ToolRun run = RunAlign(c.args + " --output_json=" + Quote(json));
+    EXPECT_EQ(run.exit_code, 2) << c.args << "\nstderr: " << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos)
+        << c.args << "\nstderr: " << run.err;
+    EXPECT_EQ(run.out.find("reference_from_input"), std::string::npos)
+        << c.args << ": the registration ran";
+    EXPECT_FALSE(std::filesystem::exists(json)) << c.args;
+    std::filesystem::remove(json);
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.bin"));
+}
 
 }  // namespace
 }  // namespace mlndt

@@ -134,6 +134,34 @@ TEST(MlndtPosegraph, WithoutGroundTruthThereAreNoMetrics) {
   EXPECT_EQ(run.out.find("rpe_"), std::string::npos) << run.out;
 }
 
+// Issue 27: a chain whose registrations are not usable (forced here by an
+// inlier threshold no fit reaches) still writes its files, but the
+// trajectories are not to be used: exit 1, saying so (was exit 0).
+TEST(MlndtPosegraph, UnusableChainedRegistrationsExitOne) {
+  const std::string dir = TempDir("unusable");
+  const std::string scans = dir + "/scans";
+  std::system(("mkdir -p " + Quote(scans)).c_str());
+  for (const char* name : {"000000.pcd", "000001.pcd", "000002.pcd"}) {
+    std::system(
+        ("cp " +
+         Quote(testing::BundledDataPath(std::string("kitti/pcd/") + name)) +
+         " " + Quote(scans) + "/")
+            .c_str());
+  }
+  const ToolRun run = RunPosegraph(
+      "--scans=" + Quote(scans) +
+          " --neighbors=1 --min_inlier_fraction=1 --retry_yaw_seeds= "
+          "--output_dir=" +
+          Quote(dir + "/out"),
+      dir);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("2 chained registration(s) were not usable"),
+            std::string::npos)
+      << run.err;
+  EXPECT_EQ(NumberAfter(run.out, "chained_failures"), 2.0) << run.out;
+  EXPECT_EQ(CountLines(ReadFile(dir + "/out/trajectory_chained.txt")), 3);
+}
+
 TEST(MlndtPosegraph, BadFlagsExitWithTwo) {
   const std::string dir = TempDir("bad_flags");
   const std::string scans =

@@ -49,7 +49,7 @@ std::string ScriptText(const std::string& png_path,
   const std::string data = GnuplotQuote(png_path + ".dat");
   std::ostringstream gp;
   gp << GnuplotPngHeader(1100, 420 * static_cast<int>(sets.size()))
-     << "set output " << GnuplotQuote(png_path) << "\n"
+     << GnuplotSetOutput(png_path)
      << "set termoption noenhanced\n"  // Names hold underscores.
      << "set logscale xy\n"            // Failed configurations are metres off.
      << "set multiplot layout " << sets.size() << ",1\n"
@@ -99,8 +99,11 @@ bool WriteBenchPlot(const std::string& gnuplot,
           png_path + ".dat", DataText(points, ParetoFront(points)), error)) {
     return false;
   }
-  return RunGnuplot(
-      gnuplot, png_path + ".gp", ScriptText(png_path, Sets(points)), error);
+  return RunGnuplot(gnuplot,
+                    png_path + ".gp",
+                    ScriptText(png_path, Sets(points)),
+                    {png_path},
+                    error);
 }
 
 }  // namespace tools

@@ -199,9 +199,9 @@ bool WriteOdometryPlot(const std::string& gnuplot,
        !WriteFileAtomically(data_dir + "/reference.dat", truth, error))) {
     return false;
   }
-  std::string script = GnuplotPngHeader(900, 700) + "set output " +
-                       GnuplotQuote(dir + "/trajectory_xy.png") +
-                       "\nset size ratio -1\nset xlabel 'x [m]'\n"
+  const std::string png = dir + "/trajectory_xy.png";
+  std::string script = GnuplotPngHeader(900, 700) + GnuplotSetOutput(png) +
+                       "set size ratio -1\nset xlabel 'x [m]'\n"
                        "set ylabel 'y [m]'\nset title 'mlndt_odometry: top "
                        "view (first scan frame)' noenhanced\nplot " +
                        GnuplotQuote(data_dir + "/estimate.dat") +
@@ -214,7 +214,8 @@ bool WriteOdometryPlot(const std::string& gnuplot,
               " with lines lc rgb 'black' title 'reference'";
   }
   script += "\n";
-  return RunGnuplot(gnuplot, data_dir + "/trajectory_xy.gp", script, error);
+  return RunGnuplot(
+      gnuplot, data_dir + "/trajectory_xy.gp", script, {png}, error);
 }
 
 }  // namespace tools

@@ -104,10 +104,18 @@ bool ScanInput::Load(size_t i,
                      PointCloud* cloud,
                      std::vector<double>* point_times_s,
                      std::string* error) {
+  return LoadScan(i, false, cloud, point_times_s, error);
+}
+
+bool ScanInput::LoadScan(size_t i,
+                         bool allow_empty,
+                         PointCloud* cloud,
+                         std::vector<double>* point_times_s,
+                         std::string* error) {
   if (point_times_s != nullptr) point_times_s->clear();
   if (bag_ == nullptr) {
     if (!ReadPointCloud(paths_.at(i), cloud, nullptr, error)) return false;
-    if (cloud->empty()) {
+    if (cloud->empty() && !allow_empty) {
       *error = paths_[i] + ": no finite points";
       return false;
     }
@@ -115,7 +123,7 @@ bool ScanInput::Load(size_t i,
   }
   BagScan scan;
   if (!bag_->Read(i, &scan, error)) return false;
-  if (scan.cloud.empty()) {
+  if (scan.cloud.empty() && !allow_empty) {
     *error = FLAGS_bag + ": " + names_.at(i) + ": no finite points";
     return false;
   }
@@ -125,9 +133,9 @@ bool ScanInput::Load(size_t i,
   return true;
 }
 
-ScanLoader ScanInput::Loader() {
-  return [this](size_t i, PointCloud* cloud, std::string* error) {
-    return Load(i, cloud, nullptr, error);
+ScanLoader ScanInput::Loader(bool allow_empty) {
+  return [this, allow_empty](size_t i, PointCloud* cloud, std::string* error) {
+    return LoadScan(i, allow_empty, cloud, nullptr, error);
   };
 }
 

@@ -42,8 +42,10 @@ class ScanInput {
             PointCloud* cloud,
             std::vector<double>* point_times_s,
             std::string* error);
-  // Load without point times, for ScanStore and LocalizeScans.
-  ScanLoader Loader();
+  // Load without point times, for ScanStore and LocalizeScans. With
+  // `allow_empty` a scan without a finite point loads as an empty cloud
+  // (mlndt_map reports it and goes on) instead of being an error.
+  ScanLoader Loader(bool allow_empty = false);
 
   // Whether scans have real time stamps (a bag or --times).
   bool has_stamps() const { return !time_source_.empty(); }
@@ -54,6 +56,11 @@ class ScanInput {
   std::string TumComment() const;
 
  private:
+  bool LoadScan(size_t i,
+                bool allow_empty,
+                PointCloud* cloud,
+                std::vector<double>* point_times_s,
+                std::string* error);
   friend bool ScanInputFromFlags(
       bool,
       const std::function<bool(std::vector<std::string>*, std::string*)>&,
