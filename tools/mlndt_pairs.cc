@@ -33,6 +33,7 @@
 #include "tools/common/registration_flags.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
+#include "tools/common/verdict_counts.h"
 
 DEFINE_string(scans, "", "Folder of scans (sorted by file name)");
 DEFINE_string(gt_poses,
@@ -109,9 +110,11 @@ bool RegisterAndPrint(const RegistrationOptions& options,
                       const Isometry3d& initial,
                       const std::string& label,
                       std::ostringstream* csv,  // nullptr: no CSV.
-                      std::vector<double>* times) {
+                      std::vector<double>* times,
+                      tools::VerdictCounts* verdicts) {
   RegistrationSummary summary;
   Register(options, scans[i], scans[j], initial, &summary);
+  verdicts->Add(summary.termination_type);
   const double et = TranslationErrorM(truth, summary.reference_from_input);
   const double er =
       RotationErrorRad(truth, summary.reference_from_input) * kRadToDeg;
@@ -206,6 +209,7 @@ int Run() {
               "time[ms]");
   int total = 0, successes = 0;
   std::vector<double> times;
+  tools::VerdictCounts verdicts;
   for (double gap_value : gaps) {
     const size_t gap = static_cast<size_t>(gap_value);
     for (size_t i = 0; i + gap < scans.size(); ++i) {
@@ -227,7 +231,8 @@ int Run() {
                                       initial,
                                       label,
                                       FLAGS_output_csv.empty() ? nullptr : &csv,
-                                      &times);
+                                      &times,
+                                      &verdicts);
       }
     }
   }
@@ -236,6 +241,7 @@ int Run() {
               total,
               100.0 * successes / std::max(1, total),
               ComputeStats(times).median);
+  std::printf("verdicts: %s\n", verdicts.Line().c_str());
   if (!FLAGS_output_csv.empty() &&
       !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
     return Fail(error);
@@ -248,7 +254,11 @@ int Run() {
 
 int main(int argc, char** argv) {
   if (!mlndt::tools::StartTool(
-          "Registers scan pairs with ground truth and reports success rates.",
+          "Registers scan pairs with ground truth and reports success rates.\n"
+          "An evaluation: exit 0 when the report is complete, whatever the "
+          "registrations' verdicts (each row says whether its pair is right; "
+          "the verdicts line counts them); 1 when the CSV cannot be written; "
+          "2 for a refused flag or input.",
           false,
           &argc,
           &argv)) {

@@ -81,6 +81,11 @@ TEST(MlndtPairs, CameraPosesNeedCalibAndThenMatchVelodynePoses) {
   ASSERT_GE(converted.lines.size(), 2u);
   ASSERT_GE(velodyne.lines.size(), 2u);
   EXPECT_EQ(converted.lines[1].substr(0, 60), velodyne.lines[1].substr(0, 60));
+  // The one run counted by verdict (issue 27): five keys, summing to 1.
+  EXPECT_NE(velodyne.out.find("verdicts: CONVERGENCE 1, NO_CONVERGENCE 0, "
+                              "LOW_QUALITY 0, DEGENERATE 0, FAILURE 0"),
+            std::string::npos)
+      << velodyne.out;
 }
 
 }  // namespace
