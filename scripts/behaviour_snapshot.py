@@ -41,7 +41,8 @@ def align(build, flags):
     # The covariance's angles are in degrees there; the snapshot keeps rad.
     deg = 180.0 / math.pi
     cov = d["covariance_m_deg"]["matrix"]
-    cov_diag = [cov[i][i] / (deg * deg if i >= 3 else 1.0) for i in range(6)]
+    # JSON null: not finite (an unconstrained direction, docs/json_schema.md).
+    cov_diag = [math.inf if cov[i][i] is None else cov[i][i] / (deg * deg if i >= 3 else 1.0) for i in range(6)]
     fields = [
         d["termination"],
         "iters=%d" % d["iterations"],
