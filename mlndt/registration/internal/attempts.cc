@@ -63,9 +63,9 @@ int StartLayer(const RegistrationOptions& options, const Problem& problem) {
 
 // True when the coarse layers took `xi_local` farther from the guess than
 // the last layer alone can check: beyond the guess's uncertainty when it is
-// given, else beyond half a last-layer cell (at the points' RMS range for
-// the rotation). A guess within that distance is where the last layer's
-// own basin would have led.
+// given, else beyond a quarter of a last-layer cell (at the points' RMS range
+// for the rotation). A guess within that distance is where the last layer's own
+// basin would have led.
 bool LeftTheGuess(const RegistrationOptions& options,
                   const Problem& problem,
                   const Vector6d& initial_local,
