@@ -22,6 +22,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
+#include "tools/common/align_output.h"
 #include "tools/common/json_output.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/matrix_text.h"
@@ -67,28 +68,6 @@ int Fail(const std::string& message, int code) {
   return code;
 }
 
-// --trace: one line per iteration.
-void PrintTrace(const RegistrationSummary& summary) {
-  for (const IterationRecord& r : summary.trace) {
-    std::printf("  iter %2d layer %d score %12.2f step %.2e %s\n",
-                r.iteration,
-                r.layer,
-                r.score,
-                r.step_norm,
-                r.step_is_successful ? "" : "(rejected)");
-  }
-}
-
-// The 4x4 (the report above has the pose vector).
-void PrintMatrix(const RegistrationSummary& summary) {
-  std::printf("reference_from_input (4x4, row-major):\n");
-  const Eigen::Matrix4d& m = summary.reference_from_input.matrix();
-  for (int r = 0; r < 4; ++r) {
-    std::printf(
-        "%14.9f %14.9f %14.9f %14.9f\n", m(r, 0), m(r, 1), m(r, 2), m(r, 3));
-  }
-}
-
 struct Inputs {
   std::string reference;
   std::string input;
@@ -127,28 +106,6 @@ bool InputsFromCommandLine(int argc, char** argv, Inputs* in, std::string* e) {
     if (in->expected.empty()) in->expected = data_dir + kBundledExpected;
   }
   return true;
-}
-
-tools::Json ResultJson(const Inputs& in,
-                       Method method,
-                       const RegistrationSummary& summary,
-                       double peak_bytes,
-                       double translation_error,
-                       double rotation_error_deg) {
-  tools::Json json = tools::ToolJson(kTool);
-  json["reference"] = in.reference;
-  json["input"] = in.input;
-  json["method"] = MethodToString(method);
-  json["accepted"] = tools::AcceptedResult(summary.termination_type);
-  json["registration"] = tools::RegistrationSummaryJson(summary, true);
-  if (!in.expected.empty()) {
-    json["expected"] = {
-        {"file", in.expected},
-        {"translation_error_m", tools::Number(translation_error)},
-        {"rotation_error_deg", tools::Number(rotation_error_deg)}};
-  }
-  json["memory"] = {{"peak_resident_bytes", peak_bytes}};
-  return json;
 }
 
 int Run(int argc, char** argv) {
@@ -212,7 +169,7 @@ int Run(int argc, char** argv) {
   std::printf(
       "  peak memory:    %.1f MB resident (the process, clouds included)\n",
       peak_bytes / 1e6);
-  if (FLAGS_trace) PrintTrace(summary);
+  if (FLAGS_trace) tools::PrintTrace(summary);
   double translation_error = NAN, rotation_error_deg = NAN;
   if (!in.expected.empty()) {
     translation_error =
@@ -224,16 +181,18 @@ int Run(int argc, char** argv) {
                 rotation_error_deg,
                 in.expected.c_str());
   }
-  PrintMatrix(summary);
+  tools::PrintPoseMatrix(summary);
 
   if (!FLAGS_output_json.empty() &&
       !tools::WriteJsonFile(FLAGS_output_json,
-                            ResultJson(in,
-                                       options.method,
-                                       summary,
-                                       peak_bytes,
-                                       translation_error,
-                                       rotation_error_deg),
+                            tools::AlignResultJson(in.reference,
+                                                   in.input,
+                                                   in.expected,
+                                                   options.method,
+                                                   summary,
+                                                   peak_bytes,
+                                                   translation_error,
+                                                   rotation_error_deg),
                             &error)) {
     return Fail(error, tools::kExitFailed);
   }
