@@ -228,12 +228,6 @@ bool RunKoide3(const RegistrationOptions& options,
           dir + "/T_target_source.txt", &reference_from_input, error)) {
     return false;
   }
-  // The file's 6-digit rotation is rigid only to ~1e-6; Register() refuses
-  // a guess that is not rigid, and every start is built on this pose.
-  reference_from_input.linear() =
-      Eigen::Quaterniond(reference_from_input.rotation())
-          .normalized()
-          .toRotationMatrix();
   PairRuns pair;
   pair.dataset = "koide3";
   pair.name = "251371071->668";
