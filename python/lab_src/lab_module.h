@@ -21,6 +21,7 @@ namespace py = pybind11;
 void DefineEvaluation(py::module_& m);       // evaluation.cc
 void DefineTrajectoryFiles(py::module_& m);  // trajectory_files.cc
 void DefineSequence(py::module_& m);         // sequence.cc
+void DefineRosBag(py::module_& m);           // ros_bag.cc
 
 // An (N, 4, 4) or (N, 3, 4) array (or a list of 4x4 matrices) of rigid
 // transforms; `what` names the argument in errors ("reference[3]: ...").

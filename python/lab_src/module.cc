@@ -14,9 +14,10 @@ PYBIND11_MODULE(_lab, m) {
       "The mlndt lab on numpy arrays: trajectory evaluation (ATE, RPE, the "
       "KITTI devkit's\nsegment errors, association, KITTI/TUM files) and "
       "sequence runs (ScanStore,\nrun_sequence), as mlndt_eval and "
-      "mlndt_sequence compute them.";
+      "mlndt_sequence compute them, and ROS 1 bag reading\n(RosBag).";
   m.attr("__version__") = MLNDT_VERSION;
   mlndt::python::DefineEvaluation(m);
   mlndt::python::DefineTrajectoryFiles(m);
   mlndt::python::DefineSequence(m);
+  mlndt::python::DefineRosBag(m);
 }

@@ -2,9 +2,10 @@
 
 The Python face of the mlndt C++ library: register two scans, build, save and
 load layered NDT maps and register against them, localise a scan sequence
-against a map (Localizer), read and write cloud files. Submodules (imported
-by name): mlndt.lab (trajectory evaluation and sequence runs, as mlndt_eval
-and mlndt_sequence compute them) and mlndt.distributed (pairs and scans
+against a map (Localizer), run scan-to-local-map odometry (Odometry,
+run_odometry), read and write cloud files. Submodules (imported
+by name): mlndt.lab (trajectory evaluation, sequence runs and ROS 1 bag
+reading, as mlndt_eval, mlndt_sequence and the tools' --bag do them) and mlndt.distributed (pairs and scans
 fanned out to Dask workers).
 
     import mlndt
@@ -20,6 +21,8 @@ from ._mlndt import (
     LayeredMap,
     LocalizationResult,
     Localizer,
+    Odometry,
+    OdometryResult,
     RegistrationResult,
     __version__,
     default_options,
@@ -28,6 +31,7 @@ from ._mlndt import (
     read_cloud,
     register,
     resolve_options,
+    run_odometry,
     write_cloud,
     xi_from_pose,
 )
@@ -36,6 +40,8 @@ __all__ = [
     "LayeredMap",
     "LocalizationResult",
     "Localizer",
+    "Odometry",
+    "OdometryResult",
     "RegistrationResult",
     "__version__",
     "default_options",
@@ -44,6 +50,7 @@ __all__ = [
     "read_cloud",
     "register",
     "resolve_options",
+    "run_odometry",
     "write_cloud",
     "xi_from_pose",
 ]
@@ -52,4 +59,6 @@ __all__ = [
 LayeredMap.__module__ = "mlndt"
 LocalizationResult.__module__ = "mlndt"
 Localizer.__module__ = "mlndt"
+Odometry.__module__ = "mlndt"
+OdometryResult.__module__ = "mlndt"
 RegistrationResult.__module__ = "mlndt"

@@ -365,3 +365,123 @@ class Localizer:
     def predict_next(self) -> np.ndarray: ...
     @property
     def num_localized(self) -> int: ...
+
+class LocalMapOptions(TypedDict, total=False):
+    max_keyframes: int
+    radius_m: float
+
+class KeyframeOptions(TypedDict, total=False):
+    min_translation_m: float
+    min_rotation_deg: float
+
+class MotionPredictionOptions(TypedDict, total=False):
+    window: int
+    factor: float
+    min_translation_m: float
+    max_translation_m: float
+    min_rotation_deg: float
+    max_rotation_deg: float
+
+class OdometryResult:
+    """One scan of the odometry (mlndt::OdometryResult); poses are world_from_sensor."""
+
+    @property
+    def index(self) -> int: ...
+    @property
+    def stamp_s(self) -> float: ...
+    @property
+    def predicted(self) -> np.ndarray: ...
+    @property
+    def world_from_sensor(self) -> np.ndarray: ...
+    @property
+    def uncertainty(self) -> tuple[float, float]: ...
+    @property
+    def termination(self) -> str: ...
+    @property
+    def message(self) -> str: ...
+    @property
+    def fallback(self) -> bool: ...
+    @property
+    def keyframe(self) -> bool: ...
+    @property
+    def map_restarted(self) -> bool: ...
+    @property
+    def deskewed(self) -> bool: ...
+    @property
+    def start_layer(self) -> int: ...
+    @property
+    def num_layers(self) -> int: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def sampled_points(self) -> int: ...
+    @property
+    def quality(self) -> dict[str, float]: ...
+    @property
+    def correction_m(self) -> float: ...
+    @property
+    def correction_deg(self) -> float: ...
+    @property
+    def map_keyframes(self) -> int: ...
+    @property
+    def map_points(self) -> int: ...
+    @property
+    def registration_time_s(self) -> float: ...
+    @property
+    def map_time_s(self) -> float: ...
+    @property
+    def total_time_s(self) -> float: ...
+
+class Odometry:
+    """Scan-to-local-map LiDAR odometry with ML-NDT (mlndt::Odometry), scan by scan."""
+
+    def __init__(
+        self,
+        *,
+        local_map: LocalMapOptions = ...,
+        keyframes: KeyframeOptions = ...,
+        prediction: MotionPredictionOptions = ...,
+        deskew: bool = ...,
+        gate_factor: float = ...,
+        max_consecutive_fallbacks: int = ...,
+        preset: Preset = "default",
+        range_filter: RangeFilterOptions = ...,
+        grid: LayeredGridOptions = ...,
+        sampling: SamplingOptions = ...,
+        schedule: LayerScheduleOptions = ...,
+        objective: ObjectiveOptions = ...,
+        backend: BackendOptions = ...,
+        num_threads: int = ...,
+        min_matched_fraction: float = ...,
+        quality_check: QualityCheckOptions = ...,
+        retry: RetryOptions = ...,
+    ) -> None: ...
+    def process(
+        self, points: PointsLike, stamp_s: float, point_times: npt.ArrayLike | None = None
+    ) -> OdometryResult: ...
+    @property
+    def num_processed(self) -> int: ...
+
+def run_odometry(
+    scans: Sequence[PathLike | PointsLike],
+    stamps: Sequence[float] | npt.ArrayLike | None = None,
+    point_times: Sequence[npt.ArrayLike | None] | None = None,
+    *,
+    local_map: LocalMapOptions = ...,
+    keyframes: KeyframeOptions = ...,
+    prediction: MotionPredictionOptions = ...,
+    deskew: bool = ...,
+    gate_factor: float = ...,
+    max_consecutive_fallbacks: int = ...,
+    preset: Preset = "default",
+    range_filter: RangeFilterOptions = ...,
+    grid: LayeredGridOptions = ...,
+    sampling: SamplingOptions = ...,
+    schedule: LayerScheduleOptions = ...,
+    objective: ObjectiveOptions = ...,
+    backend: BackendOptions = ...,
+    num_threads: int = ...,
+    min_matched_fraction: float = ...,
+    quality_check: QualityCheckOptions = ...,
+    retry: RetryOptions = ...,
+) -> list[OdometryResult]: ...

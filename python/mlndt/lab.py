@@ -2,7 +2,8 @@
 
 Trajectory evaluation (lab/eval): associate, ate, rpe, kitti_segment_errors,
 path_distances_m, read_trajectory, write_trajectory. Sequence runs
-(lab/runs): ScanStore, run_sequence, chain_trajectory, PairResult.
+(lab/runs): ScanStore, run_sequence, chain_trajectory, PairResult. ROS 1
+bags (lab/io): RosBag, BagScan, rosbag_supported.
 
     import numpy as np, mlndt.lab as lab
     truth = lab.read_trajectory("data/kitti/poses_velo.txt")["poses"]
@@ -16,7 +17,9 @@ the argument.
 """
 
 from ._lab import (
+    BagScan,
     PairResult,
+    RosBag,
     ScanStore,
     __version__,
     associate,
@@ -25,13 +28,16 @@ from ._lab import (
     kitti_segment_errors,
     path_distances_m,
     read_trajectory,
+    rosbag_supported,
     rpe,
     run_sequence,
     write_trajectory,
 )
 
 __all__ = [
+    "BagScan",
     "PairResult",
+    "RosBag",
     "ScanStore",
     "__version__",
     "associate",
@@ -40,6 +46,7 @@ __all__ = [
     "kitti_segment_errors",
     "path_distances_m",
     "read_trajectory",
+    "rosbag_supported",
     "rpe",
     "run_sequence",
     "write_trajectory",
@@ -47,3 +54,5 @@ __all__ = [
 
 PairResult.__module__ = "mlndt.lab"
 ScanStore.__module__ = "mlndt.lab"
+BagScan.__module__ = "mlndt.lab"
+RosBag.__module__ = "mlndt.lab"

@@ -22,4 +22,5 @@ PYBIND11_MODULE(_mlndt, m) {
   mlndt::python::DefineRegistration(m);
   mlndt::python::DefineMap(m);
   mlndt::python::DefineLocalizer(m);
+  mlndt::python::DefineOdometry(m);
 }

@@ -19,6 +19,7 @@ void DefinePose(py::module_& m);          // pose.cc
 void DefineRegistration(py::module_& m);  // registration.cc
 void DefineMap(py::module_& m);           // map.cc
 void DefineLocalizer(py::module_& m);     // localizer.cc
+void DefineOdometry(py::module_& m);      // odometry.cc
 
 // A str or os.PathLike as a path string (TypeError otherwise; paths.cc).
 std::string PathString(const py::object& path);

@@ -84,6 +84,12 @@ def test_stub_signatures_list_every_option():
     assert set(keyword_only(localizer)) == (top_level - {"initial_uncertainty", "grid"}) | {"preset"}
     build = function(layered_map.body, "build")
     assert set(keyword_only(build)) == set(mlndt.default_options()["grid"]) | {"preset"}
+    odometry_fields = {"local_map", "keyframes", "prediction", "deskew", "gate_factor", "max_consecutive_fallbacks"}
+    odometry = function(stub_classes()["Odometry"].body, "__init__")
+    assert set(keyword_only(odometry)) == (top_level - {"initial_uncertainty"}) | {"preset"} | odometry_fields
+    run_odometry = function(tree.body, "run_odometry")
+    assert set(keyword_only(run_odometry)) == set(keyword_only(odometry))
+    assert [a.arg for a in run_odometry.args.args] == ["scans", "stamps", "point_times"]
     filter_range = function(tree.body, "filter_range")
     assert set(keyword_only(filter_range)) == set(mlndt.default_options()["range_filter"])
 
@@ -98,7 +104,14 @@ def test_every_public_name_has_a_stub():
     public -= {name for name in public if isinstance(getattr(mlndt, name), types.ModuleType)}
     assert set(mlndt.__all__) == public | {"__version__"}
     classes = stub_classes()
-    for cls in (mlndt.RegistrationResult, mlndt.LayeredMap, mlndt.Localizer, mlndt.LocalizationResult):
+    for cls in (
+        mlndt.RegistrationResult,
+        mlndt.LayeredMap,
+        mlndt.Localizer,
+        mlndt.LocalizationResult,
+        mlndt.Odometry,
+        mlndt.OdometryResult,
+    ):
         body = classes[cls.__name__].body
         stubbed = {node.name for node in body if isinstance(node, ast.FunctionDef) and node.name != "__init__"}
         public = {name for name in dir(cls) if not name.startswith("_")}
@@ -142,6 +155,6 @@ def test_lab_stub_names_every_public_name():
     names = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
     assert set(mlndt.lab.__all__) - {"__version__"} <= names
     classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
-    for cls in (mlndt.lab.PairResult, mlndt.lab.ScanStore):
+    for cls in (mlndt.lab.PairResult, mlndt.lab.ScanStore, mlndt.lab.RosBag, mlndt.lab.BagScan):
         stubbed = {node.name for node in classes[cls.__name__].body if isinstance(node, ast.FunctionDef)}
         assert {name for name in dir(cls) if not name.startswith("_")} <= stubbed, cls.__name__

@@ -1,0 +1,385 @@
+// mlndt.Odometry, mlndt.OdometryResult and mlndt.run_odometry: the
+// scan-to-local-map odometry of the installed library (mlndt/odometry/),
+// scan by scan or over a whole sequence, as mlndt_odometry runs it.
+
+#include "mlndt/odometry/odometry.h"
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "mlndt/cloud/io.h"
+#include "mlndt/odometry/run_odometry.h"
+#include "python/src/arrays.h"
+#include "python/src/errors.h"
+#include "python/src/module.h"
+#include "python/src/options.h"
+
+namespace mlndt {
+namespace python {
+namespace {
+
+const StructBinding<LocalMapOptions>& LocalMapBinding() {
+  using S = LocalMapOptions;
+  static const StructBinding<S> binding = [] {
+    StructBinding<S> b("LocalMapOptions");
+    b.Field("max_keyframes",
+            &S::max_keyframes,
+            "Keyframes kept in the local map (the oldest is dropped first).")
+        .Field("radius_m",
+               &S::radius_m,
+               "Map points farther than this from the newest keyframe are "
+               "left out [m].")
+        .Validator(&S::IsValid);
+    return b;
+  }();
+  return binding;
+}
+
+const StructBinding<KeyframeOptions>& KeyframeBinding() {
+  using S = KeyframeOptions;
+  static const StructBinding<S> binding = [] {
+    StructBinding<S> b("KeyframeOptions");
+    b.Field("min_translation_m",
+            &S::min_translation_m,
+            "A scan joins the local map this far [m] from the last keyframe.")
+        .Field("min_rotation_deg",
+               &S::min_rotation_deg,
+               "... or turned this much [deg].")
+        .Validator(&S::IsValid);
+    return b;
+  }();
+  return binding;
+}
+
+const StructBinding<MotionPredictionOptions>& PredictionBinding() {
+  using S = MotionPredictionOptions;
+  static const StructBinding<S> binding = [] {
+    StructBinding<S> b("MotionPredictionOptions");
+    b.Field("window", &S::window, "Recent model errors the uncertainty uses.")
+        .Field("factor", &S::factor, "Uncertainty = their maximum x factor.")
+        .Field("min_translation_m", &S::min_translation_m, "Lower bound [m].")
+        .Field("max_translation_m",
+               &S::max_translation_m,
+               "Upper bound [m] (also the largest correction accepted).")
+        .Field("min_rotation_deg", &S::min_rotation_deg, "Lower bound [deg].")
+        .Field("max_rotation_deg",
+               &S::max_rotation_deg,
+               "Upper bound [deg] (also the largest correction accepted).")
+        .Validator(&S::IsValid);
+    return b;
+  }();
+  return binding;
+}
+
+// The odometry's own fields; the registration's are RegistrationOptions
+// keywords beside them (as mlndt_odometry's flags).
+const StructBinding<OdometryOptions>& OdometryBinding() {
+  using S = OdometryOptions;
+  static const StructBinding<S> binding = [] {
+    StructBinding<S> b("OdometryOptions");
+    b.Nested("local_map",
+             &S::local_map,
+             LocalMapBinding(),
+             "The local map of recent keyframes (its grid is grid=).")
+        .Nested("keyframes",
+                &S::keyframes,
+                KeyframeBinding(),
+                "When a scan becomes a keyframe.")
+        .Nested("prediction",
+                &S::prediction,
+                PredictionBinding(),
+                "Constant-velocity prediction and its uncertainty.")
+        .Field("deskew", &S::deskew, "Deskew scans given point times.")
+        .Field("gate_factor",
+               &S::gate_factor,
+               "A pose farther from the prediction than this times its "
+               "uncertainty is refused (LOW_QUALITY, fallback).")
+        .Field("max_consecutive_fallbacks",
+               &S::max_consecutive_fallbacks,
+               "After this many scans in a row without a pose the local map "
+               "restarts.")
+        .Validator(&S::IsValid);
+    return b;
+  }();
+  return binding;
+}
+
+// The odometry fields of `kwargs` and, in the others, the registration's
+// ("preset" and RegistrationOptions fields; grid builds the local map).
+OdometryOptions OdometryOptionsFromPython(const py::kwargs& kwargs) {
+  const std::vector<std::string> own = OdometryBinding().Names();
+  py::dict odometry_fields;
+  py::kwargs registration_fields;
+  for (const auto& item : kwargs) {
+    const std::string key = item.first.cast<std::string>();
+    if (std::find(own.begin(), own.end(), key) != own.end()) {
+      odometry_fields[item.first] = item.second;
+    } else {
+      registration_fields[item.first] = item.second;
+    }
+  }
+  if (registration_fields.contains("initial_uncertainty")) {
+    ThrowValueError(
+        "invalid option: initial_uncertainty does not apply to the "
+        "odometry (each scan's comes from its prediction; see prediction=)");
+  }
+  OdometryOptions options;
+  options.registration =
+      RegistrationOptionsFromPython(registration_fields, py::none(), false);
+  options.local_map.grid = options.registration.grid;
+  OdometryBinding().Update(odometry_fields, "", &options);
+  std::string error;
+  if (!OdometryBinding().Validate(options, "", &error)) ThrowValueError(error);
+  return options;
+}
+
+// Per-point times of a scan of `num_points` points, or empty for None.
+std::vector<double> PointTimesFromPython(const py::handle times,
+                                         size_t num_points,
+                                         const std::string& what) {
+  if (times.is_none()) return {};
+  const auto array =
+      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(
+          times);
+  if (!array || array.ndim() != 1 ||
+      static_cast<size_t>(array.size()) != num_points) {
+    ThrowValueError(what + ": expected one time per point (" +
+                    std::to_string(num_points) + " floats, seconds after " +
+                    "the stamp), got " + DescribeValue(times));
+  }
+  return std::vector<double>(array.data(), array.data() + array.size());
+}
+
+// One Process at a time (the odometry is state); the GIL is released.
+class PyOdometry {
+ public:
+  explicit PyOdometry(const py::kwargs& kwargs)
+      : odometry_(OdometryOptionsFromPython(kwargs)) {}
+
+  OdometryResult Process(const py::object& points,
+                         double stamp_s,
+                         const py::object& point_times) {
+    const PointCloud cloud = PointsFromPython(points, "points", false);
+    const std::vector<double> times =
+        PointTimesFromPython(point_times, cloud.size(), "point_times");
+    OdometryResult result;
+    std::string error;
+    bool ok = false;
+    {
+      py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
+      ok = odometry_.Process({stamp_s, &cloud, &times}, &result, &error);
+    }
+    if (!ok) ThrowValueError("process: " + error);
+    return result;
+  }
+
+  size_t num_processed() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return odometry_.num_processed();
+  }
+
+ private:
+  Odometry odometry_;
+  std::mutex mutex_;
+};
+
+// scans[k] as a cloud: a path is read, an array converted (with the GIL).
+bool LoadScan(const py::list& scans,
+              const py::list& times,
+              size_t k,
+              PointCloud* cloud,
+              std::vector<double>* point_times) {
+  const std::string what = "scans[" + std::to_string(k) + "]";
+  py::gil_scoped_acquire acquire;
+  const py::object scan = scans[k];
+  if (py::isinstance<py::str>(scan) || py::hasattr(scan, "__fspath__")) {
+    const std::string path = PathString(scan);
+    std::string error;
+    bool ok = false;
+    {
+      py::gil_scoped_release release;
+      ok = ReadPointCloud(path, cloud, nullptr, &error);
+    }
+    if (!ok) ThrowReadError(path, what + ": " + error);
+  } else {
+    *cloud = PointsFromPython(scan, what.c_str(), false);
+  }
+  *point_times =
+      PointTimesFromPython(times.empty() ? py::none() : py::object(times[k]),
+                           cloud->size(),
+                           "point_times[" + std::to_string(k) + "]");
+  return true;
+}
+
+py::list ListOf(const py::object& items, const char* what, size_t n) {
+  if (items.is_none()) return py::list();
+  py::list list(items);
+  if (list.size() != n) {
+    ThrowValueError(std::string(what) + ": " + std::to_string(list.size()) +
+                    " entries for " + std::to_string(n) + " scans");
+  }
+  return list;
+}
+
+std::vector<OdometryResult> RunOdometryPython(const py::iterable& scan_items,
+                                              const py::object& stamps_arg,
+                                              const py::object& times_arg,
+                                              const py::kwargs& kwargs) {
+  const OdometryOptions options = OdometryOptionsFromPython(kwargs);
+  const py::list scans(scan_items);
+  const size_t n = scans.size();
+  if (n < 2) {
+    ThrowValueError("scans: odometry needs at least 2 scans, got " +
+                    std::to_string(n));
+  }
+  std::vector<double> stamps(n);
+  for (size_t k = 0; k < n; ++k) stamps[k] = static_cast<double>(k);
+  const py::list stamp_list = ListOf(stamps_arg, "stamps", n);
+  for (size_t k = 0; k < stamp_list.size(); ++k) {
+    stamps[k] = py::cast<double>(stamp_list[k]);
+  }
+  const py::list times = ListOf(times_arg, "point_times", n);
+  const OdometryScanLoader load = [&](size_t k,
+                                      PointCloud* cloud,
+                                      std::vector<double>* point_times,
+                                      double* stamp_s,
+                                      std::string*) {
+    *stamp_s = stamps[k];
+    return LoadScan(scans, times, k, cloud, point_times);
+  };
+  std::vector<OdometryResult> results;
+  OdometrySummary summary;
+  std::string error;
+  bool ok = false;
+  {
+    py::gil_scoped_release release;
+    ok = RunOdometry(options, n, load, {}, &results, &summary, &error);
+  }
+  if (!ok) ThrowValueError("run_odometry: " + error);
+  return results;
+}
+
+py::dict QualityDict(const FitQuality& q) {
+  py::dict quality;
+  quality["points"] = q.points;
+  quality["own_cell_fraction"] = q.own_cell_fraction;
+  quality["inlier_fraction"] = q.inlier_fraction;
+  quality["mean_score"] = q.mean_score;
+  quality["median_distance"] = q.median_distance;
+  return quality;
+}
+
+void DefineResult(py::module_& m) {
+  using R = OdometryResult;
+  const auto matrix = [](Isometry3d R::*field) {
+    return [field](const R& r) { return Eigen::Matrix4d((r.*field).matrix()); };
+  };
+  py::class_<R>(m,
+                "OdometryResult",
+                "One scan of the odometry (mlndt::OdometryResult): the "
+                "prediction, the pose\n(world_from_sensor, 4x4; the first "
+                "scan defines the world), the verdict and\nhow the local "
+                "map changed.")
+      .def_readonly("index", &R::index, "0-based scan index.")
+      .def_readonly("stamp_s", &R::stamp_s)
+      .def_property_readonly("predicted",
+                             matrix(&R::predicted),
+                             "The constant-velocity prediction, 4x4.")
+      .def_property_readonly("world_from_sensor",
+                             matrix(&R::world_from_sensor),
+                             "The pose, 4x4 (the prediction when `fallback`).")
+      .def_property_readonly(
+          "uncertainty",
+          [](const R& r) {
+            return py::make_tuple(r.uncertainty.translation_m,
+                                  r.uncertainty.rotation_deg);
+          },
+          "The prediction's (translation_m, rotation_deg).")
+      .def_property_readonly(
+          "termination",
+          [](const R& r) {
+            return std::string(TerminationTypeToString(r.termination));
+          },
+          "The registration's verdict, or LOW_QUALITY when the gate "
+          "refused it.")
+      .def_readonly("message", &R::message)
+      .def_readonly(
+          "fallback", &R::fallback, "The prediction stands in for the pose.")
+      .def_readonly("keyframe", &R::keyframe, "The scan joined the local map.")
+      .def_readonly("map_restarted", &R::map_restarted)
+      .def_readonly("deskewed", &R::deskewed)
+      .def_readonly("start_layer", &R::start_layer)
+      .def_readonly("num_layers", &R::num_layers)
+      .def_readonly("iterations", &R::iterations)
+      .def_readonly("sampled_points", &R::sampled_points)
+      .def_property_readonly("quality",
+                             [](const R& r) { return QualityDict(r.quality); })
+      .def_readonly("correction_m", &R::correction_m)
+      .def_readonly("correction_deg", &R::correction_deg)
+      .def_readonly("map_keyframes", &R::map_keyframes)
+      .def_readonly("map_points", &R::map_points)
+      .def_readonly("registration_time_s", &R::registration_time_s)
+      .def_readonly("map_time_s", &R::map_time_s)
+      .def_readonly("total_time_s", &R::total_time_s)
+      .def("__repr__", [](const R& r) {
+        return "<mlndt.OdometryResult scan " + std::to_string(r.index) + " " +
+               TerminationTypeToString(r.termination) +
+               (r.fallback ? " (fallback)>" : ">");
+      });
+}
+
+}  // namespace
+
+void DefineOdometry(py::module_& m) {
+  DefineResult(m);
+  const std::string options_doc =
+      "Options: the odometry's fields below, and RegistrationOptions "
+      "fields as for\nmlndt.register (grid= builds the local map; "
+      "initial_uncertainty comes from the\nprediction). ValueError "
+      "names an invalid one.\n" +
+      OdometryBinding().Describe(OdometryOptions(), "    ");
+  py::class_<PyOdometry>(
+      m,
+      "Odometry",
+      "Scan-to-local-map LiDAR odometry with ML-NDT (mlndt::Odometry), scan "
+      "by scan.")
+      .def(py::init<const py::kwargs&>(),
+           ("Odometry(**options)\n\n" + options_doc).c_str())
+      .def("process",
+           &PyOdometry::Process,
+           py::arg("points"),
+           py::arg("stamp_s"),
+           py::arg("point_times") = py::none(),
+           "process(points, stamp_s, point_times=None) -> OdometryResult\n\n"
+           "The next scan: (N, 3) points in its sensor frame, its stamp [s] "
+           "(after the last\none's) and optionally one time per point [s, "
+           "relative to the stamp] to deskew it.\nValueError for bad input "
+           "(the odometry's state is then unchanged). The GIL is\nreleased.")
+      .def_property_readonly("num_processed", &PyOdometry::num_processed);
+  m.def("run_odometry",
+        &RunOdometryPython,
+        py::arg("scans"),
+        py::arg("stamps") = py::none(),
+        py::arg("point_times") = py::none(),
+        ("run_odometry(scans, stamps=None, point_times=None, **options)\n"
+         "    -> list[OdometryResult]\n\n"
+         "The odometry over a sequence, as mlndt_odometry runs it: scans are "
+         "paths (read\none at a time) or (N, 3) arrays; stamps one per scan "
+         "[s] (None: the scan\nindices, as mlndt_odometry without --times); "
+         "point_times None or one array (or\nNone) per scan. "
+         "FileNotFoundError/OSError for a scan that cannot be read,\n"
+         "ValueError naming the argument or option otherwise.\n\n" +
+         options_doc)
+            .c_str());
+}
+
+}  // namespace python
+}  // namespace mlndt
