@@ -134,6 +134,38 @@ TEST(MlndtPosegraph, WithoutGroundTruthThereAreNoMetrics) {
   EXPECT_EQ(run.out.find("rpe_"), std::string::npos) << run.out;
 }
 
+// From the odometry (KITTI's own poses) with its factors and a loop-style
+// extra pair: the JSON names the start, the factors and the pair, and
+// trajectory_odometry.txt holds the odometry moved to scan 0.
+TEST(MlndtPosegraph, OdometryFactorsExtraPairsAndOdometryStart) {
+  const std::string dir = TempDir("odometry");
+  const std::string poses = testing::BundledDataPath("kitti/poses_velo.txt");
+  const ToolRun run = RunPosegraph(
+      "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
+          " --gt_poses=" + Quote(poses) + " --odometry_poses=" + Quote(poses) +
+          " --init=odometry --odometry_sigma_m=0.1 --odometry_sigma_deg=1"
+          " --neighbors=1 --pairs=0:7 --information_scale=1 --output_dir=" +
+          Quote(dir),
+      dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("\"init\": \"odometry\""), std::string::npos)
+      << run.out;
+  EXPECT_EQ(NumberAfter(run.out, "odometry_factors"), 7.0) << run.out;
+  EXPECT_EQ(NumberAfter(run.out, "extra_pairs"), 1.0) << run.out;
+  EXPECT_EQ(NumberAfter(run.out, "directed_pairs"), 16.0) << run.out;
+  EXPECT_EQ(NumberAfter(run.out, "odometry_sigma_m"), 0.1) << run.out;
+  EXPECT_EQ(NumberAfter(run.out, "information_scale"), 1.0) << run.out;
+  // The start is the truth itself: its ATE is zero, and the joint solve,
+  // pulled by the scans (which fit ~0.8x KITTI's translation), leaves it.
+  EXPECT_LT(NumberAfter(run.out, "ate_odometry_m"), 1e-6) << run.out;
+  EXPECT_GT(NumberAfter(run.out, "ate_joint_m"), 0.05) << run.out;
+  EXPECT_LE(NumberAfter(run.out, "joint_final_cost"),
+            NumberAfter(run.out, "joint_cost_at_odometry"))
+      << run.out;
+  EXPECT_EQ(CountLines(ReadFile(dir + "/trajectory_odometry.txt")), 8);
+  EXPECT_EQ(CountLines(ReadFile(dir + "/trajectory_joint.txt")), 8);
+}
+
 // Issue 27: a chain whose registrations are not usable (forced here by an
 // inlier threshold no fit reaches) still writes its files, but the
 // trajectories are not to be used: exit 1, saying so (was exit 0).
@@ -194,6 +226,15 @@ TEST(MlndtPosegraph, BadFlagsExitWithTwo) {
            " --scans=" + Quote(one_scan),             // Fewer than 2 scans.
            scans + " --output_dir=" +
                Quote(short_gt + "/out"),  // A file as the folder's parent.
+           scans + " --pairs=0-7",        // Not i:j.
+           scans + " --pairs=0:8",        // Scans are 0..7.
+           scans + " --pairs=3:3",        // Not a pair.
+           scans + " --init=odometry",    // Without --odometry_poses.
+           scans + " --init=gt",          // chained or odometry.
+           scans + " --information_scale=0",
+           scans + " --odometry_poses=" + Quote(short_gt),  // Too few poses.
+           scans + " --odometry_sigma_m=0 --odometry_poses=" +
+               Quote(testing::BundledDataPath("kitti/poses_velo.txt")),
        }) {
     SCOPED_TRACE(args);
     const ToolRun run = RunPosegraph(args, dir);

@@ -39,20 +39,21 @@ Json RpeJson(const Metrics& metrics) {
 
 }  // namespace
 
-bool AddTrajectoryMetrics(const std::vector<Isometry3d>& chained,
+bool AddTrajectoryMetrics(const std::string& initial_name,
+                          const std::vector<Isometry3d>& initial,
                           const std::vector<Isometry3d>& joint,
                           const std::vector<Isometry3d>& truth,
                           Json* json,
                           std::string* error) {
-  Metrics chained_metrics, joint_metrics;
-  if (!Evaluate(chained, truth, &chained_metrics, error) ||
+  Metrics initial_metrics, joint_metrics;
+  if (!Evaluate(initial, truth, &initial_metrics, error) ||
       !Evaluate(joint, truth, &joint_metrics, error)) {
     return false;
   }
   (*json)["ate_alignment"] = "first_pose";
-  (*json)["ate_chained_m"] = Number(chained_metrics.ate_m);
+  (*json)["ate_" + initial_name + "_m"] = Number(initial_metrics.ate_m);
   (*json)["ate_joint_m"] = Number(joint_metrics.ate_m);
-  (*json)["rpe_chained"] = RpeJson(chained_metrics);
+  (*json)["rpe_" + initial_name] = RpeJson(initial_metrics);
   (*json)["rpe_joint"] = RpeJson(joint_metrics);
   return true;
 }
