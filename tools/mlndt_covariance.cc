@@ -75,20 +75,11 @@ DEFINE_string(output_csv, "", "One row per registration");
 namespace mlndt {
 namespace {
 
+constexpr char kTool[] = "mlndt_covariance";
+
 using tools::Consistency;
 using tools::PairRuns;
 using tools::StartResult;
-
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_covariance: " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << "mlndt_covariance: " << message << std::endl;
-  return tools::kExitUsage;
-}
 
 // What every registration of the run shares: the start offsets' generator,
 // the --output_csv rows (written once at the end) and the progress bar.
@@ -245,27 +236,29 @@ bool RunKoide3(const RegistrationOptions& options,
 }
 
 int Main() {
-  if (FLAGS_starts < 2) return Refuse("--starts must be >= 2");
+  if (FLAGS_starts < 2) return tools::Refuse(kTool, "--starts must be >= 2");
   if (!(FLAGS_max_translation >= 0.0) || !(FLAGS_max_rotation >= 0.0)) {
-    return Refuse("--max_translation and --max_rotation must be >= 0");
+    return tools::Refuse(kTool,
+                         "--max_translation and --max_rotation must be >= 0");
   }
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   std::vector<std::string> datasets;
   if (!tools::SplitList(FLAGS_datasets, &datasets)) {
-    return Refuse(
-        "--datasets: expected a comma-separated list of kitti, koide3");
+    return tools::Refuse(
+        kTool, "--datasets: expected a comma-separated list of kitti, koide3");
   }
   for (const std::string& dataset : datasets) {
     if (dataset != "kitti" && dataset != "koide3") {
-      return Refuse("--datasets: unknown '" + dataset + "' (kitti, koide3)");
+      return tools::Refuse(
+          kTool, "--datasets: unknown '" + dataset + "' (kitti, koide3)");
     }
   }
   if (!tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
       !tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
@@ -281,12 +274,12 @@ int Main() {
     const bool ok = dataset == "kitti"
                         ? RunKitti(options, &campaign, &pairs, &error)
                         : RunKoide3(options, &campaign, &pairs, &error);
-    if (!ok) return Fail(error);
+    if (!ok) return tools::Fail(kTool, error);
   }
   progress.Finish();
   if (!FLAGS_output_csv.empty() &&
       !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
 
   tools::Json json = tools::ToolJson("mlndt_covariance");
@@ -323,7 +316,7 @@ int Main() {
   json["pairs"] = pair_list;
   if (!FLAGS_output_json.empty() &&
       !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   return 0;
 }

@@ -81,17 +81,6 @@ namespace {
 
 constexpr char kTool[] = "mlndt_map";
 
-int Fail(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return tools::kExitUsage;
-}
-
 // The flags of this file (the build's), for refusing them with `info`.
 const std::vector<std::string> kBuildFlags = {"scans",
                                               "scan_list",
@@ -166,10 +155,10 @@ int Info(const std::string& path) {
   std::string error;
   if (!tools::RefuseGivenFlags(
           kBuildFlags, "does not apply to 'mlndt_map info'", &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   LayeredGrid map;
-  if (!LoadLayeredGrid(path, &map, &error)) return Refuse(error);
+  if (!LoadLayeredGrid(path, &map, &error)) return tools::Refuse(kTool, error);
   std::error_code ec;
   const auto file_bytes = std::filesystem::file_size(path, ec);
   std::printf("map: %s (%llu bytes on disk)\n",
@@ -322,12 +311,12 @@ tools::Json SummaryJson(const MapBuildOptions& options,
 int Build() {
   MapBuildOptions options;
   std::string error;
-  if (!CheckFlags(&options, &error)) return Refuse(error);
+  if (!CheckFlags(&options, &error)) return tools::Refuse(kTool, error);
   bool detect = true;
   TrajectoryFormat format = TrajectoryFormat::KITTI;
   if (!tools::ParseTrajectoryFormatFlag(
           "poses_format", FLAGS_poses_format, &detect, &format, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
 
   LayeredGrid map;
@@ -335,10 +324,10 @@ int Build() {
   if (!FLAGS_cloud.empty()) {
     PointCloud cloud;
     if (!ReadPointCloud(FLAGS_cloud, &cloud, nullptr, &error)) {
-      return Refuse(error);
+      return tools::Refuse(kTool, error);
     }
     if (!BuildMapFromCloud(options, std::move(cloud), &map, &summary, &error))
-      return Fail(error);
+      return tools::Fail(kTool, error);
   } else {
     tools::ScanInput input;
     const auto list_folder = [](std::vector<std::string>* paths,
@@ -356,23 +345,24 @@ int Build() {
             static_cast<size_t>(FLAGS_max_scans),
             &input,
             &error)) {
-      return Refuse(error);
+      return tools::Refuse(kTool, error);
     }
     const std::vector<std::string>& paths = input.names();
     std::vector<Isometry3d> poses;
     if (!tools::ReadPoseFile(
             FLAGS_poses, detect, format, FLAGS_calib, &poses, &error)) {
-      return Refuse("--poses: " + error);
+      return tools::Refuse(kTool, "--poses: " + error);
     }
     // Pose k belongs to scan k: a count that differs (more poses than
     // scans, unless --max_scans cut the scans) means a wrong file or folder.
     if (poses.size() < paths.size() ||
         (poses.size() > paths.size() && FLAGS_max_scans == 0)) {
-      return Refuse("--poses=" + FLAGS_poses + " has " +
-                    std::to_string(poses.size()) + " poses for " +
-                    std::to_string(paths.size()) +
-                    " scans (pose k belongs to scan k; use --max_scans to "
-                    "take the first scans of a longer run)");
+      return tools::Refuse(
+          kTool,
+          "--poses=" + FLAGS_poses + " has " + std::to_string(poses.size()) +
+              " poses for " + std::to_string(paths.size()) +
+              " scans (pose k belongs to scan k; use --max_scans to "
+              "take the first scans of a longer run)");
     }
     tools::Progress progress(kTool, paths.size());
     const bool ok = BuildMapFromScans(
@@ -388,7 +378,7 @@ int Build() {
         &summary,
         &error);
     progress.Finish();
-    if (!ok) return Fail(error);
+    if (!ok) return tools::Fail(kTool, error);
     for (const size_t k : summary.scans_without_points) {
       std::cerr << kTool << ": warning: scan " << k << " ("
                 << (input.from_bag() ? paths[k] : input.paths()[k])
@@ -396,7 +386,8 @@ int Build() {
                    "nothing to the map\n";
     }
   }
-  if (!SaveLayeredGrid(FLAGS_output, map, &error)) return Fail(error);
+  if (!SaveLayeredGrid(FLAGS_output, map, &error))
+    return tools::Fail(kTool, error);
 
   std::printf(
       "scans: %zu, points: %zu read, %zu cropped, %zu merged, %zu after the "
@@ -431,7 +422,7 @@ int Build() {
   if (!FLAGS_output_json.empty()) {
     if (!tools::WriteJsonFile(
             FLAGS_output_json, SummaryJson(options, summary, map), &error)) {
-      return Fail(error);
+      return tools::Fail(kTool, error);
     }
   }
   return 0;

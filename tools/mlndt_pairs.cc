@@ -52,16 +52,7 @@ DEFINE_string(output_csv, "", "Per-pair results as CSV");
 namespace mlndt {
 namespace {
 
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_pairs: " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << "mlndt_pairs: " << message << std::endl;
-  return tools::kExitUsage;
-}
+constexpr char kTool[] = "mlndt_pairs";
 
 // ';'-separated tx,ty,tz,alpha,beta,gamma offsets [m, deg].
 bool ParsePerturbations(const std::string& text,
@@ -143,53 +134,58 @@ bool RegisterAndPrint(const RegistrationOptions& options,
 
 int Run() {
   if (FLAGS_scans.empty() || FLAGS_gt_poses.empty())
-    return Refuse("--scans and --gt_poses are required");
+    return tools::Refuse(kTool, "--scans and --gt_poses are required");
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error) ||
       !tools::CheckStartLayerBeforeMap(options, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
 
   std::vector<std::string> paths;
   if (!ListScanFiles(
           FLAGS_scans, {FLAGS_gt_poses, FLAGS_calib}, &paths, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   if (!tools::CheckCameraPoseFlags("--gt_poses", true, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   std::vector<Isometry3d> poses;
   if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &poses, &error)) {
-    return Refuse("--gt_poses: " + error);
+    return tools::Refuse(kTool, "--gt_poses: " + error);
   }
   if (poses.size() < paths.size()) {
-    return Refuse(FLAGS_gt_poses + " has " + std::to_string(poses.size()) +
-                  " poses for " + std::to_string(paths.size()) + " scans");
+    return tools::Refuse(kTool,
+                         FLAGS_gt_poses + " has " +
+                             std::to_string(poses.size()) + " poses for " +
+                             std::to_string(paths.size()) + " scans");
   }
   std::vector<double> gaps;
   if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty()) {
-    return Refuse("--gaps=" + FLAGS_gaps +
-                  ": expected comma-separated frame gaps (e.g. 1,2,5)");
+    return tools::Refuse(
+        kTool,
+        "--gaps=" + FLAGS_gaps +
+            ": expected comma-separated frame gaps (e.g. 1,2,5)");
   }
   for (const double gap : gaps) {
     // A gap of 0 would register every scan onto itself.
     if (!(gap >= 1.0) || gap != std::floor(gap)) {
-      return Refuse("--gaps=" + FLAGS_gaps +
-                    ": a gap is a whole number of frames >= 1");
+      return tools::Refuse(
+          kTool,
+          "--gaps=" + FLAGS_gaps + ": a gap is a whole number of frames >= 1");
     }
   }
   std::vector<Vector6d> perturbations;
   if (!ParsePerturbations(FLAGS_perturbations, &perturbations, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   if (!tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   std::vector<PointCloud> scans(paths.size());
   for (size_t i = 0; i < paths.size(); ++i) {
     if (!ReadPointCloud(paths[i], &scans[i], nullptr, &error))
-      return Refuse(error);
+      return tools::Refuse(kTool, error);
   }
   std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
@@ -244,7 +240,7 @@ int Run() {
   std::printf("verdicts: %s\n", verdicts.Line().c_str());
   if (!FLAGS_output_csv.empty() &&
       !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   return tools::kExitOk;
 }

@@ -96,19 +96,10 @@ DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 namespace mlndt {
 namespace {
 
+constexpr char kTool[] = "mlndt_scaling";
+
 using tools::Fmt;
 using tools::SizeResult;
-
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_scaling: " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << "mlndt_scaling: " << message << std::endl;
-  return tools::kExitUsage;
-}
 
 // Reads every scan, moves it into the first scan's frame with the ground
 // truth and appends it to *merged.
@@ -231,13 +222,15 @@ int WriteOutputs(const MatcherOptions& options,
   const std::string dir = FLAGS_output_dir;
   std::string error;
   if (!tools::WriteScalingCsv(dir + "/scaling.csv", results, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   std::printf("\noutput: %s/scaling.csv", dir.c_str());
   if (!gnuplot_ok) {
     std::printf("\n");
-    return Fail("scaling.png skipped: gnuplot ('" + FLAGS_gnuplot +
-                "') not found; scaling.csv is written. Install gnuplot-nox");
+    return tools::Fail(
+        kTool,
+        "scaling.png skipped: gnuplot ('" + FLAGS_gnuplot +
+            "') not found; scaling.csv is written. Install gnuplot-nox");
   }
   const std::string title = "Registration time against cloud size (median of " +
                             std::to_string(FLAGS_repetitions) + " runs; " +
@@ -246,7 +239,7 @@ int WriteOutputs(const MatcherOptions& options,
                             " sampling)";
   if (!tools::WriteScalingPlot(
           FLAGS_gnuplot, dir, title, results, slopes, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   std::printf(", scaling.gp, scaling.png\n");
   return 0;
@@ -267,7 +260,8 @@ int ReportBrokenSolves(const std::vector<SizeResult>& results) {
                             " deg)")
               << std::endl;
   }
-  return Fail(
+  return tools::Fail(
+      kTool,
       "the solve did not recover --motion at every size: its times are not "
       "representative (see the table's last column)");
 }
@@ -278,12 +272,12 @@ int Run() {
   MatcherOptions options;
   std::string error;
   if (!ParseFlags(&sizes, &reference_from_input, &options, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   if (!FLAGS_output_dir.empty()) {
     if (!tools::PrepareOutputDir(
             "output_dir", FLAGS_output_dir, {"scaling.csv"}, &error)) {
-      return Refuse(error);
+      return tools::Refuse(kTool, error);
     }
   }
   const bool gnuplot_ok =
@@ -296,12 +290,15 @@ int Run() {
 
   PointCloud merged;
   size_t num_scans = 0;
-  if (!LoadMergedCloud(&merged, &num_scans, &error)) return Refuse(error);
+  if (!LoadMergedCloud(&merged, &num_scans, &error))
+    return tools::Refuse(kTool, error);
   if (sizes.back() > merged.size()) {
-    return Refuse("--sizes: " + std::to_string(sizes.back()) +
-                  " points requested, but the " + std::to_string(num_scans) +
-                  " scans of " + FLAGS_scans + " merge into only " +
-                  std::to_string(merged.size()) + " points");
+    return tools::Refuse(kTool,
+                         "--sizes: " + std::to_string(sizes.back()) +
+                             " points requested, but the " +
+                             std::to_string(num_scans) + " scans of " +
+                             FLAGS_scans + " merge into only " +
+                             std::to_string(merged.size()) + " points");
   }
 
   tools::ScalingSettings settings;
@@ -320,7 +317,7 @@ int Run() {
                             &results[k],
                             &error)) {
       progress.Finish();
-      return Fail(error);
+      return tools::Fail(kTool, error);
     }
     progress.Update(k + 1,
                     "N = " + std::to_string(sizes[k]) + ", total " +

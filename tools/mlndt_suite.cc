@@ -91,17 +91,6 @@ namespace {
 
 constexpr char kTool[] = "mlndt_suite";
 
-int Fail(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return mlndt::tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return mlndt::tools::kExitUsage;
-}
-
 struct SuiteConfig {
   std::vector<SuiteDataset> datasets;
   SuitePlanOptions plan;
@@ -322,12 +311,12 @@ bool WriteOutputs(const SuiteConfig& config,
 int Run() {
   SuiteConfig config;
   std::string error;
-  if (!ParseConfig(&config, &error)) return Refuse(error);
+  if (!ParseConfig(&config, &error)) return tools::Refuse(kTool, error);
   std::vector<tools::LoadedSuiteDataset> loaded(config.datasets.size());
   for (size_t d = 0; d < config.datasets.size(); ++d) {
     if (!tools::LoadSuiteDataset(
             config.datasets[d], d, config.plan, &loaded[d], &error)) {
-      return Refuse(error);
+      return tools::Refuse(kTool, error);
     }
   }
   if (!FLAGS_output_dir.empty() &&
@@ -335,14 +324,14 @@ int Run() {
                                       FLAGS_output_dir,
                                       {"runs.csv", "summary.json"},
                                       &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   std::printf("%s", tools::SuitePlanText(loaded).c_str());
   std::fflush(stdout);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<SuiteRunResult>> results;
   if (!tools::RunSuiteWithProgress(config.matcher, loaded, &results, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
 
   std::vector<std::string> names;
@@ -370,7 +359,7 @@ int Run() {
       "\nwall time: %.1f s for %zu runs\n", info.wall_time_s, outcomes.size());
   if (!FLAGS_output_dir.empty() &&
       !WriteOutputs(config, loaded, results, score, info, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   for (const std::string& missed : info.missed_targets) {
     std::printf("target missed: %s\n", missed.c_str());

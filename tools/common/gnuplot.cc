@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -117,6 +118,23 @@ std::string GnuplotQuote(const std::string& text) {
     if (c == '\'') out += '\'';
   }
   return out + "'";
+}
+
+bool GnuplotReadyForPlots(const std::string& tool,
+                          bool plots,
+                          const std::string& gnuplot,
+                          const std::string& skipped,
+                          const std::string& how) {
+  if (!plots || GnuplotAvailable(gnuplot)) return true;
+  std::cerr << tool << ": gnuplot ('" << gnuplot << "') not found: " << skipped
+            << " (install gnuplot-nox" << how << ", or pass --plots=false)\n";
+  return false;
+}
+
+std::string PlotSkippedMessage(const std::string& gnuplot) {
+  return "plot skipped: gnuplot ('" + gnuplot +
+         "') not found; the other outputs are written. Install "
+         "gnuplot-nox or pass --plots=false";
 }
 
 bool GnuplotAvailable(const std::string& gnuplot) {

@@ -27,6 +27,20 @@ std::string GnuplotQuote(const std::string& text);
 // name looked up on PATH).
 bool GnuplotAvailable(const std::string& gnuplot);
 
+// With `plots`, true when gnuplot runs; else prints "<tool>: gnuplot
+// ('<gnuplot>') not found: <skipped> (install gnuplot-nox<how>, or pass
+// --plots=false)" on stderr and returns false. Without `plots`, true.
+bool GnuplotReadyForPlots(const std::string& tool,
+                          bool plots,
+                          const std::string& gnuplot,
+                          const std::string& skipped,
+                          const std::string& how = "");
+
+// The message of a tool that asked for plots without gnuplot: "plot
+// skipped: gnuplot ('<gnuplot>') not found; the other outputs are written.
+// Install gnuplot-nox or pass --plots=false".
+std::string PlotSkippedMessage(const std::string& gnuplot);
+
 // The first lines of every script: a PNG terminal (pngcairo when this
 // gnuplot has it, else libgd's png) of the given size in pixels.
 std::string GnuplotPngHeader(int width, int height);

@@ -10,6 +10,7 @@
 #include "mlndt/common/rigid_transform.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {
@@ -149,6 +150,50 @@ bool ParseInitialPose(const std::string& guess,
     return RowMajorToRigidTransform(v, "--initial_matrix", pose, error);
   }
   return true;
+}
+
+bool InitialPoseFromFlags(const std::string& guess,
+                          const std::string& matrix,
+                          const std::string& poses_path,
+                          const std::string& poses_format,
+                          const std::string& calib,
+                          Isometry3d* pose,
+                          std::string* error) {
+  bool given = false;
+  if (!ParseInitialPose(guess, matrix, pose, &given, error)) return false;
+  if (poses_path.empty()) return true;
+  bool detect = true;
+  TrajectoryFormat format = TrajectoryFormat::KITTI;
+  std::vector<Isometry3d> poses;
+  if (!ParseTrajectoryFormatFlag(
+          "initial_poses_format", poses_format, &detect, &format, error) ||
+      !ReadPoseFile(poses_path, detect, format, calib, &poses, error)) {
+    *error = "--initial_poses: " + *error;
+    return false;
+  }
+  *pose = poses.front();
+  return true;
+}
+
+bool CheckInitialPoseFlags(const std::string& guess,
+                           const std::string& matrix,
+                           const std::string& poses_path,
+                           std::string* error) {
+  if (!guess.empty() + !matrix.empty() + !poses_path.empty() > 1) {
+    *error =
+        "give one of --initial_guess, --initial_matrix and --initial_poses";
+    return false;
+  }
+  return CheckCameraPoseFlags("--initial_poses", !poses_path.empty(), error);
+}
+
+bool CheckMapFile(const std::string& path, std::string* error) {
+  if (std::filesystem::is_regular_file(path)) return true;
+  *error = "--map=" + path +
+           (std::filesystem::is_directory(path)
+                ? ": it is a directory (give the map file mlndt_map wrote)"
+                : ": no such file");
+  return false;
 }
 
 }  // namespace tools

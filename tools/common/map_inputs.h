@@ -62,5 +62,26 @@ bool ParseInitialPose(const std::string& guess,
                       bool* given,
                       std::string* error);
 
+// The first scan's pose: ParseInitialPose of `guess` or `matrix`, else the
+// first pose of `poses_path` (ReadPoseFile, its format from the flag value
+// `poses_format`, errors prefixed "--initial_poses: "), else the identity.
+bool InitialPoseFromFlags(const std::string& guess,
+                          const std::string& matrix,
+                          const std::string& poses_path,
+                          const std::string& poses_format,
+                          const std::string& calib,
+                          Isometry3d* pose,
+                          std::string* error);
+
+// At most one of --initial_guess, --initial_matrix and --initial_poses,
+// and the camera pose flags fit --initial_poses (CheckCameraPoseFlags).
+bool CheckInitialPoseFlags(const std::string& guess,
+                           const std::string& matrix,
+                           const std::string& poses_path,
+                           std::string* error);
+
+// --map=`path` names an existing file (not a folder).
+bool CheckMapFile(const std::string& path, std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

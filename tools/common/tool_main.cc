@@ -27,6 +27,16 @@ const char kExitCodesHelp[] =
     "or misconfiguration (a flag, argument or input refused before any work, "
     "the message names it).";
 
+int Fail(const std::string& tool, const std::string& message) {
+  std::cerr << tool << ": " << message << std::endl;
+  return kExitFailed;
+}
+
+int Refuse(const std::string& tool, const std::string& message) {
+  std::cerr << tool << ": " << message << std::endl;
+  return kExitUsage;
+}
+
 namespace {
 
 std::set<std::string>& HiddenFlags() {

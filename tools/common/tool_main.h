@@ -19,6 +19,12 @@ constexpr int kExitOk = 0;
 constexpr int kExitFailed = 1;
 constexpr int kExitUsage = 2;
 
+// Print "<tool>: <message>" on stderr and return kExitFailed (the run
+// failed, its result is not to be used) or kExitUsage (a flag, argument or
+// input refused before any work).
+int Fail(const std::string& tool, const std::string& message);
+int Refuse(const std::string& tool, const std::string& message);
+
 // The exit-code paragraph of the usage texts.
 extern const char kExitCodesHelp[];
 

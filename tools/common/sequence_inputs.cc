@@ -1,0 +1,62 @@
+#include "tools/common/sequence_inputs.h"
+
+#include <iostream>
+
+#include "lab/eval/dataset.h"
+#include "lab/eval/pose_convention.h"
+#include "tools/common/pose_flags.h"
+
+namespace mlndt {
+namespace tools {
+
+bool ReadSequenceRunPoses(const SequenceOptions& options,
+                          const std::string& source,
+                          size_t num_scans,
+                          const std::string& gt_poses,
+                          std::vector<Isometry3d>* truth,
+                          std::vector<Isometry3d>* odometry,
+                          std::string* error) {
+  const std::string scans = std::to_string(num_scans) + " scans";
+  if (num_scans <= options.step) {
+    *error = source + ": " + scans +
+             ", too few for --step=" + std::to_string(options.step);
+    return false;
+  }
+  if (!gt_poses.empty() &&
+      !ReadSequencePoses(gt_poses, FLAGS_calib, truth, error)) {
+    return false;
+  }
+  std::string evidence;
+  if (!FLAGS_poses_are_camera && LooksLikeCameraPoses(*truth, &evidence)) {
+    std::cerr << "mlndt_sequence: WARNING: --gt_poses=" << gt_poses
+              << " looks like KITTI camera (cam0) poses read as the scans' "
+                 "own: "
+              << evidence
+              << ". If it is KITTI's poses/XX.txt, add --poses_are_camera "
+                 "--calib=calib.txt; else every error below is measured "
+                 "against the wrong frame.\n";
+  }
+  if (!truth->empty() && truth->size() < num_scans) {
+    *error = gt_poses + " has " + std::to_string(truth->size()) +
+             " poses for " + scans;
+    return false;
+  }
+  if (options.init.mode == InitMode::GT_FRACTION && truth->empty()) {
+    *error = "--init=gt_fraction:c needs --gt_poses";
+    return false;
+  }
+  if (options.init.mode != InitMode::POSES) return true;
+  if (!ReadSequencePoses(
+          options.init.poses_path, FLAGS_calib, odometry, error)) {
+    return false;
+  }
+  if (odometry->size() < num_scans) {
+    *error = options.init.poses_path + " has " +
+             std::to_string(odometry->size()) + " poses for " + scans;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace tools
+}  // namespace mlndt
