@@ -233,18 +233,18 @@ int main(int argc, char** argv) {
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }
-  if (argc > 1 && std::string(argv[1]) == "chain") {
-    if (argc != 4) {
-      std::cerr << "mlndt_eval: usage: mlndt_eval chain PAIRS.json OUT.txt\n";
-      return mlndt::tools::kExitUsage;
-    }
-    return mlndt::Chain(argv[2], argv[3]);
-  }
-  if (argc > 1) {
-    std::cerr << "mlndt_eval: unexpected argument '" << argv[1]
-              << "' (flags are --name=value; the one subcommand is 'chain "
-                 "PAIRS OUT')\n";
+  const auto arguments =
+      mlndt::tools::ParseSubcommand("mlndt_eval",
+                                    argc,
+                                    argv,
+                                    "chain",
+                                    2,
+                                    "mlndt_eval chain PAIRS.json OUT.txt",
+                                    "chain PAIRS OUT");
+  if (arguments == mlndt::tools::ToolArguments::MISUSE) {
     return mlndt::tools::kExitUsage;
   }
+  if (arguments == mlndt::tools::ToolArguments::SUBCOMMAND)
+    return mlndt::Chain(argv[2], argv[3]);
   return mlndt::Run();
 }

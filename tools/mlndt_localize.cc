@@ -122,19 +122,10 @@ bool CheckFlags(LocalizerOptions* options,
     return false;
   }
   if (!options->IsValid(error)) return false;
-  const auto list_folder = [](std::vector<std::string>* paths,
-                              std::string* list_error) {
-    return tools::ScanPathsFromFlags(
-        FLAGS_scans,
-        FLAGS_scan_list,
-        {FLAGS_map, FLAGS_initial_poses, FLAGS_calib, FLAGS_times},
-        0,
-        paths,
-        list_error);
-  };
-  return tools::ScanInputFromFlags(
-      !FLAGS_scans.empty() || !FLAGS_scan_list.empty(),
-      list_folder,
+  return tools::ScanInputFromScanListFlags(
+      FLAGS_scans,
+      FLAGS_scan_list,
+      {FLAGS_map, FLAGS_initial_poses, FLAGS_calib, FLAGS_times},
       static_cast<size_t>(FLAGS_max_scans),
       input,
       error);

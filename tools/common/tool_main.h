@@ -44,6 +44,24 @@ bool StartTool(const char* usage,
                int* argc,
                char*** argv);
 
+// What is left in argv after the flags of a tool with one subcommand.
+enum class ToolArguments {
+  NONE,        // No argument: the tool's main run.
+  SUBCOMMAND,  // argv[1] is `name`, followed by `num_args` arguments.
+  MISUSE,      // Anything else; reported on stderr (exit kExitUsage).
+};
+
+// Reports "<tool>: usage: <usage>" for the subcommand with the wrong number
+// of arguments, and "<tool>: unexpected argument 'x' (flags are
+// --name=value; the one subcommand is '<synopsis>')" for another argument.
+ToolArguments ParseSubcommand(const std::string& tool,
+                              int argc,
+                              char** argv,
+                              const std::string& name,
+                              int num_args,
+                              const std::string& usage,
+                              const std::string& synopsis);
+
 // Shared flags (tools/common/) that the tool refuses: --help does not list
 // them. Call before StartTool.
 void HideFlagsFromHelp(const std::vector<std::string>& flags);
