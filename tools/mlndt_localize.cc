@@ -167,7 +167,10 @@ int Run() {
     return tools::Refuse(kTool, error);
   }
   const bool gnuplot_ok = tools::GnuplotReadyForPlots(
-      kTool, FLAGS_plots, FLAGS_gnuplot, "the plot will be skipped");
+      kTool,
+      FLAGS_plots,
+      FLAGS_gnuplot,
+      "the plot will be skipped (install gnuplot-nox, or pass --plots=false)");
 
   tools::PrintMapLine(FLAGS_map, map);
 

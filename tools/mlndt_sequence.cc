@@ -213,8 +213,9 @@ int Run() {
       tools::GnuplotReadyForPlots(kTool,
                                   FLAGS_plots,
                                   FLAGS_gnuplot,
-                                  "plots will be skipped",
-                                  ", e.g. with scripts/install_deps.sh");
+                                  "plots will be skipped (install gnuplot-nox, "
+                                  "e.g. with scripts/install_deps.sh, or pass "
+                                  "--plots=false)");
 
   ScanStore store = input.from_bag() ? ScanStore(input.names(), input.Loader())
                                      : ScanStore(input.paths());

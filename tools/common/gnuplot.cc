@@ -123,11 +123,10 @@ std::string GnuplotQuote(const std::string& text) {
 bool GnuplotReadyForPlots(const std::string& tool,
                           bool plots,
                           const std::string& gnuplot,
-                          const std::string& skipped,
-                          const std::string& how) {
+                          const std::string& consequence) {
   if (!plots || GnuplotAvailable(gnuplot)) return true;
-  std::cerr << tool << ": gnuplot ('" << gnuplot << "') not found: " << skipped
-            << " (install gnuplot-nox" << how << ", or pass --plots=false)\n";
+  std::cerr << tool << ": gnuplot ('" << gnuplot
+            << "') not found: " << consequence << "\n";
   return false;
 }
 

@@ -28,13 +28,12 @@ std::string GnuplotQuote(const std::string& text);
 bool GnuplotAvailable(const std::string& gnuplot);
 
 // With `plots`, true when gnuplot runs; else prints "<tool>: gnuplot
-// ('<gnuplot>') not found: <skipped> (install gnuplot-nox<how>, or pass
-// --plots=false)" on stderr and returns false. Without `plots`, true.
+// ('<gnuplot>') not found: <consequence>" on stderr and returns false.
+// Without `plots`, true.
 bool GnuplotReadyForPlots(const std::string& tool,
                           bool plots,
                           const std::string& gnuplot,
-                          const std::string& skipped,
-                          const std::string& how = "");
+                          const std::string& consequence);
 
 // The message of a tool that asked for plots without gnuplot: "plot
 // skipped: gnuplot ('<gnuplot>') not found; the other outputs are written.
