@@ -31,7 +31,6 @@
 #include <iostream>
 
 #include "lab/eval/dataset.h"
-#include "mlndt/odometry/run_odometry.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/odometry_output.h"
@@ -151,21 +150,6 @@ bool ReadInputs(tools::ScanInput* input,
   return true;
 }
 
-std::string ScanDetail(const tools::ScanInput& input, const OdometryResult& r) {
-  char detail[200];
-  std::snprintf(detail,
-                sizeof(detail),
-                "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
-                input.name(r.index).c_str(),
-                TerminationTypeToString(r.termination),
-                r.fallback ? " (prediction used)" : "",
-                r.start_layer,
-                r.uncertainty.translation_m,
-                r.uncertainty.rotation_deg,
-                r.total_time_s * 1e3);
-  return detail;
-}
-
 // trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
 int WritePlot(bool gnuplot_ok,
               const std::vector<OdometryResult>& results,
@@ -204,29 +188,10 @@ int Run() {
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
 
-  tools::Progress progress(kTool, input.size());
-  const OdometryScanLoader load = [&](size_t i,
-                                      PointCloud* cloud,
-                                      std::vector<double>* times,
-                                      double* stamp_s,
-                                      std::string* e) {
-    if (!input.Load(i, cloud, times, e)) return false;
-    *stamp_s = input.StampOf(i);
-    return true;
-  };
   std::vector<OdometryResult> results;
   OdometrySummary summary;
-  const bool ok = RunOdometry(
-      options,
-      input.size(),
-      load,
-      [&](const OdometryResult& r) {
-        progress.Update(r.index + 1, ScanDetail(input, r));
-      },
-      &results,
-      &summary,
-      &error);
-  progress.Finish();
+  const bool ok = tools::RunOdometryWithProgress(
+      options, &input, &results, &summary, &error);
   if (!ok) return tools::Fail(kTool, error);
 
   tools::OdometryMetrics metrics;
