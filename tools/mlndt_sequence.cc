@@ -57,12 +57,9 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include <algorithm>
-
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/progress.h"
@@ -99,30 +96,6 @@ namespace {
 
 constexpr char kTool[] = "mlndt_sequence";
 
-bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
-                              std::string* error) {
-  adaptive->enabled = FLAGS_adaptive_start_layer;
-  adaptive->max_translation_m = FLAGS_adaptive_max_translation;
-  adaptive->max_rotation_deg = FLAGS_adaptive_max_rotation;
-  if (!(adaptive->max_translation_m > 0) || !(adaptive->max_rotation_deg > 0)) {
-    *error =
-        "--adaptive_max_translation and --adaptive_max_rotation must be > 0";
-    return false;
-  }
-  std::vector<double> rates;
-  if (!tools::ParseNumberList(FLAGS_adaptive_fail_rates, &rates) ||
-      !std::is_sorted(rates.begin(), rates.end()) ||
-      std::any_of(rates.begin(), rates.end(), [](double r) {
-        return r < 0 || r > 1;
-      })) {
-    *error = "--adaptive_fail_rates=" + FLAGS_adaptive_fail_rates +
-             ": expected ascending numbers in [0, 1], e.g. 0.05,0.2";
-    return false;
-  }
-  adaptive->fail_rate_thresholds = rates;
-  return true;
-}
-
 // The run's options from the flags; false with *error for bad values.
 bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   if ((FLAGS_scans.empty() && FLAGS_bag.empty()) || FLAGS_output_dir.empty()) {
@@ -143,7 +116,12 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   options->release_used_scans = true;
   if (!tools::MatcherOptionsFromFlags(&options->registration, error) ||
       !ParseInitSpec(FLAGS_init, &options->init, error) ||
-      !AdaptiveOptionsFromFlags(&options->adaptive, error)) {
+      !tools::AdaptiveOptionsFromValues(FLAGS_adaptive_start_layer,
+                                        FLAGS_adaptive_max_translation,
+                                        FLAGS_adaptive_max_rotation,
+                                        FLAGS_adaptive_fail_rates,
+                                        &options->adaptive,
+                                        error)) {
     return false;
   }
   if (options->adaptive.enabled &&
@@ -164,31 +142,6 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   return true;
 }
 
-// The scans (at most --max_scans) and, when given, the ground truth and
-// the odometry of --init=poses:FILE, one pose per scan.
-bool ReadScansAndPoses(const SequenceOptions& options,
-                       tools::ScanInput* input,
-                       std::vector<Isometry3d>* truth,
-                       std::vector<Isometry3d>* odometry,
-                       std::string* error) {
-  if (!tools::ScanInputFromScansFlag(
-          FLAGS_scans,
-          {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
-          static_cast<size_t>(FLAGS_max_scans),
-          input,
-          error)) {
-    return false;
-  }
-  return tools::ReadSequenceRunPoses(
-      options,
-      FLAGS_bag.empty() ? FLAGS_scans : FLAGS_bag,
-      input->size(),
-      FLAGS_gt_poses,
-      truth,
-      odometry,
-      error);
-}
-
 int Run() {
   SequenceOptions options;
   std::string error;
@@ -200,7 +153,14 @@ int Run() {
   }
   tools::ScanInput input;
   std::vector<Isometry3d> truth, odometry;
-  if (!ReadScansAndPoses(options, &input, &truth, &odometry, &error)) {
+  if (!tools::ReadSequenceInputs(options,
+                                 FLAGS_scans,
+                                 FLAGS_gt_poses,
+                                 FLAGS_max_scans,
+                                 &input,
+                                 &truth,
+                                 &odometry,
+                                 &error)) {
     return tools::Refuse(kTool, error);
   }
   if (!tools::PrepareOutputDir("output_dir",
@@ -233,11 +193,8 @@ int Run() {
                               &error);
   progress.Finish();
   if (!ok) return tools::Fail(kTool, error);
-  tools::SequenceSource source;
-  source.scans_dir = FLAGS_scans;
-  source.bag = FLAGS_bag;
-  source.topic = FLAGS_topic;
-  source.start_layer_flag = FLAGS_start_layer;
+  const tools::SequenceSource source = {
+      FLAGS_scans, FLAGS_bag, FLAGS_topic, FLAGS_start_layer};
   if (!tools::WriteSequenceFiles(
           FLAGS_output_dir,
           options,
@@ -252,9 +209,7 @@ int Run() {
   tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
   if (FLAGS_plots && !gnuplot_ok) {
     return tools::Fail(kTool,
-                       "plots skipped: gnuplot ('" + FLAGS_gnuplot +
-                           "') not found; the other outputs are written. "
-                           "Install gnuplot-nox or pass --plots=false");
+                       tools::PlotSkippedMessage(FLAGS_gnuplot, "plots"));
   }
   if (FLAGS_plots && !tools::WriteSequencePlotsAndList(FLAGS_gnuplot,
                                                        FLAGS_output_dir,

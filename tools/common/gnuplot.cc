@@ -130,8 +130,9 @@ bool GnuplotReadyForPlots(const std::string& tool,
   return false;
 }
 
-std::string PlotSkippedMessage(const std::string& gnuplot) {
-  return "plot skipped: gnuplot ('" + gnuplot +
+std::string PlotSkippedMessage(const std::string& gnuplot,
+                               const std::string& what) {
+  return what + " skipped: gnuplot ('" + gnuplot +
          "') not found; the other outputs are written. Install "
          "gnuplot-nox or pass --plots=false";
 }

@@ -35,10 +35,11 @@ bool GnuplotReadyForPlots(const std::string& tool,
                           const std::string& gnuplot,
                           const std::string& consequence);
 
-// The message of a tool that asked for plots without gnuplot: "plot
+// The message of a tool that asked for plots without gnuplot: "<what>
 // skipped: gnuplot ('<gnuplot>') not found; the other outputs are written.
 // Install gnuplot-nox or pass --plots=false".
-std::string PlotSkippedMessage(const std::string& gnuplot);
+std::string PlotSkippedMessage(const std::string& gnuplot,
+                               const std::string& what = "plot");
 
 // The first lines of every script: a PNG terminal (pngcairo when this
 // gnuplot has it, else libgd's png) of the given size in pixels.

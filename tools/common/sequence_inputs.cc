@@ -1,13 +1,54 @@
 #include "tools/common/sequence_inputs.h"
 
+#include <algorithm>
 #include <iostream>
 
 #include "lab/eval/dataset.h"
 #include "lab/eval/pose_convention.h"
+#include "tools/common/list_flags.h"
 #include "tools/common/pose_flags.h"
 
 namespace mlndt {
 namespace tools {
+
+namespace {
+
+// --adaptive_fail_rates=`text`: ascending numbers in [0, 1].
+bool ParseFailRates(const std::string& text,
+                    std::vector<double>* rates,
+                    std::string* error) {
+  std::vector<double> values;
+  if (!ParseNumberList(text, &values) ||
+      !std::is_sorted(values.begin(), values.end()) ||
+      std::any_of(values.begin(), values.end(), [](double r) {
+        return r < 0 || r > 1;
+      })) {
+    *error = "--adaptive_fail_rates=" + text +
+             ": expected ascending numbers in [0, 1], e.g. 0.05,0.2";
+    return false;
+  }
+  *rates = values;
+  return true;
+}
+
+}  // namespace
+
+bool AdaptiveOptionsFromValues(bool enabled,
+                               double max_translation_m,
+                               double max_rotation_deg,
+                               const std::string& fail_rates,
+                               AdaptiveStartLayerOptions* adaptive,
+                               std::string* error) {
+  adaptive->enabled = enabled;
+  adaptive->max_translation_m = max_translation_m;
+  adaptive->max_rotation_deg = max_rotation_deg;
+  if (!(adaptive->max_translation_m > 0) || !(adaptive->max_rotation_deg > 0)) {
+    *error =
+        "--adaptive_max_translation and --adaptive_max_rotation must be > 0";
+    return false;
+  }
+  return ParseFailRates(fail_rates, &adaptive->fail_rate_thresholds, error);
+}
 
 bool ReadSequenceRunPoses(const SequenceOptions& options,
                           const std::string& source,
@@ -56,6 +97,31 @@ bool ReadSequenceRunPoses(const SequenceOptions& options,
     return false;
   }
   return true;
+}
+
+bool ReadSequenceInputs(const SequenceOptions& options,
+                        const std::string& scans_dir,
+                        const std::string& gt_poses,
+                        int max_scans,
+                        ScanInput* input,
+                        std::vector<Isometry3d>* truth,
+                        std::vector<Isometry3d>* odometry,
+                        std::string* error) {
+  if (!ScanInputFromScansFlag(
+          scans_dir,
+          {gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
+          static_cast<size_t>(max_scans),
+          input,
+          error)) {
+    return false;
+  }
+  return ReadSequenceRunPoses(options,
+                              FLAGS_bag.empty() ? scans_dir : FLAGS_bag,
+                              input->size(),
+                              gt_poses,
+                              truth,
+                              odometry,
+                              error);
 }
 
 }  // namespace tools
