@@ -51,7 +51,6 @@
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
-#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
 #include "tools/common/start_layer_check.h"
@@ -131,6 +130,16 @@ bool CheckFlags(LocalizerOptions* options,
       error);
 }
 
+// --map, with a start layer within its layers (the library would clamp a
+// start layer beyond them).
+bool LoadMap(const LocalizerOptions& options,
+             LayeredGrid* map,
+             std::string* error) {
+  return LoadLayeredGrid(FLAGS_map, map, error) &&
+         tools::CheckStartLayerForMap(
+             options.registration.schedule, map->num_layers(), error);
+}
+
 int Run() {
   const double start = NowSeconds();
   LocalizerOptions options;
@@ -149,13 +158,7 @@ int Run() {
     return tools::Refuse(kTool, error);
   }
   LayeredGrid map;
-  if (!LoadLayeredGrid(FLAGS_map, &map, &error))
-    return tools::Refuse(kTool, error);
-  // The library would clamp a start layer beyond the map's layers.
-  if (!tools::CheckStartLayerForMap(
-          options.registration.schedule, map.num_layers(), &error)) {
-    return tools::Refuse(kTool, error);
-  }
+  if (!LoadMap(options, &map, &error)) return tools::Refuse(kTool, error);
   const double map_load_s = NowSeconds() - start;
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
@@ -174,15 +177,9 @@ int Run() {
 
   tools::PrintMapLine(FLAGS_map, map);
 
-  tools::Progress progress(kTool, paths.size());
-  const ScanLoader load = input.Loader();
-  const LocalizationCallback report = [&](const LocalizationResult& r) {
-    progress.Update(r.index + 1, tools::LocalizationProgressDetail(paths, r));
-  };
   std::vector<LocalizationResult> results;
-  const bool ok = LocalizeScans(
-      options, map, first_guess, paths.size(), load, report, &results, &error);
-  progress.Finish();
+  const bool ok = tools::LocalizeScansWithProgress(
+      options, map, first_guess, &input, &results, &error);
   if (!ok) return tools::Fail(kTool, error);
 
   if (!tools::WriteLocalizationFiles(

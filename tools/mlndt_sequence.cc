@@ -62,7 +62,6 @@
 #include "tools/common/gnuplot.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
-#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
 #include "tools/common/sequence_inputs.h"
@@ -179,19 +178,9 @@ int Run() {
 
   ScanStore store = input.from_bag() ? ScanStore(input.names(), input.Loader())
                                      : ScanStore(input.paths());
-  tools::Progress progress("mlndt_sequence", input.size() - options.step);
   std::vector<PairResult> results;
-  const auto on_pair = [&](const PairResult& r, size_t done, size_t) {
-    progress.Update(done, tools::SequencePairDetail(r));
-  };
-  const bool ok = RunSequence(options,
-                              &store,
-                              truth.empty() ? nullptr : &truth,
-                              odometry.empty() ? nullptr : &odometry,
-                              on_pair,
-                              &results,
-                              &error);
-  progress.Finish();
+  const bool ok = tools::RunSequenceWithProgress(
+      options, &store, truth, odometry, &results, &error);
   if (!ok) return tools::Fail(kTool, error);
   const tools::SequenceSource source = {
       FLAGS_scans, FLAGS_bag, FLAGS_topic, FLAGS_start_layer};

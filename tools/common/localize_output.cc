@@ -11,6 +11,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/map_memory.h"
 #include "tools/common/gnuplot.h"
+#include "tools/common/progress.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {
@@ -222,6 +223,24 @@ std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
                 r.iterations,
                 r.registration_time_s * 1e3);
   return detail;
+}
+
+bool LocalizeScansWithProgress(const LocalizerOptions& options,
+                               const LayeredGrid& map,
+                               const Isometry3d& first_guess,
+                               ScanInput* input,
+                               std::vector<LocalizationResult>* results,
+                               std::string* error) {
+  const std::vector<std::string>& paths = input->names();
+  Progress progress("mlndt_localize", paths.size());
+  const ScanLoader load = input->Loader();
+  const LocalizationCallback report = [&](const LocalizationResult& r) {
+    progress.Update(r.index + 1, LocalizationProgressDetail(paths, r));
+  };
+  const bool ok = LocalizeScans(
+      options, map, first_guess, paths.size(), load, report, results, error);
+  progress.Finish();
+  return ok;
 }
 
 VerdictCounts PrintLocalizationTable(

@@ -43,6 +43,14 @@ std::string UnusableScansMessage(const VerdictCounts& verdicts);
 std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
                                        const LocalizationResult& r);
 
+// LocalizeScans over the scans of `input`, with a progress line.
+bool LocalizeScansWithProgress(const LocalizerOptions& options,
+                               const LayeredGrid& map,
+                               const Isometry3d& first_guess,
+                               ScanInput* input,
+                               std::vector<LocalizationResult>* results,
+                               std::string* error);
+
 // One line a scan and the summary line on stdout; the scans by verdict.
 VerdictCounts PrintLocalizationTable(
     const std::vector<std::string>& paths,

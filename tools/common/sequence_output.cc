@@ -9,6 +9,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
+#include "tools/common/progress.h"
 #include "tools/common/tool_utils.h"
 #include "tools/common/verdict_counts.h"
 
@@ -221,6 +222,27 @@ std::string SequencePairDetail(const PairResult& r) {
 }
 
 // The schema header and the run's settings, first in summary.json.
+bool RunSequenceWithProgress(const SequenceOptions& options,
+                             ScanStore* store,
+                             const std::vector<Isometry3d>& truth,
+                             const std::vector<Isometry3d>& odometry,
+                             std::vector<PairResult>* results,
+                             std::string* error) {
+  Progress progress("mlndt_sequence", store->size() - options.step);
+  const auto on_pair = [&](const PairResult& r, size_t done, size_t) {
+    progress.Update(done, SequencePairDetail(r));
+  };
+  const bool ok = RunSequence(options,
+                              store,
+                              truth.empty() ? nullptr : &truth,
+                              odometry.empty() ? nullptr : &odometry,
+                              on_pair,
+                              results,
+                              error);
+  progress.Finish();
+  return ok;
+}
+
 Json SequenceSummaryHeader(const SequenceOptions& options,
                            const SequenceSource& source,
                            size_t num_scans) {

@@ -46,6 +46,15 @@ struct SequenceSource {
 // One progress line per pair: pair, verdict, iterations, time, error.
 std::string SequencePairDetail(const PairResult& r);
 
+// RunSequence on `store` (truth and odometry may be empty) with a progress
+// line of the pairs.
+bool RunSequenceWithProgress(const SequenceOptions& options,
+                             ScanStore* store,
+                             const std::vector<Isometry3d>& truth,
+                             const std::vector<Isometry3d>& odometry,
+                             std::vector<PairResult>* results,
+                             std::string* error);
+
 // The schema header and the run's settings, first in summary.json.
 Json SequenceSummaryHeader(const SequenceOptions& options,
                            const SequenceSource& source,
