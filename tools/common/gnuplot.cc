@@ -130,6 +130,19 @@ bool GnuplotReadyForPlots(const std::string& tool,
   return false;
 }
 
+bool MakePlotDataDir(const std::string& dir,
+                     std::string* data_dir,
+                     std::string* error) {
+  *data_dir = dir + "/plot_data";
+  std::error_code ec;
+  std::filesystem::create_directories(*data_dir, ec);
+  if (ec) {
+    *error = *data_dir + ": " + ec.message();
+    return false;
+  }
+  return true;
+}
+
 std::string PlotSkippedMessage(const std::string& gnuplot,
                                const std::string& what) {
   return what + " skipped: gnuplot ('" + gnuplot +

@@ -41,6 +41,12 @@ bool GnuplotReadyForPlots(const std::string& tool,
 std::string PlotSkippedMessage(const std::string& gnuplot,
                                const std::string& what = "plot");
 
+// Creates `dir`/plot_data (the data and scripts of a tool's figures) and
+// sets *data_dir to it; false with *error naming it when it cannot be made.
+bool MakePlotDataDir(const std::string& dir,
+                     std::string* data_dir,
+                     std::string* error);
+
 // The first lines of every script: a PNG terminal (pngcairo when this
 // gnuplot has it, else libgd's png) of the given size in pixels.
 std::string GnuplotPngHeader(int width, int height);

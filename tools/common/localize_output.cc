@@ -122,13 +122,8 @@ bool WriteLocalizationPlot(const std::string& dir,
                            int plot_max_cells,
                            const std::string& gnuplot,
                            std::string* error) {
-  const std::string data_dir = dir + "/plot_data";
-  std::error_code ec;
-  std::filesystem::create_directories(data_dir, ec);
-  if (ec) {
-    *error = data_dir + ": " + ec.message();
-    return false;
-  }
+  std::string data_dir;
+  if (!MakePlotDataDir(dir, &data_dir, error)) return false;
   const std::vector<NdtCell>& cells = map.layer(map.num_layers()).cells();
   const size_t max_cells = static_cast<size_t>(plot_max_cells);
   const size_t stride =

@@ -197,13 +197,8 @@ bool WriteSequencePlots(const std::string& gnuplot,
                         int trace_pairs,
                         std::vector<std::string>* pngs,
                         std::string* error) {
-  const std::string data_dir = dir + "/plot_data";
-  std::error_code ec;
-  std::filesystem::create_directories(data_dir, ec);
-  if (ec) {
-    *error = data_dir + ": " + ec.message();
-    return false;
-  }
+  std::string data_dir;
+  if (!MakePlotDataDir(dir, &data_dir, error)) return false;
   const bool has_truth = !results.empty() && results.front().has_truth;
   std::ostringstream script;
   script << GnuplotPngHeader(1000, 560);
