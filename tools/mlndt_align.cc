@@ -63,11 +63,6 @@ constexpr char kBundledReference[] = "koide3/251370668.pcd";
 constexpr char kBundledInput[] = "koide3/251371071.pcd";
 constexpr char kBundledExpected[] = "koide3/T_target_source.txt";
 
-int Fail(const std::string& message, int code) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return code;
-}
-
 struct Inputs {
   std::string reference;
   std::string input;
@@ -108,47 +103,56 @@ bool InputsFromCommandLine(int argc, char** argv, Inputs* in, std::string* e) {
   return true;
 }
 
-int Run(int argc, char** argv) {
-  Inputs in;
-  MatcherOptions options;
-  std::string error;
-  if (!InputsFromCommandLine(argc, argv, &in, &error) ||
-      !tools::MatcherOptionsFromFlags(&options, &error)) {
-    return Fail(error, tools::kExitUsage);
+// The flags and files checked before the clouds are read: the matcher,
+// the start pose, the outputs and the expected matrix.
+bool CheckFlags(MatcherOptions* options,
+                Isometry3d* initial,
+                Isometry3d* expected,
+                const Inputs& in,
+                std::string* error) {
+  if (!tools::MatcherOptionsFromFlags(options, error)) return false;
+  if (options->method == Method::MLNDT &&
+      !tools::CheckStartLayerBeforeMap(options->mlndt, error)) {
+    return false;
   }
-  if (options.method == Method::MLNDT &&
-      !tools::CheckStartLayerBeforeMap(options.mlndt, &error)) {
-    return Fail(error, tools::kExitUsage);
-  }
-  Isometry3d initial = Isometry3d::Identity();
   bool guess_given = false;
   if (!tools::ParseInitialPose(FLAGS_initial_guess,
                                FLAGS_initial_matrix,
-                               &initial,
+                               initial,
                                &guess_given,
-                               &error) ||
-      !tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
-      !tools::CheckOutputFile("output_cloud", FLAGS_output_cloud, &error)) {
-    return Fail(error, tools::kExitUsage);
+                               error) ||
+      !tools::CheckOutputFile("output_json", FLAGS_output_json, error) ||
+      !tools::CheckOutputFile("output_cloud", FLAGS_output_cloud, error)) {
+    return false;
   }
   if (!FLAGS_output_cloud.empty() &&
-      !CanWritePointCloud(FLAGS_output_cloud, &error)) {
-    return Fail("--output_cloud: " + error, tools::kExitUsage);
+      !CanWritePointCloud(FLAGS_output_cloud, error)) {
+    *error = "--output_cloud: " + *error;
+    return false;
   }
+  return in.expected.empty() ||
+         tools::ReadMatrixFile(in.expected, expected, error);
+}
+
+int Run(int argc, char** argv) {
+  Inputs in;
+  MatcherOptions options;
+  Isometry3d initial = Isometry3d::Identity();
   Isometry3d expected = Isometry3d::Identity();
-  if (!in.expected.empty() &&
-      !tools::ReadMatrixFile(in.expected, &expected, &error)) {
-    return Fail(error, tools::kExitUsage);
+  std::string error;
+  if (!InputsFromCommandLine(argc, argv, &in, &error) ||
+      !CheckFlags(&options, &initial, &expected, in, &error)) {
+    return tools::Refuse(kTool, error);
   }
 
   PointCloud reference, input;
   if (!ReadPointCloud(in.reference, &reference, nullptr, &error) ||
       !ReadPointCloud(in.input, &input, nullptr, &error)) {
-    return Fail(error, tools::kExitUsage);
+    return tools::Refuse(kTool, error);
   }
   if (options.method == Method::MLNDT &&
       !tools::CheckStartLayerForReference(options.mlndt, reference, &error)) {
-    return Fail(error, tools::kExitUsage);
+    return tools::Refuse(kTool, error);
   }
 
   RegistrationSummary summary;
@@ -158,31 +162,22 @@ int Run(int argc, char** argv) {
   if (options.method == Method::MLNDT && summary.num_layers > 0 &&
       !tools::CheckStartLayerForMap(
           options.mlndt.schedule, summary.num_layers, &error)) {
-    return Fail(error + " (nothing written)", tools::kExitUsage);
+    return tools::Refuse(kTool, error + " (nothing written)");
   }
 
-  std::cout << "reference: " << in.reference << " (" << reference.size()
-            << " points)\n"
-            << "input:     " << in.input << " (" << input.size() << " points)\n"
-            << summary.FullReport();
   const double peak_bytes = tools::PeakResidentBytes();
-  std::printf(
-      "  peak memory:    %.1f MB resident (the process, clouds included)\n",
-      peak_bytes / 1e6);
-  if (FLAGS_trace) tools::PrintTrace(summary);
   double translation_error = NAN, rotation_error_deg = NAN;
-  if (!in.expected.empty()) {
-    translation_error =
-        TranslationErrorM(expected, summary.reference_from_input);
-    rotation_error_deg =
-        RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg;
-    std::printf("  vs expected:    %.4f m, %.4f deg (%s)\n",
-                translation_error,
-                rotation_error_deg,
-                in.expected.c_str());
-  }
-  tools::PrintPoseMatrix(summary);
-
+  tools::PrintAlignResult(in.reference,
+                          reference.size(),
+                          in.input,
+                          input.size(),
+                          summary,
+                          peak_bytes,
+                          FLAGS_trace,
+                          in.expected,
+                          expected,
+                          &translation_error,
+                          &rotation_error_deg);
   if (!FLAGS_output_json.empty() &&
       !tools::WriteJsonFile(FLAGS_output_json,
                             tools::AlignResultJson(in.reference,
@@ -194,31 +189,17 @@ int Run(int argc, char** argv) {
                                                    translation_error,
                                                    rotation_error_deg),
                             &error)) {
-    return Fail(error, tools::kExitFailed);
+    return tools::Fail(kTool, error);
   }
   if (!tools::AcceptedResult(summary.termination_type)) {
-    const std::string verdict =
-        TerminationTypeToString(summary.termination_type);
-    const std::string cloud =
-        FLAGS_output_cloud.empty()
-            ? ""
-            : "; --output_cloud=" + FLAGS_output_cloud + " not written";
-    const std::string accept =
-        summary.termination_type == TerminationType::FAILURE
-            ? ""
-            : " (--accept_unverified accepts it)";
-    const std::string what =
-        summary.termination_type == TerminationType::FAILURE
-            ? ": the registration failed: "
-            : ": the pose is not to be trusted: ";
-    return Fail(verdict + what + summary.message + cloud + accept,
-                tools::kExitFailed);
+    return tools::Fail(
+        kTool, tools::UnacceptedResultMessage(summary, FLAGS_output_cloud));
   }
   if (!FLAGS_output_cloud.empty() &&
       !WritePointCloud(FLAGS_output_cloud,
                        TransformCloud(summary.reference_from_input, input),
                        &error)) {
-    return Fail(error, tools::kExitFailed);
+    return tools::Fail(kTool, error);
   }
   return tools::kExitOk;
 }

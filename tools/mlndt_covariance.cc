@@ -32,24 +32,17 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "lab/eval/statistics.h"
+#include "lab/experiments/covariance_campaign.h"
 #include "mlndt/cloud/io.h"
-#include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
-#include "mlndt/common/pose.h"
-#include "tools/common/covariance_consistency.h"
+#include "tools/common/covariance_output.h"
 #include "tools/common/json_output.h"
-#include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/output_files.h"
 #include "tools/common/progress.h"
@@ -75,20 +68,7 @@ DEFINE_string(output_csv, "", "One row per registration");
 namespace mlndt {
 namespace {
 
-using tools::Consistency;
-using tools::PairRuns;
-using tools::StartResult;
-
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_covariance: " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << "mlndt_covariance: " << message << std::endl;
-  return tools::kExitUsage;
-}
+constexpr char kTool[] = "mlndt_covariance";
 
 // What every registration of the run shares: the start offsets' generator,
 // the --output_csv rows (written once at the end) and the progress bar.
@@ -99,103 +79,51 @@ struct Campaign {
   size_t done = 0;
 };
 
-// The registrations of --datasets: --starts for each pair.
-size_t NumRegistrations(const std::vector<std::string>& datasets) {
-  size_t pairs = 0;
-  for (const std::string& dataset : datasets)
-    pairs += dataset == "kitti" ? 7 : 1;
-  return pairs * static_cast<size_t>(FLAGS_starts);
-}
-
-// Registers input onto reference from the perturbed starts.
-bool RunPair(const RegistrationOptions& base_options,
+// Registers input onto reference from the perturbed starts; every run
+// moves the progress bar and adds a --output_csv row.
+bool RunPair(const RegistrationOptions& options,
              const PointCloud& reference,
              const PointCloud& input,
              const Isometry3d& reference_from_input,
              Campaign* campaign,
              PairRuns* pair,
              std::string* error) {
-  std::mt19937_64* rng = campaign->rng;
-  std::ostringstream* csv = campaign->csv;
-  LayeredGrid map;
-  if (!LayeredGrid::Build(base_options.grid, reference, &map, error))
-    return false;
-  pair->reference_xi = IsometryToPoseVector(reference_from_input);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::vector<StartResult> runs;
-  for (int k = 0; k < FLAGS_starts; ++k) {
-    Vector6d offset;
-    for (int a = 0; a < 3; ++a) offset(a) = FLAGS_max_translation * unit(*rng);
-    for (int a = 3; a < 6; ++a)
-      offset(a) = FLAGS_max_rotation * kDegToRad * unit(*rng);
-    RegistrationOptions options = base_options;
-    if (FLAGS_vary_sampling_seed)
-      options.sampling.seed = base_options.sampling.seed + k;
-    RegistrationSummary summary;
-    Register(options,
-             map,
-             input,
-             PoseVectorToIsometry(offset) * reference_from_input,
-             &summary);
-    const bool usable =
-        summary.IsSolutionUsable() && !summary.covariance.isZero(0.0);
-    campaign->progress->Update(
-        ++campaign->done,
-        pair->dataset + " " + pair->name + " start " + std::to_string(k + 1) +
-            " " + TerminationTypeToString(summary.termination_type));
-    if (csv != nullptr) {
-      *csv << pair->dataset << "," << pair->name << "," << k << "," << usable;
-      for (int a = 0; a < 6; ++a)
-        *csv << "," << summary.reference_from_input_xi(a);
-      for (int a = 0; a < 6; ++a)
-        *csv << "," << std::sqrt(summary.covariance(a, a));
-      *csv << "," << summary.final_score << "," << summary.matched_points
-           << "\n";
+  CovarianceCampaignOptions settings;
+  settings.starts = FLAGS_starts;
+  settings.max_translation_m = FLAGS_max_translation;
+  settings.max_rotation_deg = FLAGS_max_rotation;
+  settings.vary_sampling_seed = FLAGS_vary_sampling_seed;
+  settings.outlier_translation_m = FLAGS_outlier_translation;
+  settings.outlier_rotation_deg = FLAGS_outlier_rotation;
+  const auto on_run = [&](int k, const RegistrationSummary& s, bool usable) {
+    campaign->progress->Update(++campaign->done,
+                               pair->dataset + " " + pair->name + " start " +
+                                   std::to_string(k + 1) + " " +
+                                   TerminationTypeToString(s.termination_type));
+    if (campaign->csv != nullptr) {
+      tools::AppendCovarianceCsvRow(*pair, k, s, usable, campaign->csv);
     }
-    if (!usable) {
-      ++pair->failures;
-      continue;
-    }
-    StartResult run;
-    run.xi = summary.reference_from_input_xi;
-    run.covariance = summary.covariance;
-    const double dof = 3.0 * static_cast<double>(summary.matched_points) - 6.0;
-    run.sigma2 = dof > 0.0 ? summary.final_score / dof : 1.0;
-    runs.push_back(run);
-  }
-  // Leave out runs that did not reach the common optimum (median per axis).
-  Vector6d median;
-  for (int a = 0; a < 6; ++a) {
-    std::vector<double> values;
-    for (const StartResult& run : runs) values.push_back(run.xi(a));
-    median(a) = ComputeStats(values).median;
-  }
-  for (const StartResult& run : runs) {
-    const Vector6d d = run.xi - median;
-    if (d.head<3>().norm() > FLAGS_outlier_translation ||
-        d.tail<3>().norm() * kRadToDeg > FLAGS_outlier_rotation) {
-      ++pair->outliers;
-    } else {
-      pair->runs.push_back(run);
-    }
-  }
-  return true;
+  };
+  return RunCovariancePair(settings,
+                           options,
+                           reference,
+                           input,
+                           reference_from_input,
+                           campaign->rng,
+                           on_run,
+                           pair,
+                           error);
 }
 
 bool RunKitti(const RegistrationOptions& options,
               Campaign* campaign,
               std::vector<PairRuns>* pairs,
               std::string* error) {
-  const std::string dir = FLAGS_data_dir + "/kitti";
   std::vector<Isometry3d> poses;
-  if (!ReadKittiPoses(dir + "/poses_velo.txt", &poses, error)) return false;
   std::vector<PointCloud> scans;
-  for (int i = 0; i < 8; ++i) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "/pcd/%06d.pcd", i);
-    scans.emplace_back();
-    if (!ReadPointCloud(dir + name, &scans.back(), nullptr, error))
-      return false;
+  if (!ReadBundledKittiFrames(
+          FLAGS_data_dir + "/kitti", &scans, &poses, error)) {
+    return false;
   }
   for (size_t i = 0; i + 1 < scans.size() && i + 1 < poses.size(); ++i) {
     PairRuns pair;
@@ -245,48 +173,41 @@ bool RunKoide3(const RegistrationOptions& options,
 }
 
 int Main() {
-  if (FLAGS_starts < 2) return Refuse("--starts must be >= 2");
+  if (FLAGS_starts < 2) return tools::Refuse(kTool, "--starts must be >= 2");
   if (!(FLAGS_max_translation >= 0.0) || !(FLAGS_max_rotation >= 0.0)) {
-    return Refuse("--max_translation and --max_rotation must be >= 0");
+    return tools::Refuse(kTool,
+                         "--max_translation and --max_rotation must be >= 0");
   }
   RegistrationOptions options;
   std::string error;
   if (!tools::RegistrationOptionsFromFlags(&options, &error))
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   std::vector<std::string> datasets;
-  if (!tools::SplitList(FLAGS_datasets, &datasets)) {
-    return Refuse(
-        "--datasets: expected a comma-separated list of kitti, koide3");
-  }
-  for (const std::string& dataset : datasets) {
-    if (dataset != "kitti" && dataset != "koide3") {
-      return Refuse("--datasets: unknown '" + dataset + "' (kitti, koide3)");
-    }
-  }
-  if (!tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
+  if (!tools::ParseCovarianceDatasets(FLAGS_datasets, &datasets, &error) ||
+      !tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
       !tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
-    csv << "dataset,pair,start,usable,tx,ty,tz,alpha,beta,gamma,sd_tx,sd_ty,sd_"
-           "tz,sd_alpha,"
-           "sd_beta,sd_gamma,final_score,matched\n";
+    csv << tools::CovarianceCsvHeader();
   }
   std::mt19937_64 rng(FLAGS_perturbation_seed);
-  tools::Progress progress("mlndt_covariance", NumRegistrations(datasets));
+  tools::Progress progress(
+      "mlndt_covariance",
+      tools::CovarianceRegistrations(datasets, FLAGS_starts));
   Campaign campaign{&rng, FLAGS_output_csv.empty() ? nullptr : &csv, &progress};
   std::vector<PairRuns> pairs;
   for (const std::string& dataset : datasets) {
     const bool ok = dataset == "kitti"
                         ? RunKitti(options, &campaign, &pairs, &error)
                         : RunKoide3(options, &campaign, &pairs, &error);
-    if (!ok) return Fail(error);
+    if (!ok) return tools::Fail(kTool, error);
   }
   progress.Finish();
   if (!FLAGS_output_csv.empty() &&
       !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
 
   tools::Json json = tools::ToolJson("mlndt_covariance");
@@ -294,36 +215,10 @@ int Main() {
   json["max_translation_m"] = FLAGS_max_translation;
   json["max_rotation_deg"] = FLAGS_max_rotation;
   json["vary_sampling_seed"] = FLAGS_vary_sampling_seed;
-  tools::Json pair_list = tools::Json::array();
-  for (const std::string& dataset : datasets) {
-    Consistency pooled;
-    int failures = 0, outliers = 0;
-    for (const PairRuns& pair : pairs) {
-      if (pair.dataset != dataset) continue;
-      Consistency one;
-      Accumulate(pair, &one);
-      Accumulate(pair, &pooled);
-      failures += pair.failures;
-      outliers += pair.outliers;
-      const Consistency result = Finish(one);
-      PrintRow(dataset + " " + pair.name, result);
-      pair_list.push_back({{"dataset", dataset},
-                           {"pair", pair.name},
-                           {"failures", pair.failures},
-                           {"outliers", pair.outliers},
-                           {"consistency", ConsistencyJson(result)}});
-    }
-    const Consistency result = Finish(pooled);
-    PrintRow(dataset + " (all)", result);
-    std::printf("\n");
-    json[dataset] = {{"failures", failures},
-                     {"outliers", outliers},
-                     {"consistency", ConsistencyJson(result)}};
-  }
-  json["pairs"] = pair_list;
+  tools::ReportConsistency(datasets, pairs, &json);
   if (!FLAGS_output_json.empty() &&
       !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   return 0;
 }

@@ -41,17 +41,15 @@ DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 namespace mlndt {
 namespace {
 
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_experiments: " << message << std::endl;
-  return 1;
-}
+constexpr char kTool[] = "mlndt_experiments";
 
 int Run() {
   using namespace experiments;
-  if (FLAGS_out.empty()) return Fail("--out is required");
+  if (FLAGS_out.empty()) return tools::Fail(kTool, "--out is required");
   if (FLAGS_plots && !tools::GnuplotAvailable(FLAGS_gnuplot))
-    return Fail("--gnuplot=" + FLAGS_gnuplot +
-                " does not run (or --plots=false)");
+    return tools::Fail(
+        kTool,
+        "--gnuplot=" + FLAGS_gnuplot + " does not run (or --plots=false)");
   std::vector<ExperimentDataset> datasets;
   ReportHeader header;
   header.command = tools::CommandLine();
@@ -59,8 +57,9 @@ int Run() {
   header.data_dir = FLAGS_data_dir;
   std::string error;
   if (!FindDatasets(FLAGS_data_dir, &datasets, &header.missing, &error))
-    return Fail(error);
-  if (datasets.empty()) return Fail(FLAGS_data_dir + ": no data set found");
+    return tools::Fail(kTool, error);
+  if (datasets.empty())
+    return tools::Fail(kTool, FLAGS_data_dir + ": no data set found");
 
   ReportContext context;
   context.plan = MakePlan(FLAGS_quick);
@@ -70,7 +69,8 @@ int Run() {
   if (!RunTraceExperiment(datasets, &trace, &error))
     std::cerr << "mlndt_experiments: Figs. 10-13: " << error << "\n";
   std::vector<RunRecord> records;
-  if (!RunJobs(datasets, jobs, &records, &error)) return Fail(error);
+  if (!RunJobs(datasets, jobs, &records, &error))
+    return tools::Fail(kTool, error);
   header.run_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -83,7 +83,7 @@ int Run() {
   files.Add("csv/runs.csv", RunRecordsCsv(records));
   BuildReport(header, context, trace);
   if (!files.WriteAll(FLAGS_out, FLAGS_plots, FLAGS_gnuplot, &error))
-    return Fail(error);
+    return tools::Fail(kTool, error);
   std::cout << FLAGS_out << "/README_RESULTS.md: " << records.size()
             << " registrations in " << header.run_seconds << " s\n";
   return 0;

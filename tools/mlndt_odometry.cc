@@ -31,7 +31,6 @@
 #include <iostream>
 
 #include "lab/eval/dataset.h"
-#include "mlndt/odometry/run_odometry.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/odometry_output.h"
@@ -77,16 +76,6 @@ namespace mlndt {
 namespace {
 
 constexpr char kTool[] = "mlndt_odometry";
-
-int Fail(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-int Refuse(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return tools::kExitUsage;
-}
 
 bool OptionsFromFlags(OdometryOptions* options,
                       std::vector<double>* lengths,
@@ -135,18 +124,11 @@ bool OptionsFromFlags(OdometryOptions* options,
 bool ReadInputs(tools::ScanInput* input,
                 std::vector<Isometry3d>* reference,
                 std::string* error) {
-  const auto list_folder = [](std::vector<std::string>* paths,
-                              std::string* list_error) {
-    return ListScanFiles(FLAGS_scans,
-                         {FLAGS_gt_poses, FLAGS_calib, FLAGS_times},
-                         paths,
-                         list_error);
-  };
-  if (!tools::ScanInputFromFlags(!FLAGS_scans.empty(),
-                                 list_folder,
-                                 static_cast<size_t>(FLAGS_max_scans),
-                                 input,
-                                 error)) {
+  if (!tools::ScanInputFromScansFlag(FLAGS_scans,
+                                     {FLAGS_gt_poses, FLAGS_calib, FLAGS_times},
+                                     static_cast<size_t>(FLAGS_max_scans),
+                                     input,
+                                     error)) {
     return false;
   }
   if (input->size() < 2) {
@@ -168,34 +150,17 @@ bool ReadInputs(tools::ScanInput* input,
   return true;
 }
 
-std::string ScanDetail(const tools::ScanInput& input, const OdometryResult& r) {
-  char detail[200];
-  std::snprintf(detail,
-                sizeof(detail),
-                "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
-                input.name(r.index).c_str(),
-                TerminationTypeToString(r.termination),
-                r.fallback ? " (prediction used)" : "",
-                r.start_layer,
-                r.uncertainty.translation_m,
-                r.uncertainty.rotation_deg,
-                r.total_time_s * 1e3);
-  return detail;
-}
-
 // trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
 int WritePlot(bool gnuplot_ok,
               const std::vector<OdometryResult>& results,
               const std::vector<Isometry3d>& reference) {
   if (!gnuplot_ok) {
-    return Fail("plot skipped: gnuplot ('" + FLAGS_gnuplot +
-                "') not found; the other outputs are written. Install "
-                "gnuplot-nox or pass --plots=false");
+    return tools::Fail(kTool, tools::PlotSkippedMessage(FLAGS_gnuplot));
   }
   std::string error;
   if (!tools::WriteOdometryPlot(
           FLAGS_gnuplot, FLAGS_output_dir, results, reference, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   std::printf("plot: trajectory_xy.png\n");
   return 0;
@@ -205,60 +170,43 @@ int Run() {
   OdometryOptions options;
   std::vector<double> lengths;
   std::string error;
-  if (!OptionsFromFlags(&options, &lengths, &error)) return Refuse(error);
+  if (!OptionsFromFlags(&options, &lengths, &error))
+    return tools::Refuse(kTool, error);
   if (!tools::CheckStartLayerBeforeMap(options.registration, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   tools::ScanInput input;
   std::vector<Isometry3d> reference;
-  if (!ReadInputs(&input, &reference, &error)) return Refuse(error);
+  if (!ReadInputs(&input, &reference, &error))
+    return tools::Refuse(kTool, error);
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
                                {"scans.csv", "summary.json"},
                                &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   const bool gnuplot_ok =
       !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
 
-  tools::Progress progress(kTool, input.size());
-  const OdometryScanLoader load = [&](size_t i,
-                                      PointCloud* cloud,
-                                      std::vector<double>* times,
-                                      double* stamp_s,
-                                      std::string* e) {
-    if (!input.Load(i, cloud, times, e)) return false;
-    *stamp_s = input.StampOf(i);
-    return true;
-  };
   std::vector<OdometryResult> results;
   OdometrySummary summary;
-  const bool ok = RunOdometry(
-      options,
-      input.size(),
-      load,
-      [&](const OdometryResult& r) {
-        progress.Update(r.index + 1, ScanDetail(input, r));
-      },
-      &results,
-      &summary,
-      &error);
-  progress.Finish();
-  if (!ok) return Fail(error);
+  const bool ok = tools::RunOdometryWithProgress(
+      options, &input, &results, &summary, &error);
+  if (!ok) return tools::Fail(kTool, error);
 
   tools::OdometryMetrics metrics;
   const bool has_metrics = !reference.empty();
   if (has_metrics &&
       !tools::ComputeOdometryMetrics(
           reference, results, FLAGS_rpe_delta, lengths, &metrics, &error)) {
-    return Fail("metrics: " + error);
+    return tools::Fail(kTool, "metrics: " + error);
   }
   const tools::OdometryMetrics* m = has_metrics ? &metrics : nullptr;
   if (!tools::WriteOdometryFiles(FLAGS_output_dir, input, results, &error) ||
       !tools::WriteJsonFile(FLAGS_output_dir + "/summary.json",
                             tools::OdometrySummaryJson(summary, results, m),
                             &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   tools::PrintOdometrySummary(summary, results, m);
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
@@ -267,10 +215,11 @@ int Run() {
     if (plot != 0) return plot;
   }
   if (!summary.AllUsable()) {
-    return Fail(
+    return tools::Fail(
+        kTool,
         std::to_string(summary.fallbacks) +
-        " scan(s) have no registered pose (their prediction stands in, "
-        "flagged in scans.csv): the trajectory is not to be used as is");
+            " scan(s) have no registered pose (their prediction stands in, "
+            "flagged in scans.csv): the trajectory is not to be used as is");
   }
   return 0;
 }

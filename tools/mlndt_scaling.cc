@@ -44,25 +44,16 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "lab/eval/dataset.h"
-#include "lab/eval/statistics.h"
 #include "lab/runs/matcher.h"
-#include "lab/runs/scan_store.h"
+#include "lab/runs/merged_cloud.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
-#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scaling_measure.h"
 #include "tools/common/scaling_report.h"
@@ -96,51 +87,9 @@ DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 namespace mlndt {
 namespace {
 
-using tools::Fmt;
+constexpr char kTool[] = "mlndt_scaling";
+
 using tools::SizeResult;
-
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_scaling: " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << "mlndt_scaling: " << message << std::endl;
-  return tools::kExitUsage;
-}
-
-// Reads every scan, moves it into the first scan's frame with the ground
-// truth and appends it to *merged.
-bool LoadMergedCloud(PointCloud* merged,
-                     size_t* num_scans,
-                     std::string* error) {
-  std::vector<std::string> paths;
-  if (!ListScanFiles(FLAGS_scans, {FLAGS_poses, FLAGS_calib}, &paths, error))
-    return false;
-  std::vector<Isometry3d> world_from_scan;
-  if (!ReadSequencePoses(FLAGS_poses, FLAGS_calib, &world_from_scan, error))
-    return false;
-  if (world_from_scan.size() < paths.size()) {
-    *error = FLAGS_poses + " has " + std::to_string(world_from_scan.size()) +
-             " poses for " + std::to_string(paths.size()) + " scans in " +
-             FLAGS_scans;
-    return false;
-  }
-  ScanStore store(paths);
-  const Isometry3d first_from_world = world_from_scan[0].inverse();
-  for (size_t i = 0; i < paths.size(); ++i) {
-    const PointCloud* cloud = store.Cloud(i, error);
-    if (cloud == nullptr) return false;
-    const Isometry3d first_from_scan = first_from_world * world_from_scan[i];
-    merged->Reserve(merged->size() + cloud->size());
-    for (const Eigen::Vector3d& p : cloud->points())
-      merged->Add(first_from_scan * p);
-    store.ReleaseBefore(i + 1);
-  }
-  *num_scans = paths.size();
-  return true;
-}
 
 // --sizes, --repetitions, the tolerances, --motion and the registration
 // flags; false with *error for a bad value.
@@ -170,59 +119,6 @@ bool ParseFlags(std::vector<size_t>* sizes,
   return tools::MatcherOptionsFromFlags(options, error);
 }
 
-void PrintTable(const std::vector<SizeResult>& results) {
-  std::printf(
-      "| points | map ms | sampling ms | solve ms | total ms | sampled | "
-      "finest-layer "
-      "cells | layers | iterations | t error cm | r error deg | solve |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
-  for (const SizeResult& r : results) {
-    std::printf(
-        "| %zu | %s | %s | %s | %s | %zu | %zu | %d | %d | %s | %s | %s |\n",
-        r.points,
-        Fmt(r.map_ms, 1).c_str(),
-        Fmt(r.sampling_ms, 1).c_str(),
-        Fmt(r.solve_ms, 1).c_str(),
-        Fmt(r.total_ms, 1).c_str(),
-        r.sampled_points,
-        r.finest_cells,
-        r.num_layers,
-        r.iterations,
-        Fmt(r.translation_error_m * 100.0, 2).c_str(),
-        Fmt(r.rotation_error_deg, 3).c_str(),
-        r.ok ? "ok"
-             : (r.termination == TerminationType::FAILURE ? "FAILED"
-                                                          : "LARGE ERROR"));
-  }
-}
-
-// Prints the slope of every series and of the solve against the sampled
-// points; returns the series' slopes.
-std::vector<double> PrintSlopes(const std::vector<size_t>& sizes,
-                                const std::vector<SizeResult>& results) {
-  std::printf(
-      "\nlog-log slope over N = %zu..%zu (time ∝ N^slope; 1 = linear):\n",
-      sizes.front(),
-      sizes.back());
-  std::vector<double> x;
-  for (size_t n : sizes) x.push_back(static_cast<double>(n));
-  std::vector<double> slopes;
-  for (const auto& [name, values] : tools::Series(results)) {
-    slopes.push_back(tools::LogLogSlope(x, values));
-    std::printf(
-        "  %-19s %s\n", (name + ":").c_str(), Fmt(slopes.back(), 2).c_str());
-  }
-  // The solve's cost per residual: its time against the sampled points.
-  std::vector<double> sampled, solve_ms;
-  for (const SizeResult& r : results) {
-    sampled.push_back(static_cast<double>(r.sampled_points));
-    solve_ms.push_back(r.solve_ms);
-  }
-  std::printf("  solve against sampled points (time ∝ S^slope): %s\n",
-              Fmt(tools::LogLogSlope(sampled, solve_ms), 2).c_str());
-  return slopes;
-}
-
 // scaling.csv and, when gnuplot is there, scaling.png into --output_dir.
 int WriteOutputs(const MatcherOptions& options,
                  const std::vector<SizeResult>& results,
@@ -231,45 +127,28 @@ int WriteOutputs(const MatcherOptions& options,
   const std::string dir = FLAGS_output_dir;
   std::string error;
   if (!tools::WriteScalingCsv(dir + "/scaling.csv", results, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
   std::printf("\noutput: %s/scaling.csv", dir.c_str());
   if (!gnuplot_ok) {
     std::printf("\n");
-    return Fail("scaling.png skipped: gnuplot ('" + FLAGS_gnuplot +
-                "') not found; scaling.csv is written. Install gnuplot-nox");
+    return tools::Fail(
+        kTool,
+        "scaling.png skipped: gnuplot ('" + FLAGS_gnuplot +
+            "') not found; scaling.csv is written. Install gnuplot-nox");
   }
-  const std::string title = "Registration time against cloud size (median of " +
-                            std::to_string(FLAGS_repetitions) + " runs; " +
-                            MethodToString(options.method) + ", " +
-                            FLAGS_backend + ", " + FLAGS_sampling +
-                            " sampling)";
   if (!tools::WriteScalingPlot(
-          FLAGS_gnuplot, dir, title, results, slopes, &error)) {
-    return Fail(error);
+          FLAGS_gnuplot,
+          dir,
+          tools::ScalingPlotTitle(
+              FLAGS_repetitions, options.method, FLAGS_backend, FLAGS_sampling),
+          results,
+          slopes,
+          &error)) {
+    return tools::Fail(kTool, error);
   }
   std::printf(", scaling.gp, scaling.png\n");
   return 0;
-}
-
-// Names every size whose solve failed or missed --motion; exit code 1.
-int ReportBrokenSolves(const std::vector<SizeResult>& results) {
-  for (const SizeResult& r : results) {
-    if (r.ok) continue;
-    std::cerr << "mlndt_scaling: N = " << r.points << ": "
-              << (r.termination == TerminationType::FAILURE
-                      ? "registration FAILED: " + r.message
-                      : "recovered motion off by " +
-                            Fmt(r.translation_error_m * 100.0, 2) + " cm, " +
-                            Fmt(r.rotation_error_deg, 3) + " deg (tolerance " +
-                            Fmt(FLAGS_max_translation_error * 100.0, 1) +
-                            " cm, " + Fmt(FLAGS_max_rotation_error, 2) +
-                            " deg)")
-              << std::endl;
-  }
-  return Fail(
-      "the solve did not recover --motion at every size: its times are not "
-      "representative (see the table's last column)");
 }
 
 int Run() {
@@ -278,30 +157,33 @@ int Run() {
   MatcherOptions options;
   std::string error;
   if (!ParseFlags(&sizes, &reference_from_input, &options, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   if (!FLAGS_output_dir.empty()) {
     if (!tools::PrepareOutputDir(
             "output_dir", FLAGS_output_dir, {"scaling.csv"}, &error)) {
-      return Refuse(error);
+      return tools::Refuse(kTool, error);
     }
   }
-  const bool gnuplot_ok =
-      FLAGS_output_dir.empty() || tools::GnuplotAvailable(FLAGS_gnuplot);
-  if (!gnuplot_ok) {
-    std::cerr
-        << "mlndt_scaling: gnuplot ('" << FLAGS_gnuplot
-        << "') not found: scaling.png will be skipped (install gnuplot-nox)\n";
-  }
+  const bool gnuplot_ok = tools::GnuplotReadyForPlots(
+      kTool,
+      !FLAGS_output_dir.empty(),
+      FLAGS_gnuplot,
+      "scaling.png will be skipped (install gnuplot-nox)");
 
   PointCloud merged;
   size_t num_scans = 0;
-  if (!LoadMergedCloud(&merged, &num_scans, &error)) return Refuse(error);
+  if (!MergeScansInFirstFrame(
+          FLAGS_scans, FLAGS_poses, FLAGS_calib, &merged, &num_scans, &error)) {
+    return tools::Refuse(kTool, error);
+  }
   if (sizes.back() > merged.size()) {
-    return Refuse("--sizes: " + std::to_string(sizes.back()) +
-                  " points requested, but the " + std::to_string(num_scans) +
-                  " scans of " + FLAGS_scans + " merge into only " +
-                  std::to_string(merged.size()) + " points");
+    return tools::Refuse(kTool,
+                         "--sizes: " + std::to_string(sizes.back()) +
+                             " points requested, but the " +
+                             std::to_string(num_scans) + " scans of " +
+                             FLAGS_scans + " merge into only " +
+                             std::to_string(merged.size()) + " points");
   }
 
   tools::ScalingSettings settings;
@@ -309,46 +191,43 @@ int Run() {
   settings.repetitions = FLAGS_repetitions;
   settings.max_translation_error_m = FLAGS_max_translation_error;
   settings.max_rotation_error_deg = FLAGS_max_rotation_error;
-  tools::Progress progress("mlndt_scaling", sizes.size());
-  std::vector<SizeResult> results(sizes.size());
-  for (size_t k = 0; k < sizes.size(); ++k) {
-    if (!tools::MeasureSize(settings,
-                            options,
-                            merged,
-                            sizes[k],
-                            reference_from_input,
-                            &results[k],
-                            &error)) {
-      progress.Finish();
-      return Fail(error);
-    }
-    progress.Update(k + 1,
-                    "N = " + std::to_string(sizes[k]) + ", total " +
-                        Fmt(results[k].total_ms, 1) + " ms");
+  std::vector<SizeResult> results;
+  if (!tools::MeasureSizes(settings,
+                           options,
+                           merged,
+                           sizes,
+                           reference_from_input,
+                           &results,
+                           &error)) {
+    return tools::Fail(kTool, error);
   }
-  progress.Finish();
 
-  std::printf(
-      "merged cloud: %zu points from %zu scans (%s); %s, backend %s, sampling "
-      "%s, "
-      "threads %d; motion %s; median of %d runs\n\n",
-      merged.size(),
-      num_scans,
-      FLAGS_scans.c_str(),
-      MethodToString(options.method),
-      FLAGS_backend.c_str(),
-      FLAGS_sampling.c_str(),
-      FLAGS_threads,
-      FLAGS_motion.c_str(),
-      FLAGS_repetitions);
-  PrintTable(results);
-  const std::vector<double> slopes = PrintSlopes(sizes, results);
+  std::printf("merged cloud: %zu points from %zu scans (%s); %s\n\n",
+              merged.size(),
+              num_scans,
+              FLAGS_scans.c_str(),
+              tools::ScalingRunLine(options.method,
+                                    FLAGS_backend,
+                                    FLAGS_sampling,
+                                    FLAGS_threads,
+                                    FLAGS_motion,
+                                    FLAGS_repetitions)
+                  .c_str());
+  tools::PrintScalingTable(results);
+  const std::vector<double> slopes = tools::PrintScalingSlopes(sizes, results);
   if (!FLAGS_output_dir.empty()) {
     const int code = WriteOutputs(options, results, slopes, gnuplot_ok);
     if (code != 0) return code;
   }
   for (const SizeResult& r : results) {
-    if (!r.ok) return ReportBrokenSolves(results);
+    if (!r.ok) {
+      tools::PrintBrokenSolves(
+          results, FLAGS_max_translation_error, FLAGS_max_rotation_error);
+      return tools::Fail(kTool,
+                         "the solve did not recover --motion at every size: "
+                         "its times are not representative (see the table's "
+                         "last column)");
+    }
   }
   return 0;
 }

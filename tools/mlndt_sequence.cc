@@ -57,35 +57,18 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include <algorithm>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <sstream>
-
-#include "lab/eval/dataset.h"
-#include "lab/eval/pose_convention.h"
-#include "lab/eval/trajectory_io.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
-#include "lab/runs/sequence_totals.h"
-#include "mlndt/cloud/pose_io.h"
-#include "mlndt/common/pose.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_output.h"
-#include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
-#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
+#include "tools/common/sequence_inputs.h"
 #include "tools/common/sequence_output.h"
 #include "tools/common/sequence_plots.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
-#include "tools/common/tool_utils.h"
-#include "tools/common/verdict_counts.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
@@ -110,40 +93,7 @@ DEFINE_string(adaptive_fail_rates, "0.05,0.2",
 namespace mlndt {
 namespace {
 
-int Fail(const std::string& message) {
-  std::cerr << "mlndt_sequence: " << message << std::endl;
-  return tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << "mlndt_sequence: " << message << std::endl;
-  return tools::kExitUsage;
-}
-
-bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
-                              std::string* error) {
-  adaptive->enabled = FLAGS_adaptive_start_layer;
-  adaptive->max_translation_m = FLAGS_adaptive_max_translation;
-  adaptive->max_rotation_deg = FLAGS_adaptive_max_rotation;
-  if (!(adaptive->max_translation_m > 0) || !(adaptive->max_rotation_deg > 0)) {
-    *error =
-        "--adaptive_max_translation and --adaptive_max_rotation must be > 0";
-    return false;
-  }
-  std::vector<double> rates;
-  if (!tools::ParseNumberList(FLAGS_adaptive_fail_rates, &rates) ||
-      !std::is_sorted(rates.begin(), rates.end()) ||
-      std::any_of(rates.begin(), rates.end(), [](double r) {
-        return r < 0 || r > 1;
-      })) {
-    *error = "--adaptive_fail_rates=" + FLAGS_adaptive_fail_rates +
-             ": expected ascending numbers in [0, 1], e.g. 0.05,0.2";
-    return false;
-  }
-  adaptive->fail_rate_thresholds = rates;
-  return true;
-}
+constexpr char kTool[] = "mlndt_sequence";
 
 // The run's options from the flags; false with *error for bad values.
 bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
@@ -165,7 +115,12 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   options->release_used_scans = true;
   if (!tools::MatcherOptionsFromFlags(&options->registration, error) ||
       !ParseInitSpec(FLAGS_init, &options->init, error) ||
-      !AdaptiveOptionsFromFlags(&options->adaptive, error)) {
+      !tools::AdaptiveOptionsFromValues(FLAGS_adaptive_start_layer,
+                                        FLAGS_adaptive_max_translation,
+                                        FLAGS_adaptive_max_rotation,
+                                        FLAGS_adaptive_fail_rates,
+                                        &options->adaptive,
+                                        error)) {
     return false;
   }
   if (options->adaptive.enabled &&
@@ -186,272 +141,78 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   return true;
 }
 
-// The scans (at most --max_scans) and, when given, the ground truth and
-// the odometry of --init=poses:FILE, one pose per scan.
-bool ReadScansAndPoses(const SequenceOptions& options,
-                       tools::ScanInput* input,
-                       std::vector<Isometry3d>* truth,
-                       std::vector<Isometry3d>* odometry,
-                       std::string* error) {
-  const auto list_folder = [&](std::vector<std::string>* paths,
-                               std::string* list_error) {
-    return ListScanFiles(
-        FLAGS_scans,
-        {FLAGS_gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
-        paths,
-        list_error);
-  };
-  if (!tools::ScanInputFromFlags(!FLAGS_scans.empty(),
-                                 list_folder,
-                                 static_cast<size_t>(FLAGS_max_scans),
-                                 input,
-                                 error)) {
-    return false;
-  }
-  const std::vector<std::string>* paths = &input->names();
-  const std::string scans = std::to_string(paths->size()) + " scans";
-  if (paths->size() <= options.step) {
-    *error = (FLAGS_bag.empty() ? FLAGS_scans : FLAGS_bag) + ": " + scans +
-             ", too few for --step=" + std::to_string(options.step);
-    return false;
-  }
-  if (!FLAGS_gt_poses.empty() &&
-      !ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, truth, error)) {
-    return false;
-  }
-  std::string evidence;
-  if (!FLAGS_poses_are_camera && LooksLikeCameraPoses(*truth, &evidence)) {
-    std::cerr << "mlndt_sequence: WARNING: --gt_poses=" << FLAGS_gt_poses
-              << " looks like KITTI camera (cam0) poses read as the scans' "
-                 "own: "
-              << evidence
-              << ". If it is KITTI's poses/XX.txt, add --poses_are_camera "
-                 "--calib=calib.txt; else every error below is measured "
-                 "against the wrong frame.\n";
-  }
-  if (!truth->empty() && truth->size() < paths->size()) {
-    *error = FLAGS_gt_poses + " has " + std::to_string(truth->size()) +
-             " poses for " + scans;
-    return false;
-  }
-  if (options.init.mode == InitMode::GT_FRACTION && truth->empty()) {
-    *error = "--init=gt_fraction:c needs --gt_poses";
-    return false;
-  }
-  if (options.init.mode != InitMode::POSES) return true;
-  if (!ReadSequencePoses(
-          options.init.poses_path, FLAGS_calib, odometry, error)) {
-    return false;
-  }
-  if (odometry->size() < paths->size()) {
-    *error = options.init.poses_path + " has " +
-             std::to_string(odometry->size()) + " poses for " + scans;
-    return false;
-  }
-  return true;
-}
-
-// One progress line per pair.
-std::string PairDetail(const PairResult& r) {
-  char detail[160];
-  int used = std::snprintf(detail,
-                           sizeof(detail),
-                           "pair %zu->%zu %s, %d it, %.0f ms",
-                           r.reference,
-                           r.input,
-                           TerminationTypeToString(r.termination),
-                           r.iterations,
-                           r.times.total_ms);
-  if (r.has_truth && used > 0 && used < static_cast<int>(sizeof(detail))) {
-    std::snprintf(detail + used,
-                  sizeof(detail) - used,
-                  ", error %.1f cm %.2f deg",
-                  r.error.translation_m * 100.0,
-                  r.error.rotation_rad * kRadToDeg);
-  }
-  return detail;
-}
-
-// The schema header and the run's settings, first in summary.json.
-tools::Json SummaryHeader(const SequenceOptions& options, size_t num_scans) {
-  const MatcherOptions& registration = options.registration;
-  tools::Json header = tools::ToolJson("mlndt_sequence");
-  header["scans_dir"] = FLAGS_scans;
-  if (!FLAGS_bag.empty()) {
-    header["bag"] = FLAGS_bag;
-    header["topic"] = FLAGS_topic;
-  }
-  header["scans"] = num_scans;
-  header["step"] = options.step;
-  header["init"] = InitSpecToString(options.init);
-  header["method"] = MethodToString(registration.method);
-  header["backend"] = BackendTypeToString(registration.mlndt.backend.type);
-  header["sampling"] = SamplingMethodToString(
-      registration.method == Method::NDT ? registration.ndt.sampling.method
-                                         : registration.mlndt.sampling.method);
-  header["adaptive_start_layer"] = options.adaptive.enabled;
-  if (options.adaptive.enabled) {
-    tools::Json thresholds = tools::Json::array();
-    for (const double v : options.adaptive.fail_rate_thresholds) {
-      thresholds.push_back(tools::Number(v));
-    }
-    header["adaptive"] = {
-        {"max_translation_m",
-         tools::Number(options.adaptive.max_translation_m)},
-        {"max_rotation_deg", tools::Number(options.adaptive.max_rotation_deg)},
-        {"fail_rate_thresholds", thresholds}};
-  } else {
-    header["start_layer_flag"] = FLAGS_start_layer;
-  }
-  return header;
-}
-
-// pairs.csv, trace.csv, summary.json and the trajectories.
-// The chained trajectory in TUM format, stamped with the scans' times.
-bool WriteTumTrajectory(const std::string& path,
-                        const std::vector<Isometry3d>& poses,
-                        size_t step,
-                        const tools::ScanInput& input,
-                        std::string* error) {
-  Trajectory trajectory;
-  for (size_t k = 0; k < poses.size(); ++k) {
-    trajectory.Add(input.StampOf(k * step), poses[k]);
-  }
-  return WriteTrajectory(
-      path, TrajectoryFormat::TUM, trajectory, input.TumComment(), error);
-}
-
-bool WriteFiles(const SequenceOptions& options,
-                const tools::ScanInput& input,
-                const ScanStore& store,
-                const std::vector<PairResult>& results,
-                bool has_truth,
-                std::string* error) {
-  const std::string out = FLAGS_output_dir + "/";
-  if (!tools::WritePairsCsv(out + "pairs.csv", store, results, error) ||
-      !tools::WriteTraceCsv(out + "trace.csv", results, error)) {
-    return false;
-  }
-  if (!tools::WriteJsonFile(
-          out + "summary.json",
-          tools::SummaryJson(SummaryHeader(options, store.size()), results),
-          error)) {
-    return false;
-  }
-  const std::vector<Isometry3d> chained =
-      ChainTrajectory(results, options.step, false);
-  if (!WriteKittiPoses(out + "trajectory.txt", chained, error) ||
-      !WriteTumTrajectory(
-          out + "trajectory_tum.txt", chained, options.step, input, error)) {
-    return false;
-  }
-  return !has_truth ||
-         WriteKittiPoses(out + "gt_trajectory.txt",
-                         ChainTrajectory(results, options.step, true),
-                         error);
-}
-
-int WritePlots(const SequenceOptions& options,
-               const std::vector<PairResult>& results,
-               bool gnuplot_ok) {
-  if (!gnuplot_ok) {
-    return Fail("plots skipped: gnuplot ('" + FLAGS_gnuplot +
-                "') not found; the other outputs are written. Install "
-                "gnuplot-nox or pass "
-                "--plots=false");
-  }
-  std::vector<std::string> pngs;
-  std::string error;
-  if (!tools::WriteSequencePlots(FLAGS_gnuplot,
-                                 FLAGS_output_dir,
-                                 results,
-                                 options.step,
-                                 FLAGS_trace_plot_pairs,
-                                 &pngs,
-                                 &error)) {
-    return Fail(error);
-  }
-  std::printf("plots: ");
-  for (size_t k = 0; k < pngs.size(); ++k)
-    std::printf("%s%s", k ? ", " : "", pngs[k].c_str());
-  std::printf("\n");
-  return 0;
-}
-
-// 1 when any pair's result is not usable (LOW_QUALITY, DEGENERATE, FAILURE):
-// its --init guess stands in for it in trajectory.txt, flagged in pairs.csv
-// and summary.json.
-int ExitForVerdicts(const SequenceOptions& options,
-                    const std::vector<PairResult>& results) {
-  tools::VerdictCounts verdicts;
-  std::string pairs;
-  for (const PairResult& r : results) {
-    verdicts.Add(r.termination);
-    if (!IsUsableTermination(r.termination) && pairs.size() < 200) {
-      pairs += (pairs.empty() ? "" : ", ") + std::to_string(r.reference) +
-               "->" + std::to_string(r.input) + " " +
-               TerminationTypeToString(r.termination);
-    }
-  }
-  if (verdicts.unusable() == 0) return 0;
-  return Fail(std::to_string(verdicts.unusable()) + " of " +
-              std::to_string(verdicts.total()) +
-              " pairs have no usable result (" + pairs +
-              "): trajectory.txt chains their --init=" +
-              InitSpecToString(options.init) +
-              " guess instead (estimate_source 'guess' in pairs.csv)");
-}
-
 int Run() {
   SequenceOptions options;
   std::string error;
-  if (!SequenceOptionsFromFlags(&options, &error)) return Refuse(error);
+  if (!SequenceOptionsFromFlags(&options, &error))
+    return tools::Refuse(kTool, error);
   if (options.registration.method == Method::MLNDT &&
       !tools::CheckStartLayerBeforeMap(options.registration.mlndt, &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   tools::ScanInput input;
   std::vector<Isometry3d> truth, odometry;
-  if (!ReadScansAndPoses(options, &input, &truth, &odometry, &error)) {
-    return Refuse(error);
+  if (!tools::ReadSequenceInputs(options,
+                                 FLAGS_scans,
+                                 FLAGS_gt_poses,
+                                 FLAGS_max_scans,
+                                 &input,
+                                 &truth,
+                                 &odometry,
+                                 &error)) {
+    return tools::Refuse(kTool, error);
   }
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
                                {"pairs.csv", "summary.json"},
                                &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   const bool gnuplot_ok =
-      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
-  if (!gnuplot_ok) {
-    std::cerr << "mlndt_sequence: gnuplot ('" << FLAGS_gnuplot
-              << "') not found: plots will be skipped (install gnuplot-nox, "
-                 "e.g. with "
-                 "scripts/install_deps.sh, or pass --plots=false)\n";
-  }
+      tools::GnuplotReadyForPlots(kTool,
+                                  FLAGS_plots,
+                                  FLAGS_gnuplot,
+                                  "plots will be skipped (install gnuplot-nox, "
+                                  "e.g. with scripts/install_deps.sh, or pass "
+                                  "--plots=false)");
 
   ScanStore store = input.from_bag() ? ScanStore(input.names(), input.Loader())
                                      : ScanStore(input.paths());
-  tools::Progress progress("mlndt_sequence", input.size() - options.step);
   std::vector<PairResult> results;
-  const auto on_pair = [&](const PairResult& r, size_t done, size_t) {
-    progress.Update(done, PairDetail(r));
-  };
-  const bool ok = RunSequence(options,
-                              &store,
-                              truth.empty() ? nullptr : &truth,
-                              odometry.empty() ? nullptr : &odometry,
-                              on_pair,
-                              &results,
-                              &error);
-  progress.Finish();
-  if (!ok) return Fail(error);
-  if (!WriteFiles(options, input, store, results, !truth.empty(), &error)) {
-    return Fail(error);
+  const bool ok = tools::RunSequenceWithProgress(
+      options, &store, truth, odometry, &results, &error);
+  if (!ok) return tools::Fail(kTool, error);
+  const tools::SequenceSource source = {
+      FLAGS_scans, FLAGS_bag, FLAGS_topic, FLAGS_start_layer};
+  if (!tools::WriteSequenceFiles(
+          FLAGS_output_dir,
+          options,
+          tools::SequenceSummaryHeader(options, source, store.size()),
+          input,
+          store,
+          results,
+          !truth.empty(),
+          &error)) {
+    return tools::Fail(kTool, error);
   }
   tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
-  const int plots = FLAGS_plots ? WritePlots(options, results, gnuplot_ok) : 0;
-  return plots != 0 ? plots : ExitForVerdicts(options, results);
+  if (FLAGS_plots && !gnuplot_ok) {
+    return tools::Fail(kTool,
+                       tools::PlotSkippedMessage(FLAGS_gnuplot, "plots"));
+  }
+  if (FLAGS_plots && !tools::WriteSequencePlotsAndList(FLAGS_gnuplot,
+                                                       FLAGS_output_dir,
+                                                       results,
+                                                       options.step,
+                                                       FLAGS_trace_plot_pairs,
+                                                       &error)) {
+    return tools::Fail(kTool, error);
+  }
+  // A pair without a usable result (LOW_QUALITY, DEGENERATE, FAILURE) has
+  // its --init guess in trajectory.txt, flagged in pairs.csv and
+  // summary.json.
+  const std::string unusable = tools::UnusablePairsMessage(options, results);
+  return unusable.empty() ? 0 : tools::Fail(kTool, unusable);
 }
 
 }  // namespace

@@ -32,14 +32,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
-#include <iostream>
 
 #include "lab/eval/suite_report.h"
 #include "lab/runs/suite_runner.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/gnuplot.h"
-#include "tools/common/json_output.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
@@ -47,7 +44,6 @@
 #include "tools/common/suite_output.h"
 #include "tools/common/suite_run.h"
 #include "tools/common/tool_main.h"
-#include "tools/common/tool_utils.h"
 
 // clang-format off
 DEFINE_string(datasets, "",
@@ -91,17 +87,6 @@ namespace {
 
 constexpr char kTool[] = "mlndt_suite";
 
-int Fail(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return mlndt::tools::kExitFailed;
-}
-
-// A flag, argument or input refused before any work (tool_main.h).
-int Refuse(const std::string& message) {
-  std::cerr << kTool << ": " << message << std::endl;
-  return mlndt::tools::kExitUsage;
-}
-
 struct SuiteConfig {
   std::vector<SuiteDataset> datasets;
   SuitePlanOptions plan;
@@ -109,89 +94,32 @@ struct SuiteConfig {
   std::vector<SuiteTarget> targets;
 };
 
-bool HasStart(const SuitePlanOptions& plan, StartKind kind) {
-  return std::find(plan.starts.begin(), plan.starts.end(), kind) !=
-         plan.starts.end();
-}
-
-// Flags that only apply with a start kind, refused without it.
-bool RefuseUnusedStartFlags(const SuitePlanOptions& plan, std::string* error) {
-  const std::vector<std::pair<StartKind, std::vector<std::string>>> flags = {
-      {StartKind::OFFSETS, {"offsets"}},
-      {StartKind::PERTURBED, {"perturb", "perturb_count", "perturb_seed"}},
-      {StartKind::PRIOR, {"prior_uncertainty"}}};
-  for (const auto& [kind, names] : flags) {
-    const std::string reason =
-        std::string("needs ") + StartKindToString(kind) + " in --starts";
-    if (!HasStart(plan, kind) && !tools::RefuseGivenFlags(names, reason, error))
-      return false;
-  }
-  if (tools::FlagGiven("initial_uncertainty") &&
-      (HasStart(plan, StartKind::PERTURBED) ||
-       !FLAGS_prior_uncertainty.empty())) {
-    *error =
-        "--initial_uncertainty would be overridden by the start's own (the "
-        "perturbed bound, --prior_uncertainty): leave it out";
-    return false;
-  }
-  return true;
-}
-
-// A "translation_m,rotation_deg" pair flag.
-bool ParseBound(const char* flag,
-                const std::string& text,
-                double* translation_m,
-                double* rotation_deg,
-                std::string* error) {
-  std::vector<double> v;
-  if (!tools::ParseNumberList(text, &v) || v.size() != 2) {
-    *error = std::string("--") + flag + "=" + text +
-             ": expected translation_m,rotation_deg";
-    return false;
-  }
-  *translation_m = v[0];
-  *rotation_deg = v[1];
-  return true;
-}
-
 bool ParseStarts(SuitePlanOptions* plan, std::string* error) {
-  std::vector<std::string> items;
-  plan->starts.clear();
-  if (!tools::SplitList(FLAGS_starts, &items)) {
-    *error = "--starts='" + FLAGS_starts + "': expected a comma-separated list";
+  if (!tools::ParseStartList(FLAGS_starts, &plan->starts, error)) {
     return false;
   }
-  for (const std::string& item : items) {
-    StartKind kind;
-    if (!StringToStartKind(item, &kind)) {
-      *error = "--starts: '" + item +
-               "': expected identity, prior, offsets, perturbed or "
-               "constant_velocity";
-      return false;
-    }
-    plan->starts.push_back(kind);
-  }
-  if (HasStart(*plan, StartKind::OFFSETS) &&
+  if (tools::HasStart(*plan, StartKind::OFFSETS) &&
       !ParseStartOffsets(FLAGS_offsets, &plan->offsets, error)) {
     *error = "--offsets: " + *error;
     return false;
   }
-  return RefuseUnusedStartFlags(*plan, error);
+  return tools::RefuseUnusedStartFlags(*plan, FLAGS_prior_uncertainty, error);
 }
 
 // The numeric plan flags, each checked under its own name.
 bool ParseNumbers(SuitePlanOptions* plan, std::string* error) {
   StartUncertainty& prior = plan->prior_uncertainty;
-  if (!ParseBound("perturb",
-                  FLAGS_perturb,
-                  &plan->perturb_translation_m,
-                  &plan->perturb_rotation_deg,
-                  error) ||
-      (!FLAGS_prior_uncertainty.empty() && !ParseBound("prior_uncertainty",
-                                                       FLAGS_prior_uncertainty,
-                                                       &prior.translation_m,
-                                                       &prior.rotation_deg,
-                                                       error))) {
+  if (!tools::ParseBound("perturb",
+                         FLAGS_perturb,
+                         &plan->perturb_translation_m,
+                         &plan->perturb_rotation_deg,
+                         error) ||
+      (!FLAGS_prior_uncertainty.empty() &&
+       !tools::ParseBound("prior_uncertainty",
+                          FLAGS_prior_uncertainty,
+                          &prior.translation_m,
+                          &prior.rotation_deg,
+                          error))) {
     return false;
   }
   prior.given = !FLAGS_prior_uncertainty.empty();
@@ -203,25 +131,8 @@ bool ParseNumbers(SuitePlanOptions* plan, std::string* error) {
     return false;
   }
   plan->steps.assign(steps.begin(), steps.end());
-  const std::vector<std::pair<const char*, bool>> checks = {
-      {"--perturb: bounds must be in [0, 1e4] m and [0, 180] deg",
-       plan->perturb_translation_m >= 0.0 &&
-           plan->perturb_rotation_deg >= 0.0 &&
-           plan->perturb_translation_m <= 1e4 &&
-           plan->perturb_rotation_deg <= 180.0},
-      {"--prior_uncertainty: must be in [0, 1e4] m and [0, 180] deg",
-       !prior.given ||
-           (prior.translation_m >= 0.0 && prior.rotation_deg >= 0.0 &&
-            prior.translation_m <= 1e4 && prior.rotation_deg <= 180.0)},
-      {"--perturb_count must be >= 1", plan->perturb_count >= 1},
-      {"--steps: a step must not be 0",
-       std::count(steps.begin(), steps.end(), 0) == 0},
-      {"--max_pairs_per_set must be >= 0", FLAGS_max_pairs_per_set >= 0}};
-  for (const auto& [message, ok] : checks) {
-    if (!ok) {
-      *error = message;
-      return false;
-    }
+  if (!tools::CheckSuitePlanBounds(*plan, FLAGS_max_pairs_per_set, error)) {
+    return false;
   }
   plan->max_pairs_per_set = static_cast<size_t>(FLAGS_max_pairs_per_set);
   return true;
@@ -236,43 +147,20 @@ bool ParsePlan(SuitePlanOptions* plan, std::string* error) {
   return true;
 }
 
-bool ParseOutputFlags(std::string* error) {
-  if (!(FLAGS_reach_share > 0.0 && FLAGS_reach_share <= 1.0)) {
-    *error = "--reach_share must be in (0, 1]";
-    return false;
-  }
-  if (FLAGS_plot && FLAGS_output_dir.empty()) {
-    *error = "--plot needs --output_dir";
-    return false;
-  }
-  if (!FLAGS_plot &&
-      !tools::RefuseGivenFlags({"gnuplot"}, "needs --plot", error)) {
-    return false;
-  }
-  if (FLAGS_plot && !tools::GnuplotAvailable(FLAGS_gnuplot)) {
-    *error = "--plot: gnuplot ('" + FLAGS_gnuplot +
-             "') does not run; install gnuplot-nox or leave out --plot";
-    return false;
-  }
-  return true;
-}
-
 bool ParseConfig(SuiteConfig* config, std::string* error) {
   if (FLAGS_datasets.empty()) {
     *error = "--datasets is required (DIR[:tol_m:tol_deg],...)";
-    return false;
-  }
-  std::error_code ec;
-  if (!FLAGS_data_dir.empty() &&
-      !std::filesystem::is_directory(FLAGS_data_dir, ec)) {
-    *error = "--data_dir=" + FLAGS_data_dir + ": not a folder";
     return false;
   }
   if (!tools::ParseSuiteDatasets(
           FLAGS_datasets, FLAGS_data_dir, &config->datasets, error) ||
       !ParsePlan(&config->plan, error) ||
       !tools::MatcherOptionsFromFlags(&config->matcher, error) ||
-      !ParseOutputFlags(error)) {
+      !tools::CheckSuiteOutputFlags(FLAGS_reach_share,
+                                    FLAGS_plot,
+                                    FLAGS_output_dir,
+                                    FLAGS_gnuplot,
+                                    error)) {
     return false;
   }
   if (config->matcher.method == Method::NDT &&
@@ -288,77 +176,33 @@ bool ParseConfig(SuiteConfig* config, std::string* error) {
   return true;
 }
 
-bool WriteOutputs(const SuiteConfig& config,
-                  const std::vector<tools::LoadedSuiteDataset>& loaded,
-                  const std::vector<std::vector<SuiteRunResult>>& results,
-                  const SuiteScore& score,
-                  const tools::SuiteRunInfo& info,
-                  std::string* error) {
-  const std::string& dir = FLAGS_output_dir;
-  if (!tools::WriteSuiteRunsCsv(dir + "/runs.csv", loaded, results, error) ||
-      !tools::WriteJsonFile(
-          dir + "/summary.json", tools::SuiteSummaryJson(score, info), error)) {
-    return false;
-  }
-  std::printf(
-      "\nwritten: %s/runs.csv, %s/summary.json", dir.c_str(), dir.c_str());
-  if (FLAGS_plot) {
-    const bool mlndt = config.matcher.method == Method::MLNDT &&
-                       config.matcher.mlndt.quality_check.enabled;
-    if (!tools::WriteSuiteQualityPlot(
-            FLAGS_gnuplot,
-            dir,
-            results,
-            mlndt ? &config.matcher.mlndt.quality_check : nullptr,
-            error)) {
-      return false;
-    }
-    std::printf(", %s/quality.png", dir.c_str());
-  }
-  std::printf("\n");
-  return true;
-}
-
 int Run() {
   SuiteConfig config;
   std::string error;
-  if (!ParseConfig(&config, &error)) return Refuse(error);
-  std::vector<tools::LoadedSuiteDataset> loaded(config.datasets.size());
-  for (size_t d = 0; d < config.datasets.size(); ++d) {
-    if (!tools::LoadSuiteDataset(
-            config.datasets[d], d, config.plan, &loaded[d], &error)) {
-      return Refuse(error);
-    }
+  if (!ParseConfig(&config, &error)) return tools::Refuse(kTool, error);
+  std::vector<tools::LoadedSuiteDataset> loaded;
+  if (!tools::LoadSuiteDatasets(
+          config.datasets, config.plan, &loaded, &error)) {
+    return tools::Refuse(kTool, error);
   }
   if (!FLAGS_output_dir.empty() &&
       !mlndt::tools::PrepareOutputDir("output_dir",
                                       FLAGS_output_dir,
                                       {"runs.csv", "summary.json"},
                                       &error)) {
-    return Refuse(error);
+    return tools::Refuse(kTool, error);
   }
   std::printf("%s", tools::SuitePlanText(loaded).c_str());
   std::fflush(stdout);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<SuiteRunResult>> results;
   if (!tools::RunSuiteWithProgress(config.matcher, loaded, &results, &error)) {
-    return Fail(error);
+    return tools::Fail(kTool, error);
   }
 
-  std::vector<std::string> names;
-  std::vector<SuiteSkips> skips;
-  std::vector<SuiteOutcome> outcomes;
-  for (size_t d = 0; d < loaded.size(); ++d) {
-    names.push_back(loaded[d].dataset.name);
-    skips.push_back(loaded[d].skips);
-    for (const SuiteRunResult& r : results[d]) outcomes.push_back(r.outcome);
-  }
-  const SuiteScore score = ScoreSuite(names,
-                                      config.plan.starts,
-                                      config.plan.offsets,
-                                      skips,
-                                      outcomes,
-                                      FLAGS_reach_share);
+  size_t runs = 0;
+  const SuiteScore score = tools::ScoreLoadedSuite(
+      loaded, results, config.plan, FLAGS_reach_share, &runs);
   tools::SuiteRunInfo info;
   info.method = MethodToString(config.matcher.method);
   info.wall_time_s =
@@ -366,17 +210,26 @@ int Run() {
           .count();
   info.missed_targets = MissedSuiteTargets(score.confusion, config.targets);
   std::printf("%s", FormatSuiteReport(score).c_str());
-  std::printf(
-      "\nwall time: %.1f s for %zu runs\n", info.wall_time_s, outcomes.size());
+  std::printf("\nwall time: %.1f s for %zu runs\n", info.wall_time_s, runs);
+  const bool mlndt = config.matcher.method == Method::MLNDT &&
+                     config.matcher.mlndt.quality_check.enabled;
   if (!FLAGS_output_dir.empty() &&
-      !WriteOutputs(config, loaded, results, score, info, &error)) {
-    return Fail(error);
+      !tools::WriteSuiteOutputs(
+          FLAGS_output_dir,
+          loaded,
+          results,
+          score,
+          info,
+          FLAGS_plot,
+          FLAGS_gnuplot,
+          mlndt ? &config.matcher.mlndt.quality_check : nullptr,
+          &error)) {
+    return tools::Fail(kTool, error);
   }
   for (const std::string& missed : info.missed_targets) {
     std::printf("target missed: %s\n", missed.c_str());
   }
-  return info.missed_targets.empty() ? mlndt::tools::kExitOk
-                                     : mlndt::tools::kExitFailed;
+  return info.missed_targets.empty() ? tools::kExitOk : tools::kExitFailed;
 }
 
 }  // namespace

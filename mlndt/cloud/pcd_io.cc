@@ -46,21 +46,121 @@ std::string Join(const std::vector<PcdField>& fields) {
   return names;
 }
 
-// Reads the header lines up to and including DATA, then checks them.
-bool ParseHeader(const std::string& data,
-                 PcdHeader* header,
-                 std::string* error) {
-  if (data.empty()) {
-    *error = "empty file (not a PCD file)";
-    return false;
-  }
-  LineCursor cursor(data);
-  std::string_view raw_line;
+// The header's lines as read, before their checks.
+struct RawPcdHeader {
   std::vector<std::string> names, sizes, types, counts;
   bool have_fields = false, have_size = false, have_type = false;
   bool have_count = false, have_width = false;
   bool have_points = false, have_data = false;
   uint64_t width = 0, height = 1, points = 0;
+};
+
+// `line` with anything unprintable as '?', at most 40 characters.
+std::string Printable(std::string_view line) {
+  std::string shown(line.substr(0, 40));
+  for (char& c : shown) {
+    if (static_cast<unsigned char>(c) < 32 ||
+        static_cast<unsigned char>(c) > 126)
+      c = '?';
+  }
+  return shown;
+}
+
+bool ParseVersion(const std::vector<std::string_view>& tokens,
+                  std::string_view line,
+                  const std::string& line_tag,
+                  std::string* error) {
+  static const char* kVersions[] = {"0.7", ".7", "0.6", ".6", "0.5", ".5"};
+  const bool known = tokens.size() == 2 &&
+                     std::any_of(std::begin(kVersions),
+                                 std::end(kVersions),
+                                 [&](const char* v) { return tokens[1] == v; });
+  if (!known) {
+    *error = line_tag + ": unsupported VERSION '" + std::string(line) +
+             "' (supported: 0.7, 0.6, 0.5)";
+  }
+  return known;
+}
+
+bool ParseDataKind(const std::vector<std::string_view>& tokens,
+                   std::string_view line,
+                   const std::string& line_tag,
+                   PcdData* data,
+                   std::string* error) {
+  std::string kind = tokens.size() == 2 ? std::string(tokens[1]) : "";
+  UpperCase(&kind);
+  if (kind == "ASCII") {
+    *data = PcdData::ASCII;
+  } else if (kind == "BINARY") {
+    *data = PcdData::BINARY;
+  } else if (kind == "BINARY_COMPRESSED") {
+    *data = PcdData::BINARY_COMPRESSED;
+  } else {
+    *error = line_tag + ": unsupported DATA '" + std::string(line) +
+             "' (supported: ascii, binary, binary_compressed)";
+    return false;
+  }
+  return true;
+}
+
+// One header line (not DATA) into `raw`; false with `error` on a bad one.
+bool ParseHeaderLine(const std::string& keyword,
+                     const std::vector<std::string_view>& tokens,
+                     std::string_view line,
+                     const std::string& line_tag,
+                     RawPcdHeader* raw,
+                     std::string* error) {
+  auto values = [&tokens]() {
+    return std::vector<std::string>(tokens.begin() + 1, tokens.end());
+  };
+  auto parse_count = [&](uint64_t* value, bool* have) {
+    if (tokens.size() != 2 || !ParseUint64(tokens[1], value)) {
+      *error = line_tag + ": " + keyword +
+               " needs one non-negative integer, found '" + std::string(line) +
+               "'";
+      return false;
+    }
+    if (have != nullptr) *have = true;
+    return true;
+  };
+  if (keyword == "VERSION") return ParseVersion(tokens, line, line_tag, error);
+  if (keyword == "FIELDS" || keyword == "COLUMNS") {
+    raw->names = values();
+    raw->have_fields = true;
+  } else if (keyword == "SIZE") {
+    raw->sizes = values();
+    raw->have_size = true;
+  } else if (keyword == "TYPE") {
+    raw->types = values();
+    raw->have_type = true;
+  } else if (keyword == "COUNT") {
+    raw->counts = values();
+    raw->have_count = true;
+  } else if (keyword == "WIDTH") {
+    return parse_count(&raw->width, &raw->have_width);
+  } else if (keyword == "HEIGHT") {
+    return parse_count(&raw->height, nullptr);
+  } else if (keyword == "POINTS") {
+    return parse_count(&raw->points, &raw->have_points);
+  } else if (keyword != "VIEWPOINT") {
+    // VIEWPOINT (the sensor pose) is not applied; PCL does not apply it
+    // either. Also what a non-PCD file (bad magic) ends up here with.
+    *error = "not a PCD header: unexpected " + line_tag + " '" +
+             Printable(line) +
+             "' (expected VERSION, FIELDS, SIZE, TYPE, COUNT, WIDTH, HEIGHT, "
+             "VIEWPOINT, POINTS or DATA)";
+    return false;
+  }
+  return true;
+}
+
+// Reads the header lines up to and including DATA.
+bool ReadHeaderLines(const std::string& data,
+                     RawPcdHeader* raw,
+                     PcdHeader* header,
+                     std::string* error) {
+  LineCursor cursor(data);
+  std::string_view raw_line;
   while (cursor.Next(&raw_line)) {
     const std::string_view line = Trim(raw_line);
     if (line.empty() || line.front() == '#') continue;
@@ -69,130 +169,82 @@ bool ParseHeader(const std::string& data,
     UpperCase(&keyword);
     const std::string line_tag =
         "header line " + std::to_string(cursor.line_number());
-    auto values = [&tokens]() {
-      return std::vector<std::string>(tokens.begin() + 1, tokens.end());
-    };
-    auto parse_count = [&](uint64_t* value) {
-      if (tokens.size() != 2 || !ParseUint64(tokens[1], value)) {
-        *error = line_tag + ": " + keyword +
-                 " needs one non-negative integer, found '" +
-                 std::string(line) + "'";
+    if (keyword == "DATA") {
+      if (!ParseDataKind(tokens, line, line_tag, &header->data, error)) {
         return false;
       }
-      return true;
-    };
-    if (keyword == "VERSION") {
-      static const char* kVersions[] = {"0.7", ".7", "0.6", ".6", "0.5", ".5"};
-      const bool known =
-          tokens.size() == 2 &&
-          std::any_of(std::begin(kVersions),
-                      std::end(kVersions),
-                      [&](const char* v) { return tokens[1] == v; });
-      if (!known) {
-        *error = line_tag + ": unsupported VERSION '" + std::string(line) +
-                 "' (supported: 0.7, 0.6, 0.5)";
-        return false;
-      }
-    } else if (keyword == "FIELDS" || keyword == "COLUMNS") {
-      names = values();
-      have_fields = true;
-    } else if (keyword == "SIZE") {
-      sizes = values();
-      have_size = true;
-    } else if (keyword == "TYPE") {
-      types = values();
-      have_type = true;
-    } else if (keyword == "COUNT") {
-      counts = values();
-      have_count = true;
-    } else if (keyword == "WIDTH") {
-      if (!parse_count(&width)) return false;
-      have_width = true;
-    } else if (keyword == "HEIGHT") {
-      if (!parse_count(&height)) return false;
-    } else if (keyword == "POINTS") {
-      if (!parse_count(&points)) return false;
-      have_points = true;
-    } else if (keyword == "VIEWPOINT") {
-      // Sensor pose; not applied (PCL does not apply it either).
-    } else if (keyword == "DATA") {
-      std::string kind = tokens.size() == 2 ? std::string(tokens[1]) : "";
-      UpperCase(&kind);
-      if (kind == "ASCII") {
-        header->data = PcdData::ASCII;
-      } else if (kind == "BINARY") {
-        header->data = PcdData::BINARY;
-      } else if (kind == "BINARY_COMPRESSED") {
-        header->data = PcdData::BINARY_COMPRESSED;
-      } else {
-        *error = line_tag + ": unsupported DATA '" + std::string(line) +
-                 "' (supported: ascii, binary, binary_compressed)";
-        return false;
-      }
-      have_data = true;
+      raw->have_data = true;
       header->body_offset = cursor.offset();
-      break;
-    } else {
-      // Also what a non-PCD file (bad magic) ends up here with.
-      std::string shown(line.substr(0, 40));
-      for (char& c : shown) {
-        if (static_cast<unsigned char>(c) < 32 ||
-            static_cast<unsigned char>(c) > 126)
-          c = '?';
-      }
-      *error = "not a PCD header: unexpected " + line_tag + " '" + shown +
-               "' (expected VERSION, FIELDS, SIZE, TYPE, COUNT, WIDTH, HEIGHT, "
-               "VIEWPOINT, POINTS or DATA)";
+      return true;
+    }
+    if (!ParseHeaderLine(keyword, tokens, line, line_tag, raw, error)) {
       return false;
     }
   }
-  if (!have_data) {
-    *error = "not a PCD header: no DATA line";
-    return false;
-  }
-  if (!have_fields || !have_size || !have_type) {
+  *error = "not a PCD header: no DATA line";
+  return false;
+}
+
+// FIELDS, SIZE, TYPE and COUNT are there and agree in length.
+bool CheckFieldLines(RawPcdHeader* raw, std::string* error) {
+  if (!raw->have_fields || !raw->have_size || !raw->have_type) {
     *error = std::string("bad header: missing ") +
-             (!have_fields ? "FIELDS"
-              : !have_size ? "SIZE"
-                           : "TYPE") +
+             (!raw->have_fields ? "FIELDS"
+              : !raw->have_size ? "SIZE"
+                                : "TYPE") +
              " line";
     return false;
   }
-  if (names.empty()) {
+  if (raw->names.empty()) {
     *error = "bad header: FIELDS is empty";
     return false;
   }
-  if (!have_count) counts.assign(names.size(), "1");
-  if (sizes.size() != names.size() || types.size() != names.size() ||
-      counts.size() != names.size()) {
-    *error = "bad header: FIELDS has " + std::to_string(names.size()) +
-             " entries but SIZE has " + std::to_string(sizes.size()) +
-             ", TYPE " + std::to_string(types.size()) + " and COUNT " +
-             std::to_string(counts.size());
+  if (!raw->have_count) raw->counts.assign(raw->names.size(), "1");
+  if (raw->sizes.size() != raw->names.size() ||
+      raw->types.size() != raw->names.size() ||
+      raw->counts.size() != raw->names.size()) {
+    *error = "bad header: FIELDS has " + std::to_string(raw->names.size()) +
+             " entries but SIZE has " + std::to_string(raw->sizes.size()) +
+             ", TYPE " + std::to_string(raw->types.size()) + " and COUNT " +
+             std::to_string(raw->counts.size());
     return false;
   }
+  return true;
+}
 
-  // Fields, record layout and the x/y/z checks.
+// Field i of `raw`, its type, size and count checked.
+bool MakeField(const RawPcdHeader& raw,
+               size_t i,
+               PcdField* field,
+               std::string* error) {
+  field->name = raw.names[i];
+  field->type = raw.types[i];
+  UpperCase(&field->type);
+  if (field->type != "F" && field->type != "I" && field->type != "U") {
+    *error = "unsupported TYPE '" + raw.types[i] + "' for field " +
+             field->name + " (PCD types are F, I and U)";
+    return false;
+  }
+  if (!ParseUint64(raw.sizes[i], &field->size) || field->size == 0) {
+    *error = "unsupported SIZE '" + raw.sizes[i] + "' for field " + field->name;
+    return false;
+  }
+  if (!ParseUint64(raw.counts[i], &field->count) || field->count == 0) {
+    *error = "bad header: COUNT '" + raw.counts[i] + "' for field " +
+             field->name + " is not a positive integer";
+    return false;
+  }
+  return true;
+}
+
+// Fields and the record layout.
+bool BuildFields(const RawPcdHeader& raw,
+                 PcdHeader* header,
+                 std::string* error) {
   uint64_t offset = 0;
-  for (size_t i = 0; i < names.size(); ++i) {
+  for (size_t i = 0; i < raw.names.size(); ++i) {
     PcdField field;
-    field.name = names[i];
-    field.type = types[i];
-    UpperCase(&field.type);
-    if (field.type != "F" && field.type != "I" && field.type != "U") {
-      *error = "unsupported TYPE '" + types[i] + "' for field " + field.name +
-               " (PCD types are F, I and U)";
-      return false;
-    }
-    if (!ParseUint64(sizes[i], &field.size) || field.size == 0) {
-      *error = "unsupported SIZE '" + sizes[i] + "' for field " + field.name;
-      return false;
-    }
-    if (!ParseUint64(counts[i], &field.count) || field.count == 0) {
-      *error = "bad header: COUNT '" + counts[i] + "' for field " + field.name +
-               " is not a positive integer";
-      return false;
-    }
+    if (!MakeField(raw, i, &field, error)) return false;
     field.offset = offset;
     uint64_t field_bytes;
     if (!MultiplyChecked(field.size, field.count, &field_bytes) ||
@@ -209,19 +261,24 @@ bool ParseHeader(const std::string& data,
     header->fields.push_back(field);
   }
   header->point_size = offset;
+  return true;
+}
+
+// x, y and z are there, each one float or double.
+bool CheckXyzFields(const PcdHeader& header, std::string* error) {
   std::string missing;
   for (int axis = 0; axis < 3; ++axis) {
-    if (header->xyz[axis] < 0)
+    if (header.xyz[axis] < 0)
       missing += std::string(missing.empty() ? "" : ", ") + "xyz"[axis];
   }
   if (!missing.empty()) {
     *error = "missing field " + missing +
-             " (FIELDS are: " + Join(header->fields) +
+             " (FIELDS are: " + Join(header.fields) +
              "; x, y and z are required)";
     return false;
   }
   for (int axis = 0; axis < 3; ++axis) {
-    const PcdField& field = header->fields[header->xyz[axis]];
+    const PcdField& field = header.fields[header.xyz[axis]];
     if (field.type != "F" || (field.size != 4 && field.size != 8) ||
         field.count != 1) {
       *error = "unsupported TYPE/SIZE for field " + field.name + ": TYPE " +
@@ -231,28 +288,50 @@ bool ParseHeader(const std::string& data,
       return false;
     }
   }
+  return true;
+}
 
-  // Point count: POINTS and WIDTH*HEIGHT must agree (either may be missing).
-  if (!have_width && !have_points) {
+// Point count: POINTS and WIDTH*HEIGHT must agree (either may be missing).
+bool ResolvePointCount(const RawPcdHeader& raw,
+                       PcdHeader* header,
+                       std::string* error) {
+  if (!raw.have_width && !raw.have_points) {
     *error = "bad header: neither WIDTH nor POINTS is given";
     return false;
   }
-  if (have_width) {
+  uint64_t points = raw.points;
+  if (raw.have_width) {
     uint64_t product;
-    if (!MultiplyChecked(width, height, &product)) {
+    if (!MultiplyChecked(raw.width, raw.height, &product)) {
       *error = "count mismatch: WIDTH*HEIGHT overflows";
       return false;
     }
-    if (have_points && product != points) {
-      *error = "header/count mismatch: POINTS is " + std::to_string(points) +
-               " but WIDTH*HEIGHT is " + std::to_string(width) + "*" +
-               std::to_string(height) + " = " + std::to_string(product);
+    if (raw.have_points && product != raw.points) {
+      *error = "header/count mismatch: POINTS is " +
+               std::to_string(raw.points) + " but WIDTH*HEIGHT is " +
+               std::to_string(raw.width) + "*" + std::to_string(raw.height) +
+               " = " + std::to_string(product);
       return false;
     }
     points = product;
   }
   header->points = points;
   return true;
+}
+
+// Reads the header lines up to and including DATA, then checks them.
+bool ParseHeader(const std::string& data,
+                 PcdHeader* header,
+                 std::string* error) {
+  if (data.empty()) {
+    *error = "empty file (not a PCD file)";
+    return false;
+  }
+  RawPcdHeader raw;
+  return ReadHeaderLines(data, &raw, header, error) &&
+         CheckFieldLines(&raw, error) && BuildFields(raw, header, error) &&
+         CheckXyzFields(*header, error) &&
+         ResolvePointCount(raw, header, error);
 }
 
 bool ParseAsciiBody(const std::string& data,

@@ -55,6 +55,59 @@ int ScalarSize(std::string_view type, bool* is_float) {
   return 0;
 }
 
+// "format <kind> 1.0".
+bool ParseFormatLine(const std::vector<std::string_view>& tokens,
+                     std::string_view line,
+                     const std::string& line_tag,
+                     PlyFormat* format,
+                     std::string* error) {
+  const bool known_version =
+      tokens.size() == 3 && (tokens[2] == "1.0" || tokens[2] == "1");
+  if (known_version && tokens[1] == "ascii") {
+    *format = PlyFormat::ASCII;
+  } else if (known_version && tokens[1] == "binary_little_endian") {
+    *format = PlyFormat::BINARY_LITTLE_ENDIAN;
+  } else if (known_version && tokens[1] == "binary_big_endian") {
+    *format = PlyFormat::BINARY_BIG_ENDIAN;
+  } else {
+    *error = line_tag + ": bad format line '" + std::string(line) +
+             "' (expected 'format "
+             "ascii|binary_little_endian|binary_big_endian 1.0')";
+    return false;
+  }
+  return true;
+}
+
+// "property <type> <name>" or "property list <count type> <type> <name>".
+bool ParsePropertyLine(const std::vector<std::string_view>& tokens,
+                       std::string_view line,
+                       const std::string& line_tag,
+                       PlyProperty* property,
+                       std::string* error) {
+  bool count_is_float = false;
+  if (tokens.size() == 5 && tokens[1] == "list") {
+    property->is_list = true;
+    property->count_size = ScalarSize(tokens[2], &count_is_float);
+    property->type = std::string(tokens[3]);
+    property->size = ScalarSize(tokens[3], &property->is_float);
+    property->name = std::string(tokens[4]);
+  } else if (tokens.size() == 3) {
+    property->type = std::string(tokens[1]);
+    property->size = ScalarSize(tokens[1], &property->is_float);
+    property->name = std::string(tokens[2]);
+  } else {
+    *error = line_tag + ": bad property line '" + std::string(line) + "'";
+    return false;
+  }
+  if (property->size == 0 ||
+      (property->is_list && (property->count_size == 0 || count_is_float))) {
+    *error =
+        line_tag + ": unknown property type in '" + std::string(line) + "'";
+    return false;
+  }
+  return true;
+}
+
 bool ParseHeader(const std::string& data,
                  PlyFormat* format,
                  std::vector<PlyElement>* elements,
@@ -86,20 +139,7 @@ bool ParseHeader(const std::string& data,
       return true;
     }
     if (keyword == "format") {
-      const bool known_version =
-          tokens.size() == 3 && (tokens[2] == "1.0" || tokens[2] == "1");
-      if (known_version && tokens[1] == "ascii") {
-        *format = PlyFormat::ASCII;
-      } else if (known_version && tokens[1] == "binary_little_endian") {
-        *format = PlyFormat::BINARY_LITTLE_ENDIAN;
-      } else if (known_version && tokens[1] == "binary_big_endian") {
-        *format = PlyFormat::BINARY_BIG_ENDIAN;
-      } else {
-        *error = line_tag + ": bad format line '" + std::string(line) +
-                 "' (expected 'format "
-                 "ascii|binary_little_endian|binary_big_endian 1.0')";
-        return false;
-      }
+      if (!ParseFormatLine(tokens, line, line_tag, format, error)) return false;
       have_format = true;
     } else if (keyword == "element") {
       PlyElement element;
@@ -115,25 +155,7 @@ bool ParseHeader(const std::string& data,
         return false;
       }
       PlyProperty property;
-      bool count_is_float = false;
-      if (tokens.size() == 5 && tokens[1] == "list") {
-        property.is_list = true;
-        property.count_size = ScalarSize(tokens[2], &count_is_float);
-        property.type = std::string(tokens[3]);
-        property.size = ScalarSize(tokens[3], &property.is_float);
-        property.name = std::string(tokens[4]);
-      } else if (tokens.size() == 3) {
-        property.type = std::string(tokens[1]);
-        property.size = ScalarSize(tokens[1], &property.is_float);
-        property.name = std::string(tokens[2]);
-      } else {
-        *error = line_tag + ": bad property line '" + std::string(line) + "'";
-        return false;
-      }
-      if (property.size == 0 ||
-          (property.is_list && (property.count_size == 0 || count_is_float))) {
-        *error =
-            line_tag + ": unknown property type in '" + std::string(line) + "'";
+      if (!ParsePropertyLine(tokens, line, line_tag, &property, error)) {
         return false;
       }
       elements->back().properties.push_back(property);
@@ -209,6 +231,127 @@ bool SkipBinaryElement(const PlyElement& element,
   return true;
 }
 
+// Where x, y and z sit in a vertex record.
+struct VertexLayout {
+  int xyz[3] = {-1, -1, -1};           // Property index of x, y, z.
+  uint64_t xyz_offset[3] = {0, 0, 0};  // Byte offset in a binary record.
+  uint64_t stride = 0;                 // Bytes per binary record.
+};
+
+bool FindVertexLayout(const PlyElement& vertex,
+                      VertexLayout* layout,
+                      std::string* error) {
+  for (size_t i = 0; i < vertex.properties.size(); ++i) {
+    const PlyProperty& property = vertex.properties[i];
+    if (property.is_list) {
+      *error = "unsupported list property '" + property.name +
+               "' in the vertex element";
+      return false;
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      if (property.name == std::string(1, "xyz"[axis]) &&
+          layout->xyz[axis] < 0) {
+        if (!property.is_float) {
+          *error = "unsupported type '" + property.type +
+                   "' for vertex property " + property.name +
+                   " (x, y and z must be float/float32 or double/float64)";
+          return false;
+        }
+        layout->xyz[axis] = static_cast<int>(i);
+        layout->xyz_offset[axis] = layout->stride;
+      }
+    }
+    layout->stride += property.size;
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (layout->xyz[axis] < 0) {
+      *error = std::string("missing field ") + "xyz"[axis] +
+               ": the vertex element needs properties x, y and z";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The vertex lines of an ascii body, the cursor at the first one.
+bool ReadAsciiVertices(const std::string& data,
+                       const PlyElement& vertex,
+                       const VertexLayout& layout,
+                       LineCursor* cursor,
+                       std::vector<Eigen::Vector3d>* points,
+                       std::string* error) {
+  // At least 6 bytes per vertex line ("0 0 0\n") bound the reserve.
+  points->reserve(std::min<uint64_t>(vertex.count,
+                                     (data.size() - cursor->offset()) / 6 + 1));
+  std::string_view line;
+  uint64_t found = 0;
+  while (found < vertex.count) {
+    if (!cursor->Next(&line)) {
+      *error = "truncated ascii body: expected " +
+               std::to_string(vertex.count) + " vertices, found " +
+               std::to_string(found);
+      return false;
+    }
+    line = Trim(line);
+    if (line.empty()) continue;
+    const std::string line_tag =
+        "line " + std::to_string(cursor->line_number());
+    const std::vector<std::string_view> tokens = SplitTokens(line);
+    if (tokens.size() < vertex.properties.size()) {
+      *error = line_tag + ": cannot parse vertex: expected " +
+               std::to_string(vertex.properties.size()) + " values, found " +
+               std::to_string(tokens.size());
+      return false;
+    }
+    Eigen::Vector3d point;
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::string_view token = tokens[layout.xyz[axis]];
+      if (!ParseDouble(token, &point[axis])) {
+        *error = line_tag + ": cannot parse " + std::string(1, "xyz"[axis]) +
+                 " value '" + std::string(token) + "'";
+        return false;
+      }
+    }
+    points->push_back(point);
+    ++found;
+  }
+  return true;
+}
+
+// The vertex records of a binary body from byte `offset` on.
+bool ReadBinaryVertices(const std::string& data,
+                        const PlyElement& vertex,
+                        const VertexLayout& layout,
+                        bool big_endian,
+                        size_t offset,
+                        std::vector<Eigen::Vector3d>* points,
+                        std::string* error) {
+  const uint64_t available = data.size() - offset;
+  uint64_t expected;
+  const bool overflow =
+      !MultiplyChecked(vertex.count, layout.stride, &expected);
+  if (overflow || expected > available) {
+    *error = "truncated binary body: expected " +
+             (overflow ? std::to_string(vertex.count) + " vertices of " +
+                             std::to_string(layout.stride) + " bytes"
+                       : std::to_string(expected) + " bytes") +
+             ", found " + std::to_string(available);
+    return false;
+  }
+  points->reserve(vertex.count);
+  const char* record = data.data() + offset;
+  for (uint64_t i = 0; i < vertex.count; ++i, record += layout.stride) {
+    Eigen::Vector3d point;
+    for (int axis = 0; axis < 3; ++axis) {
+      point[axis] = LoadFloat(record + layout.xyz_offset[axis],
+                              vertex.properties[layout.xyz[axis]].size,
+                              big_endian);
+    }
+    points->push_back(point);
+  }
+  return true;
+}
+
 }  // namespace
 
 bool ParsePly(const std::string& data,
@@ -227,108 +370,22 @@ bool ParsePly(const std::string& data,
     *error = "no vertex element in the header";
     return false;
   }
-  const PlyElement& vertex = *vertex_it;
-  int xyz[3] = {-1, -1, -1};
-  uint64_t xyz_offset[3] = {0, 0, 0};
-  uint64_t stride = 0;
-  for (size_t i = 0; i < vertex.properties.size(); ++i) {
-    const PlyProperty& property = vertex.properties[i];
-    if (property.is_list) {
-      *error = "unsupported list property '" + property.name +
-               "' in the vertex element";
-      return false;
-    }
-    for (int axis = 0; axis < 3; ++axis) {
-      if (property.name == std::string(1, "xyz"[axis]) && xyz[axis] < 0) {
-        if (!property.is_float) {
-          *error = "unsupported type '" + property.type +
-                   "' for vertex property " + property.name +
-                   " (x, y and z must be float/float32 or double/float64)";
-          return false;
-        }
-        xyz[axis] = static_cast<int>(i);
-        xyz_offset[axis] = stride;
-      }
-    }
-    stride += property.size;
-  }
-  for (int axis = 0; axis < 3; ++axis) {
-    if (xyz[axis] < 0) {
-      *error = std::string("missing field ") + "xyz"[axis] +
-               ": the vertex element needs properties x, y and z";
-      return false;
-    }
-  }
+  VertexLayout layout;
+  if (!FindVertexLayout(*vertex_it, &layout, error)) return false;
 
   if (format == PlyFormat::ASCII) {
     for (auto it = elements.begin(); it != vertex_it; ++it) {
       if (!SkipAsciiElement(*it, &cursor, error)) return false;
     }
-    // At least 6 bytes per vertex line ("0 0 0\n") bound the reserve.
-    points->reserve(std::min<uint64_t>(
-        vertex.count, (data.size() - cursor.offset()) / 6 + 1));
-    std::string_view line;
-    uint64_t found = 0;
-    while (found < vertex.count) {
-      if (!cursor.Next(&line)) {
-        *error = "truncated ascii body: expected " +
-                 std::to_string(vertex.count) + " vertices, found " +
-                 std::to_string(found);
-        return false;
-      }
-      line = Trim(line);
-      if (line.empty()) continue;
-      const std::string line_tag =
-          "line " + std::to_string(cursor.line_number());
-      const std::vector<std::string_view> tokens = SplitTokens(line);
-      if (tokens.size() < vertex.properties.size()) {
-        *error = line_tag + ": cannot parse vertex: expected " +
-                 std::to_string(vertex.properties.size()) + " values, found " +
-                 std::to_string(tokens.size());
-        return false;
-      }
-      Eigen::Vector3d point;
-      for (int axis = 0; axis < 3; ++axis) {
-        if (!ParseDouble(tokens[xyz[axis]], &point[axis])) {
-          *error = line_tag + ": cannot parse " + std::string(1, "xyz"[axis]) +
-                   " value '" + std::string(tokens[xyz[axis]]) + "'";
-          return false;
-        }
-      }
-      points->push_back(point);
-      ++found;
-    }
-    return true;
+    return ReadAsciiVertices(data, *vertex_it, layout, &cursor, points, error);
   }
-
   const bool big_endian = format == PlyFormat::BINARY_BIG_ENDIAN;
   size_t offset = cursor.offset();
   for (auto it = elements.begin(); it != vertex_it; ++it) {
     if (!SkipBinaryElement(*it, data, big_endian, &offset, error)) return false;
   }
-  const uint64_t available = data.size() - offset;
-  uint64_t expected;
-  const bool overflow = !MultiplyChecked(vertex.count, stride, &expected);
-  if (overflow || expected > available) {
-    *error = "truncated binary body: expected " +
-             (overflow ? std::to_string(vertex.count) + " vertices of " +
-                             std::to_string(stride) + " bytes"
-                       : std::to_string(expected) + " bytes") +
-             ", found " + std::to_string(available);
-    return false;
-  }
-  points->reserve(vertex.count);
-  const char* record = data.data() + offset;
-  for (uint64_t i = 0; i < vertex.count; ++i, record += stride) {
-    Eigen::Vector3d point;
-    for (int axis = 0; axis < 3; ++axis) {
-      point[axis] = LoadFloat(record + xyz_offset[axis],
-                              vertex.properties[xyz[axis]].size,
-                              big_endian);
-    }
-    points->push_back(point);
-  }
-  return true;
+  return ReadBinaryVertices(
+      data, *vertex_it, layout, big_endian, offset, points, error);
 }
 
 std::string EncodePlyBinary(const PointCloud& cloud) {

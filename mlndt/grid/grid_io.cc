@@ -248,13 +248,19 @@ bool SaveLayeredGrid(const std::string& path,
   return WriteFileAtomically(path, w.bytes(), error);
 }
 
-bool LoadLayeredGrid(const std::string& path,
-                     LayeredGrid* grid,
-                     std::string* error) {
-  CHECK(grid != nullptr);
-  CHECK(error != nullptr);
-  std::string bytes;
-  if (!internal::ReadFileToString(path, &bytes, error)) return false;
+namespace {
+
+// The map header: options, bounds and point count.
+struct MapHeader {
+  LayeredGridOptions options = PaperLayeredGridOptions();
+  Eigen::AlignedBox3d bounds;
+  uint64_t num_points = 0;
+};
+
+// Magic, version and checksum (FNV-1a of everything before it).
+bool CheckPreamble(const std::string& path,
+                   const std::string& bytes,
+                   std::string* error) {
   if (bytes.size() < sizeof(kMagic) ||
       std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
     return Fail(path, "not an mlndt map file (bad magic)", error);
@@ -263,9 +269,8 @@ bool LoadLayeredGrid(const std::string& path,
     return Fail(path, "truncated map file", error);
   }
   const size_t body_size = bytes.size() - kChecksumBytes;
-  Reader r(bytes.data() + sizeof(kMagic), body_size - sizeof(kMagic));
   uint32_t version = 0;
-  r.U32(&version);
+  Reader(bytes.data() + sizeof(kMagic), 4).U32(&version);
   if (version != kVersion) {
     return Fail(path,
                 "unsupported map version " + std::to_string(version) +
@@ -278,20 +283,25 @@ bool LoadLayeredGrid(const std::string& path,
     return Fail(
         path, "checksum mismatch: the map file is corrupt or truncated", error);
   }
+  return true;
+}
 
-  // Map header. The file stores n itself, not the finest cell it was
-  // derived from.
-  LayeredGridOptions options = PaperLayeredGridOptions();
+// The map header. The file stores n itself, not the finest cell it was
+// derived from.
+bool ReadMapHeader(const std::string& path,
+                   Reader* r,
+                   MapHeader* header,
+                   std::string* error) {
+  LayeredGridOptions& options = header->options;
   int32_t q = 0, n = 0, min_points = 0;
   CellRegularization& regularization = options.regularization;
   Eigen::Vector3d lo, hi;
-  uint64_t num_points = 0;
-  bool ok = r.I32(&q) && r.I32(&n) && r.I32(&min_points) &&
-            r.F64(&regularization.min_eigenvalue_ratio) &&
-            r.F64(&regularization.min_eigenvalue_m2);
-  for (int a = 0; a < 3; ++a) ok = ok && r.F64(&lo(a));
-  for (int a = 0; a < 3; ++a) ok = ok && r.F64(&hi(a));
-  ok = ok && r.U64(&num_points);
+  bool ok = r->I32(&q) && r->I32(&n) && r->I32(&min_points) &&
+            r->F64(&regularization.min_eigenvalue_ratio) &&
+            r->F64(&regularization.min_eigenvalue_m2);
+  for (int a = 0; a < 3; ++a) ok = ok && r->F64(&lo(a));
+  for (int a = 0; a < 3; ++a) ok = ok && r->F64(&hi(a));
+  ok = ok && r->U64(&header->num_points);
   if (!ok) return Fail(path, "truncated map header", error);
   if (n < 1 || n > kMaxLayers) {
     return Fail(path,
@@ -311,29 +321,37 @@ bool LoadLayeredGrid(const std::string& path,
     return Fail(
         path, "bad map header: bounding box not finite or inverted", error);
   }
-  if (r.remaining() / kLayerHeaderBytes < static_cast<size_t>(n)) {
+  if (r->remaining() / kLayerHeaderBytes < static_cast<size_t>(n)) {
     return Fail(path,
                 "truncated map file: " + std::to_string(n) +
                     " layers need at least " +
                     std::to_string(n * kLayerHeaderBytes) + " bytes, " +
-                    std::to_string(r.remaining()) + " left",
+                    std::to_string(r->remaining()) + " left",
                 error);
   }
-  const Eigen::AlignedBox3d bounds(lo, hi);
+  header->bounds = Eigen::AlignedBox3d(lo, hi);
+  return true;
+}
 
-  // Pass 1: every layer header, checked, before anything is allocated (the
-  // cells of each layer are skipped; their bytes were checked to exist).
-  const Reader cells_start = r;
-  std::vector<LayerHeader> headers(static_cast<size_t>(n));
+// Pass 1: every layer header, checked, before anything is allocated (the
+// cells of each layer are skipped; their bytes were checked to exist).
+bool ReadLayerHeaders(const std::string& path,
+                      const MapHeader& map,
+                      Reader* r,
+                      std::vector<LayerHeader>* headers,
+                      std::string* error) {
+  const int n = map.options.num_layers;
+  headers->resize(static_cast<size_t>(n));
   double coarser_cell_size = 0.0;
   int64_t dense_index_cells = 0;
   for (int i = 1; i <= n; ++i) {
     const std::string layer_tag = "layer " + std::to_string(i);
-    LayerHeader& h = headers[static_cast<size_t>(i - 1)];
-    for (int a = 0; a < 3; ++a) ok = ok && r.F64(&h.origin(a));
-    ok = ok && r.F64(&h.cell_size);
-    for (int a = 0; a < 3; ++a) ok = ok && r.I32(&h.dims(a));
-    ok = ok && r.U64(&h.num_cells);
+    LayerHeader& h = (*headers)[static_cast<size_t>(i - 1)];
+    bool ok = true;
+    for (int a = 0; a < 3; ++a) ok = ok && r->F64(&h.origin(a));
+    ok = ok && r->F64(&h.cell_size);
+    for (int a = 0; a < 3; ++a) ok = ok && r->I32(&h.dims(a));
+    ok = ok && r->U64(&h.num_cells);
     if (!ok) return Fail(path, "truncated header of " + layer_tag, error);
     std::string problem;
     h.grid_cells = 0;
@@ -342,7 +360,7 @@ bool LoadLayeredGrid(const std::string& path,
       h.grid_cells = int64_t{h.dims.x()} * h.dims.y() * h.dims.z();
     }
     if (!CheckLayerHeader(
-            h, bounds, coarser_cell_size, r.remaining(), &problem)) {
+            h, map.bounds, coarser_cell_size, r->remaining(), &problem)) {
       return Fail(path, "bad header of " + layer_tag + ": " + problem, error);
     }
     // Layers of at most CellIndex::kMaxDenseCells grid cells get a dense
@@ -362,78 +380,125 @@ bool LoadLayeredGrid(const std::string& path,
       }
     }
     coarser_cell_size = h.cell_size;
-    r.Skip(h.num_cells * kCellBytes);  // Cannot fail: checked above.
+    r->Skip(h.num_cells * kCellBytes);  // Cannot fail: checked above.
   }
-  if (r.remaining() != 0) {
+  if (r->remaining() != 0) {
     return Fail(
         path,
-        std::to_string(r.remaining()) + " trailing bytes after the last layer",
+        std::to_string(r->remaining()) + " trailing bytes after the last layer",
         error);
   }
+  return true;
+}
 
-  // Pass 2: the cells.
+// One cell record; an empty `problem` when it is usable. `points_in_cells`
+// sums the counts read so far.
+void ReadCell(const LayerHeader& h,
+              const MapHeader& map,
+              Reader* r,
+              uint64_t* points_in_cells,
+              int64_t* key,
+              NdtCell* cell,
+              std::string* problem) {
+  int32_t count = 0;
+  Eigen::Vector3d mean;
+  Eigen::Matrix3d covariance;
+  bool ok = r->I64(key) && r->I32(&count);
+  for (int a = 0; a < 3; ++a) ok = ok && r->F64(&mean(a));
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a; b < 3; ++b) {
+      ok = ok && r->F64(&covariance(a, b));
+      covariance(b, a) = covariance(a, b);
+    }
+  }
+  *points_in_cells += count > 0 ? static_cast<uint64_t>(count) : 0;
+  if (!ok) {
+    *problem = "truncated";
+  } else if (*key < 0 || *key >= h.grid_cells) {
+    *problem = "key " + std::to_string(*key) + " outside the grid";
+  } else if (count < 1) {
+    *problem = "point count " + std::to_string(count);
+  } else if (*points_in_cells > map.num_points) {
+    *problem = "the cells hold more points than the map's " +
+               std::to_string(map.num_points) + " points";
+  } else if (!MeanInsideCell(h, *key, mean)) {
+    *problem = "mean outside its cell";
+  } else if (!MakeNdtCell(
+                 count, mean, covariance, map.options.regularization, cell)) {
+    *problem = "no usable mean and covariance";
+  }
+}
+
+// Pass 2: the cells of layer i (1-based), the reader at its header.
+bool ReadLayerCells(const std::string& path,
+                    const MapHeader& map,
+                    const LayerHeader& h,
+                    int i,
+                    Reader* r,
+                    std::vector<NdtCell>* cells,
+                    std::vector<int64_t>* keys,
+                    std::string* error) {
+  const std::string layer_tag = "layer " + std::to_string(i);
+  r->Skip(kLayerHeaderBytes);
+  // Cells: bounded by the bytes of the file (checked in pass 1).
+  cells->reserve(h.num_cells);
+  keys->reserve(h.num_cells);
+  uint64_t points_in_cells = 0;
+  for (uint64_t c = 0; c < h.num_cells; ++c) {
+    int64_t key = 0;
+    NdtCell cell;
+    std::string cell_problem;
+    ReadCell(h, map, r, &points_in_cells, &key, &cell, &cell_problem);
+    if (!cell_problem.empty()) {
+      return Fail(path,
+                  "bad cell " + std::to_string(c) + " in " + layer_tag + ": " +
+                      cell_problem,
+                  error);
+    }
+    cells->push_back(cell);
+    keys->push_back(key);
+  }
+  // Unique keys (NdtLayer CHECKs it); sorting a copy costs 8 bytes a cell,
+  // not a table over the whole grid.
+  std::vector<int64_t> sorted = *keys;
+  std::sort(sorted.begin(), sorted.end());
+  const auto duplicate = std::adjacent_find(sorted.begin(), sorted.end());
+  if (duplicate != sorted.end()) {
+    return Fail(path,
+                "bad cells in " + layer_tag + ": key " +
+                    std::to_string(*duplicate) + " appears twice",
+                error);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool LoadLayeredGrid(const std::string& path,
+                     LayeredGrid* grid,
+                     std::string* error) {
+  CHECK(grid != nullptr);
+  CHECK(error != nullptr);
+  std::string bytes;
+  if (!internal::ReadFileToString(path, &bytes, error)) return false;
+  if (!CheckPreamble(path, bytes, error)) return false;
+  const size_t body_size = bytes.size() - kChecksumBytes;
+  Reader r(bytes.data() + sizeof(kMagic) + 4, body_size - sizeof(kMagic) - 4);
+  MapHeader map;
+  if (!ReadMapHeader(path, &r, &map, error)) return false;
+  const Reader cells_start = r;
+  std::vector<LayerHeader> headers;
+  if (!ReadLayerHeaders(path, map, &r, &headers, error)) return false;
+
   r = cells_start;
   std::vector<NdtLayer> layers;
   std::vector<LayerInfo> info;
-  for (int i = 1; i <= n; ++i) {
-    const std::string layer_tag = "layer " + std::to_string(i);
+  for (int i = 1; i <= map.options.num_layers; ++i) {
     const LayerHeader& h = headers[static_cast<size_t>(i - 1)];
-    r.Skip(kLayerHeaderBytes);
-    // Cells: bounded by the bytes of the file (checked in pass 1).
     std::vector<NdtCell> cells;
     std::vector<int64_t> keys;
-    cells.reserve(h.num_cells);
-    keys.reserve(h.num_cells);
-    uint64_t points_in_cells = 0;
-    for (uint64_t c = 0; c < h.num_cells; ++c) {
-      int64_t key = 0;
-      int32_t count = 0;
-      Eigen::Vector3d mean;
-      Eigen::Matrix3d covariance;
-      ok = r.I64(&key) && r.I32(&count);
-      for (int a = 0; a < 3; ++a) ok = ok && r.F64(&mean(a));
-      for (int a = 0; a < 3; ++a) {
-        for (int b = a; b < 3; ++b) {
-          ok = ok && r.F64(&covariance(a, b));
-          covariance(b, a) = covariance(a, b);
-        }
-      }
-      points_in_cells += count > 0 ? static_cast<uint64_t>(count) : 0;
-      NdtCell cell;
-      std::string cell_problem;
-      if (!ok) {
-        cell_problem = "truncated";
-      } else if (key < 0 || key >= h.grid_cells) {
-        cell_problem = "key " + std::to_string(key) + " outside the grid";
-      } else if (count < 1) {
-        cell_problem = "point count " + std::to_string(count);
-      } else if (points_in_cells > num_points) {
-        cell_problem = "the cells hold more points than the map's " +
-                       std::to_string(num_points) + " points";
-      } else if (!MeanInsideCell(h, key, mean)) {
-        cell_problem = "mean outside its cell";
-      } else if (!MakeNdtCell(count, mean, covariance, regularization, &cell)) {
-        cell_problem = "no usable mean and covariance";
-      }
-      if (!cell_problem.empty()) {
-        return Fail(path,
-                    "bad cell " + std::to_string(c) + " in " + layer_tag +
-                        ": " + cell_problem,
-                    error);
-      }
-      cells.push_back(cell);
-      keys.push_back(key);
-    }
-    // Unique keys (NdtLayer CHECKs it); sorting a copy costs 8 bytes a cell,
-    // not a table over the whole grid.
-    std::vector<int64_t> sorted = keys;
-    std::sort(sorted.begin(), sorted.end());
-    const auto duplicate = std::adjacent_find(sorted.begin(), sorted.end());
-    if (duplicate != sorted.end()) {
-      return Fail(path,
-                  "bad cells in " + layer_tag + ": key " +
-                      std::to_string(*duplicate) + " appears twice",
-                  error);
+    if (!ReadLayerCells(path, map, h, i, &r, &cells, &keys, error)) {
+      return false;
     }
     LayerInfo layer_info;
     layer_info.layer = i;
@@ -444,8 +509,11 @@ bool LoadLayeredGrid(const std::string& path,
     layers.emplace_back(
         h.origin, h.cell_size, h.dims, std::move(cells), std::move(keys));
   }
-  *grid = LayeredGrid(
-      options, bounds, num_points, std::move(layers), std::move(info));
+  *grid = LayeredGrid(map.options,
+                      map.bounds,
+                      map.num_points,
+                      std::move(layers),
+                      std::move(info));
   return true;
 }
 

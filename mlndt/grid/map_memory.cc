@@ -204,31 +204,10 @@ std::string NeedsMessage(const std::string& what,
          FormatBytes(static_cast<double>(limit));
 }
 
-}  // namespace
-
-std::string FormatBytes(double bytes) {
-  char text[64];
-  if (bytes >= 1e9) {
-    std::snprintf(text, sizeof(text), "%.2f GB", bytes / 1e9);
-  } else if (bytes >= 1e6) {
-    std::snprintf(text, sizeof(text), "%.1f MB", bytes / 1e6);
-  } else if (bytes >= 1e3) {
-    std::snprintf(text, sizeof(text), "%.1f kB", bytes / 1e3);
-  } else {
-    std::snprintf(text, sizeof(text), "%.0f B", bytes);
-  }
-  return text;
-}
-
-bool EstimateMapMemory(const LayeredGridOptions& options,
-                       const PointCloud& cloud,
-                       size_t max_total_bytes,
-                       MapMemoryEstimate* estimate,
-                       std::string* error) {
-  CHECK(estimate != nullptr);
-  CHECK(error != nullptr);
-  *estimate = MapMemoryEstimate();
-  if (!options.IsValid(error)) return false;
+// The reference cloud can be binned: not empty, finite, with a volume.
+bool CheckCloud(const PointCloud& cloud,
+                Eigen::AlignedBox3d* bounds,
+                std::string* error) {
   if (cloud.empty()) {
     *error = "the reference cloud is empty";
     return false;
@@ -238,83 +217,61 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
     return false;
   }
   const Eigen::AlignedBox3d box = BoundingBox(cloud);
-  const Eigen::AlignedBox3d bounds(box.min().array() + 0.0,
-                                   box.max().array() + 0.0);
-  const Eigen::Vector3d extent = bounds.sizes();
-  if (!(extent.maxCoeff() > 0.0)) {
+  *bounds =
+      Eigen::AlignedBox3d(box.min().array() + 0.0, box.max().array() + 0.0);
+  if (!(bounds->sizes().maxCoeff() > 0.0)) {
     *error = "all reference points coincide: the bounding box has no volume";
     return false;
   }
-  std::vector<Geometry> geometry;
-  int ratio = 0;
-  if (!LayerGeometries(options, extent, &geometry, &ratio, error)) return false;
-  const int n = static_cast<int>(geometry.size());
-  const size_t num_points = cloud.size();
-  estimate->cloud_bytes = cloud.points().capacity() * sizeof(Eigen::Vector3d);
-  estimate->layers.resize(static_cast<size_t>(n));
-  for (int i = 1; i <= n; ++i) {
-    LayerMemoryEstimate& layer = estimate->layers[static_cast<size_t>(i - 1)];
-    const Geometry& g = geometry[static_cast<size_t>(i - 1)];
-    layer.layer = i;
-    layer.cell_size_m = g.cell_size;
-    layer.dims = g.dims;
-    layer.grid_cells = g.grid_cells();
-    layer.dense_index = g.grid_cells() <= CellIndex::kMaxDenseCells;
-  }
-  const size_t limit = max_total_bytes;
-  const size_t budget = limit > estimate->cloud_bytes
-                            ? limit - estimate->cloud_bytes
-                            : (limit > 0 ? 1 : 0);
+  return true;
+}
 
-  // 1. From the geometry alone: binning holds a key and a slot per point
-  // and the finest layer's dense table; the map holds every dense table.
+// 1. From the geometry alone: binning holds a key and a slot per point
+// and the finest layer's dense table; the map holds every dense table.
+size_t GeometryPeakBytes(const MapMemoryEstimate& estimate, size_t num_points) {
   size_t dense_tables = 0;
-  for (const LayerMemoryEstimate& layer : estimate->layers) {
+  for (const LayerMemoryEstimate& layer : estimate.layers) {
     if (layer.dense_index) {
       dense_tables += CellIndex::EstimateBytes(layer.grid_cells, 0);
     }
   }
-  const LayerMemoryEstimate& finest = estimate->layers.back();
+  const LayerMemoryEstimate& finest = estimate.layers.back();
   const size_t binning =
       num_points * (sizeof(int64_t) + sizeof(int32_t)) +
       (finest.dense_index ? CellIndex::EstimateBytes(finest.grid_cells, 0) : 0);
-  estimate->build_peak_bytes = std::max(binning, dense_tables);
-  if (limit > 0 && estimate->total_bytes() > limit) {
-    *error = NeedsMessage("the map's geometry alone",
-                          estimate->cloud_bytes,
-                          estimate->build_peak_bytes,
-                          limit);
-    return false;
-  }
+  return std::max(binning, dense_tables);
+}
 
-  // 2. Count the cells of every layer (finest first).
+// 2. Counts the cells of every layer (finest first); sets the touched and
+// kept cells and the bytes of every layer and the counting peak.
+bool CountLayerCells(const LayeredGridOptions& options,
+                     const PointCloud& cloud,
+                     const Eigen::Vector3d& origin,
+                     const std::vector<Geometry>& geometry,
+                     int ratio,
+                     size_t budget,
+                     MapMemoryEstimate* estimate,
+                     std::string* error) {
+  const int n = static_cast<int>(geometry.size());
   std::vector<CellCounts> counts(static_cast<size_t>(n));
-  {
-    const Eigen::Vector3d origin = bounds.min();
-    size_t counting_peak = 0;
-    for (int i = n; i >= 1; --i) {
-      const size_t l = static_cast<size_t>(i - 1);
-      if (i == n || ratio == 0) {
-        if (!CountPoints(cloud.points(),
-                         origin,
-                         geometry[l],
-                         budget,
-                         &counts[l],
-                         error)) {
-          return false;
-        }
-      } else {
-        counts[l] =
-            Aggregate(counts[l + 1], geometry[l + 1], geometry[l], ratio);
+  size_t counting_peak = 0;
+  for (int i = n; i >= 1; --i) {
+    const size_t l = static_cast<size_t>(i - 1);
+    if (i == n || ratio == 0) {
+      if (!CountPoints(
+              cloud.points(), origin, geometry[l], budget, &counts[l], error)) {
+        return false;
       }
-      size_t alive = counts[l].Bytes() + counts[l].index_bytes;
-      if (i < n) alive += counts[l + 1].Bytes();
-      counting_peak = std::max(counting_peak, alive);
-      // Keep only what the next layer needs.
-      if (i < n) counts[l + 1].keys = std::vector<int64_t>();
+    } else {
+      counts[l] = Aggregate(counts[l + 1], geometry[l + 1], geometry[l], ratio);
     }
-    estimate->counting_bytes = counting_peak;
+    size_t alive = counts[l].Bytes() + counts[l].index_bytes;
+    if (i < n) alive += counts[l + 1].Bytes();
+    counting_peak = std::max(counting_peak, alive);
+    // Keep only what the next layer needs.
+    if (i < n) counts[l + 1].keys = std::vector<int64_t>();
   }
+  estimate->counting_bytes = counting_peak;
   for (int i = 1; i <= n; ++i) {
     LayerMemoryEstimate& layer = estimate->layers[static_cast<size_t>(i - 1)];
     const std::vector<int32_t>& c = counts[static_cast<size_t>(i - 1)].counts;
@@ -327,15 +284,21 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
                   layer.kept_cells * (sizeof(NdtCell) + sizeof(int64_t)) +
                   CellIndex::EstimateBytes(layer.grid_cells, layer.kept_cells);
   }
+  return true;
+}
 
-  // 3. The build, phase by phase (layered_grid.cc), finest layer first.
+// 3. The build's peak, phase by phase (layered_grid.cc), finest layer first.
+size_t BuildPeakBytes(const MapMemoryEstimate& estimate,
+                      size_t num_points,
+                      int ratio) {
+  const int n = static_cast<int>(estimate.layers.size());
   size_t finished =
       static_cast<size_t>(n) * (sizeof(NdtLayer) + sizeof(LayerInfo));
   size_t peak = 0;
   size_t raw_bytes = 0;  // The raw layer (keys, moments) carried over.
   for (int i = n; i >= 1; --i) {
     const LayerMemoryEstimate& layer =
-        estimate->layers[static_cast<size_t>(i - 1)];
+        estimate.layers[static_cast<size_t>(i - 1)];
     const size_t r = layer.touched_cells;
     size_t new_raw = 0;
     if (i == n || ratio == 0) {  // BinPoints, while the old raw is alive.
@@ -361,12 +324,82 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
                         IndexPeakBytes(layer.grid_cells, k));
     finished += layer.bytes;
   }
+  return peak;
+}
+
+}  // namespace
+
+std::string FormatBytes(double bytes) {
+  char text[64];
+  if (bytes >= 1e9) {
+    std::snprintf(text, sizeof(text), "%.2f GB", bytes / 1e9);
+  } else if (bytes >= 1e6) {
+    std::snprintf(text, sizeof(text), "%.1f MB", bytes / 1e6);
+  } else if (bytes >= 1e3) {
+    std::snprintf(text, sizeof(text), "%.1f kB", bytes / 1e3);
+  } else {
+    std::snprintf(text, sizeof(text), "%.0f B", bytes);
+  }
+  return text;
+}
+
+bool EstimateMapMemory(const LayeredGridOptions& options,
+                       const PointCloud& cloud,
+                       size_t max_total_bytes,
+                       MapMemoryEstimate* estimate,
+                       std::string* error) {
+  CHECK(estimate != nullptr);
+  CHECK(error != nullptr);
+  *estimate = MapMemoryEstimate();
+  if (!options.IsValid(error)) return false;
+  Eigen::AlignedBox3d bounds;
+  if (!CheckCloud(cloud, &bounds, error)) return false;
+  std::vector<Geometry> geometry;
+  int ratio = 0;
+  if (!LayerGeometries(options, bounds.sizes(), &geometry, &ratio, error)) {
+    return false;
+  }
+  const int n = static_cast<int>(geometry.size());
+  estimate->cloud_bytes = cloud.points().capacity() * sizeof(Eigen::Vector3d);
+  estimate->layers.resize(static_cast<size_t>(n));
+  for (int i = 1; i <= n; ++i) {
+    LayerMemoryEstimate& layer = estimate->layers[static_cast<size_t>(i - 1)];
+    const Geometry& g = geometry[static_cast<size_t>(i - 1)];
+    layer.layer = i;
+    layer.cell_size_m = g.cell_size;
+    layer.dims = g.dims;
+    layer.grid_cells = g.grid_cells();
+    layer.dense_index = g.grid_cells() <= CellIndex::kMaxDenseCells;
+  }
+  const size_t limit = max_total_bytes;
+  const size_t budget = limit > estimate->cloud_bytes
+                            ? limit - estimate->cloud_bytes
+                            : (limit > 0 ? 1 : 0);
+  estimate->build_peak_bytes = GeometryPeakBytes(*estimate, cloud.size());
+  if (limit > 0 && estimate->total_bytes() > limit) {
+    *error = NeedsMessage("the map's geometry alone",
+                          estimate->cloud_bytes,
+                          estimate->build_peak_bytes,
+                          limit);
+    return false;
+  }
+  if (!CountLayerCells(options,
+                       cloud,
+                       bounds.min(),
+                       geometry,
+                       ratio,
+                       budget,
+                       estimate,
+                       error)) {
+    return false;
+  }
   estimate->map_bytes =
       sizeof(LayeredGrid) + static_cast<size_t>(n) * sizeof(LayerInfo);
   for (const LayerMemoryEstimate& layer : estimate->layers) {
     estimate->map_bytes += layer.bytes;
   }
-  estimate->build_peak_bytes = std::max(peak, estimate->map_bytes);
+  estimate->build_peak_bytes = std::max(
+      BuildPeakBytes(*estimate, cloud.size(), ratio), estimate->map_bytes);
   estimate->complete = true;
   if (limit > 0 && estimate->total_bytes() > limit) {
     *error = NeedsMessage("the map of " + std::to_string(n) + " layers",

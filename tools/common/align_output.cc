@@ -1,7 +1,9 @@
 #include "tools/common/align_output.h"
 
 #include <cstdio>
+#include <iostream>
 
+#include "mlndt/common/pose.h"
 #include "tools/common/verdict_flags.h"
 
 namespace mlndt {
@@ -48,6 +50,53 @@ Json AlignResultJson(const std::string& reference,
   }
   json["memory"] = {{"peak_resident_bytes", peak_bytes}};
   return json;
+}
+
+void PrintAlignResult(const std::string& reference_path,
+                      size_t reference_points,
+                      const std::string& input_path,
+                      size_t input_points,
+                      const RegistrationSummary& summary,
+                      double peak_bytes,
+                      bool trace,
+                      const std::string& expected_path,
+                      const Isometry3d& expected,
+                      double* translation_error_m,
+                      double* rotation_error_deg) {
+  std::cout << "reference: " << reference_path << " (" << reference_points
+            << " points)\n"
+            << "input:     " << input_path << " (" << input_points
+            << " points)\n"
+            << summary.FullReport();
+  std::printf(
+      "  peak memory:    %.1f MB resident (the process, clouds included)\n",
+      peak_bytes / 1e6);
+  if (trace) PrintTrace(summary);
+  if (!expected_path.empty()) {
+    *translation_error_m =
+        TranslationErrorM(expected, summary.reference_from_input);
+    *rotation_error_deg =
+        RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg;
+    std::printf("  vs expected:    %.4f m, %.4f deg (%s)\n",
+                *translation_error_m,
+                *rotation_error_deg,
+                expected_path.c_str());
+  }
+  PrintPoseMatrix(summary);
+}
+
+std::string UnacceptedResultMessage(const RegistrationSummary& summary,
+                                    const std::string& output_cloud) {
+  const bool failed = summary.termination_type == TerminationType::FAILURE;
+  const std::string cloud =
+      output_cloud.empty()
+          ? ""
+          : "; --output_cloud=" + output_cloud + " not written";
+  const std::string accept = failed ? "" : " (--accept_unverified accepts it)";
+  const std::string what = failed ? ": the registration failed: "
+                                  : ": the pose is not to be trusted: ";
+  return TerminationTypeToString(summary.termination_type) + what +
+         summary.message + cloud + accept;
 }
 
 }  // namespace tools

@@ -29,5 +29,26 @@ Json AlignResultJson(const std::string& reference,
                      double translation_error_m,
                      double rotation_error_deg);
 
+// The clouds, the summary's report, the peak memory, with `trace` the
+// per-iteration table, with an `expected_path` the error against
+// `expected` (*translation_error_m, *rotation_error_deg; left as they are
+// without), and the 4x4 pose.
+void PrintAlignResult(const std::string& reference_path,
+                      size_t reference_points,
+                      const std::string& input_path,
+                      size_t input_points,
+                      const RegistrationSummary& summary,
+                      double peak_bytes,
+                      bool trace,
+                      const std::string& expected_path,
+                      const Isometry3d& expected,
+                      double* translation_error_m,
+                      double* rotation_error_deg);
+
+// Why a result that is not accepted (AcceptedResult) is refused, naming
+// the --output_cloud left unwritten.
+std::string UnacceptedResultMessage(const RegistrationSummary& summary,
+                                    const std::string& output_cloud);
+
 }  // namespace tools
 }  // namespace mlndt

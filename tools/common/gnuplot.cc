@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -117,6 +118,36 @@ std::string GnuplotQuote(const std::string& text) {
     if (c == '\'') out += '\'';
   }
   return out + "'";
+}
+
+bool GnuplotReadyForPlots(const std::string& tool,
+                          bool plots,
+                          const std::string& gnuplot,
+                          const std::string& consequence) {
+  if (!plots || GnuplotAvailable(gnuplot)) return true;
+  std::cerr << tool << ": gnuplot ('" << gnuplot
+            << "') not found: " << consequence << "\n";
+  return false;
+}
+
+bool MakePlotDataDir(const std::string& dir,
+                     std::string* data_dir,
+                     std::string* error) {
+  *data_dir = dir + "/plot_data";
+  std::error_code ec;
+  std::filesystem::create_directories(*data_dir, ec);
+  if (ec) {
+    *error = *data_dir + ": " + ec.message();
+    return false;
+  }
+  return true;
+}
+
+std::string PlotSkippedMessage(const std::string& gnuplot,
+                               const std::string& what) {
+  return what + " skipped: gnuplot ('" + gnuplot +
+         "') not found; the other outputs are written. Install "
+         "gnuplot-nox or pass --plots=false";
 }
 
 bool GnuplotAvailable(const std::string& gnuplot) {

@@ -27,6 +27,26 @@ std::string GnuplotQuote(const std::string& text);
 // name looked up on PATH).
 bool GnuplotAvailable(const std::string& gnuplot);
 
+// With `plots`, true when gnuplot runs; else prints "<tool>: gnuplot
+// ('<gnuplot>') not found: <consequence>" on stderr and returns false.
+// Without `plots`, true.
+bool GnuplotReadyForPlots(const std::string& tool,
+                          bool plots,
+                          const std::string& gnuplot,
+                          const std::string& consequence);
+
+// The message of a tool that asked for plots without gnuplot: "<what>
+// skipped: gnuplot ('<gnuplot>') not found; the other outputs are written.
+// Install gnuplot-nox or pass --plots=false".
+std::string PlotSkippedMessage(const std::string& gnuplot,
+                               const std::string& what = "plot");
+
+// Creates `dir`/plot_data (the data and scripts of a tool's figures) and
+// sets *data_dir to it; false with *error naming it when it cannot be made.
+bool MakePlotDataDir(const std::string& dir,
+                     std::string* data_dir,
+                     std::string* error);
+
 // The first lines of every script: a PNG terminal (pngcairo when this
 // gnuplot has it, else libgd's png) of the given size in pixels.
 std::string GnuplotPngHeader(int width, int height);

@@ -8,8 +8,10 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/rigid_transform.h"
+#include "tools/common/flag_utils.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
+#include "tools/common/pose_flags.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {
@@ -149,6 +151,150 @@ bool ParseInitialPose(const std::string& guess,
     return RowMajorToRigidTransform(v, "--initial_matrix", pose, error);
   }
   return true;
+}
+
+bool InitialPoseFromFlags(const std::string& guess,
+                          const std::string& matrix,
+                          const std::string& poses_path,
+                          const std::string& poses_format,
+                          const std::string& calib,
+                          Isometry3d* pose,
+                          std::string* error) {
+  bool given = false;
+  if (!ParseInitialPose(guess, matrix, pose, &given, error)) return false;
+  if (poses_path.empty()) return true;
+  bool detect = true;
+  TrajectoryFormat format = TrajectoryFormat::KITTI;
+  std::vector<Isometry3d> poses;
+  if (!ParseTrajectoryFormatFlag(
+          "initial_poses_format", poses_format, &detect, &format, error) ||
+      !ReadPoseFile(poses_path, detect, format, calib, &poses, error)) {
+    *error = "--initial_poses: " + *error;
+    return false;
+  }
+  *pose = poses.front();
+  return true;
+}
+
+bool ScanInputFromScanListFlags(const std::string& scans_dir,
+                                const std::string& scan_list,
+                                const std::vector<std::string>& other_inputs,
+                                size_t max_scans,
+                                ScanInput* input,
+                                std::string* error) {
+  const auto list_folder = [&](std::vector<std::string>* paths,
+                               std::string* list_error) {
+    return ScanPathsFromFlags(
+        scans_dir, scan_list, other_inputs, 0, paths, list_error);
+  };
+  return ScanInputFromFlags(!scans_dir.empty() || !scan_list.empty(),
+                            list_folder,
+                            max_scans,
+                            input,
+                            error);
+}
+
+bool MapScansFromFlags(const std::string& scans_dir,
+                       const std::string& scan_list,
+                       const std::string& poses_path,
+                       const std::string& poses_format,
+                       int max_scans,
+                       ScanInput* input,
+                       std::vector<Isometry3d>* poses,
+                       std::string* error) {
+  bool detect = true;
+  TrajectoryFormat format = TrajectoryFormat::KITTI;
+  if (!ParseTrajectoryFormatFlag(
+          "poses_format", poses_format, &detect, &format, error) ||
+      !ScanInputFromScanListFlags(scans_dir,
+                                  scan_list,
+                                  {poses_path, FLAGS_calib},
+                                  static_cast<size_t>(max_scans),
+                                  input,
+                                  error)) {
+    return false;
+  }
+  if (!ReadPoseFile(poses_path, detect, format, FLAGS_calib, poses, error)) {
+    *error = "--poses: " + *error;
+    return false;
+  }
+  // Pose k belongs to scan k: a count that differs (more poses than
+  // scans, unless --max_scans cut the scans) means a wrong file or folder.
+  const size_t scans = input->size();
+  if (poses->size() < scans || (poses->size() > scans && max_scans == 0)) {
+    *error = "--poses=" + poses_path + " has " + std::to_string(poses->size()) +
+             " poses for " + std::to_string(scans) +
+             " scans (pose k belongs to scan k; use --max_scans to "
+             "take the first scans of a longer run)";
+    return false;
+  }
+  return true;
+}
+
+bool RefuseScanFlagsWithCloud(std::string* error) {
+  return RefuseGivenFlags(
+      {"poses",
+       "poses_format",
+       "calib",
+       "poses_are_camera",
+       "max_scans",
+       "min_range",
+       "max_range",
+       "saturated_range_fraction"},
+      "does not apply to --cloud (one cloud in the world frame, no "
+      "sensor origin)",
+      error);
+}
+
+bool CheckMapSourceFlags(bool from_scans,
+                         const std::string& cloud,
+                         const std::string& poses_path,
+                         std::string* error) {
+  if (!from_scans && cloud.empty()) {
+    *error =
+        "give --scans=DIR (or --scan_list=FILE, or --bag=FILE --topic=NAME) "
+        "with --poses, or --cloud";
+    return false;
+  }
+  if (!FLAGS_times.empty()) {
+    *error = "--times does not apply to mlndt_map (a map has no time)";
+    return false;
+  }
+  if (from_scans && !cloud.empty()) {
+    *error = "give --cloud or --scans/--scan_list/--bag, not both";
+    return false;
+  }
+  if (!cloud.empty() && !RefuseScanFlagsWithCloud(error)) {
+    return false;
+  }
+  if (from_scans && poses_path.empty()) {
+    *error =
+        "--scans and --scan_list need --poses (world_from_scan of every "
+        "scan)";
+    return false;
+  }
+  return CheckCameraPoseFlags("--poses", !poses_path.empty(), error);
+}
+
+bool CheckInitialPoseFlags(const std::string& guess,
+                           const std::string& matrix,
+                           const std::string& poses_path,
+                           std::string* error) {
+  if (!guess.empty() + !matrix.empty() + !poses_path.empty() > 1) {
+    *error =
+        "give one of --initial_guess, --initial_matrix and --initial_poses";
+    return false;
+  }
+  return CheckCameraPoseFlags("--initial_poses", !poses_path.empty(), error);
+}
+
+bool CheckMapFile(const std::string& path, std::string* error) {
+  if (std::filesystem::is_regular_file(path)) return true;
+  *error = "--map=" + path +
+           (std::filesystem::is_directory(path)
+                ? ": it is a directory (give the map file mlndt_map wrote)"
+                : ": no such file");
+  return false;
 }
 
 }  // namespace tools

@@ -7,7 +7,9 @@
 #include "lab/eval/trajectory_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/odometry/run_odometry.h"
 #include "tools/common/gnuplot.h"
+#include "tools/common/progress.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {
@@ -216,6 +218,51 @@ bool WriteOdometryPlot(const std::string& gnuplot,
   script += "\n";
   return RunGnuplot(
       gnuplot, data_dir + "/trajectory_xy.gp", script, {png}, error);
+}
+
+std::string OdometryProgressDetail(const ScanInput& input,
+                                   const OdometryResult& r) {
+  char detail[200];
+  std::snprintf(detail,
+                sizeof(detail),
+                "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
+                input.name(r.index).c_str(),
+                TerminationTypeToString(r.termination),
+                r.fallback ? " (prediction used)" : "",
+                r.start_layer,
+                r.uncertainty.translation_m,
+                r.uncertainty.rotation_deg,
+                r.total_time_s * 1e3);
+  return detail;
+}
+
+bool RunOdometryWithProgress(const OdometryOptions& options,
+                             ScanInput* input,
+                             std::vector<OdometryResult>* results,
+                             OdometrySummary* summary,
+                             std::string* error) {
+  Progress progress("mlndt_odometry", input->size());
+  const OdometryScanLoader load = [&](size_t i,
+                                      PointCloud* cloud,
+                                      std::vector<double>* times,
+                                      double* stamp_s,
+                                      std::string* e) {
+    if (!input->Load(i, cloud, times, e)) return false;
+    *stamp_s = input->StampOf(i);
+    return true;
+  };
+  const bool ok = RunOdometry(
+      options,
+      input->size(),
+      load,
+      [&](const OdometryResult& r) {
+        progress.Update(r.index + 1, OdometryProgressDetail(*input, r));
+      },
+      results,
+      summary,
+      error);
+  progress.Finish();
+  return ok;
 }
 
 }  // namespace tools

@@ -57,5 +57,18 @@ bool WriteOdometryPlot(const std::string& gnuplot,
                        const std::vector<Isometry3d>& reference,
                        std::string* error);
 
+// The progress line's detail of a scan: name, verdict, start layer,
+// uncertainty, time.
+std::string OdometryProgressDetail(const ScanInput& input,
+                                   const OdometryResult& r);
+
+// RunOdometry over the scans of `input` (stamped by it), with a progress
+// line.
+bool RunOdometryWithProgress(const OdometryOptions& options,
+                             ScanInput* input,
+                             std::vector<OdometryResult>* results,
+                             OdometrySummary* summary,
+                             std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

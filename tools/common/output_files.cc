@@ -57,5 +57,17 @@ bool CheckOutputFile(const std::string& flag,
   return CheckNotAnInput(flag, path, error);
 }
 
+bool CheckOutputFolderExists(const std::string& flag,
+                             const std::string& path,
+                             std::string* error) {
+  const std::filesystem::path folder =
+      std::filesystem::absolute(path).parent_path();
+  std::error_code ec;
+  if (std::filesystem::is_directory(folder, ec)) return true;
+  *error = "--" + flag + "=" + path + ": folder " + folder.string() +
+           " does not exist";
+  return false;
+}
+
 }  // namespace tools
 }  // namespace mlndt

@@ -29,5 +29,11 @@ bool CheckOutputFile(const std::string& flag,
                      const std::string& path,
                      std::string* error);
 
+// The folder of --<flag>=`path` exists; else *error "--<flag>=<path>:
+// folder <folder> does not exist".
+bool CheckOutputFolderExists(const std::string& flag,
+                             const std::string& path,
+                             std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

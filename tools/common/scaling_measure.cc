@@ -8,6 +8,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/sampling/point_sampler.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/progress.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {
@@ -114,6 +115,34 @@ bool MeasureSize(const ScalingSettings& settings,
       summary.IsSolutionUsable() &&
       result->translation_error_m <= settings.max_translation_error_m &&
       result->rotation_error_deg <= settings.max_rotation_error_deg;
+  return true;
+}
+
+bool MeasureSizes(const ScalingSettings& settings,
+                  const MatcherOptions& options,
+                  const PointCloud& merged,
+                  const std::vector<size_t>& sizes,
+                  const Isometry3d& reference_from_input,
+                  std::vector<SizeResult>* results,
+                  std::string* error) {
+  Progress progress("mlndt_scaling", sizes.size());
+  results->assign(sizes.size(), SizeResult());
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    if (!MeasureSize(settings,
+                     options,
+                     merged,
+                     sizes[k],
+                     reference_from_input,
+                     &(*results)[k],
+                     error)) {
+      progress.Finish();
+      return false;
+    }
+    progress.Update(k + 1,
+                    "N = " + std::to_string(sizes[k]) + ", total " +
+                        Fmt((*results)[k].total_ms, 1) + " ms");
+  }
+  progress.Finish();
   return true;
 }
 

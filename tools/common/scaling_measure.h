@@ -55,5 +55,14 @@ bool MeasureSize(const ScalingSettings& settings,
                  SizeResult* result,
                  std::string* error);
 
+// MeasureSize of every size in turn, with a progress line.
+bool MeasureSizes(const ScalingSettings& settings,
+                  const MatcherOptions& options,
+                  const PointCloud& merged,
+                  const std::vector<size_t>& sizes,
+                  const Isometry3d& reference_from_input,
+                  std::vector<SizeResult>* results,
+                  std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

@@ -1,6 +1,8 @@
 #include "tools/common/scaling_report.h"
 
 #include <cmath>
+#include <cstdio>
+#include <iostream>
 #include <sstream>
 
 #include "mlndt/common/atomic_file.h"
@@ -109,6 +111,95 @@ bool WriteScalingPlot(const std::string& gnuplot,
                     script.str(),
                     {dir + "/scaling.png"},
                     error);
+}
+
+void PrintScalingTable(const std::vector<SizeResult>& results) {
+  std::printf(
+      "| points | map ms | sampling ms | solve ms | total ms | sampled | "
+      "finest-layer "
+      "cells | layers | iterations | t error cm | r error deg | solve |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+  for (const SizeResult& r : results) {
+    std::printf(
+        "| %zu | %s | %s | %s | %s | %zu | %zu | %d | %d | %s | %s | %s |\n",
+        r.points,
+        Fmt(r.map_ms, 1).c_str(),
+        Fmt(r.sampling_ms, 1).c_str(),
+        Fmt(r.solve_ms, 1).c_str(),
+        Fmt(r.total_ms, 1).c_str(),
+        r.sampled_points,
+        r.finest_cells,
+        r.num_layers,
+        r.iterations,
+        Fmt(r.translation_error_m * 100.0, 2).c_str(),
+        Fmt(r.rotation_error_deg, 3).c_str(),
+        r.ok ? "ok"
+             : (r.termination == TerminationType::FAILURE ? "FAILED"
+                                                          : "LARGE ERROR"));
+  }
+}
+
+std::vector<double> PrintScalingSlopes(const std::vector<size_t>& sizes,
+                                       const std::vector<SizeResult>& results) {
+  std::printf(
+      "\nlog-log slope over N = %zu..%zu (time ∝ N^slope; 1 = linear):\n",
+      sizes.front(),
+      sizes.back());
+  std::vector<double> x;
+  for (size_t n : sizes) x.push_back(static_cast<double>(n));
+  std::vector<double> slopes;
+  for (const auto& [name, values] : Series(results)) {
+    slopes.push_back(LogLogSlope(x, values));
+    std::printf(
+        "  %-19s %s\n", (name + ":").c_str(), Fmt(slopes.back(), 2).c_str());
+  }
+  // The solve's cost per residual: its time against the sampled points.
+  std::vector<double> sampled, solve_ms;
+  for (const SizeResult& r : results) {
+    sampled.push_back(static_cast<double>(r.sampled_points));
+    solve_ms.push_back(r.solve_ms);
+  }
+  std::printf("  solve against sampled points (time ∝ S^slope): %s\n",
+              Fmt(LogLogSlope(sampled, solve_ms), 2).c_str());
+  return slopes;
+}
+
+void PrintBrokenSolves(const std::vector<SizeResult>& results,
+                       double max_translation_error_m,
+                       double max_rotation_error_deg) {
+  for (const SizeResult& r : results) {
+    if (r.ok) continue;
+    std::cerr << "mlndt_scaling: N = " << r.points << ": "
+              << (r.termination == TerminationType::FAILURE
+                      ? "registration FAILED: " + r.message
+                      : "recovered motion off by " +
+                            Fmt(r.translation_error_m * 100.0, 2) + " cm, " +
+                            Fmt(r.rotation_error_deg, 3) + " deg (tolerance " +
+                            Fmt(max_translation_error_m * 100.0, 1) + " cm, " +
+                            Fmt(max_rotation_error_deg, 2) + " deg)")
+              << std::endl;
+  }
+}
+
+std::string ScalingPlotTitle(int repetitions,
+                             Method method,
+                             const std::string& backend,
+                             const std::string& sampling) {
+  return "Registration time against cloud size (median of " +
+         std::to_string(repetitions) + " runs; " + MethodToString(method) +
+         ", " + backend + ", " + sampling + " sampling)";
+}
+
+std::string ScalingRunLine(Method method,
+                           const std::string& backend,
+                           const std::string& sampling,
+                           int threads,
+                           const std::string& motion,
+                           int repetitions) {
+  return std::string(MethodToString(method)) + ", backend " + backend +
+         ", sampling " + sampling + ", threads " + std::to_string(threads) +
+         "; motion " + motion + "; median of " + std::to_string(repetitions) +
+         " runs";
 }
 
 }  // namespace tools

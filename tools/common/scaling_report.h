@@ -37,5 +37,34 @@ bool WriteScalingPlot(const std::string& gnuplot,
                       const std::vector<double>& slopes,
                       std::string* error);
 
+// The markdown table of the sizes on stdout.
+void PrintScalingTable(const std::vector<SizeResult>& results);
+
+// Prints the slope of every series and of the solve against the sampled
+// points; returns the series' slopes.
+std::vector<double> PrintScalingSlopes(const std::vector<size_t>& sizes,
+                                       const std::vector<SizeResult>& results);
+
+// Names on stderr every size whose solve failed or missed the motion by
+// more than the tolerances.
+void PrintBrokenSolves(const std::vector<SizeResult>& results,
+                       double max_translation_error_m,
+                       double max_rotation_error_deg);
+
+// "Registration time against cloud size (median of R runs; METHOD,
+// BACKEND, SAMPLING sampling)".
+std::string ScalingPlotTitle(int repetitions,
+                             Method method,
+                             const std::string& backend,
+                             const std::string& sampling);
+
+// "METHOD, backend B, sampling S, threads T; motion M; median of R runs".
+std::string ScalingRunLine(Method method,
+                           const std::string& backend,
+                           const std::string& sampling,
+                           int threads,
+                           const std::string& motion,
+                           int repetitions);
+
 }  // namespace tools
 }  // namespace mlndt

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "lab/eval/dataset.h"
 #include "lab/eval/scan_times.h"
 #include "lab/eval/trajectory_io.h"
 #include "mlndt/cloud/io.h"
@@ -148,6 +149,19 @@ std::string ScanInput::TumComment() const {
   if (has_stamps()) return "time stamps: " + time_source_;
   return std::string(kTumIndexStampsComment) +
          ": give --times or --bag for real stamps";
+}
+
+bool ScanInputFromScansFlag(const std::string& scans_dir,
+                            const std::vector<std::string>& other_inputs,
+                            size_t max_scans,
+                            ScanInput* input,
+                            std::string* error) {
+  const auto list_folder = [&](std::vector<std::string>* paths,
+                               std::string* list_error) {
+    return ListScanFiles(scans_dir, other_inputs, paths, list_error);
+  };
+  return ScanInputFromFlags(
+      !scans_dir.empty(), list_folder, max_scans, input, error);
 }
 
 }  // namespace tools

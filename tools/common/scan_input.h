@@ -88,5 +88,14 @@ bool ScanInputFromFlags(bool folder_given,
                         ScanInput* input,
                         std::string* error);
 
+// ScanInputFromFlags for a tool whose folder flag is --scans=`scans_dir`:
+// its point-cloud files (ListScanFiles) but `other_inputs` (pose, calib and
+// times files that may lie in the same folder).
+bool ScanInputFromScansFlag(const std::string& scans_dir,
+                            const std::vector<std::string>& other_inputs,
+                            size_t max_scans,
+                            ScanInput* input,
+                            std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

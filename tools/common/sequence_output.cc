@@ -4,9 +4,12 @@
 #include <map>
 #include <sstream>
 
+#include "lab/eval/trajectory_io.h"
 #include "lab/runs/sequence_totals.h"
+#include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
+#include "tools/common/progress.h"
 #include "tools/common/tool_utils.h"
 #include "tools/common/verdict_counts.h"
 
@@ -196,6 +199,145 @@ void PrintSequenceTotals(const SequenceOptions& options,
               verdicts.usable(),
               verdicts.total());
   std::printf("output: %s\n", output_dir.c_str());
+}
+
+std::string SequencePairDetail(const PairResult& r) {
+  char detail[160];
+  int used = std::snprintf(detail,
+                           sizeof(detail),
+                           "pair %zu->%zu %s, %d it, %.0f ms",
+                           r.reference,
+                           r.input,
+                           TerminationTypeToString(r.termination),
+                           r.iterations,
+                           r.times.total_ms);
+  if (r.has_truth && used > 0 && used < static_cast<int>(sizeof(detail))) {
+    std::snprintf(detail + used,
+                  sizeof(detail) - used,
+                  ", error %.1f cm %.2f deg",
+                  r.error.translation_m * 100.0,
+                  r.error.rotation_rad * kRadToDeg);
+  }
+  return detail;
+}
+
+// The schema header and the run's settings, first in summary.json.
+bool RunSequenceWithProgress(const SequenceOptions& options,
+                             ScanStore* store,
+                             const std::vector<Isometry3d>& truth,
+                             const std::vector<Isometry3d>& odometry,
+                             std::vector<PairResult>* results,
+                             std::string* error) {
+  Progress progress("mlndt_sequence", store->size() - options.step);
+  const auto on_pair = [&](const PairResult& r, size_t done, size_t) {
+    progress.Update(done, SequencePairDetail(r));
+  };
+  const bool ok = RunSequence(options,
+                              store,
+                              truth.empty() ? nullptr : &truth,
+                              odometry.empty() ? nullptr : &odometry,
+                              on_pair,
+                              results,
+                              error);
+  progress.Finish();
+  return ok;
+}
+
+Json SequenceSummaryHeader(const SequenceOptions& options,
+                           const SequenceSource& source,
+                           size_t num_scans) {
+  const MatcherOptions& registration = options.registration;
+  Json header = ToolJson("mlndt_sequence");
+  header["scans_dir"] = source.scans_dir;
+  if (!source.bag.empty()) {
+    header["bag"] = source.bag;
+    header["topic"] = source.topic;
+  }
+  header["scans"] = num_scans;
+  header["step"] = options.step;
+  header["init"] = InitSpecToString(options.init);
+  header["method"] = MethodToString(registration.method);
+  header["backend"] = BackendTypeToString(registration.mlndt.backend.type);
+  header["sampling"] = SamplingMethodToString(
+      registration.method == Method::NDT ? registration.ndt.sampling.method
+                                         : registration.mlndt.sampling.method);
+  header["adaptive_start_layer"] = options.adaptive.enabled;
+  if (options.adaptive.enabled) {
+    Json thresholds = Json::array();
+    for (const double v : options.adaptive.fail_rate_thresholds) {
+      thresholds.push_back(Number(v));
+    }
+    header["adaptive"] = {
+        {"max_translation_m", Number(options.adaptive.max_translation_m)},
+        {"max_rotation_deg", Number(options.adaptive.max_rotation_deg)},
+        {"fail_rate_thresholds", thresholds}};
+  } else {
+    header["start_layer_flag"] = source.start_layer_flag;
+  }
+  return header;
+}
+
+bool WriteTumTrajectory(const std::string& path,
+                        const std::vector<Isometry3d>& poses,
+                        size_t step,
+                        const ScanInput& input,
+                        std::string* error) {
+  Trajectory trajectory;
+  for (size_t k = 0; k < poses.size(); ++k) {
+    trajectory.Add(input.StampOf(k * step), poses[k]);
+  }
+  return WriteTrajectory(
+      path, TrajectoryFormat::TUM, trajectory, input.TumComment(), error);
+}
+
+bool WriteSequenceFiles(const std::string& dir,
+                        const SequenceOptions& options,
+                        const Json& header,
+                        const ScanInput& input,
+                        const ScanStore& store,
+                        const std::vector<PairResult>& results,
+                        bool has_truth,
+                        std::string* error) {
+  const std::string out = dir + "/";
+  if (!WritePairsCsv(out + "pairs.csv", store, results, error) ||
+      !WriteTraceCsv(out + "trace.csv", results, error)) {
+    return false;
+  }
+  if (!WriteJsonFile(
+          out + "summary.json", SummaryJson(header, results), error)) {
+    return false;
+  }
+  const std::vector<Isometry3d> chained =
+      ChainTrajectory(results, options.step, false);
+  if (!WriteKittiPoses(out + "trajectory.txt", chained, error) ||
+      !WriteTumTrajectory(
+          out + "trajectory_tum.txt", chained, options.step, input, error)) {
+    return false;
+  }
+  return !has_truth ||
+         WriteKittiPoses(out + "gt_trajectory.txt",
+                         ChainTrajectory(results, options.step, true),
+                         error);
+}
+
+std::string UnusablePairsMessage(const SequenceOptions& options,
+                                 const std::vector<PairResult>& results) {
+  VerdictCounts verdicts;
+  std::string pairs;
+  for (const PairResult& r : results) {
+    verdicts.Add(r.termination);
+    if (!IsUsableTermination(r.termination) && pairs.size() < 200) {
+      pairs += (pairs.empty() ? "" : ", ") + std::to_string(r.reference) +
+               "->" + std::to_string(r.input) + " " +
+               TerminationTypeToString(r.termination);
+    }
+  }
+  if (verdicts.unusable() == 0) return "";
+  return std::to_string(verdicts.unusable()) + " of " +
+         std::to_string(verdicts.total()) + " pairs have no usable result (" +
+         pairs + "): trajectory.txt chains their --init=" +
+         InitSpecToString(options.init) +
+         " guess instead (estimate_source 'guess' in pairs.csv)";
 }
 
 }  // namespace tools

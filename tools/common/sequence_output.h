@@ -13,6 +13,7 @@
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
 #include "tools/common/json_output.h"
+#include "tools/common/scan_input.h"
 
 namespace mlndt {
 namespace tools {
@@ -32,6 +33,56 @@ bool WriteTraceCsv(const std::string& path,
 // summary.json (docs/json_schema.md, "mlndt_sequence"): `header` (the
 // schema header and the run's settings) followed by the run's totals.
 Json SummaryJson(const Json& header, const std::vector<PairResult>& results);
+
+// Where the scans of a run come from, for summary.json (the flags of the
+// same names).
+struct SequenceSource {
+  std::string scans_dir;
+  std::string bag;
+  std::string topic;
+  int start_layer_flag = 0;
+};
+
+// One progress line per pair: pair, verdict, iterations, time, error.
+std::string SequencePairDetail(const PairResult& r);
+
+// RunSequence on `store` (truth and odometry may be empty) with a progress
+// line of the pairs.
+bool RunSequenceWithProgress(const SequenceOptions& options,
+                             ScanStore* store,
+                             const std::vector<Isometry3d>& truth,
+                             const std::vector<Isometry3d>& odometry,
+                             std::vector<PairResult>* results,
+                             std::string* error);
+
+// The schema header and the run's settings, first in summary.json.
+Json SequenceSummaryHeader(const SequenceOptions& options,
+                           const SequenceSource& source,
+                           size_t num_scans);
+
+// The chained trajectory in TUM format, stamped with the scans' times.
+bool WriteTumTrajectory(const std::string& path,
+                        const std::vector<Isometry3d>& poses,
+                        size_t step,
+                        const ScanInput& input,
+                        std::string* error);
+
+// pairs.csv, trace.csv, summary.json (`header` first) and the trajectories
+// (trajectory.txt, trajectory_tum.txt, with truth gt_trajectory.txt) into
+// `dir`.
+bool WriteSequenceFiles(const std::string& dir,
+                        const SequenceOptions& options,
+                        const Json& header,
+                        const ScanInput& input,
+                        const ScanStore& store,
+                        const std::vector<PairResult>& results,
+                        bool has_truth,
+                        std::string* error);
+
+// The failure message when pairs have no usable result (the first of them
+// listed), else "".
+std::string UnusablePairsMessage(const SequenceOptions& options,
+                                 const std::vector<PairResult>& results);
 
 // The run's totals on stdout (pairs, success rates, errors, times) and the
 // output folder.

@@ -1,6 +1,7 @@
 #include "tools/common/sequence_plots.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <system_error>
@@ -196,13 +197,8 @@ bool WriteSequencePlots(const std::string& gnuplot,
                         int trace_pairs,
                         std::vector<std::string>* pngs,
                         std::string* error) {
-  const std::string data_dir = dir + "/plot_data";
-  std::error_code ec;
-  std::filesystem::create_directories(data_dir, ec);
-  if (ec) {
-    *error = data_dir + ": " + ec.message();
-    return false;
-  }
+  std::string data_dir;
+  if (!MakePlotDataDir(dir, &data_dir, error)) return false;
   const bool has_truth = !results.empty() && results.front().has_truth;
   std::ostringstream script;
   script << GnuplotPngHeader(1000, 560);
@@ -220,6 +216,25 @@ bool WriteSequencePlots(const std::string& gnuplot,
   for (const std::string& png : *pngs) figures.push_back(dir + "/" + png);
   return RunGnuplot(
       gnuplot, data_dir + "/plots.gp", script.str(), figures, error);
+}
+
+bool WriteSequencePlotsAndList(const std::string& gnuplot,
+                               const std::string& dir,
+                               const std::vector<PairResult>& results,
+                               size_t step,
+                               int trace_pairs,
+                               std::string* error) {
+  std::vector<std::string> pngs;
+  if (!WriteSequencePlots(
+          gnuplot, dir, results, step, trace_pairs, &pngs, error)) {
+    return false;
+  }
+  std::printf("plots: ");
+  for (size_t k = 0; k < pngs.size(); ++k) {
+    std::printf("%s%s", k ? ", " : "", pngs[k].c_str());
+  }
+  std::printf("\n");
+  return true;
 }
 
 }  // namespace tools

@@ -26,5 +26,13 @@ bool WriteSequencePlots(const std::string& gnuplot,
                         std::vector<std::string>* pngs,
                         std::string* error);
 
+// WriteSequencePlots, then "plots: a.png, b.png, ..." on stdout.
+bool WriteSequencePlotsAndList(const std::string& gnuplot,
+                               const std::string& dir,
+                               const std::vector<PairResult>& results,
+                               size_t step,
+                               int trace_pairs,
+                               std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

@@ -16,9 +16,9 @@ namespace tools {
 
 // Parses "DIR[:tol_m:tol_deg],..." (the default tolerance is
 // SuccessCriterion's). A relative DIR is taken inside `data_dir` when that
-// is not empty. The data set's name is the folder's name (the last part
-// of DIR); two with the same name are refused. False with *error naming
-// the item (and the flag).
+// is not empty (a `data_dir` that is not a folder is refused). The data
+// set's name is the folder's name (the last part of DIR); two with the same
+// name are refused. False with *error naming the item (and the flag).
 bool ParseSuiteDatasets(const std::string& text,
                         const std::string& data_dir,
                         std::vector<SuiteDataset>* datasets,
@@ -41,6 +41,49 @@ bool LoadSuiteDataset(const SuiteDataset& dataset,
                       const SuitePlanOptions& plan,
                       LoadedSuiteDataset* loaded,
                       std::string* error);
+
+// `plan` runs the start `kind`.
+bool HasStart(const SuitePlanOptions& plan, StartKind kind);
+
+// Flags that only apply with a start kind, refused without it; and
+// --initial_uncertainty, refused where the start's own (the perturbed
+// bound, `prior_uncertainty` = --prior_uncertainty) would override it.
+bool RefuseUnusedStartFlags(const SuitePlanOptions& plan,
+                            const std::string& prior_uncertainty,
+                            std::string* error);
+
+// A "translation_m,rotation_deg" pair flag --<flag>=`text`.
+bool ParseBound(const char* flag,
+                const std::string& text,
+                double* translation_m,
+                double* rotation_deg,
+                std::string* error);
+
+// LoadSuiteDataset of every data set, in order.
+bool LoadSuiteDatasets(const std::vector<SuiteDataset>& datasets,
+                       const SuitePlanOptions& plan,
+                       std::vector<LoadedSuiteDataset>* loaded,
+                       std::string* error);
+
+// The plan's numbers in range: the perturbed and prior bounds within
+// [0, 1e4] m and [0, 180] deg, perturb_count >= 1, no step 0, and
+// --max_pairs_per_set >= 0; *error names the flag.
+bool CheckSuitePlanBounds(const SuitePlanOptions& plan,
+                          int max_pairs_per_set,
+                          std::string* error);
+
+// --reach_share in (0, 1]; --plot needs --output_dir and a gnuplot that
+// runs; --gnuplot needs --plot.
+bool CheckSuiteOutputFlags(double reach_share,
+                           bool plot,
+                           const std::string& output_dir,
+                           const std::string& gnuplot,
+                           std::string* error);
+
+// --starts=`text`: "identity,prior,..." into start kinds.
+bool ParseStartList(const std::string& text,
+                    std::vector<StartKind>* starts,
+                    std::string* error);
 
 }  // namespace tools
 }  // namespace mlndt

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -298,6 +299,32 @@ std::string FormatDuration(double seconds) {
     std::snprintf(text, sizeof(text), "%lds", s);
   }
   return text;
+}
+
+bool WriteSuiteOutputs(const std::string& dir,
+                       const std::vector<LoadedSuiteDataset>& loaded,
+                       const std::vector<std::vector<SuiteRunResult>>& results,
+                       const SuiteScore& score,
+                       const SuiteRunInfo& info,
+                       bool plot,
+                       const std::string& gnuplot,
+                       const QualityCheckOptions* quality_check,
+                       std::string* error) {
+  if (!WriteSuiteRunsCsv(dir + "/runs.csv", loaded, results, error) ||
+      !WriteJsonFile(
+          dir + "/summary.json", SuiteSummaryJson(score, info), error)) {
+    return false;
+  }
+  std::printf(
+      "\nwritten: %s/runs.csv, %s/summary.json", dir.c_str(), dir.c_str());
+  if (plot) {
+    if (!WriteSuiteQualityPlot(gnuplot, dir, results, quality_check, error)) {
+      return false;
+    }
+    std::printf(", %s/quality.png", dir.c_str());
+  }
+  std::printf("\n");
+  return true;
 }
 
 }  // namespace tools

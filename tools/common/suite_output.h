@@ -52,5 +52,18 @@ bool WriteSuiteQualityPlot(
 // "1m05s" (or "12s", "1h02m") for the progress line; "?" before any run.
 std::string FormatDuration(double seconds);
 
+// runs.csv and summary.json into `dir`, with `plot` quality.png
+// (WriteSuiteQualityPlot; `quality_check` as there), and the line naming
+// them on stdout.
+bool WriteSuiteOutputs(const std::string& dir,
+                       const std::vector<LoadedSuiteDataset>& loaded,
+                       const std::vector<std::vector<SuiteRunResult>>& results,
+                       const SuiteScore& score,
+                       const SuiteRunInfo& info,
+                       bool plot,
+                       const std::string& gnuplot,
+                       const QualityCheckOptions* quality_check,
+                       std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

@@ -69,5 +69,24 @@ bool RunSuiteWithProgress(const MatcherOptions& options,
   return true;
 }
 
+SuiteScore ScoreLoadedSuite(
+    const std::vector<LoadedSuiteDataset>& loaded,
+    const std::vector<std::vector<SuiteRunResult>>& results,
+    const SuitePlanOptions& plan,
+    double reach_share,
+    size_t* runs) {
+  std::vector<std::string> names;
+  std::vector<SuiteSkips> skips;
+  std::vector<SuiteOutcome> outcomes;
+  for (size_t d = 0; d < loaded.size(); ++d) {
+    names.push_back(loaded[d].dataset.name);
+    skips.push_back(loaded[d].skips);
+    for (const SuiteRunResult& r : results[d]) outcomes.push_back(r.outcome);
+  }
+  *runs = outcomes.size();
+  return ScoreSuite(
+      names, plan.starts, plan.offsets, skips, outcomes, reach_share);
+}
+
 }  // namespace tools
 }  // namespace mlndt

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/suite_score.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/suite_runner.h"
 #include "tools/common/suite_inputs.h"
@@ -24,6 +25,14 @@ bool RunSuiteWithProgress(const MatcherOptions& options,
                           const std::vector<LoadedSuiteDataset>& datasets,
                           std::vector<std::vector<SuiteRunResult>>* results,
                           std::string* error);
+
+// ScoreSuite of the runs of every loaded data set; *runs counts them.
+SuiteScore ScoreLoadedSuite(
+    const std::vector<LoadedSuiteDataset>& loaded,
+    const std::vector<std::vector<SuiteRunResult>>& results,
+    const SuitePlanOptions& plan,
+    double reach_share,
+    size_t* runs);
 
 }  // namespace tools
 }  // namespace mlndt

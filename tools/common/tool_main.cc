@@ -27,6 +27,35 @@ const char kExitCodesHelp[] =
     "or misconfiguration (a flag, argument or input refused before any work, "
     "the message names it).";
 
+ToolArguments ParseSubcommand(const std::string& tool,
+                              int argc,
+                              char** argv,
+                              const std::string& name,
+                              int num_args,
+                              const std::string& usage,
+                              const std::string& synopsis) {
+  if (argc <= 1) return ToolArguments::NONE;
+  if (argv[1] == name) {
+    if (argc == num_args + 2) return ToolArguments::SUBCOMMAND;
+    std::cerr << tool << ": usage: " << usage << "\n";
+    return ToolArguments::MISUSE;
+  }
+  std::cerr << tool << ": unexpected argument '" << argv[1]
+            << "' (flags are --name=value; the one subcommand is '" << synopsis
+            << "')\n";
+  return ToolArguments::MISUSE;
+}
+
+int Fail(const std::string& tool, const std::string& message) {
+  std::cerr << tool << ": " << message << std::endl;
+  return kExitFailed;
+}
+
+int Refuse(const std::string& tool, const std::string& message) {
+  std::cerr << tool << ": " << message << std::endl;
+  return kExitUsage;
+}
+
 namespace {
 
 std::set<std::string>& HiddenFlags() {

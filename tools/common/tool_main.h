@@ -19,6 +19,12 @@ constexpr int kExitOk = 0;
 constexpr int kExitFailed = 1;
 constexpr int kExitUsage = 2;
 
+// Print "<tool>: <message>" on stderr and return kExitFailed (the run
+// failed, its result is not to be used) or kExitUsage (a flag, argument or
+// input refused before any work).
+int Fail(const std::string& tool, const std::string& message);
+int Refuse(const std::string& tool, const std::string& message);
+
 // The exit-code paragraph of the usage texts.
 extern const char kExitCodesHelp[];
 
@@ -37,6 +43,24 @@ bool StartTool(const char* usage,
                bool reject_arguments,
                int* argc,
                char*** argv);
+
+// What is left in argv after the flags of a tool with one subcommand.
+enum class ToolArguments {
+  NONE,        // No argument: the tool's main run.
+  SUBCOMMAND,  // argv[1] is `name`, followed by `num_args` arguments.
+  MISUSE,      // Anything else; reported on stderr (exit kExitUsage).
+};
+
+// Reports "<tool>: usage: <usage>" for the subcommand with the wrong number
+// of arguments, and "<tool>: unexpected argument 'x' (flags are
+// --name=value; the one subcommand is '<synopsis>')" for another argument.
+ToolArguments ParseSubcommand(const std::string& tool,
+                              int argc,
+                              char** argv,
+                              const std::string& name,
+                              int num_args,
+                              const std::string& usage,
+                              const std::string& synopsis);
 
 // Shared flags (tools/common/) that the tool refuses: --help does not list
 // them. Call before StartTool.

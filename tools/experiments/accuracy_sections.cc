@@ -382,6 +382,27 @@ std::string Table7Section(const ReportContext& c) {
        ""});
 }
 
+namespace {
+
+// The mean time [ms] and iterations of `key`'s accuracy runs over every
+// data set, into (*pooled)[key] (nothing without runs).
+void PoolTimeAndIterations(
+    const ReportContext& c,
+    const std::string& key,
+    std::map<std::string, std::pair<double, double>>* pooled) {
+  double time = 0, iterations = 0;
+  const auto records = Select(c, "accuracy", "", key);
+  for (const RunRecord* r : records) {
+    time += r->time_ms;
+    iterations += r->iterations;
+  }
+  if (!records.empty()) {
+    (*pooled)[key] = {time / records.size(), iterations / records.size()};
+  }
+}
+
+}  // namespace
+
 std::string Table5Section(const ReportContext& c) {
   const AccuracyKeys k = Keys(c);
   std::string out =
@@ -424,14 +445,7 @@ std::string Table5Section(const ReportContext& c) {
     }
   }
   for (const auto& [key, label] : configs) {
-    double time = 0, iterations = 0;
-    const auto records = Select(c, "accuracy", "", key);
-    for (const RunRecord* r : records) {
-      time += r->time_ms;
-      iterations += r->iterations;
-    }
-    if (!records.empty())
-      pooled[key] = {time / records.size(), iterations / records.size()};
+    PoolTimeAndIterations(c, key, &pooled);
   }
   c.files->Add("csv/table5.csv",
                CsvTable({"source",
@@ -530,6 +544,33 @@ std::string Table8Section(const ReportContext& c) {
   return out;
 }
 
+namespace {
+
+// The gnuplot body of Fig. 17: two clustered bar charts (translation,
+// rotation) of csv/fig17.csv.
+std::string Fig17Script(const std::string& seq) {
+  return "set key autotitle columnheader\n"
+         "set style data histograms\nset style histogram clustered gap 1\n"
+         "set style fill solid 0.8 border -1\nset boxwidth 0.9\n"
+         "set key top left inside\n"
+         "set multiplot layout 1,2 title " +
+         tools::GnuplotQuote("Fig. 17: mean |error|, consecutive pairs of " +
+                             seq) +
+         "\nset title 'translation'\nset ylabel 'mean |error| [cm]'\n"
+         "plot 'csv/fig17.csv' every ::0::2 using 2:xtic(1) title 'prior', '' "
+         "every ::0::2 using 3 title 'NDT', '' every ::0::2 using 4 title "
+         "'ML-NDT paper preset', '' every ::0::2 using 5 title 'ML-NDT "
+         "defaults'\n"
+         "set title 'rotation'\nset ylabel 'mean |error| [deg]'\n"
+         "plot 'csv/fig17.csv' every ::3::5 using 2:xtic(1) title 'prior', '' "
+         "every ::3::5 using 3 title 'NDT', '' every ::3::5 using 4 title "
+         "'ML-NDT paper preset', '' every ::3::5 using 5 title 'ML-NDT "
+         "defaults'\n"
+         "unset multiplot\n";
+}
+
+}  // namespace
+
 std::string Fig17Section(const ReportContext& c) {
   const AccuracyKeys k = Keys(c);
   const std::string seq = SequenceDataset(c);
@@ -573,26 +614,8 @@ std::string Fig17Section(const ReportContext& c) {
     shown.push_back(r);
   }
   out += MarkdownTable(header, shown);
-  const std::string body =
-      "set key autotitle columnheader\n"
-      "set style data histograms\nset style histogram clustered gap 1\n"
-      "set style fill solid 0.8 border -1\nset boxwidth 0.9\n"
-      "set key top left inside\n"
-      "set multiplot layout 1,2 title " +
-      tools::GnuplotQuote("Fig. 17: mean |error|, consecutive pairs of " +
-                          seq) +
-      "\nset title 'translation'\nset ylabel 'mean |error| [cm]'\n"
-      "plot 'csv/fig17.csv' every ::0::2 using 2:xtic(1) title 'prior', '' "
-      "every ::0::2 using 3 title 'NDT', '' every ::0::2 using 4 title "
-      "'ML-NDT paper preset', '' every ::0::2 using 5 title 'ML-NDT "
-      "defaults'\n"
-      "set title 'rotation'\nset ylabel 'mean |error| [deg]'\n"
-      "plot 'csv/fig17.csv' every ::3::5 using 2:xtic(1) title 'prior', '' "
-      "every ::3::5 using 3 title 'NDT', '' every ::3::5 using 4 title "
-      "'ML-NDT paper preset', '' every ::3::5 using 5 title 'ML-NDT "
-      "defaults'\n"
-      "unset multiplot\n";
-  const std::string png = c.files->AddFigure("fig17", 1200, 450, body);
+  const std::string png =
+      c.files->AddFigure("fig17", 1200, 450, Fig17Script(seq));
   out += "![Fig. 17](" + png + ")\n\n";
   // Translation norm of the means, for the sentence.
   auto norm = [&](size_t column) {

@@ -67,19 +67,13 @@ double Reach(const ReportContext& c,
   return any ? reach : NAN;
 }
 
-std::string ReachSection(const ReportContext& c) {
-  const std::vector<Configuration> configs = ReachConfigurations();
-  std::string out =
-      "## Section 5.1: long-range reach, and the ablation paper → "
-      "defaults\n\n"
-      "Each data set's smallest-step pairs, started from the reference "
-      "pushed off along x (forward) or in yaw (the paper's β), with no "
-      "other initialisation. Reach: the largest offset such that it and "
-      "every smaller one have at least " +
-      Fmt(100 * kReachShare, 0) +
-      " % of the runs within the data set's strict tolerance. The paper's "
-      "\"units\" are most likely centimetres (3DTK stores cm): its claim is "
-      "NDT 10 cm / 5°, ML-NDT 25 cm / 15° (\"in some cases\" 45°).\n\n";
+namespace {
+
+// The reach table (paper, then every data set and pooled) and
+// csv/reach.csv.
+std::string ReachTable(const ReportContext& c,
+                       const std::vector<Configuration>& configs) {
+  std::string out;
   std::vector<std::vector<std::string>> rows = {
       {"paper (Kvarntorp)",
        "NDT",
@@ -133,11 +127,14 @@ std::string ReachSection(const ReportContext& c) {
                         "reach in yaw",
                         "right over all offsets"},
                        rows);
-  out +=
-      "The ablation steps, each adding one component of the defaults "
-      "(the options that differ are listed under Configurations above).\n\n";
 
-  // Success share against the offset, pooled, one curve per configuration.
+  return out;
+}
+
+// Success share against the offset, pooled, one curve per configuration.
+std::string ReachCurves(const ReportContext& c,
+                        const std::vector<Configuration>& configs) {
+  std::string out;
   for (const std::string family : {"x", "yaw"}) {
     std::vector<std::vector<std::string>> curve;
     for (size_t o = 0; o < c.plan.offsets.size(); ++o) {
@@ -175,7 +172,13 @@ std::string ReachSection(const ReportContext& c) {
     out += "![reach " + family + "](" + png + ")\n\n";
   }
 
-  // The sentence.
+  return out;
+}
+
+// The conclusion sentence of this run's reach.
+std::string ReachConclusion(const ReportContext& c,
+                            const std::vector<Configuration>& configs) {
+  std::string out;
   const double paper_x = Reach(c, "", "paper", "x");
   const double defaults_x = Reach(c, "", "defaults", "x");
   const double ndt_x = Reach(c, "", "ndt", "x");
@@ -204,6 +207,30 @@ std::string ReachSection(const ReportContext& c) {
       phrase(Reach(c, "", "ndt", "yaw"), "deg") +
       "; the pooled reach along x steps " + chain("x", "m") + ", in yaw " +
       chain("yaw", "deg") + ".\n\n";
+  return out;
+}
+
+}  // namespace
+
+std::string ReachSection(const ReportContext& c) {
+  const std::vector<Configuration> configs = ReachConfigurations();
+  std::string out =
+      "## Section 5.1: long-range reach, and the ablation paper → "
+      "defaults\n\n"
+      "Each data set's smallest-step pairs, started from the reference "
+      "pushed off along x (forward) or in yaw (the paper's β), with no "
+      "other initialisation. Reach: the largest offset such that it and "
+      "every smaller one have at least " +
+      Fmt(100 * kReachShare, 0) +
+      " % of the runs within the data set's strict tolerance. The paper's "
+      "\"units\" are most likely centimetres (3DTK stores cm): its claim is "
+      "NDT 10 cm / 5°, ML-NDT 25 cm / 15° (\"in some cases\" 45°).\n\n";
+  out += ReachTable(c, configs);
+  out +=
+      "The ablation steps, each adding one component of the defaults "
+      "(the options that differ are listed under Configurations above).\n\n";
+  out += ReachCurves(c, configs);
+  out += ReachConclusion(c, configs);
   return out;
 }
 

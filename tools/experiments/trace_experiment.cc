@@ -40,6 +40,39 @@ Configuration PaperScalarLm(const Configuration& paper) {
   return c;
 }
 
+// The trace of one registration: its start and every iteration, as errors
+// in the paper's axes and scores normalised by the largest |score|.
+MethodTrace MakeMethodTrace(const Configuration& c,
+                            const SuiteRun& run,
+                            const RegistrationSummary& summary) {
+  MethodTrace method;
+  method.key = c.key;
+  method.label = c.label;
+  method.termination = TerminationTypeToString(summary.termination_type);
+  TracePoint start;
+  start.score = summary.initial_score;
+  start.layer = summary.start_layer;
+  start.paper_error = PaperAxesError(run.reference_from_input,
+                                     run.initial_reference_from_input);
+  method.points.push_back(start);
+  for (const IterationRecord& r : summary.trace) {
+    TracePoint p;
+    p.iteration = r.iteration;
+    p.layer = r.layer;
+    p.score = r.score;
+    p.paper_error =
+        PaperAxesError(run.reference_from_input,
+                       PoseVectorToIsometry(r.reference_from_input_xi));
+    method.points.push_back(p);
+  }
+  double max_abs = 0.0;
+  for (const TracePoint& p : method.points)
+    max_abs = std::max(max_abs, std::abs(p.score));
+  for (TracePoint& p : method.points)
+    p.normalized_score = max_abs > 0.0 ? p.score / max_abs : 0.0;
+  return method;
+}
+
 }  // namespace
 
 bool RunTraceExperiment(const std::vector<ExperimentDataset>& datasets,
@@ -106,32 +139,7 @@ bool RunTraceExperiment(const std::vector<ExperimentDataset>& datasets,
                         input,
                         run.initial_reference_from_input,
                         &summary);
-    MethodTrace method;
-    method.key = c.key;
-    method.label = c.label;
-    method.termination = TerminationTypeToString(summary.termination_type);
-    TracePoint start;
-    start.score = summary.initial_score;
-    start.layer = summary.start_layer;
-    start.paper_error = PaperAxesError(run.reference_from_input,
-                                       run.initial_reference_from_input);
-    method.points.push_back(start);
-    for (const IterationRecord& r : summary.trace) {
-      TracePoint p;
-      p.iteration = r.iteration;
-      p.layer = r.layer;
-      p.score = r.score;
-      p.paper_error =
-          PaperAxesError(run.reference_from_input,
-                         PoseVectorToIsometry(r.reference_from_input_xi));
-      method.points.push_back(p);
-    }
-    double max_abs = 0.0;
-    for (const TracePoint& p : method.points)
-      max_abs = std::max(max_abs, std::abs(p.score));
-    for (TracePoint& p : method.points)
-      p.normalized_score = max_abs > 0.0 ? p.score / max_abs : 0.0;
-    trace->methods.push_back(std::move(method));
+    trace->methods.push_back(MakeMethodTrace(c, run, summary));
   }
   return true;
 }

@@ -1,19 +1,17 @@
 #pragma once
 
-// mlndt_covariance's measure: how well the registration covariance P
-// predicts the spread of many registrations of one pair (NEES about the
-// runs' mean and about the reference pose, lab/eval/nees.h), per pair and
-// pooled over a data set.
+// mlndt_covariance's measure (its report: tools/common/covariance_output.h):
+// how well the registration covariance P predicts the spread of many
+// registrations of one pair (NEES about the runs' mean and about the reference
+// pose, lab/eval/nees.h), per pair and pooled over a data set.
 
 #include <string>
 #include <vector>
 
 #include "lab/eval/nees.h"
 #include "mlndt/common/types.h"
-#include "tools/common/json_output.h"
 
 namespace mlndt {
-namespace tools {
 
 // One usable registration.
 struct StartResult {
@@ -66,11 +64,4 @@ void Accumulate(const PairRuns& pair, Consistency* sum);
 // The sums of Accumulate turned into means (and RMS standard deviations).
 Consistency Finish(Consistency sum);
 
-// The consistency as JSON, standard deviations in m and deg.
-Json ConsistencyJson(const Consistency& c);
-
-// Three lines of the stdout report, headed by `label`.
-void PrintRow(const std::string& label, const Consistency& c);
-
-}  // namespace tools
 }  // namespace mlndt

@@ -1,0 +1,292 @@
+#include "tools/common/localize_output.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "lab/eval/statistics.h"
+#include "lab/eval/trajectory_io.h"
+#include "mlndt/common/atomic_file.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/grid/map_memory.h"
+#include "tools/common/gnuplot.h"
+#include "tools/common/progress.h"
+#include "tools/common/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+// tx, ty, tz [m], alpha, beta, gamma [deg] of a pose (R = Rx Ry Rz).
+std::vector<double> PoseNumbers(const Isometry3d& pose) {
+  const Vector6d xi = IsometryToPoseVector(pose);
+  std::vector<double> v(xi.data(), xi.data() + 6);
+  for (int a = 3; a < 6; ++a) v[static_cast<size_t>(a)] *= kRadToDeg;
+  return v;
+}
+
+std::string PoseColumns(const Isometry3d& pose) {
+  std::string out;
+  for (const double v : PoseNumbers(pose)) {
+    out += (out.empty() ? "" : ",") + Num(v);
+  }
+  return out;
+}
+
+bool WriteLocalizationCsv(const std::string& path,
+                          const std::vector<std::string>& files,
+                          const std::vector<LocalizationResult>& results,
+                          std::string* error) {
+  std::ostringstream out;
+  out << "index,file,termination,iterations,input_points,sampled_points,"
+         "matched_points,score,own_cell_fraction,inlier_fraction,mean_score,"
+         "median_distance,tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,"
+         "correction_m,correction_deg,load_ms,sampling_ms,solve_ms,"
+         "registration_ms,message\n";
+  for (const LocalizationResult& r : results) {
+    out << r.index << ","
+        << CsvField(std::filesystem::path(files[r.index]).filename().string())
+        << "," << TerminationTypeToString(r.termination_type) << ","
+        << r.iterations << "," << r.input_points << "," << r.sampled_points
+        << "," << r.matched_points << "," << Num(r.final_score) << ","
+        << Num(r.quality.own_cell_fraction) << ","
+        << Num(r.quality.inlier_fraction) << "," << Num(r.quality.mean_score)
+        << "," << Num(r.quality.median_distance) << ","
+        << PoseColumns(r.map_from_scan) << ","
+        << Num(TranslationErrorM(r.predicted_map_from_scan, r.map_from_scan))
+        << ","
+        << Num(RotationErrorRad(r.predicted_map_from_scan, r.map_from_scan) *
+               kRadToDeg)
+        << "," << Num(r.load_time_s * 1e3) << ","
+        << Num(r.sampling_time_s * 1e3) << "," << Num(r.solve_time_s * 1e3)
+        << "," << Num(r.registration_time_s * 1e3) << "," << CsvField(r.message)
+        << "\n";
+  }
+  return WriteFileAtomically(path, out.str(), error);
+}
+
+}  // namespace
+
+Json LocalizationSummaryJson(const LocalizerOptions& options,
+                             const std::string& map_path,
+                             const LayeredGrid& map,
+                             const Isometry3d& first_guess,
+                             const std::vector<LocalizationResult>& results,
+                             double map_load_s,
+                             double total_s) {
+  VerdictCounts verdicts;
+  std::vector<double> registration_ms, inliers, own;
+  for (const LocalizationResult& r : results) {
+    verdicts.Add(r.termination_type);
+    registration_ms.push_back(r.registration_time_s * 1e3);
+    inliers.push_back(r.quality.inlier_fraction);
+    own.push_back(r.quality.own_cell_fraction);
+  }
+  size_t cells = 0;
+  for (int i = 1; i <= map.num_layers(); ++i) {
+    cells += map.layer(i).cells().size();
+  }
+  Json json = ToolJson("mlndt_localize");
+  json["map"] = map_path;
+  json["map_info"] = {
+      {"layers", map.num_layers()},
+      {"cells", cells},
+      {"bytes", map.MemoryBytes()},
+      {"finest_cell_size_m", Number(map.layer(map.num_layers()).cell_size())}};
+  json["scans"] = results.size();
+  json["motion_model"] = MotionModelToString(options.motion_model);
+  json["backend"] = BackendTypeToString(options.registration.backend.type);
+  json["first_guess"] = PoseJson(first_guess);
+  json["terminations"] = verdicts.ToJson();
+  json["usable"] = verdicts.usable();
+  json["unusable"] = verdicts.unusable();
+  json["unusable_pose"] =
+      "the prediction (dead reckoning): LOW_QUALITY, DEGENERATE and FAILURE "
+      "scans are not to be used";
+  json["inlier_fraction"] = StatsJson(ComputeStats(inliers));
+  json["own_cell_fraction"] = StatsJson(ComputeStats(own));
+  json["time_ms"] = {{"total", Number(total_s * 1e3)},
+                     {"map_load", Number(map_load_s * 1e3)}};
+  json["time_ms_stats"] = {
+      {"registration", StatsJson(ComputeStats(registration_ms))}};
+  json["peak_resident_bytes"] = PeakResidentBytes();
+  return json;
+}
+
+// trajectory_xy.png: the finest layer's cell means (every k-th, at most
+// plot_max_cells) and the trajectory, seen from above.
+bool WriteLocalizationPlot(const std::string& dir,
+                           const LayeredGrid& map,
+                           const std::vector<LocalizationResult>& results,
+                           int plot_max_cells,
+                           const std::string& gnuplot,
+                           std::string* error) {
+  std::string data_dir;
+  if (!MakePlotDataDir(dir, &data_dir, error)) return false;
+  const std::vector<NdtCell>& cells = map.layer(map.num_layers()).cells();
+  const size_t max_cells = static_cast<size_t>(plot_max_cells);
+  const size_t stride =
+      max_cells == 0
+          ? 0
+          : std::max<size_t>(1, (cells.size() + max_cells - 1) / max_cells);
+  {
+    std::ostringstream out;
+    out << "# x_m y_m z_m (finest-layer cell means, every " << stride
+        << "-th)\n";
+    for (size_t c = 0; stride > 0 && c < cells.size(); c += stride) {
+      out << cells[c].mean.x() << " " << cells[c].mean.y() << " "
+          << cells[c].mean.z() << "\n";
+    }
+    std::ostringstream trajectory;
+    trajectory << "# x_m y_m converged(1/0)\n";
+    for (const LocalizationResult& r : results) {
+      trajectory << r.map_from_scan.translation().x() << " "
+                 << r.map_from_scan.translation().y() << " "
+                 << (r.termination_type == TerminationType::CONVERGENCE)
+                 << "\n";
+    }
+    if (!WriteFileAtomically(data_dir + "/map_cells.dat", out.str(), error) ||
+        !WriteFileAtomically(
+            data_dir + "/trajectory.dat", trajectory.str(), error)) {
+      return false;
+    }
+  }
+  std::ostringstream script;
+  const std::string png = dir + "/trajectory_xy.png";
+  script << GnuplotPngHeader(1000, 800) << GnuplotSetOutput(png)
+         << "set title 'Map (finest cell means) and trajectory, top view'\n"
+         << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
+         << "plot " << GnuplotQuote(data_dir + "/map_cells.dat")
+         << " using 1:2 with points pt 7 ps 0.3 lc rgb '#a0a0a0' title 'map "
+            "cells', "
+         << GnuplotQuote(data_dir + "/trajectory.dat")
+         << " using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#c00000' "
+            "title 'trajectory'\n";
+  return RunGnuplot(gnuplot, data_dir + "/plot.gp", script.str(), {png}, error);
+}
+
+bool WriteLocalizationFiles(const std::string& dir,
+                            const ScanInput& input,
+                            const std::vector<LocalizationResult>& results,
+                            const Json& summary,
+                            std::string* error) {
+  const std::string out = dir + "/";
+  Trajectory trajectory;
+  for (const LocalizationResult& r : results) {
+    trajectory.Add(input.StampOf(r.index), r.map_from_scan);
+  }
+  return WriteTrajectory(out + "trajectory_kitti.txt",
+                         TrajectoryFormat::KITTI,
+                         trajectory,
+                         error) &&
+         WriteTrajectory(out + "trajectory_tum.txt",
+                         TrajectoryFormat::TUM,
+                         trajectory,
+                         input.TumComment(),
+                         error) &&
+         WriteLocalizationCsv(
+             out + "scans.csv", input.names(), results, error) &&
+         WriteJsonFile(out + "summary.json", summary, error);
+}
+
+void PrintMapLine(const std::string& map_path, const LayeredGrid& map) {
+  std::printf("map: %s, %d layers, finest cell %.3f m, %s\n",
+              map_path.c_str(),
+              map.num_layers(),
+              map.layer(map.num_layers()).cell_size(),
+              FormatBytes(static_cast<double>(map.MemoryBytes())).c_str());
+}
+
+std::string UnusableScansMessage(const VerdictCounts& verdicts) {
+  return std::to_string(verdicts.unusable()) + " of " +
+         std::to_string(verdicts.total()) + " scans have no usable pose (" +
+         verdicts.Line() +
+         "): their poses in the trajectories are the predictions; "
+         "see the termination column of scans.csv";
+}
+
+std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
+                                       const LocalizationResult& r) {
+  char detail[200];
+  std::snprintf(detail,
+                sizeof(detail),
+                "%s %s, inliers %.3f, %d it, %.0f ms",
+                std::filesystem::path(paths[r.index]).filename().c_str(),
+                TerminationTypeToString(r.termination_type),
+                r.quality.inlier_fraction,
+                r.iterations,
+                r.registration_time_s * 1e3);
+  return detail;
+}
+
+bool LocalizeScansWithProgress(const LocalizerOptions& options,
+                               const LayeredGrid& map,
+                               const Isometry3d& first_guess,
+                               ScanInput* input,
+                               std::vector<LocalizationResult>* results,
+                               std::string* error) {
+  const std::vector<std::string>& paths = input->names();
+  Progress progress("mlndt_localize", paths.size());
+  const ScanLoader load = input->Loader();
+  const LocalizationCallback report = [&](const LocalizationResult& r) {
+    progress.Update(r.index + 1, LocalizationProgressDetail(paths, r));
+  };
+  const bool ok = LocalizeScans(
+      options, map, first_guess, paths.size(), load, report, results, error);
+  progress.Finish();
+  return ok;
+}
+
+VerdictCounts PrintLocalizationTable(
+    const std::vector<std::string>& paths,
+    const std::vector<LocalizationResult>& results) {
+  std::printf("%-5s %-24s %-15s %5s %8s %8s %10s %10s %10s %9s %9s\n",
+              "scan",
+              "file",
+              "termination",
+              "iters",
+              "own",
+              "inliers",
+              "x [m]",
+              "y [m]",
+              "yaw [deg]",
+              "load [ms]",
+              "reg [ms]");
+  std::vector<double> registration_ms;
+  VerdictCounts verdicts;
+  for (const LocalizationResult& r : results) {
+    const Vector6d xi = IsometryToPoseVector(r.map_from_scan);
+    std::printf(
+        "%-5zu %-24s %-15s %5d %8.3f %8.3f %10.3f %10.3f %10.3f %9.1f "
+        "%9.1f\n",
+        r.index,
+        std::filesystem::path(paths[r.index]).filename().c_str(),
+        TerminationTypeToString(r.termination_type),
+        r.iterations,
+        r.quality.own_cell_fraction,
+        r.quality.inlier_fraction,
+        xi(0),
+        xi(1),
+        xi(5) * kRadToDeg,
+        r.load_time_s * 1e3,
+        r.registration_time_s * 1e3);
+    registration_ms.push_back(r.registration_time_s * 1e3);
+    verdicts.Add(r.termination_type);
+  }
+  const Stats t = ComputeStats(registration_ms);
+  std::printf(
+      "scans: %zu, usable %zu (%s); registration [ms]: mean %.1f, median "
+      "%.1f, max %.1f; peak memory %s\n",
+      results.size(),
+      verdicts.usable(),
+      verdicts.Line().c_str(),
+      t.mean,
+      t.median,
+      t.max,
+      FormatBytes(PeakResidentBytes()).c_str());
+  return verdicts;
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,68 @@
+#pragma once
+
+// mlndt_localize's outputs: trajectory_kitti.txt, trajectory_tum.txt,
+// scans.csv, summary.json (docs/json_schema.md, "mlndt_localize"), the
+// per-scan table on stdout and the top view trajectory_xy.png.
+
+#include <string>
+#include <vector>
+
+#include "mlndt/grid/layered_grid.h"
+#include "mlndt/pipeline/localizer.h"
+#include "tools/common/json_output.h"
+#include "tools/common/scan_input.h"
+#include "tools/common/verdict_counts.h"
+
+namespace mlndt {
+namespace tools {
+
+// summary.json; `map_path` as given, the times in seconds.
+Json LocalizationSummaryJson(const LocalizerOptions& options,
+                             const std::string& map_path,
+                             const LayeredGrid& map,
+                             const Isometry3d& first_guess,
+                             const std::vector<LocalizationResult>& results,
+                             double map_load_s,
+                             double total_s);
+
+// The trajectories (TUM stamps from `input`), scans.csv and summary.json
+// into `dir`.
+bool WriteLocalizationFiles(const std::string& dir,
+                            const ScanInput& input,
+                            const std::vector<LocalizationResult>& results,
+                            const Json& summary,
+                            std::string* error);
+
+// "map: PATH, N layers, finest cell X m, SIZE".
+void PrintMapLine(const std::string& map_path, const LayeredGrid& map);
+
+// The failure message when some scans have no usable pose.
+std::string UnusableScansMessage(const VerdictCounts& verdicts);
+
+// The progress line's detail of a scan: file, verdict, inliers, time.
+std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
+                                       const LocalizationResult& r);
+
+// LocalizeScans over the scans of `input`, with a progress line.
+bool LocalizeScansWithProgress(const LocalizerOptions& options,
+                               const LayeredGrid& map,
+                               const Isometry3d& first_guess,
+                               ScanInput* input,
+                               std::vector<LocalizationResult>* results,
+                               std::string* error);
+
+// One line a scan and the summary line on stdout; the scans by verdict.
+VerdictCounts PrintLocalizationTable(
+    const std::vector<std::string>& paths,
+    const std::vector<LocalizationResult>& results);
+
+// trajectory_xy.png (data and script in dir/plot_data) with `gnuplot`.
+bool WriteLocalizationPlot(const std::string& dir,
+                           const LayeredGrid& map,
+                           const std::vector<LocalizationResult>& results,
+                           int plot_max_cells,
+                           const std::string& gnuplot,
+                           std::string* error);
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,128 @@
+#include "tools/common/sequence_inputs.h"
+
+#include <algorithm>
+#include <iostream>
+
+#include "lab/eval/dataset.h"
+#include "lab/eval/pose_convention.h"
+#include "tools/common/list_flags.h"
+#include "tools/common/pose_flags.h"
+
+namespace mlndt {
+namespace tools {
+
+namespace {
+
+// --adaptive_fail_rates=`text`: ascending numbers in [0, 1].
+bool ParseFailRates(const std::string& text,
+                    std::vector<double>* rates,
+                    std::string* error) {
+  std::vector<double> values;
+  if (!ParseNumberList(text, &values) ||
+      !std::is_sorted(values.begin(), values.end()) ||
+      std::any_of(values.begin(), values.end(), [](double r) {
+        return r < 0 || r > 1;
+      })) {
+    *error = "--adaptive_fail_rates=" + text +
+             ": expected ascending numbers in [0, 1], e.g. 0.05,0.2";
+    return false;
+  }
+  *rates = values;
+  return true;
+}
+
+}  // namespace
+
+bool AdaptiveOptionsFromValues(bool enabled,
+                               double max_translation_m,
+                               double max_rotation_deg,
+                               const std::string& fail_rates,
+                               AdaptiveStartLayerOptions* adaptive,
+                               std::string* error) {
+  adaptive->enabled = enabled;
+  adaptive->max_translation_m = max_translation_m;
+  adaptive->max_rotation_deg = max_rotation_deg;
+  if (!(adaptive->max_translation_m > 0) || !(adaptive->max_rotation_deg > 0)) {
+    *error =
+        "--adaptive_max_translation and --adaptive_max_rotation must be > 0";
+    return false;
+  }
+  return ParseFailRates(fail_rates, &adaptive->fail_rate_thresholds, error);
+}
+
+bool ReadSequenceRunPoses(const SequenceOptions& options,
+                          const std::string& source,
+                          size_t num_scans,
+                          const std::string& gt_poses,
+                          std::vector<Isometry3d>* truth,
+                          std::vector<Isometry3d>* odometry,
+                          std::string* error) {
+  const std::string scans = std::to_string(num_scans) + " scans";
+  if (num_scans <= options.step) {
+    *error = source + ": " + scans +
+             ", too few for --step=" + std::to_string(options.step);
+    return false;
+  }
+  if (!gt_poses.empty() &&
+      !ReadSequencePoses(gt_poses, FLAGS_calib, truth, error)) {
+    return false;
+  }
+  std::string evidence;
+  if (!FLAGS_poses_are_camera && LooksLikeCameraPoses(*truth, &evidence)) {
+    std::cerr << "mlndt_sequence: WARNING: --gt_poses=" << gt_poses
+              << " looks like KITTI camera (cam0) poses read as the scans' "
+                 "own: "
+              << evidence
+              << ". If it is KITTI's poses/XX.txt, add --poses_are_camera "
+                 "--calib=calib.txt; else every error below is measured "
+                 "against the wrong frame.\n";
+  }
+  if (!truth->empty() && truth->size() < num_scans) {
+    *error = gt_poses + " has " + std::to_string(truth->size()) +
+             " poses for " + scans;
+    return false;
+  }
+  if (options.init.mode == InitMode::GT_FRACTION && truth->empty()) {
+    *error = "--init=gt_fraction:c needs --gt_poses";
+    return false;
+  }
+  if (options.init.mode != InitMode::POSES) return true;
+  if (!ReadSequencePoses(
+          options.init.poses_path, FLAGS_calib, odometry, error)) {
+    return false;
+  }
+  if (odometry->size() < num_scans) {
+    *error = options.init.poses_path + " has " +
+             std::to_string(odometry->size()) + " poses for " + scans;
+    return false;
+  }
+  return true;
+}
+
+bool ReadSequenceInputs(const SequenceOptions& options,
+                        const std::string& scans_dir,
+                        const std::string& gt_poses,
+                        int max_scans,
+                        ScanInput* input,
+                        std::vector<Isometry3d>* truth,
+                        std::vector<Isometry3d>* odometry,
+                        std::string* error) {
+  if (!ScanInputFromScansFlag(
+          scans_dir,
+          {gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
+          static_cast<size_t>(max_scans),
+          input,
+          error)) {
+    return false;
+  }
+  return ReadSequenceRunPoses(options,
+                              FLAGS_bag.empty() ? scans_dir : FLAGS_bag,
+                              input->size(),
+                              gt_poses,
+                              truth,
+                              odometry,
+                              error);
+}
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,53 @@
+#pragma once
+
+// mlndt_sequence's poses: the ground truth (--gt_poses) and the odometry of
+// --init=poses:FILE, one pose per scan, checked against the scans before
+// any pair is registered.
+
+#include <string>
+#include <vector>
+
+#include "lab/runs/sequence_registration.h"
+#include "mlndt/common/types.h"
+#include "tools/common/scan_input.h"
+
+namespace mlndt {
+namespace tools {
+
+// The adaptive start layer from the values of mlndt_sequence's
+// --adaptive_* flags: both deviations > 0, the fail rates (a comma-separated
+// text) ascending in [0, 1].
+bool AdaptiveOptionsFromValues(bool enabled,
+                               double max_translation_m,
+                               double max_rotation_deg,
+                               const std::string& fail_rates,
+                               AdaptiveStartLayerOptions* adaptive,
+                               std::string* error);
+
+// The scans of --scans=`scans_dir` (or --bag; at most `max_scans`, the
+// pose, calib and times files left out) and ReadSequenceRunPoses.
+bool ReadSequenceInputs(const SequenceOptions& options,
+                        const std::string& scans_dir,
+                        const std::string& gt_poses,
+                        int max_scans,
+                        ScanInput* input,
+                        std::vector<Isometry3d>* truth,
+                        std::vector<Isometry3d>* odometry,
+                        std::string* error);
+
+// `source` names the scans (the folder or the bag) in the too-few-scans
+// message; `gt_poses` may be empty. Warns on stderr when the ground truth
+// looks like KITTI camera poses read without --poses_are_camera. False with
+// *error (naming the flag or file) on too few scans for the step, poses
+// that cannot be read or are fewer than the scans, or gt_fraction without
+// ground truth.
+bool ReadSequenceRunPoses(const SequenceOptions& options,
+                          const std::string& source,
+                          size_t num_scans,
+                          const std::string& gt_poses,
+                          std::vector<Isometry3d>* truth,
+                          std::vector<Isometry3d>* odometry,
+                          std::string* error);
+
+}  // namespace tools
+}  // namespace mlndt
