@@ -150,14 +150,11 @@ std::string LayeredMap::Repr() const {
   return out.str();
 }
 
-void DefineMap(py::module_& m) {
-  py::class_<LayeredMap>(
-      m,
-      "LayeredMap",
-      "A layered NDT map of a reference cloud (mlndt::LayeredGrid): built "
-      "once,\nsaved, loaded and registered against (localisation against a "
-      "prebuilt map).\nImmutable: any number of threads may register "
-      "against one map.")
+namespace {
+
+// Building, loading, saving and registering.
+void DefineMapCalls(py::class_<LayeredMap>& map_class) {
+  map_class
       .def_static(
           "build",
           &LayeredMap::Build,
@@ -206,7 +203,12 @@ void DefineMap(py::module_& m) {
             "input: (N, 3) array of x, y, z [m], float64 or float32, any "
             "strides.\n" +
             RegisterArgumentsDoc())
-               .c_str())
+               .c_str());
+}
+
+// What a map holds: layers, memory, bounds, options, cells.
+void DefineMapContents(py::class_<LayeredMap>& map_class) {
+  map_class
       .def_property_readonly(
           "layers",
           &LayeredMap::Layers,
@@ -243,6 +245,20 @@ void DefineMap(py::module_& m) {
            "\"means\" (k, 3),\n\"covariances\" (k, 3, 3, regularised) [m, "
            "m^2] and \"counts\" (k,).")
       .def("__repr__", &LayeredMap::Repr);
+}
+
+}  // namespace
+
+void DefineMap(py::module_& m) {
+  py::class_<LayeredMap> map_class(
+      m,
+      "LayeredMap",
+      "A layered NDT map of a reference cloud (mlndt::LayeredGrid): built "
+      "once,\nsaved, loaded and registered against (localisation against a "
+      "prebuilt map).\nImmutable: any number of threads may register "
+      "against one map.");
+  DefineMapCalls(map_class);
+  DefineMapContents(map_class);
 }
 
 }  // namespace python

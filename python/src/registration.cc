@@ -68,13 +68,8 @@ py::object Register(const py::object& reference,
       options, nullptr, &reference_cloud, input_cloud, guess));
 }
 
-void DefineResult(py::module_& m) {
-  py::class_<Summary> result(
-      m,
-      "RegistrationResult",
-      "What a registration reports (mlndt::RegistrationSummary): the pose, "
-      "the verdict, the fit, the covariance, the trace and timings. Poses "
-      "map input points into the reference frame.");
+// The pose and the verdict.
+void DefinePoseAndVerdict(py::class_<Summary>& result) {
   result
       .def_property_readonly(
           "reference_from_input",
@@ -112,7 +107,12 @@ void DefineResult(py::module_& m) {
           "CONVERGENCE or NO_CONVERGENCE: the pose passed the quality check "
           "(IsSolutionUsable).")
       .def_readonly("message", &Summary::message, "Why it ended.")
-      .def_readonly("algorithm", &Summary::algorithm, "\"ML-NDT\".")
+      .def_readonly("algorithm", &Summary::algorithm, "\"ML-NDT\".");
+}
+
+// The evidence: fit, degenerate directions, covariance, scores, iterations.
+void DefineEvidence(py::class_<Summary>& result) {
+  result
       .def_property_readonly(
           "quality",
           &QualityDict,
@@ -149,8 +149,12 @@ void DefineResult(py::module_& m) {
                     "Iterations on each layer, index i - 1 for layer i.")
       .def_readonly("attempts",
                     &Summary::attempts,
-                    "Schedule runs (retries and guess comparisons included).")
-      .def_readonly("start_layer", &Summary::start_layer, "1-based.")
+                    "Schedule runs (retries and guess comparisons included).");
+}
+
+// Layers, point counts, timings and the reports.
+void DefineCountsAndReports(py::class_<Summary>& result) {
+  result.def_readonly("start_layer", &Summary::start_layer, "1-based.")
       .def_readonly("num_layers", &Summary::num_layers, "Layers of the map.")
       .def_readonly("finest_cell_size_m",
                     &Summary::finest_cell_size_m,
@@ -195,6 +199,18 @@ void DefineResult(py::module_& m) {
       .def("__repr__", [](const Summary& s) {
         return "<mlndt.RegistrationResult " + s.BriefReport() + ">";
       });
+}
+
+void DefineResult(py::module_& m) {
+  py::class_<Summary> result(
+      m,
+      "RegistrationResult",
+      "What a registration reports (mlndt::RegistrationSummary): the pose, "
+      "the verdict, the fit, the covariance, the trace and timings. Poses "
+      "map input points into the reference frame.");
+  DefinePoseAndVerdict(result);
+  DefineEvidence(result);
+  DefineCountsAndReports(result);
 }
 
 }  // namespace
