@@ -14,7 +14,8 @@ reference is good step to step (the Livox prior: ~2 cm).
 With scans.csv a second count judges each scan with a registered pose
 (fallback 0) by its motion from the last such scan, so a scan right after a
 fallback is judged by its own pose, not by the stand-in before it (as
-tests/odometry/odometry_livox_test.cc scores).
+tests/odometry/odometry_livox_test.cc scores); a local-map restart is a
+declared discontinuity, and the scans after it are judged from it.
 """
 import csv
 import sys
@@ -45,6 +46,9 @@ def count_from_last_pose(estimate, reference, rows, max_m, max_deg):
     right_convergence = 0
     last = 0
     for k in range(1, len(estimate)):
+        if "the local map restarts" in rows[k]["message"]:
+            last = k  # A declared discontinuity: judge from the new map on.
+            continue
         if rows[k]["fallback"] == "1":
             continue
         t, a = step_error(estimate[last], estimate[k], reference[last], reference[k])

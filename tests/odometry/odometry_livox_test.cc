@@ -36,12 +36,18 @@ struct StepScore {
 
 // Scores scan k's motion from the last scan with a registered pose (not a
 // fallback) against the prior's, so that a scan after a fallback is judged
-// by its own pose and not by the stand-in before it.
+// by its own pose and not by the stand-in before it. A local-map restart is
+// a declared discontinuity (the trajectory jumps there, flagged): the scans
+// after it are judged from the restart scan, whose map they register onto.
 StepScore ScoreSteps(const std::vector<OdometryResult>& results,
                      const std::vector<Isometry3d>& prior) {
   StepScore score;
   size_t last = 0;
   for (size_t k = 1; k < results.size(); ++k) {
+    if (results[k].map_restarted) {
+      last = k;
+      continue;
+    }
     if (results[k].fallback) continue;
     const Isometry3d estimated = results[last].world_from_sensor.inverse() *
                                  results[k].world_from_sensor;
@@ -66,10 +72,12 @@ StepScore ScoreSteps(const std::vector<OdometryResult>& results,
 
 // Scans 160-249 of the sequence, the first of them the odometry's origin:
 // the walk back along the corridor, with one step the registration gets
-// wrong (reported NO_CONVERGENCE, measured: 88 of the 89 steps CONVERGENCE
-// and within 0.2 m / 2 deg of the prior, the other one that step; no
-// fallback). No step off the prior may be reported CONVERGENCE, and most are
-// still CONVERGENCE and right.
+// wrong (scan 173, reported NO_CONVERGENCE; measured: 88 of the 89 steps
+// CONVERGENCE and within 0.2 m / 2 deg of the prior, no fallback; with the
+// weak-direction probe of the verdict branch 0add305, scans 173-175 are
+// DEGENERATE, the map restarts at 176, 84 CONVERGENCE and right, 4
+// fallbacks). No step off the prior may be reported CONVERGENCE, and most
+// are still CONVERGENCE and right.
 TEST(OdometryLivox, NoWrongStepIsReportedConvergenceOnTheCorridorStretch) {
   MLNDT_REQUIRE_SHARED_DATA(data_dir);
   const std::string sequence = data_dir + "/fastlio_avia_hku_2_sequence";
@@ -106,8 +114,8 @@ TEST(OdometryLivox, NoWrongStepIsReportedConvergenceOnTheCorridorStretch) {
   EXPECT_EQ(score.wrong_convergence, 0u)
       << "first wrong step reported CONVERGENCE: scan "
       << kFirst + score.wrong_convergence_scans.front();
-  EXPECT_GE(score.right_convergence, 80u);  // Measured 88 of 89.
-  EXPECT_LE(summary.fallbacks, 5u);         // Measured 0.
+  EXPECT_GE(score.right_convergence, 75u);  // Measured 88 (84) of 89.
+  EXPECT_LE(summary.fallbacks, 10u);        // Measured 0 (4).
 }
 
 }  // namespace
