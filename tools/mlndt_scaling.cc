@@ -242,8 +242,8 @@ int WriteOutputs(const MatcherOptions& options,
   const std::string title = "Registration time against cloud size (median of " +
                             std::to_string(FLAGS_repetitions) + " runs; " +
                             MethodToString(options.method) + ", " +
-                            FLAGS_backend + ", " + FLAGS_sampling +
-                            " sampling)";
+                            tools::FlagText("backend") + ", " +
+                            tools::FlagText("sampling") + " sampling)";
   if (!tools::WriteScalingPlot(
           FLAGS_gnuplot, dir, title, results, slopes, &error)) {
     return Fail(error);
@@ -305,7 +305,7 @@ int Run() {
   }
 
   tools::ScalingSettings settings;
-  settings.seed = FLAGS_seed;
+  settings.seed = tools::Uint64Flag("seed");
   settings.repetitions = FLAGS_repetitions;
   settings.max_translation_error_m = FLAGS_max_translation_error;
   settings.max_rotation_error_deg = FLAGS_max_rotation_error;
@@ -336,9 +336,9 @@ int Run() {
       num_scans,
       FLAGS_scans.c_str(),
       MethodToString(options.method),
-      FLAGS_backend.c_str(),
-      FLAGS_sampling.c_str(),
-      FLAGS_threads,
+      tools::FlagText("backend").c_str(),
+      tools::FlagText("sampling").c_str(),
+      tools::IntFlag("num_threads"),
       FLAGS_motion.c_str(),
       FLAGS_repetitions);
   PrintTable(results);

@@ -301,7 +301,7 @@ tools::Json SummaryHeader(const SequenceOptions& options, size_t num_scans) {
         {"max_rotation_deg", tools::Number(options.adaptive.max_rotation_deg)},
         {"fail_rate_thresholds", thresholds}};
   } else {
-    header["start_layer_flag"] = FLAGS_start_layer;
+    header["start_layer_flag"] = tools::IntFlag("start_layer");
   }
   return header;
 }

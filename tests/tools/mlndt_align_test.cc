@@ -243,8 +243,8 @@ TEST(MlndtAlign, RangeFiltersSayTheyWorkAboutTheOriginAndWarnFarFromIt) {
   EXPECT_NE(help.out.find("closer than this to the cloud's origin"),
             std::string::npos)
       << help.out;
-  EXPECT_NE(help.out.find("map-frame (e.g. UTM) cloud set --min_range=0 "
-                          "--saturated_range_fraction=0"),
+  EXPECT_NE(help.out.find("map-frame (e.g. UTM) cloud set min_range_m = 0 "
+                          "and saturated_range_fraction = 0"),
             std::string::npos);
 
   const std::string dir = TestDir();
