@@ -197,7 +197,7 @@ def test_resolve_options_is_what_register_uses():
     assert resolved["grid"]["num_layers"] == paper["grid"]["num_layers"]
     assert resolved["initial_uncertainty"]["given"] and resolved["initial_uncertainty"]["translation_m"] == 0.2
     assert resolved["sampling"] == paper["sampling"]
-    with pytest.raises(ValueError, match=r"sampling: random_fraction must be in \(0, 1\]"):
+    with pytest.raises(ValueError, match=r"invalid option: sampling.random_fraction = 3; it must be in \(0, 1\]"):
         mlndt.resolve_options(sampling={"random_fraction": 3.0})
     with pytest.raises(ValueError, match="no_such_option"):
         mlndt.resolve_options(no_such_option=1)
