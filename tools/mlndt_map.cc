@@ -90,8 +90,8 @@ const std::vector<std::string> kBuildFlags = {"scans",
                                               "poses_are_camera",
                                               "cloud",
                                               "max_scans",
-                                              "min_range",
-                                              "max_range",
+                                              "min_range_m",
+                                              "max_range_m",
                                               "saturated_range_fraction",
                                               "voxel_size",
                                               "max_memory_gb",
@@ -143,11 +143,11 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
   options->max_memory_bytes =
       static_cast<size_t>(std::llround(FLAGS_max_memory_gb * 1e9));
   if (!tools::GridOptionsFromFlags(kTool, &options->grid, error)) return false;
-  if (FLAGS_threads < 1 || FLAGS_threads > 256) {
-    *error = "--threads must be in [1, 256]";
+  options->num_threads = tools::IntFlag("num_threads");
+  if (options->num_threads < 1 || options->num_threads > 256) {
+    *error = tools::GivenFlagName("num_threads") + " must be in [1, 256]";
     return false;
   }
-  options->num_threads = FLAGS_threads;
   if (!tools::CheckOutputFolderExists("output", FLAGS_output, error) ||
       !tools::CheckOutputFile("output", FLAGS_output, error) ||
       !tools::CheckOutputFile("output_json", FLAGS_output_json, error)) {

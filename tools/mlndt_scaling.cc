@@ -141,7 +141,7 @@ int WriteOutputs(const MatcherOptions& options,
           FLAGS_gnuplot,
           dir,
           tools::ScalingPlotTitle(
-              FLAGS_repetitions, options.method, FLAGS_backend, FLAGS_sampling),
+              FLAGS_repetitions, options.method, tools::FlagText("backend"), tools::FlagText("sampling")),
           results,
           slopes,
           &error)) {
@@ -187,7 +187,7 @@ int Run() {
   }
 
   tools::ScalingSettings settings;
-  settings.seed = FLAGS_seed;
+  settings.seed = tools::Uint64Flag("seed");
   settings.repetitions = FLAGS_repetitions;
   settings.max_translation_error_m = FLAGS_max_translation_error;
   settings.max_rotation_error_deg = FLAGS_max_rotation_error;
@@ -207,9 +207,9 @@ int Run() {
               num_scans,
               FLAGS_scans.c_str(),
               tools::ScalingRunLine(options.method,
-                                    FLAGS_backend,
-                                    FLAGS_sampling,
-                                    FLAGS_threads,
+                                    tools::FlagText("backend"),
+                                    tools::FlagText("sampling"),
+                                    tools::IntFlag("num_threads"),
                                     FLAGS_motion,
                                     FLAGS_repetitions)
                   .c_str());

@@ -183,7 +183,7 @@ int Run() {
       options, &store, truth, odometry, &results, &error);
   if (!ok) return tools::Fail(kTool, error);
   const tools::SequenceSource source = {
-      FLAGS_scans, FLAGS_bag, FLAGS_topic, FLAGS_start_layer};
+      FLAGS_scans, FLAGS_bag, FLAGS_topic, tools::IntFlag("start_layer")};
   if (!tools::WriteSequenceFiles(
           FLAGS_output_dir,
           options,

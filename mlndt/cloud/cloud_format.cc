@@ -4,34 +4,28 @@
 
 #include <filesystem>
 
+#include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/enum_strings.h"
 
 namespace mlndt {
 
-const char* CloudFormatToString(CloudFormat format) {
-  switch (format) {
-    case CloudFormat::PCD:
-      return "PCD";
-    case CloudFormat::PLY:
-      return "PLY";
-    case CloudFormat::KITTI_BIN:
-      return "KITTI_BIN";
-    case CloudFormat::UOS_3D:
-      return "UOS_3D";
-    case CloudFormat::XYZ:
-      return "XYZ";
-  }
-  return "UNKNOWN";
+const EnumTable& CloudFormatTable() {
+  static const EnumTable table({
+      {static_cast<int>(CloudFormat::PCD), "PCD"},
+      {static_cast<int>(CloudFormat::PLY), "PLY"},
+      {static_cast<int>(CloudFormat::KITTI_BIN), "KITTI_BIN"},
+      {static_cast<int>(CloudFormat::UOS_3D), "UOS_3D"},
+      {static_cast<int>(CloudFormat::XYZ), "XYZ"},
+  });
+  return table;
 }
 
-bool StringToCloudFormat(std::string value, CloudFormat* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(PCD, CloudFormat);
-  MLNDT_STRING_TO_ENUM(PLY, CloudFormat);
-  MLNDT_STRING_TO_ENUM(KITTI_BIN, CloudFormat);
-  MLNDT_STRING_TO_ENUM(UOS_3D, CloudFormat);
-  MLNDT_STRING_TO_ENUM(XYZ, CloudFormat);
-  return false;
+const char* CloudFormatToString(CloudFormat format) {
+  return EnumToString(CloudFormatTable(), format);
+}
+
+bool StringToCloudFormat(std::string value, CloudFormat* format) {
+  return StringToEnum(CloudFormatTable(), std::move(value), format);
 }
 
 bool CloudFormatFromPath(const std::string& path,

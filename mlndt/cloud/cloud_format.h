@@ -7,6 +7,8 @@
 
 namespace mlndt {
 
+class EnumTable;
+
 enum class CloudFormat {
   PCD,        // PCL's .pcd (ascii, binary, binary_compressed).
   PLY,        // .ply (ascii, binary_little_endian, binary_big_endian).
@@ -16,6 +18,8 @@ enum class CloudFormat {
 };
 
 // "PCD", "PLY", "KITTI_BIN", "UOS_3D", "XYZ".
+// The names of CloudFormat's values (enum_table.h).
+const EnumTable& CloudFormatTable();
 const char* CloudFormatToString(CloudFormat format);
 // Parses the names above, case-insensitively ("pcd" works). Returns false and
 // leaves *format unchanged for an unknown name.

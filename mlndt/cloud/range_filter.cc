@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/option_table.h"
 
 namespace mlndt {
 namespace {
@@ -56,10 +57,40 @@ void WarnWhenOriginIsFar(const RangeFilterOptions& options,
 
 }  // namespace
 
+const OptionTable& RangeFilterOptionsTable() {
+  using S = RangeFilterOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("RangeFilterOptions")
+          .Double("min_range_m",
+                  &S::min_range_m,
+                  "m",
+                  Closed(0.0, 1e3),
+                  "Points closer than this to the cloud's origin are dropped. "
+                  "The range filters measure from the origin: the sensor for "
+                  "a scan in its sensor frame; for a map-frame (e.g. UTM) "
+                  "cloud set min_range_m = 0 and saturated_range_fraction = "
+                  "0.")
+          .Double("max_range_m",
+                  &S::max_range_m,
+                  "m",
+                  {0.0, 1e6, true, false, true},
+                  "Points farther than this from the cloud's origin are "
+                  "dropped; 0 keeps every range (else >= min_range_m).")
+          .Double("saturated_range_fraction",
+                  &S::saturated_range_fraction,
+                  "",
+                  Closed(0.0, 1.0),
+                  "Points at the largest range are dropped when at least this "
+                  "fraction of the cloud is there; 0 = off (0 for a map-frame "
+                  "cloud).")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
 bool RangeFilterOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_IN_RANGE(min_range_m, 0.0, 1e3);
+  if (!RangeFilterOptionsTable().Check(*this, error)) return false;
   if (max_range_m != 0.0) MLNDT_OPTION_IN_RANGE(max_range_m, min_range_m, 1e6);
-  MLNDT_OPTION_IN_RANGE(saturated_range_fraction, 0.0, 1.0);
   return true;
 }
 

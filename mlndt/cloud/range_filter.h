@@ -15,6 +15,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct RangeFilterOptions {
   // Points closer than this to the sensor are dropped [m]. In [0, 1e3].
   double min_range_m = 0.25;
@@ -29,6 +31,10 @@ struct RangeFilterOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// RangeFilterOptions's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& RangeFilterOptionsTable();
 
 struct RangeFilterSummary {
   size_t input_points = 0;

@@ -1,33 +1,26 @@
 #include "mlndt/common/types.h"
 
-#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/enum_table.h"
 
 namespace mlndt {
 
-const char* TerminationTypeToString(TerminationType type) {
-  switch (type) {
-    case TerminationType::CONVERGENCE:
-      return "CONVERGENCE";
-    case TerminationType::NO_CONVERGENCE:
-      return "NO_CONVERGENCE";
-    case TerminationType::FAILURE:
-      return "FAILURE";
-    case TerminationType::LOW_QUALITY:
-      return "LOW_QUALITY";
-    case TerminationType::DEGENERATE:
-      return "DEGENERATE";
-  }
-  return "UNKNOWN";
+const EnumTable& TerminationTypeTable() {
+  static const EnumTable table({
+      {static_cast<int>(TerminationType::CONVERGENCE), "CONVERGENCE"},
+      {static_cast<int>(TerminationType::NO_CONVERGENCE), "NO_CONVERGENCE"},
+      {static_cast<int>(TerminationType::FAILURE), "FAILURE"},
+      {static_cast<int>(TerminationType::LOW_QUALITY), "LOW_QUALITY"},
+      {static_cast<int>(TerminationType::DEGENERATE), "DEGENERATE"},
+  });
+  return table;
 }
 
-bool StringToTerminationType(std::string value, TerminationType* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(CONVERGENCE, TerminationType);
-  MLNDT_STRING_TO_ENUM(NO_CONVERGENCE, TerminationType);
-  MLNDT_STRING_TO_ENUM(FAILURE, TerminationType);
-  MLNDT_STRING_TO_ENUM(LOW_QUALITY, TerminationType);
-  MLNDT_STRING_TO_ENUM(DEGENERATE, TerminationType);
-  return false;
+const char* TerminationTypeToString(TerminationType type) {
+  return EnumToString(TerminationTypeTable(), type);
+}
+
+bool StringToTerminationType(std::string value, TerminationType* type) {
+  return StringToEnum(TerminationTypeTable(), std::move(value), type);
 }
 
 }  // namespace mlndt

@@ -9,6 +9,8 @@
 
 namespace mlndt {
 
+class EnumTable;
+
 using Vector3d = Eigen::Vector3d;
 using Matrix3d = Eigen::Matrix3d;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
@@ -42,6 +44,8 @@ inline bool IsUsableTermination(TerminationType type) {
          type == TerminationType::NO_CONVERGENCE;
 }
 
+// The names of TerminationType's values (enum_table.h).
+const EnumTable& TerminationTypeTable();
 const char* TerminationTypeToString(TerminationType type);
 bool StringToTerminationType(std::string value, TerminationType* type);
 

@@ -2,25 +2,24 @@
 
 #include <limits>
 
-#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/enum_table.h"
 
 namespace mlndt {
 
-const char* UnmatchedPolicyToString(UnmatchedPolicy policy) {
-  switch (policy) {
-    case UnmatchedPolicy::ZERO_RESIDUAL:
-      return "ZERO_RESIDUAL";
-    case UnmatchedPolicy::NEAREST_CELL:
-      return "NEAREST_CELL";
-  }
-  return "UNKNOWN";
+const EnumTable& UnmatchedPolicyTable() {
+  static const EnumTable table({
+      {static_cast<int>(UnmatchedPolicy::ZERO_RESIDUAL), "ZERO_RESIDUAL"},
+      {static_cast<int>(UnmatchedPolicy::NEAREST_CELL), "NEAREST_CELL"},
+  });
+  return table;
 }
 
-bool StringToUnmatchedPolicy(std::string value, UnmatchedPolicy* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(ZERO_RESIDUAL, UnmatchedPolicy);
-  MLNDT_STRING_TO_ENUM(NEAREST_CELL, UnmatchedPolicy);
-  return false;
+const char* UnmatchedPolicyToString(UnmatchedPolicy policy) {
+  return EnumToString(UnmatchedPolicyTable(), policy);
+}
+
+bool StringToUnmatchedPolicy(std::string value, UnmatchedPolicy* policy) {
+  return StringToEnum(UnmatchedPolicyTable(), std::move(value), policy);
 }
 
 const NdtCell* MatchCell(const NdtLayer& layer,

@@ -17,11 +17,15 @@
 
 namespace mlndt {
 
+class EnumTable;
+
 enum class UnmatchedPolicy {
   ZERO_RESIDUAL,
   NEAREST_CELL,
 };
 
+// The names of UnmatchedPolicy's values (enum_table.h).
+const EnumTable& UnmatchedPolicyTable();
 const char* UnmatchedPolicyToString(UnmatchedPolicy policy);
 bool StringToUnmatchedPolicy(std::string value, UnmatchedPolicy* policy);
 

@@ -18,6 +18,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct ObjectiveOptions {
   // What a point in no occupied cell contributes (cell_match.h).
   UnmatchedPolicy unmatched_policy = UnmatchedPolicy::NEAREST_CELL;
@@ -28,6 +30,9 @@ struct ObjectiveOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// ObjectiveOptions's fields: name, unit, valid range and help (option_table.h).
+const OptionTable& ObjectiveOptionsTable();
 
 // The paper's objective: own cells only (ZERO_RESIDUAL), no loss.
 ObjectiveOptions PaperObjectiveOptions();

@@ -2,28 +2,25 @@
 
 #include <cmath>
 
-#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/enum_table.h"
 
 namespace mlndt {
 
-const char* LossTypeToString(LossType type) {
-  switch (type) {
-    case LossType::NONE:
-      return "NONE";
-    case LossType::HUBER:
-      return "HUBER";
-    case LossType::CAUCHY:
-      return "CAUCHY";
-  }
-  return "UNKNOWN";
+const EnumTable& LossTypeTable() {
+  static const EnumTable table({
+      {static_cast<int>(LossType::NONE), "NONE"},
+      {static_cast<int>(LossType::HUBER), "HUBER"},
+      {static_cast<int>(LossType::CAUCHY), "CAUCHY"},
+  });
+  return table;
 }
 
-bool StringToLossType(std::string value, LossType* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(NONE, LossType);
-  MLNDT_STRING_TO_ENUM(HUBER, LossType);
-  MLNDT_STRING_TO_ENUM(CAUCHY, LossType);
-  return false;
+const char* LossTypeToString(LossType type) {
+  return EnumToString(LossTypeTable(), type);
+}
+
+bool StringToLossType(std::string value, LossType* type) {
+  return StringToEnum(LossTypeTable(), std::move(value), type);
 }
 
 ceres::LossFunction* CreateLoss(LossType type, double scale) {

@@ -10,12 +10,16 @@
 
 namespace mlndt {
 
+class EnumTable;
+
 enum class LossType {
   NONE,
   HUBER,
   CAUCHY,
 };
 
+// The names of LossType's values (enum_table.h).
+const EnumTable& LossTypeTable();
 const char* LossTypeToString(LossType type);
 bool StringToLossType(std::string value, LossType* type);
 

@@ -5,8 +5,9 @@
 #include <cstdint>
 #include <sstream>
 
+#include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/check_option.h"
-#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/option_table.h"
 
 namespace mlndt {
 namespace {
@@ -322,35 +323,71 @@ int NumLayers(const LayeredGridOptions& options, double volume) {
 
 }  // namespace
 
-const char* CoarseWeightingToString(CoarseWeighting weighting) {
-  switch (weighting) {
-    case CoarseWeighting::POINTS:
-      return "POINTS";
-    case CoarseWeighting::FINEST_CELLS:
-      return "FINEST_CELLS";
-  }
-  return "UNKNOWN";
+const EnumTable& CoarseWeightingTable() {
+  static const EnumTable table({
+      {static_cast<int>(CoarseWeighting::POINTS), "POINTS"},
+      {static_cast<int>(CoarseWeighting::FINEST_CELLS), "FINEST_CELLS"},
+  });
+  return table;
 }
 
-bool StringToCoarseWeighting(std::string value, CoarseWeighting* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(POINTS, CoarseWeighting);
-  MLNDT_STRING_TO_ENUM(FINEST_CELLS, CoarseWeighting);
-  return false;
+const char* CoarseWeightingToString(CoarseWeighting weighting) {
+  return EnumToString(CoarseWeightingTable(), weighting);
+}
+
+bool StringToCoarseWeighting(std::string value, CoarseWeighting* weighting) {
+  return StringToEnum(CoarseWeightingTable(), std::move(value), weighting);
+}
+
+const OptionTable& LayeredGridOptionsTable() {
+  using S = LayeredGridOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("LayeredGridOptions")
+          .Int("division_constant",
+               &S::division_constant,
+               Closed(2, 512),
+               "q: layer i has about q^i cells over the bounding box.")
+          .Int("num_layers",
+               &S::num_layers,
+               Closed(1, 16),
+               "n, used when finest_cell_size_m == 0 (<= max_num_layers).")
+          .Double("finest_cell_size_m",
+                  &S::finest_cell_size_m,
+                  "m",
+                  ClosedOrZero(1e-3, 1e5),
+                  "When > 0, n is the smallest layer count whose finest cell "
+                  "is <= this.")
+          .Double("cell_size_m",
+                  &S::cell_size_m,
+                  "m",
+                  ClosedOrZero(1e-3, 1e5),
+                  "When > 0, one layer of cells of exactly this edge (the "
+                  "conventional NDT grid).")
+          .Int("max_num_layers",
+               &S::max_num_layers,
+               Closed(1, 16),
+               "Upper bound on n.")
+          .Int("min_points_per_cell",
+               &S::min_points_per_cell,
+               Closed(4, 1000000),
+               "A cell keeps a distribution with at least this many points.")
+          .Struct("regularization",
+                  &S::regularization,
+                  CellRegularizationTable(),
+                  "Covariance regularisation (ndt_cell.h).")
+          .Enum("coarse_weighting",
+                &S::coarse_weighting,
+                CoarseWeightingTable(),
+                "Weights of the points in the coarse layers' moments "
+                "(finest_cells: every finest cell alike).")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
 }
 
 bool LayeredGridOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_IN_RANGE(division_constant, 2, 512);
-  MLNDT_OPTION_IN_RANGE(max_num_layers, 1, 16);
+  if (!LayeredGridOptionsTable().Check(*this, error)) return false;
   MLNDT_OPTION_IN_RANGE(num_layers, 1, max_num_layers);
-  if (finest_cell_size_m != 0.0) {
-    MLNDT_OPTION_IN_RANGE(finest_cell_size_m, 1e-3, 1e5);
-  }
-  if (cell_size_m != 0.0) MLNDT_OPTION_IN_RANGE(cell_size_m, 1e-3, 1e5);
-  MLNDT_OPTION_IN_RANGE(min_points_per_cell, 4, 1000000);
-  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_ratio, 1e-9, 1.0);
-  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_m2, 0.0, 1e6);
-  MLNDT_OPTION_ENUM(coarse_weighting, CoarseWeightingToString);
   return true;
 }
 

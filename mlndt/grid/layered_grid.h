@@ -31,6 +31,9 @@
 
 namespace mlndt {
 
+class EnumTable;
+class OptionTable;
+
 // How the points of a coarse cell are weighted in its mean and covariance.
 enum class CoarseWeighting {
   POINTS,  // Every point alike (Eqs. 2-3).
@@ -44,6 +47,8 @@ enum class CoarseWeighting {
   FINEST_CELLS,
 };
 
+// The names of CoarseWeighting's values (enum_table.h).
+const EnumTable& CoarseWeightingTable();
 const char* CoarseWeightingToString(CoarseWeighting weighting);
 bool StringToCoarseWeighting(std::string value, CoarseWeighting* weighting);
 
@@ -75,6 +80,10 @@ struct LayeredGridOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// LayeredGridOptions's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& LayeredGridOptionsTable();
 
 // Equal when two option sets build the same map (for map caches).
 bool operator==(const LayeredGridOptions& a, const LayeredGridOptions& b);

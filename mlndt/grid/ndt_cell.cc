@@ -3,7 +3,28 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 
+#include "mlndt/common/option_table.h"
+
 namespace mlndt {
+
+const OptionTable& CellRegularizationTable() {
+  using S = CellRegularization;
+  static const OptionTable table =
+      OptionTableBuilder<S>("CellRegularization")
+          .Double("min_eigenvalue_ratio",
+                  &S::min_eigenvalue_ratio,
+                  "",
+                  Closed(1e-9, 1.0),
+                  "Cell eigenvalues are floored at this fraction of the "
+                  "largest (Section 4.1: 0.01).")
+          .Double("min_eigenvalue_m2",
+                  &S::min_eigenvalue_m2,
+                  "m^2",
+                  Closed(0.0, 1e6),
+                  "Absolute floor on every cell covariance eigenvalue.")
+          .Build();
+  return table;
+}
 
 bool MakeNdtCell(int32_t count,
                  const Eigen::Vector3d& mean,

@@ -21,6 +21,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct NdtCell {
   int32_t count = 0;                               // N, points in the cell.
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();  // mu, Eq. (2) [m].
@@ -37,6 +39,10 @@ struct CellRegularization {
   // Absolute floor on every eigenvalue [m^2] (sensor noise).
   double min_eigenvalue_m2 = 1e-3;
 };
+
+// CellRegularization's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& CellRegularizationTable();
 
 // Fills `cell` from a mean and an unbiased covariance (Eq. 3), regularising
 // the eigenvalues as described above. Returns false (and leaves `cell`

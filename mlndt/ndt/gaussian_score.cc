@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/check_option.h"
-#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/cost/transform_derivatives.h"
 
 namespace mlndt {
@@ -80,21 +80,20 @@ void Accumulate(const NdtLayer& layer,
 
 }  // namespace
 
-const char* NdtNeighborsToString(NdtNeighbors neighbors) {
-  switch (neighbors) {
-    case NdtNeighbors::DIRECT1:
-      return "DIRECT1";
-    case NdtNeighbors::DIRECT7:
-      return "DIRECT7";
-  }
-  return "UNKNOWN";
+const EnumTable& NdtNeighborsTable() {
+  static const EnumTable table({
+      {static_cast<int>(NdtNeighbors::DIRECT1), "DIRECT1"},
+      {static_cast<int>(NdtNeighbors::DIRECT7), "DIRECT7"},
+  });
+  return table;
 }
 
-bool StringToNdtNeighbors(std::string value, NdtNeighbors* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(DIRECT1, NdtNeighbors);
-  MLNDT_STRING_TO_ENUM(DIRECT7, NdtNeighbors);
-  return false;
+const char* NdtNeighborsToString(NdtNeighbors neighbors) {
+  return EnumToString(NdtNeighborsTable(), neighbors);
+}
+
+bool StringToNdtNeighbors(std::string value, NdtNeighbors* neighbors) {
+  return StringToEnum(NdtNeighborsTable(), std::move(value), neighbors);
 }
 
 GaussianScoreParameters ComputeGaussianScoreParameters(double outlier_ratio,

@@ -45,11 +45,15 @@
 
 namespace mlndt {
 
+class EnumTable;
+
 enum class NdtNeighbors {
   DIRECT1,  // The cell holding the point.
   DIRECT7,  // That cell and its 6 face neighbours.
 };
 
+// The names of NdtNeighbors's values (enum_table.h).
+const EnumTable& NdtNeighborsTable();
 const char* NdtNeighborsToString(NdtNeighbors neighbors);
 bool StringToNdtNeighbors(std::string value, NdtNeighbors* neighbors);
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/option_table.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/ndt/ndt_objective.h"
@@ -221,21 +222,80 @@ void RegisterOnGrid(const NdtOptions& options,
 
 }  // namespace
 
+const OptionTable& NdtOptionsTable() {
+  using S = NdtOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("NdtOptions")
+          .Struct("range_filter",
+                  &S::range_filter,
+                  RangeFilterOptionsTable(),
+                  "Returns dropped from both clouds.")
+          .Double("cell_size_m",
+                  &S::cell_size_m,
+                  "m",
+                  ClosedOrZero(1e-3, 1e5),
+                  "Cell edge; 0 = the paper's layer-2 cell (V / 64)^(1/3).")
+          .Int("min_points_per_cell",
+               &S::min_points_per_cell,
+               Closed(4, 1000000),
+               "A cell keeps a distribution with at least this many points.")
+          .Struct("regularization",
+                  &S::regularization,
+                  CellRegularizationTable(),
+                  "Covariance regularisation (ndt_cell.h).")
+          .Double("outlier_ratio",
+                  &S::outlier_ratio,
+                  "",
+                  {0.0, 1.0, true, true},
+                  "Magnusson's outlier ratio (PCL: 0.55).")
+          .Enum("neighbors",
+                &S::neighbors,
+                NdtNeighborsTable(),
+                "Cells a point is scored in: direct1 (its own) or direct7 "
+                "(+6 faces).")
+          .Struct("sampling",
+                  &S::sampling,
+                  SamplingOptionsTable(),
+                  "Which input points become residuals.")
+          .Int("max_iterations",
+               &S::max_iterations,
+               Closed(1, 10000),
+               "Newton iteration cap.")
+          .Double("step_tolerance",
+                  &S::step_tolerance,
+                  "m and rad",
+                  Closed(1e-12, 1.0),
+                  "Converged when a Newton step is shorter than this.")
+          .Double("max_step_norm",
+                  &S::max_step_norm,
+                  "m and rad",
+                  Closed(0.0, 1e3),
+                  "Longest Newton step ||delta xi||; 0 = unbounded.")
+          .Struct(
+              "newton", &S::newton, NewtonOptionsTable(), "Newton's options.")
+          .Int("num_threads",
+               &S::num_threads,
+               Closed(1, 256),
+               "Threads for the map build and the score.")
+          .Double("min_matched_fraction",
+                  &S::min_matched_fraction,
+                  "",
+                  Closed(0.0, 1.0),
+                  "FAILURE when fewer than this fraction of the sampled "
+                  "points are matched at the solution.")
+          .Struct("quality_check",
+                  &S::quality_check,
+                  QualityCheckOptionsTable(),
+                  "Whether the result can be trusted (quality_check.h).")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
 bool NdtOptions::IsValid(std::string* error) const {
-  if (cell_size_m != 0.0) MLNDT_OPTION_IN_RANGE(cell_size_m, 1e-3, 1e5);
-  MLNDT_OPTION_IN_RANGE(min_points_per_cell, 4, 1000000);
-  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_ratio, 1e-9, 1.0);
-  MLNDT_OPTION_IN_RANGE(regularization.min_eigenvalue_m2, 0.0, 1e6);
-  MLNDT_OPTION_GT(outlier_ratio, 0.0);
-  MLNDT_OPTION_LT(outlier_ratio, 1.0);
-  MLNDT_OPTION_ENUM(neighbors, NdtNeighborsToString);
-  MLNDT_OPTION_IN_RANGE(max_iterations, 1, 10000);
-  MLNDT_OPTION_IN_RANGE(step_tolerance, 1e-12, 1.0);
-  MLNDT_OPTION_IN_RANGE(max_step_norm, 0.0, 1e3);
-  MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
-  MLNDT_OPTION_IN_RANGE(min_matched_fraction, 0.0, 1.0);
-  return range_filter.IsValid(error) && sampling.IsValid(error) &&
-         newton.IsValid(error) && quality_check.IsValid(error);
+  return NdtOptionsTable().Check(*this, error) && range_filter.IsValid(error) &&
+         sampling.IsValid(error) && newton.IsValid(error) &&
+         quality_check.IsValid(error);
 }
 
 bool NdtGridOptions(const NdtOptions& options,

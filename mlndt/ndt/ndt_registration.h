@@ -26,6 +26,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct NdtOptions {
   // Returns that are not measurements (range_filter.h), dropped from the
   // input and, when RegisterNdt builds the grid, the reference.
@@ -70,6 +72,9 @@ struct NdtOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// NdtOptions's fields: name, unit, valid range and help (option_table.h).
+const OptionTable& NdtOptionsTable();
 
 // The one-layer map options of the NDT grid of `reference` (the cell edge of
 // options, or the paper's cell over its bounding box). False with *error for

@@ -2,27 +2,26 @@
 
 #include <glog/logging.h>
 
+#include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/check_option.h"
-#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/common/timer.h"
 
 namespace mlndt {
 
-const char* MotionModelToString(MotionModel model) {
-  switch (model) {
-    case MotionModel::CONSTANT_POSE:
-      return "CONSTANT_POSE";
-    case MotionModel::CONSTANT_VELOCITY:
-      return "CONSTANT_VELOCITY";
-  }
-  return "UNKNOWN";
+const EnumTable& MotionModelTable() {
+  static const EnumTable table({
+      {static_cast<int>(MotionModel::CONSTANT_POSE), "CONSTANT_POSE"},
+      {static_cast<int>(MotionModel::CONSTANT_VELOCITY), "CONSTANT_VELOCITY"},
+  });
+  return table;
 }
 
-bool StringToMotionModel(std::string value, MotionModel* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(CONSTANT_POSE, MotionModel);
-  MLNDT_STRING_TO_ENUM(CONSTANT_VELOCITY, MotionModel);
-  return false;
+const char* MotionModelToString(MotionModel model) {
+  return EnumToString(MotionModelTable(), model);
+}
+
+bool StringToMotionModel(std::string value, MotionModel* model) {
+  return StringToEnum(MotionModelTable(), std::move(value), model);
 }
 
 bool LocalizerOptions::IsValid(std::string* error) const {

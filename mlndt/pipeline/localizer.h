@@ -34,11 +34,15 @@
 
 namespace mlndt {
 
+class EnumTable;
+
 enum class MotionModel {
   CONSTANT_POSE,      // Scan k starts from pose_{k-1}.
   CONSTANT_VELOCITY,  // ... moved by the last relative motion.
 };
 
+// The names of MotionModel's values (enum_table.h).
+const EnumTable& MotionModelTable();
 const char* MotionModelToString(MotionModel model);
 // Case-insensitive: "constant_pose", "constant_velocity".
 bool StringToMotionModel(std::string value, MotionModel* model);

@@ -8,19 +8,49 @@
 #include <sstream>
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/option_table.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/cell_match.h"
 
 namespace mlndt {
 
+const OptionTable& QualityCheckOptionsTable() {
+  using S = QualityCheckOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("QualityCheckOptions")
+          .Bool("enabled",
+                &S::enabled,
+                "Report LOW_QUALITY/DEGENERATE instead of CONVERGENCE when "
+                "the fit at the solution fails the check; off: the solver's "
+                "termination is reported as it is.")
+          .Double("inlier_gate",
+                  &S::inlier_gate,
+                  "",
+                  Closed(0.5, 10.0),
+                  "Mahalanobis distance below which a point is an inlier.")
+          .Double("min_inlier_fraction",
+                  &S::min_inlier_fraction,
+                  "",
+                  Closed(0.0, 1.0),
+                  "LOW_QUALITY below this share of inliers.")
+          .Double("max_mean_score",
+                  &S::max_mean_score,
+                  "",
+                  LeftOpen(0.0, 1e6),
+                  "LOW_QUALITY above this mean score per matched point.")
+          .Double("min_constraint_ratio",
+                  &S::min_constraint_ratio,
+                  "",
+                  RightOpen(0.0, 1.0),
+                  "DEGENERATE below this weakest/strongest information "
+                  "ratio.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
 bool QualityCheckOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_IN_RANGE(inlier_gate, 0.5, 10.0);
-  MLNDT_OPTION_IN_RANGE(min_inlier_fraction, 0.0, 1.0);
-  MLNDT_OPTION_GT(max_mean_score, 0.0);
-  MLNDT_OPTION_LE(max_mean_score, 1e6);
-  MLNDT_OPTION_GE(min_constraint_ratio, 0.0);
-  MLNDT_OPTION_LT(min_constraint_ratio, 1.0);
-  return true;
+  return QualityCheckOptionsTable().Check(*this, error);
 }
 
 ConstraintAnalysis AnalyseConstraints(

@@ -28,6 +28,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct QualityCheckOptions {
   // Off: the solver's termination is reported as it is.
   bool enabled = true;
@@ -45,6 +47,10 @@ struct QualityCheckOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// QualityCheckOptions's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& QualityCheckOptionsTable();
 
 // How well the pose is constrained at a solution.
 struct ConstraintAnalysis {

@@ -1,21 +1,117 @@
 #include "mlndt/registration/registration_options.h"
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/option_table.h"
 
 namespace mlndt {
 
+const OptionTable& InitialGuessUncertaintyTable() {
+  using S = InitialGuessUncertainty;
+  static const OptionTable table =
+      OptionTableBuilder<S>("InitialGuessUncertainty")
+          .Bool("given",
+                &S::given,
+                "False: nothing is known about the guess (schedule.start_layer "
+                "applies).")
+          .Double("translation_m",
+                  &S::translation_m,
+                  "m",
+                  Closed(0.0, 1e4),
+                  "How far the guess may be off.")
+          .Double("rotation_deg",
+                  &S::rotation_deg,
+                  "deg",
+                  Closed(0.0, 180.0),
+                  "How far the guess may be turned.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
 bool InitialGuessUncertainty::IsValid(std::string* error) const {
-  MLNDT_OPTION_IN_RANGE(translation_m, 0.0, 1e4);
-  MLNDT_OPTION_IN_RANGE(rotation_deg, 0.0, 180.0);
-  return true;
+  return InitialGuessUncertaintyTable().Check(*this, error);
+}
+
+const OptionTable& RetryOptionsTable() {
+  using S = RetryOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("RetryOptions")
+          .DoubleList("yaw_seeds_deg",
+                      &S::yaw_seeds_deg,
+                      "deg",
+                      Closed(-180.0, 180.0),
+                      "Yaw turns of the guess tried, in order, until a result "
+                      "converges and passes the quality check; empty = no "
+                      "retry. At most 36.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
 }
 
 bool RetryOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_LE(yaw_seeds_deg.size(), size_t{36});
-  for (const double yaw_deg : yaw_seeds_deg) {
-    MLNDT_OPTION_IN_RANGE(yaw_deg, -180.0, 180.0);
-  }
-  return true;
+  return RetryOptionsTable().Check(*this, error);
+}
+
+const OptionTable& RegistrationOptionsTable() {
+  using S = RegistrationOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("RegistrationOptions")
+          .Struct("range_filter",
+                  &S::range_filter,
+                  RangeFilterOptionsTable(),
+                  "Returns dropped from the input (and from the reference "
+                  "when the map is built here).")
+          .Struct("grid",
+                  &S::grid,
+                  LayeredGridOptionsTable(),
+                  "The reference map (not for LayeredMap.register: the map "
+                  "exists).")
+          .Struct("sampling",
+                  &S::sampling,
+                  SamplingOptionsTable(),
+                  "Which input points become residuals (Section 4.3).")
+          .Struct("schedule",
+                  &S::schedule,
+                  LayerScheduleOptionsTable(),
+                  "Start layer, iterations per layer, convergence (Table 1).")
+          .Struct("objective",
+                  &S::objective,
+                  ObjectiveOptionsTable(),
+                  "What is minimised (Eq. 10).")
+          .Struct("backend",
+                  &S::backend,
+                  BackendOptionsTable(),
+                  "Which minimiser, with its options.")
+          .Int("num_threads",
+               &S::num_threads,
+               Closed(1, 256),
+               "Threads for the map build and the backend (Ceres evaluator "
+               "threads, or OpenMP threads for newton and lm); with > 1 on a "
+               "loaded machine set OMP_WAIT_POLICY=passive.")
+          .Double("min_matched_fraction",
+                  &S::min_matched_fraction,
+                  "",
+                  Closed(0.0, 1.0),
+                  "FAILURE when fewer than this fraction of the sampled "
+                  "points are matched at the solution.")
+          .Struct("quality_check",
+                  &S::quality_check,
+                  QualityCheckOptionsTable(),
+                  "Whether the result can be trusted (quality_check.h).")
+          .Struct("initial_uncertainty",
+                  &S::initial_uncertainty,
+                  InitialGuessUncertaintyTable(),
+                  "How good the initial guess is; the initial_uncertainty "
+                  "argument sets it.")
+          .Struct("retry",
+                  &S::retry,
+                  RetryOptionsTable(),
+                  "Runs from turned guesses when the first fails the quality "
+                  "check.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
 }
 
 bool RegistrationOptions::IsValid(std::string* error) const {
@@ -26,9 +122,7 @@ bool RegistrationOptions::IsValid(std::string* error) const {
       !backend.IsValid(error)) {
     return false;
   }
-  MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
-  MLNDT_OPTION_IN_RANGE(min_matched_fraction, 0.0, 1.0);
-  return true;
+  return RegistrationOptionsTable().Check(*this, error);
 }
 
 RegistrationOptions PaperRegistrationOptions() {

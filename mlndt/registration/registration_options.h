@@ -19,6 +19,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 // How far the initial guess may be from the truth, when the caller knows
 // (odometry, a constant-velocity prediction, a prior map pose). It picks the
 // start layer (Section 5.3's guideline: the better the guess, the finer the
@@ -33,6 +35,10 @@ struct InitialGuessUncertainty {
   bool IsValid(std::string* error) const;
 };
 
+// InitialGuessUncertainty's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& InitialGuessUncertaintyTable();
+
 // Runs again when the result fails the quality check (a wrong local
 // minimum, most often a rotation beyond the coarse layers' basin): from the
 // guess turned by each yaw seed about the input's centroid, in order, until
@@ -44,6 +50,9 @@ struct RetryOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// RetryOptions's fields: name, unit, valid range and help (option_table.h).
+const OptionTable& RetryOptionsTable();
 
 struct RegistrationOptions {
   // Returns of the raw scans that are not measurements (at the sensor, at a
@@ -77,6 +86,10 @@ struct RegistrationOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// RegistrationOptions's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& RegistrationOptionsTable();
 
 // The paper's configuration (Sections 4 and 5): n = 4 layers, start on
 // layer 2, 3 iterations a layer with every sampled point, the plain Eq. (10)

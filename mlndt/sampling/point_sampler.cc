@@ -10,7 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/enum_table.h"
+#include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/option_table.h"
 #include "mlndt/sampling/voxel_key.h"
 
 namespace mlndt {
@@ -119,53 +121,70 @@ void AppendCentroids(const PointCloud& input,
 
 }  // namespace
 
-const char* SamplingMethodToString(SamplingMethod method) {
-  switch (method) {
-    case SamplingMethod::ALL:
-      return "ALL";
-    case SamplingMethod::RANDOM:
-      return "RANDOM";
-    case SamplingMethod::GBS:
-      return "GBS";
-    case SamplingMethod::VOXEL_CENTROID:
-      return "VOXEL_CENTROID";
-  }
-  return "UNKNOWN";
+const EnumTable& SamplingMethodTable() {
+  static const EnumTable table({
+      {static_cast<int>(SamplingMethod::ALL), "ALL"},
+      {static_cast<int>(SamplingMethod::RANDOM), "RANDOM"},
+      {static_cast<int>(SamplingMethod::GBS), "GBS"},
+      {static_cast<int>(SamplingMethod::VOXEL_CENTROID), "VOXEL_CENTROID"},
+  });
+  return table;
 }
 
-bool StringToSamplingMethod(std::string value, SamplingMethod* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(ALL, SamplingMethod);
-  MLNDT_STRING_TO_ENUM(RANDOM, SamplingMethod);
-  MLNDT_STRING_TO_ENUM(GBS, SamplingMethod);
-  MLNDT_STRING_TO_ENUM(VOXEL_CENTROID, SamplingMethod);
-  return false;
+const char* SamplingMethodToString(SamplingMethod method) {
+  return EnumToString(SamplingMethodTable(), method);
+}
+
+bool StringToSamplingMethod(std::string value, SamplingMethod* method) {
+  return StringToEnum(SamplingMethodTable(), std::move(value), method);
+}
+
+const OptionTable& SamplingOptionsTable() {
+  using S = SamplingOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("SamplingOptions")
+          .Enum("method",
+                &S::method,
+                SamplingMethodTable(),
+                "Which input points become residuals (Section 4.3).")
+          .Double("random_fraction",
+                  &S::random_fraction,
+                  "",
+                  LeftOpen(0.0, 1.0),
+                  "RANDOM: fraction of the input kept (used when random_count "
+                  "== 0).")
+          .Uint64("random_count",
+                  &S::random_count,
+                  "RANDOM: exact number of points kept when > 0.")
+          .Double("gbs_cell_size_m",
+                  &S::gbs_cell_size_m,
+                  "m",
+                  LeftOpen(0.0, kMaxSamplingCellM),
+                  "GBS: cell edge.")
+          .Int("gbs_points_per_cell",
+               &S::gbs_points_per_cell,
+               OptionRange(),
+               "GBS: a cell with more points gives this many, at random (>= "
+               "gbs_min_points_per_cell).")
+          .Int("gbs_min_points_per_cell",
+               &S::gbs_min_points_per_cell,
+               AtLeast(1),
+               "GBS: a cell with fewer points gives none.")
+          .Double("voxel_size_m",
+                  &S::voxel_size_m,
+                  "m",
+                  LeftOpen(0.0, kMaxSamplingCellM),
+                  "VOXEL_CENTROID: voxel edge.")
+          .Uint64("seed", &S::seed, "Seed of every random choice.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
 }
 
 bool SamplingOptions::IsValid(std::string* error) const {
-  std::ostringstream message;
-  if (!(random_fraction > 0.0 && random_fraction <= 1.0)) {
-    message << "random_fraction must be in (0, 1]; got " << random_fraction;
-  } else if (!IsPositiveFinite(gbs_cell_size_m) ||
-             gbs_cell_size_m > kMaxSamplingCellM) {
-    message << "gbs_cell_size_m must be in (0, " << kMaxSamplingCellM
-            << "] m; got " << gbs_cell_size_m;
-  } else if (gbs_min_points_per_cell < 1) {
-    message << "gbs_min_points_per_cell must be >= 1; got "
-            << gbs_min_points_per_cell;
-  } else if (gbs_points_per_cell < gbs_min_points_per_cell) {
-    message << "gbs_points_per_cell (" << gbs_points_per_cell
-            << ") must be >= gbs_min_points_per_cell ("
-            << gbs_min_points_per_cell << ")";
-  } else if (!IsPositiveFinite(voxel_size_m) ||
-             voxel_size_m > kMaxSamplingCellM) {
-    message << "voxel_size_m must be in (0, " << kMaxSamplingCellM
-            << "] m; got " << voxel_size_m;
-  } else {
-    return true;
-  }
-  SetError(message.str(), error);
-  return false;
+  if (!SamplingOptionsTable().Check(*this, error)) return false;
+  MLNDT_OPTION_GE(gbs_points_per_cell, gbs_min_points_per_cell);
+  return true;
 }
 
 bool SamplePoints(const SamplingOptions& options,

@@ -23,6 +23,9 @@
 
 namespace mlndt {
 
+class EnumTable;
+class OptionTable;
+
 enum class SamplingMethod {
   ALL,             // Every input point, unchanged.
   RANDOM,          // Uniformly random subset without repetition.
@@ -30,6 +33,8 @@ enum class SamplingMethod {
   VOXEL_CENTROID,  // One centroid per occupied voxel.
 };
 
+// The names of SamplingMethod's values (enum_table.h).
+const EnumTable& SamplingMethodTable();
 const char* SamplingMethodToString(SamplingMethod method);
 // Case-insensitive: "all", "random", "gbs", "voxel_centroid".
 bool StringToSamplingMethod(std::string value, SamplingMethod* method);
@@ -66,6 +71,9 @@ struct SamplingOptions {
   // Every field is checked, whichever method is selected.
   bool IsValid(std::string* error) const;
 };
+
+// SamplingOptions's fields: name, unit, valid range and help (option_table.h).
+const OptionTable& SamplingOptionsTable();
 
 struct SamplingSummary {
   size_t input_points = 0;          // Points in the input cloud.

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/option_table.h"
 #include "mlndt/common/timer.h"
 
 namespace mlndt {
@@ -26,15 +27,53 @@ StageControl ControlFor(const LayerScheduleOptions& options, int layer, int n) {
 
 }  // namespace
 
+const OptionTable& LayerScheduleOptionsTable() {
+  using S = LayerScheduleOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("LayerScheduleOptions")
+          .Int("start_layer",
+               &S::start_layer,
+               Closed(-16, 16),
+               "1-based start layer s; <= 0 counts from the finest (0 = last "
+               "layer).")
+          .Int("iterations_per_layer",
+               &S::iterations_per_layer,
+               Closed(1, 1000),
+               "Iterations on every layer but the last.")
+          .Int("max_final_iterations",
+               &S::max_final_iterations,
+               Closed(1, 10000),
+               "Cap on the last layer's iterations.")
+          .Double("step_tolerance",
+                  &S::step_tolerance,
+                  "m and rad",
+                  Closed(1e-12, 1.0),
+                  "The last layer converges when a successful step has "
+                  "||delta xi|| below this.")
+          .Double("coarse_step_tolerance",
+                  &S::coarse_step_tolerance,
+                  "m and rad",
+                  Closed(0.0, 1.0),
+                  "A coarse layer ends early below this update norm; 0 runs "
+                  "every coarse layer fully.")
+          .Int("max_coarse_point_stride",
+               &S::max_coarse_point_stride,
+               Closed(1, 1024),
+               "Layer i of n uses every min(2^(n-i), this)-th sample (1 = "
+               "all).")
+          .Double("cells_per_uncertainty",
+                  &S::cells_per_uncertainty,
+                  "",
+                  Closed(0.5, 100.0),
+                  "With a known guess uncertainty d, start on the finest "
+                  "layer whose cell is >= this * d.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
 bool LayerScheduleOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_IN_RANGE(start_layer, -16, 16);
-  MLNDT_OPTION_IN_RANGE(iterations_per_layer, 1, 1000);
-  MLNDT_OPTION_IN_RANGE(max_final_iterations, 1, 10000);
-  MLNDT_OPTION_IN_RANGE(step_tolerance, 1e-12, 1.0);
-  MLNDT_OPTION_IN_RANGE(coarse_step_tolerance, 0.0, 1.0);
-  MLNDT_OPTION_IN_RANGE(max_coarse_point_stride, 1, 1024);
-  MLNDT_OPTION_IN_RANGE(cells_per_uncertainty, 0.5, 100.0);
-  return true;
+  return LayerScheduleOptionsTable().Check(*this, error);
 }
 
 LayerScheduleOptions PaperLayerScheduleOptions() {

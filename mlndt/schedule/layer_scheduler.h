@@ -16,6 +16,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 // The library's schedule; PaperLayerScheduleOptions() is the paper's
 // (docs/defaults.md compares them).
 struct LayerScheduleOptions {
@@ -47,6 +49,10 @@ struct LayerScheduleOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// LayerScheduleOptions's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& LayerScheduleOptionsTable();
 
 // Table 1 as the paper runs it: start on layer 2, 3 iterations a layer,
 // every sampled point on every layer.

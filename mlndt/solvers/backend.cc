@@ -1,28 +1,27 @@
 #include "mlndt/solvers/backend.h"
 
-#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/enum_table.h"
 
 namespace mlndt {
 
-const char* BackendTypeToString(BackendType type) {
-  switch (type) {
-    case BackendType::CERES:
-      return "CERES";
-    case BackendType::NEWTON:
-      return "NEWTON";
-    case BackendType::LEVENBERG_MARQUARDT:
-      return "LEVENBERG_MARQUARDT";
-  }
-  return "UNKNOWN";
+const EnumTable& BackendTypeTable() {
+  static const EnumTable table(
+      {
+          {static_cast<int>(BackendType::CERES), "CERES"},
+          {static_cast<int>(BackendType::NEWTON), "NEWTON"},
+          {static_cast<int>(BackendType::LEVENBERG_MARQUARDT),
+           "LEVENBERG_MARQUARDT"},
+      },
+      {{static_cast<int>(BackendType::LEVENBERG_MARQUARDT), "LM"}});
+  return table;
 }
 
-bool StringToBackendType(std::string value, BackendType* result) {
-  UpperCase(&value);
-  if (value == "LM") value = "LEVENBERG_MARQUARDT";
-  MLNDT_STRING_TO_ENUM(CERES, BackendType);
-  MLNDT_STRING_TO_ENUM(NEWTON, BackendType);
-  MLNDT_STRING_TO_ENUM(LEVENBERG_MARQUARDT, BackendType);
-  return false;
+const char* BackendTypeToString(BackendType type) {
+  return EnumToString(BackendTypeTable(), type);
+}
+
+bool StringToBackendType(std::string value, BackendType* type) {
+  return StringToEnum(BackendTypeTable(), std::move(value), type);
 }
 
 }  // namespace mlndt

@@ -18,12 +18,16 @@
 
 namespace mlndt {
 
+class EnumTable;
+
 enum class BackendType {
   CERES,                // Auto-diff residuals in a ceres::Problem per stage.
   NEWTON,               // Hand-written Newton, full Hessian (Sec. 4.1).
   LEVENBERG_MARQUARDT,  // Hand-written LM on whitened residuals (Sec. 4.2).
 };
 
+// The names of BackendType's values (enum_table.h).
+const EnumTable& BackendTypeTable();
 const char* BackendTypeToString(BackendType type);
 // Case-insensitive; "lm" names LEVENBERG_MARQUARDT.
 bool StringToBackendType(std::string value, BackendType* type);

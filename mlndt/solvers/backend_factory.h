@@ -13,6 +13,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct BackendOptions {
   BackendType type = BackendType::CERES;
   CeresBackendOptions ceres;                      // type CERES.
@@ -22,6 +24,9 @@ struct BackendOptions {
   // Checks `type` and the options of every backend.
   bool IsValid(std::string* error) const;
 };
+
+// BackendOptions's fields: name, unit, valid range and help (option_table.h).
+const OptionTable& BackendOptionsTable();
 
 // A new backend of options.type; nullptr with *error for invalid options.
 std::unique_ptr<Backend> CreateBackend(const BackendOptions& options,

@@ -4,6 +4,7 @@
 #include <ceres/solver.h>
 #include <glog/logging.h>
 
+#include "mlndt/common/option_table.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/layer_binding.h"
 #include "mlndt/cost/mlndt_point_cost.h"
@@ -92,7 +93,28 @@ class TraceCallback : public ceres::IterationCallback {
 
 }  // namespace
 
+const OptionTable& CeresBackendOptionsTable() {
+  using S = CeresBackendOptions;
+  static const EnumTable linear_solvers =
+      EnumTableFromToString(ceres::LinearSolverTypeToString);
+  static const EnumTable trust_regions =
+      EnumTableFromToString(ceres::TrustRegionStrategyTypeToString);
+  static const OptionTable table = OptionTableBuilder<S>("CeresBackendOptions")
+                                       .Enum("linear_solver_type",
+                                             &S::linear_solver_type,
+                                             linear_solvers,
+                                             "Ceres linear solver.")
+                                       .Enum("trust_region_strategy_type",
+                                             &S::trust_region_strategy_type,
+                                             trust_regions,
+                                             "Ceres trust-region strategy.")
+                                       .Validator(&S::IsValid)
+                                       .Build();
+  return table;
+}
+
 bool CeresBackendOptions::IsValid(std::string* error) const {
+  if (!CeresBackendOptionsTable().Check(*this, error)) return false;
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = linear_solver_type;
   solver_options.trust_region_strategy_type = trust_region_strategy_type;

@@ -21,6 +21,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct CeresBackendOptions {
   // 6 parameters: dense normal equations are the cheapest adequate solver.
   ceres::LinearSolverType linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
@@ -39,6 +41,10 @@ struct CeresBackendOptions {
   // library, DOGLEG with an iterative solver).
   bool IsValid(std::string* error) const;
 };
+
+// CeresBackendOptions's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& CeresBackendOptionsTable();
 
 class CeresBackend : public Backend {
  public:

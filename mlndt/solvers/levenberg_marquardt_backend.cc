@@ -4,41 +4,60 @@
 
 #include <Eigen/Cholesky>
 
+#include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/check_option.h"
-#include "mlndt/common/internal/enum_strings.h"
+#include "mlndt/common/option_table.h"
 #include "mlndt/solvers/internal/stage_monitor.h"
 
 namespace mlndt {
 
-const char* LmResidualToString(LmResidual residual) {
-  switch (residual) {
-    case LmResidual::WHITENED:
-      return "WHITENED";
-    case LmResidual::SCALAR_SCORE:
-      return "SCALAR_SCORE";
-  }
-  return "UNKNOWN";
+const EnumTable& LmResidualTable() {
+  static const EnumTable table({
+      {static_cast<int>(LmResidual::WHITENED), "WHITENED"},
+      {static_cast<int>(LmResidual::SCALAR_SCORE), "SCALAR_SCORE"},
+  });
+  return table;
 }
 
-bool StringToLmResidual(std::string value, LmResidual* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(WHITENED, LmResidual);
-  MLNDT_STRING_TO_ENUM(SCALAR_SCORE, LmResidual);
-  return false;
+const char* LmResidualToString(LmResidual residual) {
+  return EnumToString(LmResidualTable(), residual);
+}
+
+bool StringToLmResidual(std::string value, LmResidual* residual) {
+  return StringToEnum(LmResidualTable(), std::move(value), residual);
+}
+
+const OptionTable& LevenbergMarquardtOptionsTable() {
+  using S = LevenbergMarquardtOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("LevenbergMarquardtOptions")
+          .Double("initial_lambda_factor",
+                  &S::initial_lambda_factor,
+                  "",
+                  Closed(1e-15, 1e6),
+                  "lambda_0 / mean(diag(J^T J)).")
+          .Double("lambda_decrease",
+                  &S::lambda_decrease,
+                  "",
+                  LeftOpen(1.0, 1e6),
+                  "lambda divisor after a successful step.")
+          .Double("lambda_increase",
+                  &S::lambda_increase,
+                  "",
+                  LeftOpen(1.0, 1e6),
+                  "lambda factor after a rejected step.")
+          .Enum("residual",
+                &S::residual,
+                LmResidualTable(),
+                "The residual LM minimises: whitened (3 per point) or "
+                "scalar_score (sqrt of the per-point score).")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
 }
 
 bool LevenbergMarquardtOptions::IsValid(std::string* error) const {
-  if (residual != LmResidual::WHITENED &&
-      residual != LmResidual::SCALAR_SCORE) {
-    if (error) *error = "residual: not a LmResidual value";
-    return false;
-  }
-  MLNDT_OPTION_IN_RANGE(initial_lambda_factor, 1e-15, 1e6);
-  MLNDT_OPTION_GT(lambda_decrease, 1.0);
-  MLNDT_OPTION_LE(lambda_decrease, 1e6);
-  MLNDT_OPTION_GT(lambda_increase, 1.0);
-  MLNDT_OPTION_LE(lambda_increase, 1e6);
-  return true;
+  return LevenbergMarquardtOptionsTable().Check(*this, error);
 }
 
 namespace {

@@ -18,6 +18,9 @@
 
 namespace mlndt {
 
+class EnumTable;
+class OptionTable;
+
 // What the LM normal equations are built from.
 enum class LmResidual {
   // Whitened 3-vectors W_k e_k: the normal equations of the score itself.
@@ -29,6 +32,8 @@ enum class LmResidual {
 };
 
 // "WHITENED", "SCALAR_SCORE".
+// The names of LmResidual's values (enum_table.h).
+const EnumTable& LmResidualTable();
 const char* LmResidualToString(LmResidual residual);
 // Case-insensitive.
 bool StringToLmResidual(std::string value, LmResidual* residual);
@@ -42,6 +47,10 @@ struct LevenbergMarquardtOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// LevenbergMarquardtOptions's fields: name, unit, valid range and help
+// (option_table.h).
+const OptionTable& LevenbergMarquardtOptionsTable();
 
 void MinimizeLevenbergMarquardt(const Objective& objective,
                                 const LevenbergMarquardtOptions& lm_options,

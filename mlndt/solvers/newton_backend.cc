@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/option_table.h"
 #include "mlndt/solvers/internal/stage_monitor.h"
 
 namespace mlndt {
@@ -27,10 +28,31 @@ Matrix6d SafelyPositiveDefinite(const Matrix6d& h, double ratio) {
 
 }  // namespace
 
+const OptionTable& NewtonOptionsTable() {
+  using S = NewtonOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("NewtonOptions")
+          .Bool("line_search",
+                &S::line_search,
+                "Backtracking line search (halving the step until the score "
+                "decreases).")
+          .Int("max_line_search_steps",
+               &S::max_line_search_steps,
+               Closed(1, 60),
+               "Halvings before the step is rejected.")
+          .Double("min_eigenvalue_ratio",
+                  &S::min_eigenvalue_ratio,
+                  "",
+                  Closed(1e-15, 1.0),
+                  "H is lifted by gamma I until its smallest eigenvalue is "
+                  "this fraction of its largest.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
 bool NewtonOptions::IsValid(std::string* error) const {
-  MLNDT_OPTION_IN_RANGE(max_line_search_steps, 1, 60);
-  MLNDT_OPTION_IN_RANGE(min_eigenvalue_ratio, 1e-15, 1.0);
-  return true;
+  return NewtonOptionsTable().Check(*this, error);
 }
 
 void MinimizeNewton(const Objective& objective,

@@ -15,6 +15,8 @@
 
 namespace mlndt {
 
+class OptionTable;
+
 struct NewtonOptions {
   bool line_search = true;
   // Halvings before the step is rejected. In [1, 60].
@@ -26,6 +28,9 @@ struct NewtonOptions {
 
   bool IsValid(std::string* error) const;
 };
+
+// NewtonOptions's fields: name, unit, valid range and help (option_table.h).
+const OptionTable& NewtonOptionsTable();
 
 // Minimises `objective` from *xi for at most control.max_iterations
 // iterations, recording one IterationRecord per iteration.

@@ -72,6 +72,7 @@ class LevenbergMarquardtOptions(TypedDict, total=False):
     initial_lambda_factor: float
     lambda_decrease: float
     lambda_increase: float
+    residual: str  # WHITENED | SCALAR_SCORE
 
 class BackendOptions(TypedDict, total=False):
     type: str  # CERES | NEWTON | LEVENBERG_MARQUARDT (or "lm")

@@ -1,8 +1,9 @@
 #pragma once
 
-// The bridge between the library's option structs and Python keyword
-// arguments: one StructBinding per struct lists its fields (name as in the
-// C++ header, member pointer, a one-line doc) once, and gives
+// The bridge between the library's option tables (mlndt/common/
+// option_table.h: every field's name, unit, range and help, written once)
+// and Python keyword arguments. A StructBinding walks a struct's table and
+// gives
 //   - Update: set the fields named in a dict, strictly typed; an unknown key
 //     or a value of the wrong type raises ValueError naming the full path
 //     ("grid.finest_cell_size_m");
@@ -10,17 +11,19 @@
 //     names (what mlndt.default_options() returns);
 //   - Validate: the struct's own IsValid (children first), with the path put
 //     into the library's message;
-//   - Describe: the field list with types and defaults, for docstrings.
-// options.cc holds the bindings of the library's structs, one function each.
+//   - Describe: the field list with types, defaults, units and ranges, for
+//     docstrings.
+// A field added to a struct's table is a keyword here with no change.
 
 #include <pybind11/pybind11.h>
 
-#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
+
+#include "mlndt/common/option_table.h"
 
 namespace mlndt {
 namespace python {
@@ -120,226 +123,55 @@ struct OptionCodec<std::vector<double>> {
   }
 };
 
-// The names of an enum's values through its XToString, which returns
-// "UNKNOWN" past the last one (the library's and Ceres' enums count from 0).
-template <typename E>
-std::vector<std::string> EnumNames(const char* (*to_string)(E)) {
-  std::vector<std::string> names;
-  for (int i = 0; i < 256; ++i) {
-    const std::string name = to_string(static_cast<E>(i));
-    if (name == "UNKNOWN") break;
-    names.push_back(name);
-  }
-  return names;
-}
+// The Python side of an option table (non-template; StructBinding is its
+// typed front). `s` points to a struct of the table's type.
+void UpdateFromPython(const OptionTable& table,
+                      py::handle mapping,
+                      const std::string& path,
+                      void* s);
+py::dict TableToDict(const OptionTable& table, const void* s);
+bool ValidateTable(const OptionTable& table,
+                   const void* s,
+                   const std::string& path,
+                   std::string* error);
+std::string DescribeTable(const OptionTable& table,
+                          const void* s,
+                          const std::string& indent);
 
 template <typename S>
 class StructBinding {
  public:
-  // `cpp_name`: the struct's C++ name, for docs and messages.
-  explicit StructBinding(std::string cpp_name)
-      : cpp_name_(std::move(cpp_name)) {}
+  explicit StructBinding(const OptionTable& table) : table_(table) {}
 
-  const std::string& cpp_name() const { return cpp_name_; }
-
-  // A scalar or list field (bool, integers, double, std::vector<double>).
-  template <typename T>
-  StructBinding& Field(const char* name, T S::*member, const char* doc) {
-    using Codec = OptionCodec<T>;
-    Entry entry = MakeEntry(name, doc, Codec::TypeName());
-    entry.set = [member, name](
-                    py::handle value, const std::string& path, S* s) {
-      T parsed{};
-      if (!Codec::FromPython(value, &parsed)) {
-        ThrowValueError("invalid option: " + path + name + " = " +
-                        DescribeValue(value) + "; expected " +
-                        Codec::TypeName());
-      }
-      s->*member = std::move(parsed);
-    };
-    entry.get = [member](const S& s) { return Codec::ToPython(s.*member); };
-    entry.repr = [member](const S& s) { return Codec::Repr(s.*member); };
-    entries_.push_back(std::move(entry));
-    return *this;
-  }
-
-  // An enum field, read with StringToX (case-insensitive) and written with
-  // XToString.
-  template <typename E, typename FromString>
-  StructBinding& EnumField(const char* name,
-                           E S::*member,
-                           const char* (*to_string)(E),
-                           FromString from_string,
-                           const char* doc) {
-    const std::vector<std::string> names = EnumNames(to_string);
-    std::string choices;
-    for (size_t i = 0; i < names.size(); ++i) {
-      choices += (i ? " | " : "") + names[i];
-    }
-    Entry entry = MakeEntry(name, doc, "str: " + choices);
-    entry.set = [member, name, from_string, choices](
-                    py::handle value, const std::string& path, S* s) {
-      E parsed{};
-      if (!py::isinstance<py::str>(value) ||
-          !from_string(value.cast<std::string>(), &parsed)) {
-        ThrowValueError("invalid option: " + path + name + " = " +
-                        DescribeValue(value) + "; expected one of " + choices +
-                        " (any case)");
-      }
-      s->*member = parsed;
-    };
-    entry.get = [member, to_string](const S& s) {
-      return py::str(to_string(s.*member));
-    };
-    entry.repr = [member, to_string](const S& s) {
-      return std::string("\"") + to_string(s.*member) + "\"";
-    };
-    entries_.push_back(std::move(entry));
-    return *this;
-  }
-
-  // A nested struct, given as a dict of its fields.
-  template <typename N>
-  StructBinding& Nested(const char* name,
-                        N S::*member,
-                        const StructBinding<N>& binding,
-                        const char* doc) {
-    Entry entry = MakeEntry(name, doc, "dict (" + binding.cpp_name() + ")");
-    entry.nested = true;
-    entry.set = [member, name, &binding](
-                    py::handle value, const std::string& path, S* s) {
-      binding.Update(value, path + name + ".", &(s->*member));
-    };
-    entry.get = [member, &binding](const S& s) {
-      return py::object(binding.ToDict(s.*member));
-    };
-    entry.validate = [member, name, &binding](const S& s,
-                                              const std::string& path,
-                                              std::string* error) {
-      return binding.Validate(s.*member, path + name + ".", error);
-    };
-    entry.describe = [member, &binding](const S& s, const std::string& indent) {
-      return binding.Describe(s.*member, indent);
-    };
-    entries_.push_back(std::move(entry));
-    return *this;
-  }
-
-  // The struct's IsValid, run by Validate after its children's.
-  StructBinding& Validator(bool (S::*is_valid)(std::string*) const) {
-    is_valid_ = is_valid;
-    return *this;
-  }
+  const std::string& cpp_name() const { return table_.struct_name(); }
 
   // Sets the fields named by the keys of `mapping` (a dict or any Mapping);
   // `path` prefixes field names in messages ("grid.").
   void Update(py::handle mapping, const std::string& path, S* s) const {
-    if (!py::isinstance<py::dict>(mapping) && !py::hasattr(mapping, "keys")) {
-      ThrowValueError("invalid option: " +
-                      (path.empty() ? std::string("options")
-                                    : path.substr(0, path.size() - 1)) +
-                      " = " + DescribeValue(mapping) + "; expected a dict of " +
-                      cpp_name_ + " fields (" + FieldNames() + ")");
-    }
-    const py::dict dict = py::dict(py::reinterpret_borrow<py::object>(mapping));
-    for (const auto& item : dict) {
-      if (!py::isinstance<py::str>(item.first)) {
-        ThrowValueError("invalid option: " + path + DescribeValue(item.first) +
-                        ": option names are strings");
-      }
-      const std::string key = item.first.cast<std::string>();
-      const Entry* entry = Find(key);
-      if (entry == nullptr) {
-        ThrowValueError("unknown option " + path + key + " (" + cpp_name_ +
-                        " has: " + FieldNames() + ")");
-      }
-      entry->set(item.second, path, s);
-    }
+    UpdateFromPython(table_, mapping, path, s);
   }
-
-  py::dict ToDict(const S& s) const {
-    py::dict dict;
-    for (const Entry& entry : entries_) dict[entry.name.c_str()] = entry.get(s);
-    return dict;
-  }
-
+  py::dict ToDict(const S& s) const { return TableToDict(table_, &s); }
   // The children's and the struct's IsValid; false with *error naming the
-  // field by its full path. The library writes "invalid option: x = ...";
-  // the path goes in front of x.
+  // field by its full path.
   bool Validate(const S& s, const std::string& path, std::string* error) const {
-    for (const Entry& entry : entries_) {
-      if (entry.validate && !entry.validate(s, path, error)) return false;
-    }
-    if (is_valid_ != nullptr && !(s.*is_valid_)(error)) {
-      const std::string prefix = "invalid option: ";
-      if (error->compare(0, prefix.size(), prefix) == 0) {
-        error->insert(prefix.size(), path);
-      } else if (!path.empty()) {
-        *error = path.substr(0, path.size() - 1) + ": " + *error;
-      }
-      return false;
-    }
-    return true;
+    return ValidateTable(table_, &s, path, error);
   }
-
-  // One line per field, "name: type = default  doc", nested structs
-  // indented below their name; the defaults are those of `s`.
+  // One line per field, "name: type = default", then its help, unit and
+  // range; nested structs indented below their name; the defaults are
+  // those of `s`.
   std::string Describe(const S& s, const std::string& indent) const {
-    std::ostringstream out;
-    for (const Entry& entry : entries_) {
-      out << indent << entry.name << ": " << entry.type;
-      if (!entry.nested) out << " = " << entry.repr(s);
-      out << "\n" << indent << "    " << entry.doc << "\n";
-      if (entry.nested) out << entry.describe(s, indent + "    ");
-    }
-    return out.str();
+    return DescribeTable(table_, &s, indent);
   }
-
   std::vector<std::string> Names() const {
     std::vector<std::string> names;
-    for (const Entry& entry : entries_) names.push_back(entry.name);
+    for (const OptionField& field : table_.fields()) {
+      names.push_back(field.name);
+    }
     return names;
   }
 
  private:
-  struct Entry {
-    std::string name;
-    std::string doc;
-    std::string type;
-    bool nested = false;
-    std::function<void(py::handle, const std::string&, S*)> set;
-    std::function<py::object(const S&)> get;
-    std::function<std::string(const S&)> repr;
-    std::function<bool(const S&, const std::string&, std::string*)> validate;
-    std::function<std::string(const S&, const std::string&)> describe;
-  };
-
-  static Entry MakeEntry(const char* name, const char* doc, std::string type) {
-    Entry entry;
-    entry.name = name;
-    entry.doc = doc;
-    entry.type = std::move(type);
-    return entry;
-  }
-
-  const Entry* Find(const std::string& name) const {
-    for (const Entry& entry : entries_) {
-      if (entry.name == name) return &entry;
-    }
-    return nullptr;
-  }
-
-  std::string FieldNames() const {
-    std::string names;
-    for (size_t i = 0; i < entries_.size(); ++i) {
-      names += (i ? ", " : "") + entries_[i].name;
-    }
-    return names;
-  }
-
-  std::string cpp_name_;
-  std::vector<Entry> entries_;
-  bool (S::*is_valid_)(std::string*) const = nullptr;
+  const OptionTable& table_;
 };
 
 }  // namespace python

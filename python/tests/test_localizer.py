@@ -91,7 +91,7 @@ def test_options_reach_the_registration(kitti_map):
     [
         ({"motion_model": "teleport"}, ValueError, "motion_model = 'teleport'"),
         ({"grid": {"finest_cell_size_m": 1.0}}, ValueError, "grid does not apply to Localizer"),
-        ({"sampling": {"random_fraction": 2.0}}, ValueError, r"sampling: random_fraction must be in \(0, 1\]"),
+        ({"sampling": {"random_fraction": 2.0}}, ValueError, r"invalid option: sampling.random_fraction = 2; it must be in \(0, 1\]"),
         ({"first_map_from_scan": np.diag([2.0, 1, 1, 1])}, ValueError, "first_map_from_scan: not a rigid transform"),
         ({"no_such_option": 1}, ValueError, "no_such_option"),
     ],

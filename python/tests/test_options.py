@@ -142,12 +142,12 @@ def test_numbers_of_numpy_types_and_ints_for_floats_are_accepted(small_pair):
         ({"backend": {"ceres": {"linear_solver_type": "qr"}}}, r"backend.ceres.linear_solver_type = 'qr'"),
         ({"grid": {"finest_cell_size_m": -1.0}}, r"invalid option: grid.finest_cell_size_m = -1; it must be in \[0.001, 100000\]"),
         ({"grid": {"regularization": {"min_eigenvalue_ratio": 0.0}}}, r"invalid option: grid.regularization.min_eigenvalue_ratio = 0"),
-        ({"sampling": {"gbs_cell_size_m": 0.0}}, r"sampling: gbs_cell_size_m must be in \(0, 10000\] m"),
+        ({"sampling": {"gbs_cell_size_m": 0.0}}, r"invalid option: sampling.gbs_cell_size_m = 0; it must be in \(0, 10000\]"),
         ({"schedule": {"iterations_per_layer": 0}}, r"invalid option: schedule.iterations_per_layer = 0"),
         ({"objective": {"loss_scale": 0.0}}, r"invalid option: objective.loss_scale = 0"),
         ({"backend": {"newton": {"max_line_search_steps": 0}}}, r"invalid option: backend.newton.max_line_search_steps = 0"),
         ({"quality_check": {"inlier_gate": 100.0}}, r"invalid option: quality_check.inlier_gate = 100"),
-        ({"retry": {"yaw_seeds_deg": [200.0]}}, r"invalid option: retry.yaw_deg = 200"),
+        ({"retry": {"yaw_seeds_deg": [200.0]}}, r"invalid option: retry.yaw_seeds_deg\[0\] = 200"),
         ({"num_threads": 0}, r"invalid option: num_threads = 0; it must be in \[1, 256\]"),
         ({"min_matched_fraction": float("nan")}, r"invalid option: min_matched_fraction = nan"),
         ({"preset": "papers"}, r"invalid option: preset = 'papers'; expected \"default\" or \"paper\""),
@@ -197,7 +197,7 @@ def test_resolve_options_is_what_register_uses():
     assert resolved["grid"]["num_layers"] == paper["grid"]["num_layers"]
     assert resolved["initial_uncertainty"]["given"] and resolved["initial_uncertainty"]["translation_m"] == 0.2
     assert resolved["sampling"] == paper["sampling"]
-    with pytest.raises(ValueError, match=r"sampling: random_fraction must be in \(0, 1\]"):
+    with pytest.raises(ValueError, match=r"invalid option: sampling.random_fraction = 3; it must be in \(0, 1\]"):
         mlndt.resolve_options(sampling={"random_fraction": 3.0})
     with pytest.raises(ValueError, match="no_such_option"):
         mlndt.resolve_options(no_such_option=1)

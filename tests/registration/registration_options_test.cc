@@ -73,7 +73,7 @@ TEST(RegistrationOptions, AbsurdValuesAreRefusedByName) {
          o->initial_uncertainty.given = true;
          o->initial_uncertainty.translation_m = std::nan("");
        }},
-      {"yaw_deg",
+      {"yaw_seeds_deg",
        [](RegistrationOptions* o) {
          o->retry.yaw_seeds_deg = {45, 720};
        }},

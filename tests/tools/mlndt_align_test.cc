@@ -243,8 +243,8 @@ TEST(MlndtAlign, RangeFiltersSayTheyWorkAboutTheOriginAndWarnFarFromIt) {
   EXPECT_NE(help.out.find("closer than this to the cloud's origin"),
             std::string::npos)
       << help.out;
-  EXPECT_NE(help.out.find("map-frame (e.g. UTM) cloud set --min_range=0 "
-                          "--saturated_range_fraction=0"),
+  EXPECT_NE(help.out.find("map-frame (e.g. UTM) cloud set min_range_m = 0 "
+                          "and saturated_range_fraction = 0"),
             std::string::npos);
 
   const std::string dir = TestDir();
@@ -321,7 +321,8 @@ TEST(MlndtAlign, IgnoredFlagsUnwritableCloudsAndAbsurdNumbersAreRefused) {
       // Item 7: a reflection and 1e300-class numbers.
       {"--expected_matrix_file=" + Quote(dir + "/reflection.txt"),
        "reflection.txt: the 3x3 part is not a rotation"},
-      {"--gbs_cell_size=1e300", "gbs_cell_size_m must be in (0, 10000] m"},
+      {"--gbs_cell_size=1e300",
+       "gbs_cell_size_m = 1e+300; it must be in (0, 10000]"},
       {"--initial_guess=0,0,0,0,0,1e300",
        "--initial_guess=0,0,0,0,0,1e300: angles must be within [-360, 360]"},
       {"--initial_guess=1e300,0,0,0,0,0", "is beyond 1e+08 m"},

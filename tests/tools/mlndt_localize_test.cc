@@ -356,8 +356,8 @@ TEST(MlndtLocalize, HelpListsOnlyTheFlagsItAccepts) {
                                "initial_guess",
                                "backend",
                                "quality_check",
-                               "min_range",
-                               "threads",
+                               "min_range_m",
+                               "num_threads",
                                "calib"}) {
     EXPECT_NE(help.out.find(std::string("  --") + accepted + "="),
               std::string::npos)

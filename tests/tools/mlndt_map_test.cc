@@ -471,10 +471,10 @@ TEST(MlndtMap, HelpListsOnlyTheFlagsItAccepts) {
                                "poses",
                                "calib",
                                "preset",
-                               "threads",
-                               "finest_cell_size",
+                               "num_threads",
+                               "finest_cell_size_m",
                                "coarse_weighting",
-                               "min_range",
+                               "min_range_m",
                                "saturated_range_fraction"}) {
     EXPECT_NE(help.out.find(std::string("  --") + accepted + "="),
               std::string::npos)

@@ -15,11 +15,10 @@ namespace mlndt {
 namespace tools {
 
 // The map options of --preset (default | paper) and the map flags given:
-// --finest_cell_size, --num_layers, --division_constant,
-// --min_points_per_cell, --min_eigenvalue, --min_eigenvalue_ratio,
-// --coarse_weighting. False
+// every LayeredGridOptions field's (option_flags.h: --finest_cell_size_m,
+// --num_layers, --division_constant, --min_points_per_cell, ...). False
 // with *error naming the flag for a bad value, for --num_layers with
-// --finest_cell_size > 0, and for any other registration flag given
+// --finest_cell_size_m > 0, and for any other registration flag given
 // (`tool` names the tool in the message).
 bool GridOptionsFromFlags(const std::string& tool,
                           LayeredGridOptions* grid,

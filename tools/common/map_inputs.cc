@@ -238,8 +238,8 @@ bool RefuseScanFlagsWithCloud(std::string* error) {
        "calib",
        "poses_are_camera",
        "max_scans",
-       "min_range",
-       "max_range",
+       "min_range_m",
+       "max_range_m",
        "saturated_range_fraction"},
       "does not apply to --cloud (one cloud in the world frame, no "
       "sensor origin)",

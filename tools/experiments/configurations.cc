@@ -1,8 +1,8 @@
 #include "tools/experiments/configurations.h"
 
-#include <functional>
 #include <sstream>
 
+#include "mlndt/common/option_table.h"
 #include "mlndt/registration/registration_options.h"
 
 namespace mlndt {
@@ -17,104 +17,45 @@ MatcherOptions MlndtOptions(const RegistrationOptions& options) {
   return matcher;
 }
 
-std::string Join(const std::vector<double>& values) {
-  std::ostringstream out;
-  for (size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << values[i];
-  return values.empty() ? "(none)" : out.str();
-}
-
-template <typename T>
-std::string Text(const T& value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-// The options the ablation steps through, read from RegistrationOptions.
-using Getter = std::function<std::string(const RegistrationOptions&)>;
-const std::vector<std::pair<std::string, Getter>>& ComparedOptions() {
-  static const auto* const kOptions =
-      new std::vector<std::pair<std::string, Getter>>{
-          {"objective.loss",
-           [](const RegistrationOptions& o) {
-             return std::string(LossTypeToString(o.objective.loss));
-           }},
-          {"objective.loss_scale",
-           [](const RegistrationOptions& o) {
-             return Text(o.objective.loss_scale);
-           }},
-          {"objective.unmatched_policy",
-           [](const RegistrationOptions& o) {
-             return std::string(
-                 UnmatchedPolicyToString(o.objective.unmatched_policy));
-           }},
-          {"schedule.start_layer",
-           [](const RegistrationOptions& o) {
-             return Text(o.schedule.start_layer);
-           }},
-          {"schedule.iterations_per_layer",
-           [](const RegistrationOptions& o) {
-             return Text(o.schedule.iterations_per_layer);
-           }},
-          {"schedule.max_final_iterations",
-           [](const RegistrationOptions& o) {
-             return Text(o.schedule.max_final_iterations);
-           }},
-          {"schedule.step_tolerance",
-           [](const RegistrationOptions& o) {
-             return Text(o.schedule.step_tolerance);
-           }},
-          {"schedule.coarse_step_tolerance",
-           [](const RegistrationOptions& o) {
-             return Text(o.schedule.coarse_step_tolerance);
-           }},
-          {"schedule.max_coarse_point_stride",
-           [](const RegistrationOptions& o) {
-             return Text(o.schedule.max_coarse_point_stride);
-           }},
-          {"grid.num_layers",
-           [](const RegistrationOptions& o) {
-             return Text(o.grid.num_layers);
-           }},
-          {"grid.finest_cell_size_m",
-           [](const RegistrationOptions& o) {
-             return Text(o.grid.finest_cell_size_m);
-           }},
-          {"grid.division_constant",
-           [](const RegistrationOptions& o) {
-             return Text(o.grid.division_constant);
-           }},
-          {"grid.min_points_per_cell",
-           [](const RegistrationOptions& o) {
-             return Text(o.grid.min_points_per_cell);
-           }},
-          {"grid.coarse_weighting",
-           [](const RegistrationOptions& o) {
-             return std::string(
-                 CoarseWeightingToString(o.grid.coarse_weighting));
-           }},
-          {"sampling.gbs_cell_size_m",
-           [](const RegistrationOptions& o) {
-             return Text(o.sampling.gbs_cell_size_m);
-           }},
-          {"min_matched_fraction",
-           [](const RegistrationOptions& o) {
-             return Text(o.min_matched_fraction);
-           }},
-          {"backend.type",
-           [](const RegistrationOptions& o) {
-             return std::string(BackendTypeToString(o.backend.type));
-           }},
-          {"retry.yaw_seeds_deg",
-           [](const RegistrationOptions& o) {
-             return Join(o.retry.yaw_seeds_deg);
-           }},
-          {"sampling.method",
-           [](const RegistrationOptions& o) {
-             return std::string(SamplingMethodToString(o.sampling.method));
-           }},
-      };
+// The options the ablation steps through, by their path in
+// RegistrationOptions; names, types and values come from the option tables.
+const std::vector<std::string>& ComparedOptions() {
+  static const auto* const kOptions = new std::vector<std::string>{
+      "objective.loss",
+      "objective.loss_scale",
+      "objective.unmatched_policy",
+      "schedule.start_layer",
+      "schedule.iterations_per_layer",
+      "schedule.max_final_iterations",
+      "schedule.step_tolerance",
+      "schedule.coarse_step_tolerance",
+      "schedule.max_coarse_point_stride",
+      "grid.num_layers",
+      "grid.finest_cell_size_m",
+      "grid.division_constant",
+      "grid.min_points_per_cell",
+      "grid.coarse_weighting",
+      "sampling.gbs_cell_size_m",
+      "min_matched_fraction",
+      "backend.type",
+      "retry.yaw_seeds_deg",
+      "sampling.method",
+  };
   return *kOptions;
+}
+
+// The value of the option at `path` for the report: enums by their C++
+// name, an empty list as "(none)".
+std::string Value(const std::string& path, const RegistrationOptions& o) {
+  const void* owner = nullptr;
+  const OptionField* field =
+      RegistrationOptionsTable().FindPath(path, &o, &owner);
+  if (field->type == OptionType::ENUM) {
+    return field->enum_table->ToString(
+        field->get_enum(field->locate(const_cast<void*>(owner))));
+  }
+  const std::string text = field->Format(owner);
+  return text.empty() ? "(none)" : text;
 }
 
 }  // namespace
@@ -167,7 +108,10 @@ Configuration WithRandomSampling(const Configuration& c, double fraction) {
 std::vector<OptionDifference> PaperDefaultDifferences() {
   const std::vector<Configuration> steps = AblationConfigurations();
   std::vector<OptionDifference> differences;
-  for (const auto& [name, get] : ComparedOptions()) {
+  for (const std::string& name : ComparedOptions()) {
+    const auto get = [&name](const RegistrationOptions& o) {
+      return Value(name, o);
+    };
     const std::string paper = get(steps.front().options.mlndt);
     const std::string defaults = get(steps.back().options.mlndt);
     if (paper == defaults) continue;

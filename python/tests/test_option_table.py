@@ -1,0 +1,92 @@
+"""The Python keywords against the one option description (the library's
+option tables, printed by mlndt_options --format=json): every described field
+of RegistrationOptions is a keyword at its path with the same default, no
+keyword is undescribed, a value outside a field's range is refused naming the
+field, and docs/options.md is the current description."""
+
+import json
+import subprocess
+
+import pytest
+
+import mlndt
+from conftest import SOURCE_DIR, TOOLS_DIR
+
+# Fields that are Python keywords but not flags (the --initial_uncertainty=t,r
+# flag sets them); they are described all the same.
+PYTHON_ONLY = {"initial_uncertainty.given", "initial_uncertainty.translation_m", "initial_uncertainty.rotation_deg"}
+
+
+def run_options_tool(*args):
+    proc = subprocess.run([str(TOOLS_DIR / "mlndt_options"), *args], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    return proc.stdout
+
+
+@pytest.fixture(scope="module")
+def description():
+    return json.loads(run_options_tool("--format=json"))
+
+
+def flatten(options, prefix=""):
+    out = {}
+    for key, value in options.items():
+        if isinstance(value, dict):
+            out.update(flatten(value, prefix + key + "."))
+        else:
+            out[prefix + key] = value
+    return out
+
+
+def same_default(python_value, text, kind):
+    if kind == "bool":
+        return python_value is (text == "true")
+    if kind in ("int", "uint64"):
+        return python_value == int(text)
+    if kind == "double":
+        return python_value == float(text)
+    if kind == "list of double":
+        return python_value == ([float(v) for v in text.split(",")] if text else [])
+    return python_value.lower() == text  # enum: C++ name vs lower-case flag text
+
+
+def test_every_described_field_is_a_keyword_with_its_default(description):
+    keywords = flatten(mlndt.default_options())
+    described = {row["mlndt_path"]: row for row in description["options"] if row["mlndt_path"]}
+    for path, row in described.items():
+        assert path in keywords, f"{path} (--{row['flag']}) is no Python keyword"
+        assert same_default(keywords[path], row["default"], row["type"]), (path, keywords[path], row["default"])
+    undescribed = set(keywords) - set(described) - PYTHON_ONLY
+    assert not undescribed, f"keywords without a description: {sorted(undescribed)}"
+
+
+def test_every_range_bound_is_refused_naming_the_field(description):
+    checked = 0
+    for row in description["options"]:
+        path, valid = row["mlndt_path"], row["range"]
+        if not path or not valid.startswith("in [") or row["type"] not in ("int", "double"):
+            continue
+        low = float(valid[len("in [") :].split(",")[0])
+        bad = low - 1 if row["type"] == "int" else low - max(abs(low) * 0.5, 1e-3)
+        if " or 0" in valid and bad == 0:
+            continue
+        *parents, leaf = path.split(".")
+        kwargs = value = {leaf: int(bad) if row["type"] == "int" else bad}
+        for parent in reversed(parents):
+            kwargs = {parent: kwargs}
+        with pytest.raises(ValueError, match=r"invalid option: " + path.replace(".", r"\.") + " = "):
+            mlndt.resolve_options(**kwargs)
+        checked += 1
+        del value
+    assert checked >= 20
+
+
+def test_docstring_carries_units_and_ranges():
+    doc = mlndt.register.__doc__
+    assert "loss_scale: float = 1.5" in doc
+    assert "Mahalanobis distance sqrt(s) where the robust loss bends. In [0.001, 1000]." in doc
+    assert "residual: str: WHITENED | SCALAR_SCORE" in doc
+
+
+def test_docs_options_md_is_current():
+    assert (SOURCE_DIR / "docs" / "options.md").read_text() == run_options_tool()

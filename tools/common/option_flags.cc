@@ -1,0 +1,228 @@
+#include "tools/common/option_flags.h"
+
+#include <gflags/gflags.h>
+
+#include <deque>
+#include <map>
+#include <set>
+
+#include "mlndt/ndt/ndt_registration.h"
+#include "mlndt/registration/registration_options.h"
+#include "tools/common/flag_utils.h"
+#include "tools/common/tool_main.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+// Fields whose flag is not their name.
+const std::map<std::string, std::string> kRenamed = {
+    {"sampling.method", "sampling"},
+    {"backend.type", "backend"},
+    {"quality_check.enabled", "quality_check"}};
+// Nested structs whose fields' flags get a prefix.
+const std::vector<std::pair<std::string, std::string>> kPrefixes = {
+    {"backend.newton.", "newton_"},
+    {"newton.", "newton_"},
+    {"backend.levenberg_marquardt.", "lm_"}};
+// NdtOptions' own fields: their flags are --ndt_<name>.
+const std::set<std::string> kNdtOwn = {"cell_size_m",
+                                       "outlier_ratio",
+                                       "neighbors",
+                                       "max_iterations",
+                                       "max_step_norm"};
+// Structs without flags.
+const std::set<std::string> kNoFlags = {"initial_uncertainty"};
+
+std::string FlagName(const std::string& path, bool ndt) {
+  const auto renamed = kRenamed.find(path);
+  if (renamed != kRenamed.end()) return renamed->second;
+  if (ndt && kNdtOwn.count(path) > 0) return "ndt_" + path;
+  const std::string leaf = path.substr(path.rfind('.') + 1);
+  for (const auto& [prefix, flag_prefix] : kPrefixes) {
+    if (path.rfind(prefix, 0) == 0) return flag_prefix + leaf;
+  }
+  return leaf;
+}
+
+void Collect(const OptionTable& table,
+             const std::string& prefix,
+             bool ndt,
+             std::vector<OptionFlag>* flags) {
+  for (const OptionField& field : table.fields()) {
+    const std::string path = prefix + field.name;
+    if (field.type == OptionType::STRUCT) {
+      if (kNoFlags.count(path) == 0) {
+        Collect(*field.nested, path + ".", ndt, flags);
+      }
+      continue;
+    }
+    const std::string name = FlagName(path, ndt);
+    OptionFlag* flag = nullptr;
+    for (OptionFlag& f : *flags) {
+      if (f.name == name) flag = &f;
+    }
+    if (flag == nullptr) {
+      flags->push_back({name, "", "", &field});
+      flag = &flags->back();
+    }
+    (ndt ? flag->ndt_path : flag->mlndt_path) = path;
+  }
+}
+
+// The field's default: RegistrationOptions()' (NdtOptions()' for a flag of
+// conventional NDT only).
+std::string DefaultText(const OptionFlag& flag) {
+  const bool ndt = flag.mlndt_path.empty();
+  const OptionTable& table =
+      ndt ? NdtOptionsTable() : RegistrationOptionsTable();
+  const void* owner = nullptr;
+  const OptionField* field = table.FindPath(
+      ndt ? flag.ndt_path : flag.mlndt_path, table.defaults(), &owner);
+  return field->Format(owner);
+}
+
+std::string HelpText(const OptionFlag& flag) {
+  std::string help = flag.field->FullHelp();
+  if (flag.ndt_path.empty()) return help + " (ML-NDT only)";
+  if (flag.mlndt_path.empty()) return "--method=ndt: " + help;
+  return help;
+}
+
+// Registers the flags with gflags at static-initialisation time (what the
+// DEFINE_ macros do), with storage that lives as long as the program.
+class FlagRegistry {
+ public:
+  FlagRegistry() {
+    std::vector<std::string> aliases;
+    for (const OptionFlag& flag : OptionFlags()) {
+      Register(flag.name, HelpText(flag), flag.field->type, DefaultText(flag));
+    }
+    for (const auto& [alias, name] : FlagAliases()) {
+      const OptionFlag& flag = *FlagOfName(name);
+      Register(alias,
+               "Deprecated name of --" + name + ".",
+               flag.field->type,
+               DefaultText(flag));
+      RegisterFlagAlias(alias, name);
+      aliases.push_back(alias);
+    }
+    // The old names work but --help lists only the new ones.
+    HideFlagsFromHelp(aliases);
+  }
+
+ private:
+  template <typename T>
+  void Add(const char* name, const char* help, std::deque<T>* store, T v) {
+    store->push_back(v);
+    T* current = &store->back();
+    store->push_back(v);
+    new gflags::FlagRegisterer(name, help, __FILE__, current, &store->back());
+  }
+
+  void Register(const std::string& name,
+                const std::string& help,
+                OptionType type,
+                const std::string& value) {
+    const char* n = strings_.emplace_back(name).c_str();
+    const char* h = strings_.emplace_back(help).c_str();
+    switch (type) {
+      case OptionType::BOOL:
+        return Add(n, h, &bools_, value == "true");
+      case OptionType::INT:
+        return Add(n, h, &ints_, static_cast<gflags::int32>(std::stoi(value)));
+      case OptionType::UINT64:
+        return Add(
+            n, h, &uints_, static_cast<gflags::uint64>(std::stoull(value)));
+      case OptionType::DOUBLE:
+        return Add(n, h, &doubles_, std::stod(value));
+      default:
+        return Add(n, h, &texts_, value);
+    }
+  }
+
+  std::deque<std::string> strings_;
+  std::deque<bool> bools_;
+  std::deque<gflags::int32> ints_;
+  std::deque<gflags::uint64> uints_;
+  std::deque<double> doubles_;
+  std::deque<std::string> texts_;
+};
+
+const FlagRegistry kRegistry;
+
+}  // namespace
+
+const std::vector<OptionFlag>& OptionFlags() {
+  static const std::vector<OptionFlag> flags = [] {
+    std::vector<OptionFlag> f;
+    Collect(RegistrationOptionsTable(), "", false, &f);
+    Collect(NdtOptionsTable(), "", true, &f);
+    return f;
+  }();
+  return flags;
+}
+
+const OptionFlag* FlagOfPath(const std::string& path, bool ndt) {
+  for (const OptionFlag& flag : OptionFlags()) {
+    if ((ndt ? flag.ndt_path : flag.mlndt_path) == path) return &flag;
+  }
+  return nullptr;
+}
+
+const OptionFlag* FlagOfName(const std::string& name) {
+  for (const OptionFlag& flag : OptionFlags()) {
+    if (flag.name == name) return &flag;
+  }
+  return nullptr;
+}
+
+const std::vector<std::pair<std::string, std::string>>& FlagAliases() {
+  static const std::vector<std::pair<std::string, std::string>> aliases = {
+      {"threads", "num_threads"},
+      {"unmatched", "unmatched_policy"},
+      {"gbs_cell_size", "gbs_cell_size_m"},
+      {"min_eigenvalue", "min_eigenvalue_m2"},
+      {"finest_cell_size", "finest_cell_size_m"},
+      {"max_iterations", "max_final_iterations"},
+      {"linear_solver", "linear_solver_type"},
+      {"trust_region", "trust_region_strategy_type"},
+      {"min_range", "min_range_m"},
+      {"max_range", "max_range_m"},
+      {"ndt_cell_size", "ndt_cell_size_m"},
+      {"ndt_max_step", "ndt_max_step_norm"},
+      {"retry_yaw_seeds", "yaw_seeds_deg"}};
+  return aliases;
+}
+
+bool ApplyGivenFlags(const OptionTable& table,
+                     const std::string& prefix,
+                     bool ndt,
+                     void* s,
+                     std::string* error) {
+  for (const OptionFlag& flag : OptionFlags()) {
+    const std::string& path = ndt ? flag.ndt_path : flag.mlndt_path;
+    if (path.empty() || path.rfind(prefix, 0) != 0 || !FlagGiven(flag.name)) {
+      continue;
+    }
+    const void* owner = nullptr;
+    const OptionField* field =
+        table.FindPath(path.substr(prefix.size()), s, &owner);
+    if (field == nullptr) continue;
+    const std::string text = FlagText(flag.name);
+    if (!field->Parse(text, const_cast<void*>(owner), error)) {
+      *error = GivenFlagName(flag.name) + "=" + text + ": " + *error;
+      return false;
+    }
+  }
+  return true;
+}
+
+int IntFlag(const std::string& name) { return std::stoi(FlagText(name)); }
+double DoubleFlag(const std::string& name) { return std::stod(FlagText(name)); }
+uint64_t Uint64Flag(const std::string& name) {
+  return std::stoull(FlagText(name));
+}
+
+}  // namespace tools
+}  // namespace mlndt

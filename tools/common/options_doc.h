@@ -1,0 +1,24 @@
+#pragma once
+
+// The option reference made from the option tables (option_flags.h): one row
+// per flag with the option field(s) it sets, type, default, unit, range and
+// help. docs/options.md is its Markdown (mlndt_options writes it; a test
+// checks that the file is current), and the JSON form lets the Python tests
+// compare the keywords against the same description.
+
+#include <string>
+
+#include "tools/common/json_output.h"
+
+namespace mlndt {
+namespace tools {
+
+// docs/options.md.
+std::string OptionsMarkdown();
+
+// [{"flag", "mlndt_path", "ndt_path", "type", "default", "unit", "range",
+//   "help"}, ...] and {"aliases": {old: new}}.
+Json OptionsJson();
+
+}  // namespace tools
+}  // namespace mlndt

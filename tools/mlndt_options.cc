@@ -1,0 +1,50 @@
+// mlndt_options: the option reference made from the library's option tables
+// (docs/options.md is its output): every registration flag with the field
+// it sets, type, default, unit, valid values and help.
+//   mlndt_options                 # Markdown (docs/options.md)
+//   mlndt_options --format=json   # the same as JSON
+
+#include <gflags/gflags.h>
+
+#include <iostream>
+
+#include "tools/common/option_flags.h"
+#include "tools/common/options_doc.h"
+#include "tools/common/tool_main.h"
+
+DEFINE_string(format, "markdown", "markdown | json");
+
+int main(int argc, char** argv) {
+  std::vector<std::string> option_flags;
+  for (const auto& flag : mlndt::tools::OptionFlags()) {
+    option_flags.push_back(flag.name);
+  }
+  for (const auto& [alias, name] : mlndt::tools::FlagAliases()) {
+    option_flags.push_back(alias);
+  }
+  mlndt::tools::HideFlagsFromHelp(option_flags);
+  if (!mlndt::tools::StartTool(
+          "Prints the option reference (docs/options.md).\n"
+          "  mlndt_options [--format=markdown|json]",
+          true,
+          &argc,
+          &argv)) {
+    return mlndt::tools::kExitUsage;
+  }
+  std::string error;
+  if (!mlndt::tools::RefuseGivenFlags(
+          option_flags, "does not apply to mlndt_options", &error)) {
+    std::cerr << "mlndt_options: " << error << "\n";
+    return mlndt::tools::kExitUsage;
+  }
+  if (FLAGS_format == "markdown") {
+    std::cout << mlndt::tools::OptionsMarkdown();
+  } else if (FLAGS_format == "json") {
+    std::cout << mlndt::tools::OptionsJson().dump(2) << "\n";
+  } else {
+    std::cerr << "mlndt_options: --format=" << FLAGS_format
+              << ": expected markdown or json\n";
+    return mlndt::tools::kExitUsage;
+  }
+  return mlndt::tools::kExitOk;
+}
