@@ -247,6 +247,18 @@ const StructBinding<QualityCheckOptions>& QualityCheckOptionsBinding() {
                &S::min_constraint_ratio,
                "DEGENERATE below this weakest/strongest information ratio. In "
                "[0, 1).")
+        .Field("max_flatness",
+               &S::max_flatness,
+               "DEGENERATE when one cell along a weak direction keeps more "
+               "than this share of the inliers (and min_probe_evidence). In "
+               "(0, 1]; 1 = off.")
+        .Field("min_probe_evidence",
+               &S::min_probe_evidence,
+               "...unless the net inlier loss there is at least this many "
+               "standard deviations. >= 0.")
+        .Field("min_fit_points",
+               &S::min_fit_points,
+               "LOW_QUALITY with fewer sampled points than this. In [0, 1e6].")
         .Validator(&S::IsValid);
     return b;
   }();
