@@ -69,6 +69,8 @@ bool RunSuiteDataset(const MatcherOptions& options,
     result.message = summary.message;
     result.quality = summary.quality;
     result.constraint_ratio = summary.constraints.constraint_ratio;
+    result.flatness = summary.constraints.flatness;
+    result.probe_evidence = summary.constraints.probe_evidence;
     result.attempts = summary.attempts;
     result.iterations = summary.num_iterations;
     result.outcome = ScoreSuiteRun(run,

@@ -25,6 +25,8 @@ struct SuiteRunResult {
   Isometry3d estimate = Isometry3d::Identity();  // reference_from_input.
   FitQuality quality;
   double constraint_ratio = 0.0;
+  double flatness = 0.0;
+  double probe_evidence = 0.0;
   int attempts = 0;
   int iterations = 0;
   PairTimes times;

@@ -3,6 +3,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -44,6 +46,25 @@ const OptionTable& QualityCheckOptionsTable() {
                   RightOpen(0.0, 1.0),
                   "DEGENERATE below this weakest/strongest information "
                   "ratio.")
+          .Double("max_flatness",
+                  &S::max_flatness,
+                  "",
+                  LeftOpen(0.0, 1.0),
+                  "DEGENERATE when one last-layer cell along a weak direction "
+                  "keeps more than this share of the inliers both ways and "
+                  "the net loss is under min_probe_evidence; 1 = off.")
+          .Double("min_probe_evidence",
+                  &S::min_probe_evidence,
+                  "sigma",
+                  AtLeast(0.0),
+                  "A weak direction whose probe loses inliers by at least "
+                  "this many standard deviations of the exchange is not "
+                  "flat.")
+          .Int("min_fit_points",
+               &S::min_fit_points,
+               Closed(0, 1e6),
+               "LOW_QUALITY with fewer sampled points than this: too few to "
+               "judge the fit.")
           .Validator(&S::IsValid)
           .Build();
   return table;
@@ -53,15 +74,16 @@ bool QualityCheckOptions::IsValid(std::string* error) const {
   return QualityCheckOptionsTable().Check(*this, error);
 }
 
-ConstraintAnalysis AnalyseConstraints(
+namespace {
+
+// The sum of the rows [v; (R p) x v / L] over the thin directions v of the
+// matched points' cells (quality_check.h).
+Matrix6d ThinDirectionInformation(
     const NdtLayer& layer,
     const std::vector<Eigen::Vector3d>& input_points,
-    const Vector6d& reference_from_input_xi,
+    const Isometry3d& pose,
     const ObjectiveOptions& objective,
-    double rms_range_m,
-    double min_constraint_ratio) {
-  ConstraintAnalysis analysis;
-  const Isometry3d pose = PoseVectorToIsometry(reference_from_input_xi);
+    double rms_range_m) {
   const double inverse_lever = 1.0 / std::max(rms_range_m, 1e-3);
   Matrix6d information = Matrix6d::Zero();
   for (const Eigen::Vector3d& p : input_points) {
@@ -83,17 +105,132 @@ ConstraintAnalysis AnalyseConstraints(
       information.selfadjointView<Eigen::Lower>().rankUpdate(row);
     }
   }
-  information = information.selfadjointView<Eigen::Lower>();
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(information);
+  return information.selfadjointView<Eigen::Lower>();
+}
+
+// Whether each point is an inlier (Mahalanobis distance below `gate`) at
+// `pose`, in the cell the objective's policy picks.
+std::vector<bool> InlierFlags(const NdtLayer& layer,
+                              const std::vector<Eigen::Vector3d>& input_points,
+                              const Isometry3d& pose,
+                              const ObjectiveOptions& objective,
+                              double gate) {
+  std::vector<bool> inlier(input_points.size(), false);
+  for (size_t k = 0; k < input_points.size(); ++k) {
+    const Eigen::Vector3d x = pose * input_points[k];
+    const NdtCell* cell = MatchCell(layer, x, objective.unmatched_policy);
+    if (cell == nullptr) continue;
+    inlier[k] =
+        (cell->whitening * (x - cell->mean)).squaredNorm() < gate * gate;
+  }
+  return inlier;
+}
+
+// The pose moved by `step_m` along the scaled direction d = [a; b] (a a
+// translation, b a rotation times the lever L applied about the origin after
+// R, as the rows above).
+Isometry3d Moved(const Isometry3d& pose,
+                 const Vector6d& d,
+                 double step_m,
+                 double rms_range_m) {
+  const Eigen::Vector3d omega =
+      step_m * d.tail<3>() / std::max(rms_range_m, 1e-3);
+  Isometry3d moved = pose;
+  const double angle = omega.norm();
+  if (angle > 0.0) {
+    moved.linear() =
+        Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix() *
+        pose.linear();
+  }
+  moved.translation() += step_m * d.head<3>();
+  return moved;
+}
+
+// How much worse the fit is one cell edge away along d, the weaker of the
+// two ways: `kept`, the share of the inliers left; `evidence`, the inliers
+// lost net of those gained over the square root of all that changed.
+struct Probe {
+  double kept = 1.0;
+  double evidence = std::numeric_limits<double>::infinity();
+};
+
+Probe ProbeDirection(const NdtLayer& layer,
+                     const std::vector<Eigen::Vector3d>& input_points,
+                     const Isometry3d& pose,
+                     const ObjectiveOptions& objective,
+                     double rms_range_m,
+                     double gate,
+                     const std::vector<bool>& inlier,
+                     const Vector6d& d) {
+  const double inliers = std::count(inlier.begin(), inlier.end(), true);
+  Probe probe;
+  for (const double sign : {1.0, -1.0}) {
+    const std::vector<bool> there =
+        InlierFlags(layer,
+                    input_points,
+                    Moved(pose, sign * d, layer.cell_size(), rms_range_m),
+                    objective,
+                    gate);
+    double lost = 0.0, gained = 0.0;
+    for (size_t k = 0; k < inlier.size(); ++k) {
+      lost += inlier[k] && !there[k];
+      gained += !inlier[k] && there[k];
+    }
+    probe.kept =
+        std::min(probe.kept, 1.0 - (lost - gained) / std::max(inliers, 1.0));
+    probe.evidence =
+        std::min(probe.evidence,
+                 (lost - gained) / std::sqrt(std::max(lost + gained, 1.0)));
+  }
+  return probe;
+}
+
+}  // namespace
+
+ConstraintAnalysis AnalyseConstraints(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const Vector6d& reference_from_input_xi,
+    const ObjectiveOptions& objective,
+    double rms_range_m,
+    const QualityCheckOptions& options) {
+  ConstraintAnalysis analysis;
+  const Isometry3d pose = PoseVectorToIsometry(reference_from_input_xi);
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(ThinDirectionInformation(
+      layer, input_points, pose, objective, rms_range_m));
   const Vector6d lambda = solver.eigenvalues();  // Ascending.
   const double largest = lambda(5);
   for (int i = 0; i < 6; ++i) {
-    if (!(lambda(i) >= min_constraint_ratio * largest) || !(largest > 0.0)) {
+    if (!(lambda(i) >= options.min_constraint_ratio * largest) ||
+        !(largest > 0.0)) {
       analysis.degenerate_directions.push_back(solver.eigenvectors().col(i));
     }
   }
-  if (largest > 0.0) {
-    analysis.constraint_ratio = std::max(0.0, lambda(0)) / largest;
+  if (!(largest > 0.0)) return analysis;
+  analysis.constraint_ratio = std::max(0.0, lambda(0)) / largest;
+  const std::vector<bool> inlier =
+      InlierFlags(layer, input_points, pose, objective, options.inlier_gate);
+  const size_t by_ratio = analysis.degenerate_directions.size();
+  for (int i = 0; i < 3 && lambda(i) < kProbedConstraintRatio * largest; ++i) {
+    const Vector6d d = solver.eigenvectors().col(i);
+    const Probe probe = ProbeDirection(layer,
+                                       input_points,
+                                       pose,
+                                       objective,
+                                       rms_range_m,
+                                       options.inlier_gate,
+                                       inlier,
+                                       d);
+    if (probe.kept > analysis.flatness) {
+      analysis.flatness = probe.kept;
+      analysis.probe_evidence = probe.evidence;
+    }
+    if (static_cast<size_t>(i) >= by_ratio &&
+        probe.kept > options.max_flatness &&
+        probe.evidence < options.min_probe_evidence) {
+      analysis.degenerate_directions.push_back(d);
+      analysis.flat_directions++;
+    }
   }
   return analysis;
 }
@@ -149,12 +286,21 @@ TerminationType CheckQuality(const QualityCheckOptions& options,
       why << (i ? "; " : "")
           << DescribeDirection(constraints.degenerate_directions[i]);
     }
-    why << " (constraint ratio " << constraints.constraint_ratio << " < "
-        << options.min_constraint_ratio << ")";
+    if (constraints.flat_directions > 0) {
+      why << " (moving the pose one cell along it keeps "
+          << std::lround(100.0 * constraints.flatness) << " % of the inliers)";
+    } else {
+      why << " (constraint ratio " << constraints.constraint_ratio << " < "
+          << options.min_constraint_ratio << ")";
+    }
     *message = why.str();
     return TerminationType::DEGENERATE;
   }
-  if (fit.inlier_fraction < options.min_inlier_fraction) {
+  if (fit.points < static_cast<size_t>(options.min_fit_points)) {
+    why << "low quality: " << fit.points
+        << " sampled points, too few to check the fit (below "
+        << options.min_fit_points << ")";
+  } else if (fit.inlier_fraction < options.min_inlier_fraction) {
     why << "low quality: " << fit.inlier_fraction
         << " of the sampled points are inliers at the solution (below "
         << options.min_inlier_fraction << "); the pose is probably wrong";
@@ -187,7 +333,7 @@ Judgement JudgeSolution(const QualityCheckOptions& options,
                                              reference_from_input_xi,
                                              objective,
                                              rms_range_m,
-                                             options.min_constraint_ratio);
+                                             options);
   judgement.verdict = CheckQuality(options,
                                    solver_termination,
                                    judgement.fit,

@@ -16,7 +16,14 @@
 //    the points' RMS range L); the Hessian itself does not tell, since the
 //    covariance regularisation gives every cell some in-plane information.
 //    A plane leaves its in-plane translations and the turn about its normal
-//    free, a corridor its length.
+//    free, a corridor its length. The eigenvalue ratio alone depends on the
+//    point count (sparse cells have spurious thin directions), so the weak
+//    directions are also probed: the pose is moved by one cell edge along
+//    each, both ways; when most inliers stay inliers and the few lost are not
+//    clearly more than those gained, the data cannot tell the poses apart (a
+//    flat direction). A weak but real constraint (a street's cross
+//    structures) loses few inliers, but consistently: many standard
+//    deviations of the exchange (ProbeDirection in quality_check.cc).
 
 #include <string>
 #include <vector>
@@ -44,6 +51,19 @@ struct QualityCheckOptions {
   // fraction of the strongest one's constraint (ConstraintAnalysis). In
   // [0, 1).
   double min_constraint_ratio = 0.01;
+  // DEGENERATE when moving the pose by one last-layer cell edge along one of
+  // its weak directions keeps more than `max_flatness` of the inliers both
+  // ways, and the net loss is below `min_probe_evidence` standard deviations
+  // of the points that change (ConstraintAnalysis). max_flatness in (0, 1]
+  // (1 = off), min_probe_evidence >= 0.
+  double max_flatness = 0.8;
+  double min_probe_evidence = 12.0;
+
+  // LOW_QUALITY when fewer input points than this were sampled: too few
+  // to tell a right fit from a wrong one (KITTI thinned to every 200th
+  // point keeps 130-190 and is wrong as often as right; docs/trust.md).
+  // In [0, 1e6].
+  int min_fit_points = 500;
 
   bool IsValid(std::string* error) const;
 };
@@ -60,7 +80,20 @@ struct ConstraintAnalysis {
   // Unit directions (translation [m]; rotation vector scaled by L) whose
   // eigenvalue is below min_constraint_ratio times the largest.
   std::vector<Vector6d> degenerate_directions;
+  // The largest share of inliers kept when the pose moves one cell edge
+  // along a weak direction (the worse of the two ways): near 1 along a free
+  // direction, small along a constrained one; 0 when nothing was probed.
+  double flatness = 0.0;
+  // Along the flattest direction: the inliers lost net of those gained, over
+  // the square root of all that changed (a z-score; near 0 when free).
+  double probe_evidence = 0.0;
+  // How many of degenerate_directions were found flat by the probe.
+  int flat_directions = 0;
 };
+
+// Directions whose eigenvalue is below this fraction of the largest are
+// probed (at most the three weakest).
+constexpr double kProbedConstraintRatio = 0.25;
 
 // A cell direction counts as thin when its variance is below this fraction
 // of the cell's largest.
@@ -68,14 +101,15 @@ constexpr double kThinCellDirection = 0.1;
 
 // Analyses the fit of `input_points` moved by xi onto `layer` (cells as the
 // objective's policy matches them); rotations about the input points' own
-// origin, scaled by `rms_range_m` (> 0).
+// origin, scaled by `rms_range_m` (> 0). Directions are degenerate by
+// options.min_constraint_ratio or, probed, when flat (QualityCheckOptions).
 ConstraintAnalysis AnalyseConstraints(
     const NdtLayer& layer,
     const std::vector<Eigen::Vector3d>& input_points,
     const Vector6d& reference_from_input_xi,
     const ObjectiveOptions& objective,
     double rms_range_m,
-    double min_constraint_ratio);
+    const QualityCheckOptions& options);
 
 // CONVERGENCE/NO_CONVERGENCE stay when both checks pass; otherwise
 // LOW_QUALITY or DEGENERATE, with the reason in *message.

@@ -86,6 +86,9 @@ class QualityCheckOptions(TypedDict, total=False):
     min_inlier_fraction: float
     max_mean_score: float
     min_constraint_ratio: float
+    max_flatness: float
+    min_probe_evidence: float
+    min_fit_points: int
 
 class InitialGuessUncertainty(TypedDict, total=False):
     given: bool
@@ -117,6 +120,8 @@ class FitQuality(TypedDict):
     mean_score: float
     median_distance: float
     constraint_ratio: float
+    flatness: float
+    probe_evidence: float
 
 class IterationRecord(TypedDict):
     iteration: int

@@ -25,6 +25,8 @@ py::dict QualityDict(const Summary& s) {
   quality["mean_score"] = s.quality.mean_score;
   quality["median_distance"] = s.quality.median_distance;
   quality["constraint_ratio"] = s.constraints.constraint_ratio;
+  quality["flatness"] = s.constraints.flatness;
+  quality["probe_evidence"] = s.constraints.probe_evidence;
   return quality;
 }
 

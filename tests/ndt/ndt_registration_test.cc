@@ -390,5 +390,26 @@ TEST(NdtBaseline, APlaneIsDegenerateWithAnInfiniteCovariance) {
       << s.covariance;
 }
 
+// The corridor of issue 22 (40 m of input in a 100 m reference) at 8000 and
+// 45000 input points: the same verdict as ML-NDT's, through the same check,
+// whatever the density: the corridor's length is free.
+TEST(NdtBaseline, ACorridorIsDegenerateAlongItsLengthAtAnyDensity) {
+  for (const int n : {8000, 45000}) {
+    Isometry3d truth = Isometry3d::Identity();
+    truth.translation() = Eigen::Vector3d(1.0, 0.1, 0.0);
+    RegistrationSummary s;
+    Register(Ndt(0.0),
+             testing::Corridor(50.0, n * 5 / 2, 1),
+             TransformCloud(truth.inverse(), testing::Corridor(20.0, n, 2)),
+             Isometry3d::Identity(),
+             &s);
+    EXPECT_EQ(s.termination_type, TerminationType::DEGENERATE)
+        << n << " points: " << s.message;
+    EXPECT_NE(s.message.find("translation along (1.00, "), std::string::npos)
+        << n << " points: " << s.message;
+    EXPECT_GE(s.covariance(0, 0), 1.0) << n << " points: " << s.covariance;
+  }
+}
+
 }  // namespace
 }  // namespace mlndt

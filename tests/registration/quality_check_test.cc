@@ -93,6 +93,29 @@ TEST(QualityCheck, ACorridorIsDegenerateAlongItsLength) {
   EXPECT_TRUE(std::isfinite(s.covariance(1, 1)));
 }
 
+// Issue 22's corridor: two walls and a floor, a 100 m reference and 40 m of
+// it as input, sampled at 8000 and at 45000 points. Its length is free at
+// both densities: the decision must not depend on how many points there are.
+class SparseCorridor : public ::testing::TestWithParam<int> {};
+
+TEST_P(SparseCorridor, IsDegenerateAlongItsLengthAtAnyDensity) {
+  const int input_points = GetParam();
+  const PointCloud reference =  // The same density.
+      testing::Corridor(50.0, input_points * 5 / 2, 1);
+  const RegistrationSummary s = RegisterShifted(
+      reference, testing::Corridor(20.0, input_points, 2), {1.0, 0.1, 0.0});
+  EXPECT_EQ(s.termination_type, TerminationType::DEGENERATE) << s.message;
+  EXPECT_NE(s.message.find("translation along (1.00, "), std::string::npos)
+      << s.message;
+  // Unknown along the corridor: unbounded, or at least a metre.
+  EXPECT_GE(s.covariance(0, 0), 1.0) << s.FullReport();
+  EXPECT_LT(s.covariance(1, 1), 0.01) << s.FullReport();
+}
+
+INSTANTIATE_TEST_SUITE_P(QualityCheck,
+                         SparseCorridor,
+                         ::testing::Values(8000, 45000));
+
 TEST(QualityCheck, AStreetSceneIsConstrainedAndConverges) {
   const RegistrationSummary s =
       RegisterShifted(testing::StreetScene(60000, 0.02, 1),
@@ -112,6 +135,7 @@ TEST(QualityCheck, RulesByHand) {
   FitQuality good;
   good.inlier_fraction = 0.6;
   good.mean_score = 7.0;
+  good.points = 2000;
   std::string message;
   EXPECT_EQ(CheckQuality(options,
                          TerminationType::NO_CONVERGENCE,
@@ -126,6 +150,15 @@ TEST(QualityCheck, RulesByHand) {
           options, TerminationType::CONVERGENCE, few, constrained, &message),
       TerminationType::LOW_QUALITY);
   EXPECT_NE(message.find("inliers"), std::string::npos) << message;
+  FitQuality few_points = good;
+  few_points.points = options.min_fit_points - 1;
+  EXPECT_EQ(CheckQuality(options,
+                         TerminationType::CONVERGENCE,
+                         few_points,
+                         constrained,
+                         &message),
+            TerminationType::LOW_QUALITY);
+  EXPECT_NE(message.find("too few"), std::string::npos) << message;
   FitQuality far = good;
   far.mean_score = options.max_mean_score + 0.1;
   EXPECT_EQ(

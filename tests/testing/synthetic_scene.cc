@@ -68,5 +68,28 @@ PointCloud StreetScene(int num_points, double noise_m, uint32_t seed) {
   return cloud;
 }
 
+PointCloud Corridor(double half_length, int num_points, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> along(-half_length, half_length);
+  std::uniform_real_distribution<double> up(0.0, 3.0), across(-2.0, 2.0);
+  std::uniform_real_distribution<double> thickness(-0.01, 0.01);
+  PointCloud cloud;
+  cloud.Reserve(static_cast<size_t>(num_points));
+  for (int i = 0; i < num_points; ++i) {
+    const double x = along(rng), t = thickness(rng);
+    switch (i % 3) {
+      case 0:
+        cloud.Add(Eigen::Vector3d(x, -2.0 + t, up(rng)));
+        break;
+      case 1:
+        cloud.Add(Eigen::Vector3d(x, 2.0 + t, up(rng)));
+        break;
+      default:
+        cloud.Add(Eigen::Vector3d(x, across(rng), t));
+    }
+  }
+  return cloud;
+}
+
 }  // namespace testing
 }  // namespace mlndt

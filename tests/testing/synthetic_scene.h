@@ -17,5 +17,10 @@ namespace testing {
 // (x along the street, z up), spanning about 80 x 40 x 10 m.
 PointCloud StreetScene(int num_points, double noise_m, uint32_t seed);
 
+// Issue 22's corridor: two walls 4 m apart and 3 m high and the floor
+// between them, x from -half_length to +half_length, `num_points` uniform
+// samples (a third on each surface) 1 cm thick. Nothing fixes x.
+PointCloud Corridor(double half_length, int num_points, uint32_t seed);
+
 }  // namespace testing
 }  // namespace mlndt

@@ -52,6 +52,8 @@ std::string CsvRow(const LoadedSuiteDataset& dataset,
       Num(r.quality.mean_score),
       Num(r.quality.median_distance),
       Num(r.constraint_ratio),
+      Num(r.flatness),
+      Num(r.probe_evidence),
       std::to_string(r.attempts),
       std::to_string(r.iterations),
       Num(o.time_ms),
@@ -187,7 +189,8 @@ std::string SuiteRunsCsvHeader() {
          "along_track_error_m,error_tx_m,error_ty_m,error_tz_m,"
          "error_alpha_deg,error_beta_deg,error_gamma_deg,fit_points,"
          "own_cell_fraction,inlier_fraction,mean_score,median_distance,"
-         "constraint_ratio,attempts,iterations,registration_ms,total_ms,"
+         "constraint_ratio,flatness,probe_evidence,attempts,iterations,"
+         "registration_ms,total_ms,"
          "map_ms,sampling_ms,solve_ms";
 }
 
