@@ -140,8 +140,10 @@ int WriteOutputs(const MatcherOptions& options,
   if (!tools::WriteScalingPlot(
           FLAGS_gnuplot,
           dir,
-          tools::ScalingPlotTitle(
-              FLAGS_repetitions, options.method, tools::FlagText("backend"), tools::FlagText("sampling")),
+          tools::ScalingPlotTitle(FLAGS_repetitions,
+                                  options.method,
+                                  tools::FlagText("backend"),
+                                  tools::FlagText("sampling")),
           results,
           slopes,
           &error)) {

@@ -428,6 +428,44 @@ std::vector<double> LayerCellSizes(const LayeredGridOptions& options,
   return sizes;
 }
 
+namespace {
+
+// The layers' cell sizes and dimensions, finest last. With nesting,
+// k_i = k_n r^(n - i) exactly. False with *error when a layer would have
+// too many cells.
+bool LayerGeometries(const LayeredGridOptions& options,
+                     const Eigen::Vector3d& extent,
+                     double volume,
+                     int n,
+                     std::vector<LayerGeometry>* geometry_out,
+                     std::string* error) {
+  const int q = options.division_constant;
+  const int ratio = NestingRatio(q);
+  std::vector<LayerGeometry> geometry(static_cast<size_t>(n));
+  const double finest = std::cbrt(volume / std::pow(q, n));
+  for (int i = n; i >= 1; --i) {
+    LayerGeometry& g = geometry[static_cast<size_t>(i - 1)];
+    g.cell_size = options.cell_size_m > 0.0 ? options.cell_size_m
+                  : ratio > 0               ? finest * std::pow(ratio, n - i)
+                              : std::cbrt(volume / std::pow(q, i));
+    const Eigen::Vector3d cells = (extent / g.cell_size).array().floor() + 1.0;
+    if (cells.maxCoeff() > 1e6 || cells.prod() > 4e18) {
+      *error = "layer " + std::to_string(i) +
+               " would have too many cells (cell size " +
+               std::to_string(g.cell_size) + " m)";
+      return false;
+    }
+    g.dims = cells.cast<int>();
+    if (ratio > 0 && i < n) {  // Coarse dims consistent with nesting.
+      g.dims = (geometry[static_cast<size_t>(i)].dims.array() - 1) / ratio + 1;
+    }
+  }
+  *geometry_out = std::move(geometry);
+  return true;
+}
+
+}  // namespace
+
 bool LayeredGrid::Build(const LayeredGridOptions& options,
                         const PointCloud& reference,
                         LayeredGrid* grid,
@@ -472,27 +510,10 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
     return false;
   }
 
-  // Layer geometries, finest last. With nesting, k_i = k_n r^(n - i) exactly.
-  const int q = options.division_constant;
-  const int ratio = NestingRatio(q);
-  std::vector<LayerGeometry> geometry(static_cast<size_t>(n));
-  const double finest = std::cbrt(volume / std::pow(q, n));
-  for (int i = n; i >= 1; --i) {
-    LayerGeometry& g = geometry[static_cast<size_t>(i - 1)];
-    g.cell_size = options.cell_size_m > 0.0 ? options.cell_size_m
-                  : ratio > 0               ? finest * std::pow(ratio, n - i)
-                              : std::cbrt(volume / std::pow(q, i));
-    const Eigen::Vector3d cells = (extent / g.cell_size).array().floor() + 1.0;
-    if (cells.maxCoeff() > 1e6 || cells.prod() > 4e18) {
-      *error = "layer " + std::to_string(i) +
-               " would have too many cells (cell size " +
-               std::to_string(g.cell_size) + " m)";
-      return false;
-    }
-    g.dims = cells.cast<int>();
-    if (ratio > 0 && i < n) {  // Coarse dims consistent with nesting.
-      g.dims = (geometry[static_cast<size_t>(i)].dims.array() - 1) / ratio + 1;
-    }
+  const int ratio = NestingRatio(options.division_constant);
+  std::vector<LayerGeometry> geometry;
+  if (!LayerGeometries(options, extent, volume, n, &geometry, error)) {
+    return false;
   }
 
   const Eigen::Vector3d origin = bounds.min();

@@ -52,7 +52,8 @@ const OptionTable& QualityCheckOptionsTable() {
                   LeftOpen(0.0, 1.0),
                   "DEGENERATE when one last-layer cell along a weak direction "
                   "keeps more than this share of the inliers both ways and "
-                  "the net loss is under min_probe_evidence; 1 = off.")
+                  "the net loss is under min_probe_evidence; 1 = off (the "
+                  "default), 0.8 measured (docs/trust.md).")
           .Double("min_probe_evidence",
                   &S::min_probe_evidence,
                   "sigma",
@@ -208,6 +209,7 @@ ConstraintAnalysis AnalyseConstraints(
   }
   if (!(largest > 0.0)) return analysis;
   analysis.constraint_ratio = std::max(0.0, lambda(0)) / largest;
+  if (options.max_flatness >= 1.0) return analysis;  // The probe is off.
   const std::vector<bool> inlier =
       InlierFlags(layer, input_points, pose, objective, options.inlier_gate);
   const size_t by_ratio = analysis.degenerate_directions.size();

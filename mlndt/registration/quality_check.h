@@ -54,9 +54,11 @@ struct QualityCheckOptions {
   // DEGENERATE when moving the pose by one last-layer cell edge along one of
   // its weak directions keeps more than `max_flatness` of the inliers both
   // ways, and the net loss is below `min_probe_evidence` standard deviations
-  // of the points that change (ConstraintAnalysis). max_flatness in (0, 1]
-  // (1 = off), min_probe_evidence >= 0.
-  double max_flatness = 0.8;
+  // of the points that change (ConstraintAnalysis). max_flatness in (0, 1];
+  // 1 (the default) = off: on sparse street scenes the probe also flags
+  // right results (docs/trust.md); 0.8 is the measured setting.
+  // min_probe_evidence >= 0.
+  double max_flatness = 1.0;
   double min_probe_evidence = 12.0;
 
   // LOW_QUALITY when fewer input points than this were sampled: too few
@@ -82,7 +84,8 @@ struct ConstraintAnalysis {
   std::vector<Vector6d> degenerate_directions;
   // The largest share of inliers kept when the pose moves one cell edge
   // along a weak direction (the worse of the two ways): near 1 along a free
-  // direction, small along a constrained one; 0 when nothing was probed.
+  // direction, small along a constrained one; 0 when nothing was probed
+  // (also when the probe is off, max_flatness = 1).
   double flatness = 0.0;
   // Along the flattest direction: the inliers lost net of those gained, over
   // the square root of all that changed (a z-score; near 0 when free).

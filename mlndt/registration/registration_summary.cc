@@ -41,8 +41,10 @@ std::string RegistrationSummary::FullReport() const {
     out << std::setprecision(3) << "  fit:            inliers "
         << quality.inlier_fraction << ", mean score " << quality.mean_score
         << ", own cell " << quality.own_cell_fraction << ", constraint ratio "
-        << constraints.constraint_ratio << ", flatness "
-        << constraints.flatness;
+        << constraints.constraint_ratio;
+    if (constraints.flatness > 0.0) {
+      out << ", flatness " << constraints.flatness;
+    }
     if (attempts > 1) out << ", " << attempts << " attempts";
     out << "\n";
   }

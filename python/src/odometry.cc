@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mlndt/cloud/io.h"
+#include "mlndt/odometry/odometry_option_tables.h"
 #include "mlndt/odometry/run_odometry.h"
 #include "python/src/arrays.h"
 #include "python/src/errors.h"
@@ -25,89 +26,12 @@ namespace mlndt {
 namespace python {
 namespace {
 
-const StructBinding<LocalMapOptions>& LocalMapBinding() {
-  using S = LocalMapOptions;
-  static const StructBinding<S> binding = [] {
-    StructBinding<S> b("LocalMapOptions");
-    b.Field("max_keyframes",
-            &S::max_keyframes,
-            "Keyframes kept in the local map (the oldest is dropped first).")
-        .Field("radius_m",
-               &S::radius_m,
-               "Map points farther than this from the newest keyframe are "
-               "left out [m].")
-        .Validator(&S::IsValid);
-    return b;
-  }();
-  return binding;
-}
-
-const StructBinding<KeyframeOptions>& KeyframeBinding() {
-  using S = KeyframeOptions;
-  static const StructBinding<S> binding = [] {
-    StructBinding<S> b("KeyframeOptions");
-    b.Field("min_translation_m",
-            &S::min_translation_m,
-            "A scan joins the local map this far [m] from the last keyframe.")
-        .Field("min_rotation_deg",
-               &S::min_rotation_deg,
-               "... or turned this much [deg].")
-        .Validator(&S::IsValid);
-    return b;
-  }();
-  return binding;
-}
-
-const StructBinding<MotionPredictionOptions>& PredictionBinding() {
-  using S = MotionPredictionOptions;
-  static const StructBinding<S> binding = [] {
-    StructBinding<S> b("MotionPredictionOptions");
-    b.Field("window", &S::window, "Recent model errors the uncertainty uses.")
-        .Field("factor", &S::factor, "Uncertainty = their maximum x factor.")
-        .Field("min_translation_m", &S::min_translation_m, "Lower bound [m].")
-        .Field("max_translation_m",
-               &S::max_translation_m,
-               "Upper bound [m] (also the largest correction accepted).")
-        .Field("min_rotation_deg", &S::min_rotation_deg, "Lower bound [deg].")
-        .Field("max_rotation_deg",
-               &S::max_rotation_deg,
-               "Upper bound [deg] (also the largest correction accepted).")
-        .Validator(&S::IsValid);
-    return b;
-  }();
-  return binding;
-}
-
-// The odometry's own fields; the registration's are RegistrationOptions
-// keywords beside them (as mlndt_odometry's flags).
+// The odometry's own fields (their descriptions:
+// odometry/odometry_option_tables.h); the registration's are
+// RegistrationOptions keywords beside them (as mlndt_odometry's flags).
 const StructBinding<OdometryOptions>& OdometryBinding() {
-  using S = OdometryOptions;
-  static const StructBinding<S> binding = [] {
-    StructBinding<S> b("OdometryOptions");
-    b.Nested("local_map",
-             &S::local_map,
-             LocalMapBinding(),
-             "The local map of recent keyframes (its grid is grid=).")
-        .Nested("keyframes",
-                &S::keyframes,
-                KeyframeBinding(),
-                "When a scan becomes a keyframe.")
-        .Nested("prediction",
-                &S::prediction,
-                PredictionBinding(),
-                "Constant-velocity prediction and its uncertainty.")
-        .Field("deskew", &S::deskew, "Deskew scans given point times.")
-        .Field("gate_factor",
-               &S::gate_factor,
-               "A pose farther from the prediction than this times its "
-               "uncertainty is refused (LOW_QUALITY, fallback).")
-        .Field("max_consecutive_fallbacks",
-               &S::max_consecutive_fallbacks,
-               "After this many scans in a row without a pose the local map "
-               "restarts.")
-        .Validator(&S::IsValid);
-    return b;
-  }();
+  static const StructBinding<OdometryOptions> binding(
+      OdometryOwnOptionsTable());
   return binding;
 }
 

@@ -57,6 +57,8 @@ def test_result_fields_are_consistent(koide3, koide3_result):
         "mean_score",
         "median_distance",
         "constraint_ratio",
+        "flatness",
+        "probe_evidence",
     }
     assert result.quality["points"] == result.sampled_points
     assert 0 < result.quality["inlier_fraction"] <= 1

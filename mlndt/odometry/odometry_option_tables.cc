@@ -1,0 +1,125 @@
+#include "mlndt/odometry/odometry_option_tables.h"
+
+#include "mlndt/odometry/keyframe_policy.h"
+#include "mlndt/odometry/local_map.h"
+#include "mlndt/odometry/motion_prediction.h"
+#include "mlndt/odometry/odometry_options.h"
+
+namespace mlndt {
+
+const OptionTable& LocalMapOptionsTable() {
+  using S = LocalMapOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("LocalMapOptions")
+          .Int("max_keyframes",
+               &S::max_keyframes,
+               AtLeast(1),
+               "Keyframes kept in the local map (the oldest is dropped "
+               "first).")
+          .Double("radius_m",
+                  &S::radius_m,
+                  "m",
+                  LeftOpen(0.0, 1e9),
+                  "Map points farther than this from the newest keyframe are "
+                  "left out.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
+const OptionTable& KeyframeOptionsTable() {
+  using S = KeyframeOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("KeyframeOptions")
+          .Double("min_translation_m",
+                  &S::min_translation_m,
+                  "m",
+                  LeftOpen(0.0, 1e9),
+                  "A scan joins the local map this far from the last "
+                  "keyframe...")
+          .Double("min_rotation_deg",
+                  &S::min_rotation_deg,
+                  "deg",
+                  LeftOpen(0.0, 1e9),
+                  "... or turned this much.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
+const OptionTable& MotionPredictionOptionsTable() {
+  using S = MotionPredictionOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("MotionPredictionOptions")
+          .Int("window",
+               &S::window,
+               AtLeast(1),
+               "Recent model errors the uncertainty uses.")
+          .Double("factor",
+                  &S::factor,
+                  "",
+                  AtLeast(1.0),
+                  "Uncertainty = their maximum x factor.")
+          .Double("min_translation_m",
+                  &S::min_translation_m,
+                  "m",
+                  AtLeast(0.0),
+                  "Lower bound of the translation uncertainty.")
+          .Double("max_translation_m",
+                  &S::max_translation_m,
+                  "m",
+                  AtLeast(0.0),
+                  "Upper bound (also the largest correction accepted); >= "
+                  "min_translation_m.")
+          .Double("min_rotation_deg",
+                  &S::min_rotation_deg,
+                  "deg",
+                  Closed(0.0, 180.0),
+                  "Lower bound of the rotation uncertainty.")
+          .Double("max_rotation_deg",
+                  &S::max_rotation_deg,
+                  "deg",
+                  Closed(0.0, 180.0),
+                  "Upper bound (also the largest correction accepted); >= "
+                  "min_rotation_deg.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
+const OptionTable& OdometryOwnOptionsTable() {
+  using S = OdometryOptions;
+  static const OptionTable table = [] {
+    OptionTableBuilder<S> builder("OdometryOptions");
+    builder
+        .Struct("local_map",
+                &S::local_map,
+                LocalMapOptionsTable(),
+                "The local map of recent keyframes (its grid is grid=).")
+        .Struct("keyframes",
+                &S::keyframes,
+                KeyframeOptionsTable(),
+                "When a scan becomes a keyframe.")
+        .Struct("prediction",
+                &S::prediction,
+                MotionPredictionOptionsTable(),
+                "Constant-velocity prediction and its uncertainty.")
+        .Bool("deskew", &S::deskew, "Deskew scans given point times.")
+        .Double("gate_factor",
+                &S::gate_factor,
+                "",
+                AtLeast(1.0),
+                "A pose farther from the prediction than this times its "
+                "uncertainty is refused (LOW_QUALITY, fallback).")
+        .Int("max_consecutive_fallbacks",
+             &S::max_consecutive_fallbacks,
+             AtLeast(1),
+             "After this many scans in a row without a pose the local map "
+             "restarts.")
+        .Validator(&S::IsValid);
+    return builder.Build();
+  }();
+  return table;
+}
+
+}  // namespace mlndt
