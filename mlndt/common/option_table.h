@@ -13,10 +13,12 @@
 // pointer to the struct to a pointer to the field.
 
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "mlndt/common/enum_table.h"
@@ -172,10 +174,18 @@ class OptionTableBuilder {
                            const char* help) {
     OptionField field = MakeField(name, OptionType::ENUM, "", help, m);
     field.enum_table = &table;
+    // Through the underlying integer: a field may hold a value that is not
+    // an enumerator (IsValid must reject it), and loading that as E is
+    // undefined behaviour.
     field.get_enum = [](const void* p) {
-      return static_cast<int>(*static_cast<const E*>(p));
+      std::underlying_type_t<E> raw;
+      std::memcpy(&raw, p, sizeof(raw));
+      return static_cast<int>(raw);
     };
-    field.set_enum = [](void* p, int v) { *static_cast<E*>(p) = E(v); };
+    field.set_enum = [](void* p, int v) {
+      const auto raw = static_cast<std::underlying_type_t<E>>(v);
+      std::memcpy(p, &raw, sizeof(raw));
+    };
     return Add(std::move(field));
   }
   template <typename N>
