@@ -12,8 +12,7 @@
 // converted as in mlndt_sequence) and the scans are merged into one cloud.
 // The default is the bundled KITTI frames: 8 scans, 991,949 points, so the
 // default sizes end at 990,000 rather than 1,000,000 (a size above the
-// merged cloud is an error). Near the top the two subsets share almost all
-// their points; the geometry, and so the work per point, stays real.
+// merged cloud is an error).
 //
 // For each size N in --sizes: the reference is a random subset of N points
 // of the merged cloud and the input another, independently drawn subset of
@@ -25,8 +24,7 @@
 // mlndt::Register call that builds the reference map itself, and its
 // RegistrationSummary gives the stage times; the same registration runs
 // --repetitions times and the median time of each stage is reported.
-// The finest layer's occupied cells come from one extra, untimed map build
-// (ML-NDT only).
+// Finest-layer cells: one extra, untimed map build (ML-NDT only).
 //
 // Output: a markdown table on stdout, with per N the median map, sampling,
 // solve and total times [ms], the sampled points, the occupied cells on the
