@@ -19,6 +19,8 @@ StageControl ControlFor(const LayerScheduleOptions& options, int layer, int n) {
       last ? options.max_final_iterations : options.iterations_per_layer;
   control.step_tolerance =
       last ? options.step_tolerance : options.coarse_step_tolerance;
+  control.end_on_rejected_step =
+      !last && options.end_coarse_layer_on_rejected_step;
   // Coarse cells are large: every stride-th sample describes them as well.
   control.point_stride =
       std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
@@ -56,6 +58,10 @@ const OptionTable& LayerScheduleOptionsTable() {
                   Closed(0.0, 1.0),
                   "A coarse layer ends early below this update norm; 0 runs "
                   "every coarse layer fully.")
+          .Bool("end_coarse_layer_on_rejected_step",
+                &S::end_coarse_layer_on_rejected_step,
+                "A coarse layer ends at its first rejected step (its minimum "
+                "at its resolution).")
           .Int("max_coarse_point_stride",
                &S::max_coarse_point_stride,
                Closed(1, 1024),
@@ -81,6 +87,7 @@ LayerScheduleOptions PaperLayerScheduleOptions() {
   options.start_layer = 2;
   options.iterations_per_layer = 3;
   options.max_coarse_point_stride = 1;
+  options.end_coarse_layer_on_rejected_step = false;
   options.step_tolerance = 1e-4;
   return options;
 }

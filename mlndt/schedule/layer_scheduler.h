@@ -30,13 +30,19 @@ struct LayerScheduleOptions {
   int iterations_per_layer = 6;
   // Cap on the last layer's iterations. In [1, 10000].
   int max_final_iterations = 30;
-  // The last layer converges when a successful step has ||delta xi|| below
-  // this (metres and radians: 1 mm, 0.06 deg). In [1e-12, 1].
+  // The last layer converges when a step, taken or rejected, has
+  // ||delta xi|| below this (metres and radians: 1 mm, 0.06 deg).
+  // In [1e-12, 1].
   double step_tolerance = 1e-3;
-  // A coarse layer ends early once a successful step has ||delta xi|| below
-  // this; 0 runs every coarse layer for exactly iterations_per_layer
-  // iterations, as the paper. In [0, 1].
+  // A coarse layer ends early once a step has ||delta xi|| below this; 0
+  // runs every coarse layer for exactly iterations_per_layer iterations, as
+  // the paper. In [0, 1].
   double coarse_step_tolerance = 0.0;
+  // A coarse layer ends at its first rejected step: the objective is
+  // piecewise smooth, and a step the layer rejects means its minimum is
+  // reached at its resolution (backend.h, StageControl). False runs the
+  // iterations the tolerances allow, as the paper.
+  bool end_coarse_layer_on_rejected_step = true;
   // Layer i of n uses every s-th sampled point, s = min(2^(n - i), this):
   // a cell twice as large needs fewer points to be located. 1 uses every
   // sampled point on every layer, as the paper. In [1, 1024].

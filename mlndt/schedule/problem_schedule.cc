@@ -10,21 +10,22 @@
 namespace mlndt {
 namespace {
 
-// Ends a stage on a successful step below `tolerance` (0: never).
-class StepNormStop : public ceres::IterationCallback {
+// Ends a stage as its StageControl says (backend.h).
+class StageStop : public ceres::IterationCallback {
  public:
-  explicit StepNormStop(double tolerance) : tolerance_(tolerance) {}
+  explicit StageStop(const StageControl& control) : control_(control) {}
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& s) override {
-    if (s.iteration > 0 && tolerance_ > 0.0 && s.step_is_successful &&
-        s.step_norm < tolerance_) {
+    if (s.iteration > 0 &&
+        control_.EndAfter(s.step_norm, s.step_is_successful) !=
+            StageEnd::NONE) {
       return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     }
     return ceres::SOLVER_CONTINUE;
   }
 
  private:
-  const double tolerance_;
+  const StageControl control_;
 };
 
 bool CheckInputs(const LayerScheduleOptions& schedule,
@@ -92,8 +93,12 @@ void SolveStage(const ceres::Solver::Options& solver_options,
   ceres::Solver::Options options = solver_options;
   options.max_num_iterations =
       last ? schedule.max_final_iterations : schedule.iterations_per_layer;
-  StepNormStop stop(last ? schedule.step_tolerance
-                         : schedule.coarse_step_tolerance);
+  StageControl control;
+  control.step_tolerance =
+      last ? schedule.step_tolerance : schedule.coarse_step_tolerance;
+  control.end_on_rejected_step =
+      !last && schedule.end_coarse_layer_on_rejected_step;
+  StageStop stop(control);
   options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   const double start_s = NowSeconds();

@@ -24,4 +24,24 @@ bool StringToBackendType(std::string value, BackendType* type) {
   return StringToEnum(BackendTypeTable(), std::move(value), type);
 }
 
+StageEnd StageControl::EndAfter(double step_norm,
+                                bool step_is_successful) const {
+  if (step_tolerance > 0.0 && step_norm < step_tolerance) {
+    return StageEnd::CONVERGED;
+  }
+  if (!step_is_successful && end_on_rejected_step) {
+    return StageEnd::LAYER_MINIMUM;
+  }
+  return StageEnd::NONE;
+}
+
+void EndStage(StageEnd end, StageSummary* summary) {
+  if (end == StageEnd::NONE) return;
+  summary->termination_type = TerminationType::CONVERGENCE;
+  summary->message =
+      end == StageEnd::CONVERGED
+          ? "update norm below tolerance"
+          : "rejected step: the layer's minimum at its resolution";
+}
+
 }  // namespace mlndt

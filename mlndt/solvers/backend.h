@@ -45,16 +45,33 @@ struct IterationRecord {
   double time_s = 0.0;  // Wall time [s]; see above.
 };
 
+// Why a stage ended before its iteration cap.
+enum class StageEnd {
+  NONE,           // It goes on.
+  CONVERGED,      // A step shorter than step_tolerance.
+  LAYER_MINIMUM,  // A rejected step, with end_on_rejected_step.
+};
+
 // How long one stage runs.
 struct StageControl {
   int max_iterations = 1;  // Iterations in this stage. >= 1.
-  // > 0: the stage ends with CONVERGENCE once a successful step has
+  // > 0: the stage ends with CONVERGENCE once a step, taken or rejected, has
   // ||delta xi|| < step_tolerance (metres and radians mixed, as the paper's
-  // update norm). 0: the stage runs max_iterations.
+  // update norm): a rejected step that short says the minimum is nearer
+  // than the tolerance. 0: the stage runs max_iterations.
   double step_tolerance = 0.0;
+  // True: the stage also ends (CONVERGENCE) at its first rejected step. The
+  // objective is piecewise smooth (a point changes cell at a cell face); on
+  // a coarse layer a rejected step means the layer's minimum is reached at
+  // the layer's resolution, and the finer layers go on from there.
+  bool end_on_rejected_step = false;
   // The stage uses every point_stride-th input point (coarse layers need
   // fewer, layer_scheduler.h). >= 1.
   int point_stride = 1;
+
+  // Whether, and why, an iteration that tried a step of `step_norm` ends
+  // the stage.
+  StageEnd EndAfter(double step_norm, bool step_is_successful) const;
 };
 
 struct StageSummary {
@@ -64,6 +81,10 @@ struct StageSummary {
   std::vector<IterationRecord> trace;  // One record per iteration.
   int iterations() const { return static_cast<int>(trace.size()); }
 };
+
+// Sets summary's termination and message for a stage that ended with `end`
+// (not NONE): CONVERGENCE.
+void EndStage(StageEnd end, StageSummary* summary);
 
 class Backend {
  public:

@@ -56,7 +56,7 @@ class CeresBackend::CostPool {
 
 namespace {
 
-// Records the trace and ends the final stage on a small update norm.
+// Records the trace and ends the stage as StageControl says.
 class TraceCallback : public ceres::IterationCallback {
  public:
   TraceCallback(const StageControl& control,
@@ -74,21 +74,18 @@ class TraceCallback : public ceres::IterationCallback {
     record.reference_from_input_xi = Eigen::Map<const Vector6d>(xi_);
     record.time_s = NowSeconds() - start_s_;
     summary_->trace.push_back(record);
-    if (control_.step_tolerance > 0.0 && s.step_is_successful &&
-        s.step_norm < control_.step_tolerance) {
-      converged_ = true;
-      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-    }
-    return ceres::SOLVER_CONTINUE;
+    end_ = control_.EndAfter(s.step_norm, s.step_is_successful);
+    return end_ == StageEnd::NONE ? ceres::SOLVER_CONTINUE
+                                  : ceres::SOLVER_TERMINATE_SUCCESSFULLY;
   }
-  bool converged() const { return converged_; }
+  StageEnd end() const { return end_; }
 
  private:
   const StageControl& control_;
   const double* xi_;
   StageSummary* summary_;
   const double start_s_ = NowSeconds();
-  bool converged_ = false;
+  StageEnd end_ = StageEnd::NONE;
 };
 
 }  // namespace
@@ -191,8 +188,9 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   summary->message = ceres_summary.message;
   if (ceres_summary.termination_type == ceres::FAILURE) {
     summary->termination_type = TerminationType::FAILURE;
-  } else if (callback.converged() ||
-             ceres_summary.termination_type == ceres::CONVERGENCE) {
+  } else if (callback.end() != StageEnd::NONE) {
+    EndStage(callback.end(), summary);
+  } else if (ceres_summary.termination_type == ceres::CONVERGENCE) {
     summary->termination_type = TerminationType::CONVERGENCE;
   } else {
     summary->termination_type = TerminationType::NO_CONVERGENCE;

@@ -147,11 +147,7 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
     } else {
       lambda *= lm_options.lambda_increase;
     }
-    if (trace.Record(current.score, step.norm(), successful, *xi)) {
-      summary->termination_type = TerminationType::CONVERGENCE;
-      summary->message = "update norm below tolerance";
-      return;
-    }
+    if (trace.Record(current.score, step.norm(), successful, *xi)) return;
   }
 }
 

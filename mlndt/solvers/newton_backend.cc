@@ -106,11 +106,7 @@ void MinimizeNewton(const Objective& objective,
       summary->final_score = candidate_score;
     }
     const double step_norm = scale * step.norm();
-    const bool converged =
-        trace.Record(summary->final_score, step_norm, successful, *xi);
-    if (converged) {
-      summary->termination_type = TerminationType::CONVERGENCE;
-      summary->message = "update norm below tolerance";
+    if (trace.Record(summary->final_score, step_norm, successful, *xi)) {
       return;
     }
     if (!successful) {

@@ -183,8 +183,17 @@ TEST(RunLayerSchedule, StageControlsFollowTheOptions) {
       EXPECT_EQ(control.max_iterations, last ? 17 : 5);
       EXPECT_EQ(control.step_tolerance, last ? 1e-5 : 1e-3);
       EXPECT_EQ(control.point_stride, c.strides[layer - 1]);
+      EXPECT_EQ(control.end_on_rejected_step, !last);
     }
   }
+  options.end_coarse_layer_on_rejected_step = false;
+  FakeBackend backend(Script({1, 1, 1, 1}));
+  Vector6d xi = Vector6d::Zero();
+  RunSchedule(options, &backend, &xi);
+  for (const StageCall& call : backend.calls()) {
+    EXPECT_FALSE(call.control.end_on_rejected_step);
+  }
+  EXPECT_FALSE(PaperLayerScheduleOptions().end_coarse_layer_on_rejected_step);
 }
 
 // Catches: iterations numbered per stage or from 0, records not stamped with

@@ -28,11 +28,14 @@ void Assess(const RegistrationOptions& options,
   attempt->verdict_message = std::move(judgement.message);
 }
 
+// Runs the schedule from `start_layer`; assesses the solution unless told
+// not to (the guess check assesses only a solution in another basin).
 Attempt Solve(const RegistrationOptions& options,
               const Problem& problem,
               int start_layer,
               const Vector6d& initial_local,
-              double start_time_s) {
+              double start_time_s,
+              bool assess = true) {
   Attempt attempt;
   attempt.start_layer = start_layer;
   attempt.xi_local = initial_local;
@@ -43,7 +46,7 @@ Attempt Solve(const RegistrationOptions& options,
                    problem.backend,
                    &attempt.xi_local,
                    &attempt.schedule);
-  if (attempt.schedule.termination_type != TerminationType::FAILURE) {
+  if (assess && attempt.schedule.termination_type != TerminationType::FAILURE) {
     Assess(options, problem, &attempt);
   }
   return attempt;
@@ -154,9 +157,10 @@ Attempt SolveAttempts(const RegistrationOptions& options,
   if (start < n &&
       LeftTheGuess(options, problem, initial_local, best.xi_local)) {
     ++*attempts;
-    Attempt from_guess =
-        Solve(options, problem, n, initial_local, start_time_s);
+    Attempt from_guess = Solve(
+        options, problem, n, initial_local, start_time_s, /*assess=*/false);
     if (AnotherBasin(problem, from_guess, best)) {
+      Assess(options, problem, &from_guess);
       KeepBetter(std::move(from_guess), &best);
     }
   }

@@ -14,7 +14,8 @@ class StageMonitor {
   StageMonitor(const StageControl& control, StageSummary* summary)
       : control_(control), summary_(summary), start_s_(NowSeconds()) {}
 
-  // Records one iteration; returns true when it converged the stage.
+  // Records one iteration; returns true when it ends the stage (backend.h:
+  // StageControl), with the summary's termination and message set.
   bool Record(double score,
               double step_norm,
               bool successful,
@@ -26,8 +27,9 @@ class StageMonitor {
     record.reference_from_input_xi = xi;
     record.time_s = NowSeconds() - start_s_;
     summary_->trace.push_back(record);
-    return control_.step_tolerance > 0.0 && successful &&
-           step_norm < control_.step_tolerance;
+    const StageEnd end = control_.EndAfter(step_norm, successful);
+    EndStage(end, summary_);
+    return end != StageEnd::NONE;
   }
 
  private:
