@@ -33,7 +33,10 @@ TEST(PclMethods, NdtAndGicpRegisterTheKoide3Pair) {
   std::vector<ScanPair> pairs;
   std::string error;
   ASSERT_TRUE(LoadBenchPairs(pair_options, &pairs, &error)) << error;
-  for (auto method : {MakePclNdtMethod({}), MakePclGicpMethod({})}) {
+  std::vector<std::unique_ptr<BenchMethod>> methods;
+  methods.push_back(MakePclNdtMethod({}));
+  methods.push_back(MakePclGicpMethod({}));
+  for (const std::unique_ptr<BenchMethod>& method : methods) {
     ASSERT_NE(method, nullptr);
     const BenchMethodLabels labels = method->Labels();
     SCOPED_TRACE(labels.method);
