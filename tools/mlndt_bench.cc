@@ -2,8 +2,7 @@
 // references and reports speed and accuracy per method, all methods in one
 // run, alternating (lab/bench/bench_rounds.h).
 //
-//   mlndt_bench [--data_dir=FOLDER_WITH_reference_pairs.json |
-//   --pairs=koide3,kitti]
+//   mlndt_bench [--data_dir=FOLDER | --pairs=koide3,kitti]
 //               [--starts=identity,prior,offsets] [--backends=ceres,newton,lm]
 //               [--defaults=current,previous] [--repetitions=5]
 //               [--compare_pcl] [--compare_pcl_gicp]
