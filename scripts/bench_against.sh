@@ -43,6 +43,15 @@ if ! sha="$(git -C "$root" rev-parse --verify --quiet "$rev^{commit}")"; then
   exit 2
 fi
 
+for arg in "$@"; do
+  case "$arg" in
+    --output_csv* | -output_csv* | --output_plot* | -output_plot* | --help* | -help*)
+      echo "bench_against: $arg is set by the script (or meaningless here)" >&2
+      exit 2
+      ;;
+  esac
+done
+
 # 1. REV's build.
 base="${MLNDT_AGAINST_DIR:-/tmp/mlndt_against}"
 tree="$base/${sha:0:12}"
@@ -71,12 +80,6 @@ for arg in "$@"; do
   name="${arg#--}"
   name="${name#-}"
   name="${name%%=*}"
-  case "$name" in
-    output_csv | output_plot | help*)
-      echo "bench_against: $arg is set by the script (or meaningless here)" >&2
-      exit 2
-      ;;
-  esac
   base_name="$name"
   if ! grep -qx "$name" <<< "$common" && [[ $name == no* ]]; then
     base_name="${name#no}"  # --noflag of a boolean flag.
