@@ -216,6 +216,54 @@ TEST(MlndtBench, AnyFolderFromPriorsAndOffsetsWithNewAxes) {
   EXPECT_NE(data.find(" 1 \""), std::string::npos) << data;
 }
 
+// The bundled PCL room pair (40 deg apart) from its prior: a folder whose
+// scans are named, not numbered, and whose pairs need a start.
+TEST(MlndtBench, RoomFolderFromItsPrior) {
+  const std::string csv_path = TempPath("room.csv");
+  std::remove(csv_path.c_str());
+  const ToolRun run =
+      RunBench("--data_dir=" + Quote(testing::BundledDataPath("room")) +
+               " --starts=prior --backends=lm --repetitions=1 --warmup=false "
+               "--output_csv=" +
+               Quote(csv_path));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto rows = CsvRows(csv_path);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].at("pairs"), "room/prior");
+  EXPECT_EQ(rows[0].at("runs"), "1");
+  EXPECT_EQ(ToNumber(rows[0].at("success_rate")), 1.0);
+  EXPECT_LT(ToNumber(rows[0].at("mean_translation_error_m")), 0.05);
+}
+
+// PCL's GICP as another row (in the build with PCL); without PCL the flag is
+// refused before any work.
+TEST(MlndtBench, ComparePclGicp) {
+  const std::string csv_path = TempPath("gicp.csv");
+  std::remove(csv_path.c_str());
+  const ToolRun run = RunBench(
+      "--pairs=koide3 --backends=lm --repetitions=1 --warmup=false "
+      "--compare_pcl_gicp --output_csv=" +
+      Quote(csv_path));
+#ifdef MLNDT_WITH_PCL
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto rows = CsvRows(csv_path);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].at("method"), "mlndt");
+  EXPECT_EQ(rows[1].at("method"), "pcl_gicp");
+  EXPECT_EQ(rows[1].at("sampling"), "voxel_grid_0.1");
+  EXPECT_EQ(ToNumber(rows[1].at("success_rate")), 1.0);
+  EXPECT_LT(ToNumber(rows[1].at("mean_translation_error_m")), 0.05);
+  EXPECT_EQ(rows[0].at("pcl_over_ours"), "");  // Only against PCL NDT.
+  EXPECT_NE(run.out.find("+ pcl::GICP"), std::string::npos) << run.out;
+#else
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(run.lines.empty());
+  EXPECT_NE(run.err.find("--compare_pcl_gicp: this build has no PCL"),
+            std::string::npos)
+      << run.err;
+#endif
+}
+
 TEST(MlndtBench, UnknownBackendFails) {
   const ToolRun run =
       RunBench("--repetitions=1 --pairs=koide3 --backends=newton,foo");
@@ -250,6 +298,8 @@ TEST(MlndtBench, RejectsBadFlagValues) {
         "--pairs=koide3 --output_plot=/nonexistent/x.png",
         "--repetitions=0",
         "--pairs=koide3 --output_csv=/nonexistent/x.csv",
+        "--pcl_leaf_size=0",
+        "--pcl_gicp_max_iterations=0",
         "unexpected_argument"}) {
     SCOPED_TRACE(flags);
     const ToolRun run = RunBench(flags);

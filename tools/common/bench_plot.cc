@@ -77,20 +77,6 @@ std::string ScriptText(const std::string& png_path,
 
 }  // namespace
 
-std::vector<bool> ParetoFront(const std::vector<BenchPlotPoint>& points) {
-  std::vector<bool> front(points.size(), true);
-  for (size_t a = 0; a < points.size(); ++a) {
-    for (size_t b = 0; b < points.size() && front[a]; ++b) {
-      const BenchPlotPoint &p = points[a], &q = points[b];
-      if (b == a || q.set != p.set) continue;
-      const bool no_worse = q.time_ms <= p.time_ms && q.error_m <= p.error_m;
-      const bool better = q.time_ms < p.time_ms || q.error_m < p.error_m;
-      if (no_worse && better) front[a] = false;
-    }
-  }
-  return front;
-}
-
 bool WriteBenchPlot(const std::string& gnuplot,
                     const std::string& png_path,
                     const std::vector<BenchPlotPoint>& points,

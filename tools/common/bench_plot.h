@@ -2,24 +2,15 @@
 
 // mlndt_bench's --output_plot: per set of pairs, the median time against
 // the mean translation error of every configuration, with the Pareto front
-// (the configurations no other one beats in both) joined and labelled.
+// (lab/bench/bench_pareto.h) joined and labelled.
 
 #include <string>
 #include <vector>
 
+#include "lab/bench/bench_pareto.h"
+
 namespace mlndt {
 namespace tools {
-
-struct BenchPlotPoint {
-  std::string set;
-  std::string label;  // ShortLabel (bench_report.h).
-  double time_ms = 0.0;
-  double error_m = 0.0;
-};
-
-// For each point, whether it is on its set's Pareto front: no point of the
-// same set has time <= and error <= with one of them strictly smaller.
-std::vector<bool> ParetoFront(const std::vector<BenchPlotPoint>& points);
 
 // Writes png_path + ".dat" (one gnuplot index per set: time, error, front
 // 0/1, label; the front's points sorted by time) and png_path + ".gp", and

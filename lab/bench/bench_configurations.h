@@ -15,7 +15,6 @@
 #include "mlndt/registration/registration_options.h"
 
 namespace mlndt {
-namespace tools {
 
 // Which defaults a configuration starts from.
 enum class BenchDefaults {
@@ -49,26 +48,32 @@ struct BenchConfiguration {
   RegistrationOptions Options(uint64_t seed) const;
 };
 
-// The comma-separated list flags that span the grid.
-struct BenchGridFlags {
-  std::string defaults;        // current, previous
-  std::string backends;        // ceres, newton, lm
-  std::string samplings;       // gbs, random, all, voxel_centroid
-  std::string gbs_cell_sizes;  // [m]
-  std::string start_layers;
-  std::string linear_solvers;  // Ceres linear solver types.
-  std::string trust_regions;   // levenberg_marquardt, dogleg
-  std::string minimizers;      // trust_region, bfgs, lbfgs
-  std::string jacobians;       // autodiff, analytic
-  std::string losses;          // none, huber, cauchy
-  std::string loss_scales;     // Mahalanobis distances.
-  std::string threads;
-  uint64_t seed = 1;
+// The axes of the grid, one list of items per axis (mlndt_bench splits its
+// comma-separated flags of the same names into these). Enum items are
+// spelled as the flags spell them.
+struct BenchGrid {
+  std::vector<std::string> defaults = {"current"};  // current, previous
+  std::vector<std::string> backends = {"ceres", "newton", "lm"};
+  std::vector<std::string> samplings = {"gbs"};  // gbs, random, all, ...
+  std::vector<double> gbs_cell_sizes = {1.0};    // [m], gbs sampling only.
+  std::vector<int> start_layers = {LayerScheduleOptions().start_layer};
+  // Ceres backend only: linear solver types (dense_normal_cholesky, ...),
+  // trust-region strategies (levenberg_marquardt, dogleg), minimizers
+  // (trust_region, bfgs, lbfgs) and Jacobians (autodiff, analytic).
+  std::vector<std::string> linear_solvers = {"dense_normal_cholesky"};
+  std::vector<std::string> trust_regions = {"levenberg_marquardt"};
+  std::vector<std::string> minimizers = {"trust_region"};
+  std::vector<std::string> jacobians = {"autodiff"};
+  std::vector<std::string> losses = {"cauchy"};  // none, huber, cauchy
+  std::vector<double> loss_scales = {1.5};       // Mahalanobis distances.
+  std::vector<int> threads = {1};
+  uint64_t seed = 1;  // Sampling seed (random sampling).
 };
 
 // Every configuration of the grid, backends outermost; false with *error
-// naming the flag for a bad item or an invalid configuration.
-bool ParseBenchConfigurations(const BenchGridFlags& flags,
+// naming the axis (as its flag, "--backends: ...") for a bad item, an empty
+// axis or an invalid configuration.
+bool ParseBenchConfigurations(const BenchGrid& grid,
                               std::vector<BenchConfiguration>* configurations,
                               std::string* error);
 
@@ -81,5 +86,4 @@ std::string BackendFlagName(BackendType type);
 // `value` in lower case (enum strings as flags spell them).
 std::string LowerCase(std::string value);
 
-}  // namespace tools
 }  // namespace mlndt

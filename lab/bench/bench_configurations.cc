@@ -1,14 +1,12 @@
-#include "tools/common/bench_configurations.h"
+#include "lab/bench/bench_configurations.h"
 
 #include <algorithm>
 #include <cctype>
 #include <utility>
 
 #include "mlndt/common/internal/enum_strings.h"
-#include "tools/common/list_flags.h"
 
 namespace mlndt {
-namespace tools {
 namespace {
 
 // The choices of every grid axis, parsed.
@@ -29,11 +27,10 @@ struct GridAxes {
   std::vector<ceres::TrustRegionStrategyType> trust_regions;
 };
 
-bool ParseDefaults(const std::string& text,
+bool ParseDefaults(const std::vector<std::string>& items,
                    std::vector<BenchDefaults>* defaults,
                    std::string* error) {
-  std::vector<std::string> items;
-  if (!SplitList(text, &items)) {
+  if (items.empty()) {
     *error = "--defaults: expected a comma-separated list of current, previous";
     return false;
   }
@@ -50,11 +47,10 @@ bool ParseDefaults(const std::string& text,
   return true;
 }
 
-bool ParseBackends(const std::string& text,
+bool ParseBackends(const std::vector<std::string>& items,
                    std::vector<BackendType>* backends,
                    std::string* error) {
-  std::vector<std::string> items;
-  if (!SplitList(text, &items)) {
+  if (items.empty()) {
     *error = "--backends: expected a comma-separated list of ceres, newton, lm";
     return false;
   }
@@ -69,11 +65,11 @@ bool ParseBackends(const std::string& text,
   return true;
 }
 
-bool ParseSamplings(const BenchGridFlags& flags,
+bool ParseSamplings(const BenchGrid& grid,
                     std::vector<std::pair<SamplingMethod, double>>* samplings,
                     std::string* error) {
-  std::vector<std::string> items;
-  if (!SplitList(flags.samplings, &items)) {
+  const std::vector<std::string>& items = grid.samplings;
+  if (items.empty()) {
     *error =
         "--samplings: expected a comma-separated list of gbs, random, all, "
         "voxel_centroid";
@@ -89,9 +85,8 @@ bool ParseSamplings(const BenchGridFlags& flags,
     }
     methods.push_back(method);
   }
-  std::vector<double> gbs_cell_sizes;
-  if (!ParseNumberList(flags.gbs_cell_sizes, &gbs_cell_sizes) ||
-      gbs_cell_sizes.empty()) {
+  const std::vector<double>& gbs_cell_sizes = grid.gbs_cell_sizes;
+  if (gbs_cell_sizes.empty()) {
     *error = "--gbs_cell_sizes: expected comma-separated numbers";
     return false;
   }
@@ -108,14 +103,13 @@ bool ParseSamplings(const BenchGridFlags& flags,
 
 // A list of Ceres enum values by their (case-insensitive) names.
 template <typename Enum>
-bool ParseCeresList(const std::string& text,
+bool ParseCeresList(const std::vector<std::string>& items,
                     const std::string& flag,
                     const std::string& expected,
                     bool (*from_string)(std::string, Enum*),
                     std::vector<Enum>* values,
                     std::string* error) {
-  std::vector<std::string> items;
-  if (!SplitList(text, &items)) {
+  if (items.empty()) {
     *error = flag + ": expected a comma-separated list of " + expected;
     return false;
   }
@@ -133,11 +127,10 @@ bool ParseCeresList(const std::string& text,
   return true;
 }
 
-bool ParseMinimizers(const std::string& text,
+bool ParseMinimizers(const std::vector<std::string>& items,
                      GridAxes* axes,
                      std::string* error) {
-  std::vector<std::string> items;
-  if (!SplitList(text, &items)) {
+  if (items.empty()) {
     *error =
         "--minimizers: expected a comma-separated list of trust_region, "
         "bfgs, lbfgs";
@@ -160,27 +153,26 @@ bool ParseMinimizers(const std::string& text,
 }
 
 // --jacobians, --losses and --loss_scales.
-bool ParseObjectiveAxes(const BenchGridFlags& flags,
+bool ParseObjectiveAxes(const BenchGrid& grid,
                         GridAxes* axes,
                         std::string* error) {
-  std::vector<std::string> items;
-  if (!SplitList(flags.jacobians, &items)) {
+  if (grid.jacobians.empty()) {
     *error =
         "--jacobians: expected a comma-separated list of autodiff, analytic";
     return false;
   }
-  for (const std::string& item : items) {
+  for (const std::string& item : grid.jacobians) {
     if (item != "autodiff" && item != "analytic") {
       *error = "--jacobians: '" + item + "' is not autodiff or analytic";
       return false;
     }
     axes->analytic_jacobians.push_back(item == "analytic");
   }
-  if (!SplitList(flags.losses, &items)) {
+  if (grid.losses.empty()) {
     *error = "--losses: expected a comma-separated list of none, huber, cauchy";
     return false;
   }
-  for (const std::string& item : items) {
+  for (const std::string& item : grid.losses) {
     LossType loss;
     if (!StringToLossType(item, &loss)) {
       *error = "--losses: '" + item + "' is not none, huber or cauchy";
@@ -188,41 +180,43 @@ bool ParseObjectiveAxes(const BenchGridFlags& flags,
     }
     axes->losses.push_back(loss);
   }
-  if (!ParseNumberList(flags.loss_scales, &axes->loss_scales) ||
-      axes->loss_scales.empty()) {
+  axes->loss_scales = grid.loss_scales;
+  if (axes->loss_scales.empty()) {
     *error = "--loss_scales: expected comma-separated numbers";
     return false;
   }
   return true;
 }
 
-bool ParseAxes(const BenchGridFlags& flags, GridAxes* axes, std::string* e) {
-  if (!ParseMinimizers(flags.minimizers, axes, e) ||
-      !ParseObjectiveAxes(flags, axes, e)) {
+bool ParseAxes(const BenchGrid& grid, GridAxes* axes, std::string* e) {
+  if (!ParseMinimizers(grid.minimizers, axes, e) ||
+      !ParseObjectiveAxes(grid, axes, e)) {
     return false;
   }
-  if (!ParseDefaults(flags.defaults, &axes->defaults, e) ||
-      !ParseBackends(flags.backends, &axes->backends, e) ||
-      !ParseSamplings(flags, &axes->samplings, e)) {
+  if (!ParseDefaults(grid.defaults, &axes->defaults, e) ||
+      !ParseBackends(grid.backends, &axes->backends, e) ||
+      !ParseSamplings(grid, &axes->samplings, e)) {
     return false;
   }
-  if (!ParseIntList(flags.start_layers, &axes->start_layers)) {
+  axes->start_layers = grid.start_layers;
+  if (axes->start_layers.empty()) {
     *e = "--start_layers: expected comma-separated integers";
     return false;
   }
-  if (!ParseIntList(flags.threads, &axes->threads)) {
+  axes->threads = grid.threads;
+  if (axes->threads.empty()) {
     *e = "--threads: expected comma-separated integers";
     return false;
   }
   return ParseCeresList<ceres::LinearSolverType>(
-             flags.linear_solvers,
+             grid.linear_solvers,
              "--linear_solvers",
              "Ceres linear solver types",
              ceres::StringToLinearSolverType,
              &axes->linear_solvers,
              e) &&
          ParseCeresList<ceres::TrustRegionStrategyType>(
-             flags.trust_regions,
+             grid.trust_regions,
              "--trust_regions",
              "levenberg_marquardt, dogleg",
              ceres::StringToTrustRegionStrategyType,
@@ -290,11 +284,11 @@ RegistrationOptions BenchConfiguration::Options(uint64_t seed) const {
   return options;
 }
 
-bool ParseBenchConfigurations(const BenchGridFlags& flags,
+bool ParseBenchConfigurations(const BenchGrid& grid_axes,
                               std::vector<BenchConfiguration>* configurations,
                               std::string* error) {
   GridAxes axes;
-  if (!ParseAxes(flags, &axes, error)) return false;
+  if (!ParseAxes(grid_axes, &axes, error)) return false;
   std::vector<BenchConfiguration> grid;  // With the current defaults.
   for (const BackendType backend : axes.backends) {
     for (const BenchConfiguration& base : SolverChoices(axes, backend)) {
@@ -315,7 +309,7 @@ bool ParseBenchConfigurations(const BenchGridFlags& flags,
                                    ? ObjectiveOptions().loss_scale
                                    : axes.loss_scales[k];
                 c.threads = thread_count;
-                if (!c.Options(flags.seed).IsValid(error)) {
+                if (!c.Options(grid_axes.seed).IsValid(error)) {
                   *error = std::string("invalid configuration (backend ") +
                            BackendFlagName(backend) + ", threads " +
                            std::to_string(thread_count) + "): " + *error;
@@ -360,5 +354,4 @@ std::string LowerCase(std::string value) {
   return value;
 }
 
-}  // namespace tools
 }  // namespace mlndt

@@ -1,4 +1,4 @@
-#include "tools/common/bench_pairs.h"
+#include "lab/bench/bench_pairs.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,10 +7,8 @@
 
 #include "lab/eval/reference_pairs.h"
 #include "mlndt/cloud/io.h"
-#include "tools/common/list_flags.h"
 
 namespace mlndt {
-namespace tools {
 namespace {
 
 // One folder with a reference_pairs.json, as a set named `set`.
@@ -23,9 +21,9 @@ struct Folder {
 bool ParseStarts(const BenchPairsOptions& options,
                  SuitePlanOptions* plan,
                  std::string* error) {
-  std::vector<std::string> items;
+  const std::vector<std::string>& items = options.starts;
   plan->starts.clear();
-  if (!SplitList(options.starts, &items) || items.empty()) {
+  if (items.empty()) {
     *error =
         "--starts: expected a comma-separated list of identity, prior, "
         "offsets";
@@ -60,8 +58,8 @@ bool ParseStarts(const BenchPairsOptions& options,
 bool BundledFolders(const BenchPairsOptions& options,
                     std::vector<Folder>* folders,
                     std::string* error) {
-  std::vector<std::string> listed;
-  if (!SplitList(options.sets, &listed)) {
+  const std::vector<std::string>& listed = options.sets;
+  if (listed.empty()) {
     *error = "--pairs: expected koide3, kitti or both";
     return false;
   }
@@ -71,8 +69,8 @@ bool BundledFolders(const BenchPairsOptions& options,
       return false;
     }
   }
-  std::vector<int> gaps;
-  if (!ParseIntList(options.kitti_gaps, &gaps) ||
+  const std::vector<int>& gaps = options.kitti_gaps;
+  if (gaps.empty() ||
       std::any_of(gaps.begin(), gaps.end(), [](int g) { return g < 1; })) {
     *error = "--kitti_gaps: expected comma-separated integers >= 1";
     return false;
@@ -181,8 +179,11 @@ bool LoadBenchPairs(const BenchPairsOptions& options,
   if (!ParseStarts(options, &plan, error)) return false;
   std::vector<Folder> folders;
   if (IsDatasetFolder(options.data_dir)) {
-    const std::string name =
-        std::filesystem::path(options.data_dir).lexically_normal().filename();
+    // The folder's name, also with a trailing '/'.
+    std::filesystem::path dir =
+        std::filesystem::path(options.data_dir).lexically_normal();
+    if (dir.filename().empty()) dir = dir.parent_path();
+    const std::string name = dir.filename();
     folders.push_back(
         {name.empty() ? options.data_dir : name, options.data_dir, {}});
   } else if (!BundledFolders(options, &folders, error)) {
@@ -198,5 +199,4 @@ bool LoadBenchPairs(const BenchPairsOptions& options,
   return true;
 }
 
-}  // namespace tools
 }  // namespace mlndt

@@ -1,0 +1,28 @@
+#pragma once
+
+// The settings of PCL's registrations in mlndt_bench
+// (lab/bench/pcl_methods.h says what each does; mlndt_bench's --pcl_*
+// flags set them).
+
+#include <string>
+
+namespace mlndt {
+
+struct PclBenchOptions {
+  double leaf_size_m = 0.1;  // VoxelGrid leaf for both clouds, both methods.
+  // pcl_ndt.
+  double ndt_resolution_m = 1.0;
+  double ndt_step_size_m = 1.0;  // More-Thuente maximum step (PCL: 0.1).
+  // Stops when the squared translation of a step is <= this [m^2].
+  double ndt_transformation_epsilon = 1e-4;
+  int ndt_max_iterations = 35;
+  // pcl_gicp: PCL 1.13's defaults.
+  double gicp_max_correspondence_distance_m = 5.0;
+  int gicp_max_iterations = 200;
+
+  // Leaf, resolution, step size and distance > 0, epsilon >= 0, caps >= 1;
+  // else false with *error naming the flag.
+  bool IsValid(std::string* error) const;
+};
+
+}  // namespace mlndt
