@@ -31,6 +31,7 @@
 #include <iostream>
 
 #include "lab/eval/dataset.h"
+#include "tools/common/flag_utils.h"
 #include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/odometry_output.h"
@@ -113,6 +114,10 @@ bool OptionsFromFlags(OdometryOptions* options,
   options->max_consecutive_fallbacks = FLAGS_max_consecutive_fallbacks;
   options->deskew = FLAGS_deskew;
   options->gate_factor = FLAGS_gate_factor;
+  // The registration flag sets the odometry's probe (on by default here).
+  if (tools::FlagGiven("max_flatness")) {
+    options->max_flatness = options->registration.quality_check.max_flatness;
+  }
   if (!options->IsValid(error)) {
     *error = "odometry flags: " + *error;
     return false;

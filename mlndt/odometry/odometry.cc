@@ -81,6 +81,7 @@ void Odometry::Register(const PointCloud& cloud, OdometryResult* result) {
   options.initial_uncertainty.given = true;
   options.initial_uncertainty.translation_m = result->uncertainty.translation_m;
   options.initial_uncertainty.rotation_deg = result->uncertainty.rotation_deg;
+  options.quality_check.max_flatness = options_.max_flatness;
   RegistrationSummary summary;
   mlndt::Register(
       options, local_map_.grid(), cloud, result->predicted, &summary);

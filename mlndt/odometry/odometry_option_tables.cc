@@ -116,6 +116,12 @@ const OptionTable& OdometryOwnOptionsTable() {
              AtLeast(1),
              "After this many scans in a row without a pose the local map "
              "restarts.")
+        .Double("max_flatness",
+                &S::max_flatness,
+                "",
+                LeftOpen(0.0, 1.0),
+                "The probe of weak directions of the scans' registrations "
+                "(replaces the registration's max_flatness; 1 = off).")
         .Validator(&S::IsValid);
     return builder.Build();
   }();

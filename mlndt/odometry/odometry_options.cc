@@ -11,6 +11,8 @@ bool OdometryOptions::IsValid(std::string* error) const {
   }
   MLNDT_OPTION_GE(gate_factor, 1.0);
   MLNDT_OPTION_GE(max_consecutive_fallbacks, 1);
+  MLNDT_OPTION_GT(max_flatness, 0.0);
+  MLNDT_OPTION_LE(max_flatness, 1.0);
   return true;
 }
 

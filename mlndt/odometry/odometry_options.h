@@ -13,8 +13,9 @@ namespace mlndt {
 
 struct OdometryOptions {
   // The registration of each scan onto the local map. Its grid does not
-  // apply (local_map.grid builds the map) and its initial_uncertainty is set
-  // per scan from the prediction.
+  // apply (local_map.grid builds the map), its initial_uncertainty is set
+  // per scan from the prediction, and its quality_check.max_flatness is
+  // replaced by max_flatness below.
   RegistrationOptions registration;
   LocalMapOptions local_map;
   KeyframeOptions keyframes;
@@ -32,6 +33,15 @@ struct OdometryOptions {
   // trajectory takes one jump there instead of drifting off a map the
   // sensor has left. >= 1.
   int max_consecutive_fallbacks = 3;
+  // The probe of weak directions for the scans' registrations
+  // (QualityCheckOptions::max_flatness, which it replaces): a pose that can
+  // slide one cell edge along a weakly constrained direction without losing
+  // inliers is DEGENERATE, and the prediction stands in. On here although
+  // the library leaves it off: a wide search onto a local map of a few
+  // scans finds such slides (docs/odometry.md: on the Livox sequence it
+  // cuts the wrong poses reported CONVERGENCE by more than half; KITTI and
+  // MulRan are unchanged). In (0, 1]; 1 = off.
+  double max_flatness = 0.8;
 
   bool IsValid(std::string* error) const;
 };

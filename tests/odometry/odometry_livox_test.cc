@@ -70,52 +70,84 @@ StepScore ScoreSteps(const std::vector<OdometryResult>& results,
   return score;
 }
 
-// Scans 160-249 of the sequence, the first of them the odometry's origin:
-// the walk back along the corridor, with one step the registration gets
-// wrong (scan 173, reported NO_CONVERGENCE; measured: 88 of the 89 steps
-// CONVERGENCE and within 0.2 m / 2 deg of the prior, no fallback; with the
-// weak-direction probe of the verdict branch 0add305, scans 173-175 are
-// DEGENERATE, the map restarts at 176, 84 CONVERGENCE and right, 4
-// fallbacks). No step off the prior may be reported CONVERGENCE, and most
-// are still CONVERGENCE and right.
-TEST(OdometryLivox, NoWrongStepIsReportedConvergenceOnTheCorridorStretch) {
-  MLNDT_REQUIRE_SHARED_DATA(data_dir);
+// The odometry from scratch on scans [first, first + count) of the sequence
+// (the first of them the origin), and the prior's poses of those scans.
+void RunStretch(const std::string& data_dir,
+                size_t first,
+                size_t count,
+                std::vector<OdometryResult>* results,
+                OdometrySummary* summary,
+                std::vector<Isometry3d>* prior) {
   const std::string sequence = data_dir + "/fastlio_avia_hku_2_sequence";
-  constexpr size_t kFirst = 160;
-  constexpr size_t kCount = 90;
   std::vector<double> stamps;
   std::vector<Isometry3d> all_prior;
   std::string error;
   ASSERT_TRUE(ReadScanTimes(sequence + "/times.txt", &stamps, &error)) << error;
   ASSERT_TRUE(ReadKittiPoses(sequence + "/prior_poses.txt", &all_prior, &error))
       << error;
-  ASSERT_GE(stamps.size(), kFirst + kCount);
-  ASSERT_GE(all_prior.size(), kFirst + kCount);
-  const std::vector<Isometry3d> prior(all_prior.begin() + kFirst,
-                                      all_prior.begin() + kFirst + kCount);
+  ASSERT_GE(stamps.size(), first + count);
+  ASSERT_GE(all_prior.size(), first + count);
+  prior->assign(all_prior.begin() + first, all_prior.begin() + first + count);
   const OdometryScanLoader load = [&](size_t i,
                                       PointCloud* cloud,
                                       std::vector<double>* times,
                                       double* stamp_s,
                                       std::string* load_error) {
     times->clear();
-    *stamp_s = stamps.at(kFirst + i);
+    *stamp_s = stamps.at(first + i);
     return ReadPointCloud(
-        sequence + "/pcd/" + ScanName(kFirst + i), cloud, nullptr, load_error);
+        sequence + "/pcd/" + ScanName(first + i), cloud, nullptr, load_error);
   };
+  ASSERT_TRUE(
+      RunOdometry(OdometryOptions(), count, load, {}, results, summary, &error))
+      << error;
+  ASSERT_EQ(results->size(), count);
+}
+
+// Scans 160-249 of the sequence, the first of them the origin: the walk
+// back along the corridor, with one step the registration gets wrong (scan
+// 173). Measured (docs/odometry.md), with the odometry's probe of weak
+// directions (OdometryOptions::max_flatness 0.8): scans 173-175 are
+// DEGENERATE, the map restarts at 176, 84 of the 89 steps CONVERGENCE and
+// within 0.2 m / 2 deg of the prior, 4 fallbacks (without the probe: 173 is
+// NO_CONVERGENCE, 88 right, no fallback). No step off the prior may be
+// reported CONVERGENCE, and most are still CONVERGENCE and right.
+TEST(OdometryLivox, NoWrongStepIsReportedConvergenceOnTheCorridorStretch) {
+  MLNDT_REQUIRE_SHARED_DATA(data_dir);
+  constexpr size_t kFirst = 160;
   std::vector<OdometryResult> results;
   OdometrySummary summary;
-  ASSERT_TRUE(RunOdometry(
-      OdometryOptions(), kCount, load, {}, &results, &summary, &error))
-      << error;
-  ASSERT_EQ(results.size(), kCount);
+  std::vector<Isometry3d> prior;
+  ASSERT_NO_FATAL_FAILURE(
+      RunStretch(data_dir, kFirst, 90, &results, &summary, &prior));
 
   const StepScore score = ScoreSteps(results, prior);
   EXPECT_EQ(score.wrong_convergence, 0u)
       << "first wrong step reported CONVERGENCE: scan "
       << kFirst + score.wrong_convergence_scans.front();
-  EXPECT_GE(score.right_convergence, 75u);  // Measured 88 (84) of 89.
-  EXPECT_LE(summary.fallbacks, 10u);        // Measured 0 (4).
+  EXPECT_GE(score.right_convergence, 75u);  // Measured 84 of 89.
+  EXPECT_LE(summary.fallbacks, 10u);        // Measured 4.
+}
+
+// Scans 60-109 from a fresh start: the far corner, where the sensor looks
+// around in small steps and the registrations slide along directions the
+// scans barely constrain. Without the probe of weak directions 21 of the 49
+// steps were wrong and reported CONVERGENCE (24 CONVERGENCE and right, 6
+// fallbacks); with it (the odometry's default) 5 wrong CONVERGENCE, 23 right,
+// 23 fallbacks. Not yet none: the bound says the probe catches most.
+TEST(OdometryLivox, TheProbeOfWeakDirectionsCatchesMostSlidesInTheFarCorner) {
+  MLNDT_REQUIRE_SHARED_DATA(data_dir);
+  constexpr size_t kFirst = 60;
+  std::vector<OdometryResult> results;
+  OdometrySummary summary;
+  std::vector<Isometry3d> prior;
+  ASSERT_NO_FATAL_FAILURE(
+      RunStretch(data_dir, kFirst, 50, &results, &summary, &prior));
+
+  const StepScore score = ScoreSteps(results, prior);
+  EXPECT_LE(score.wrong_convergence, 10u);  // Measured 5 (21 without).
+  EXPECT_GE(score.right_convergence, 18u);  // Measured 23 (24).
+  EXPECT_LE(summary.fallbacks, 30u);        // Measured 23 (6).
 }
 
 }  // namespace
