@@ -52,8 +52,9 @@ const OptionTable& QualityCheckOptionsTable() {
                   LeftOpen(0.0, 1.0),
                   "DEGENERATE when one last-layer cell along a weak direction "
                   "keeps more than this share of the inliers both ways and "
-                  "the net loss is under min_probe_evidence; 1 = off (the "
-                  "default), 0.8 measured (docs/trust.md).")
+                  "the net loss is under min_probe_evidence (a corridor keeps "
+                  "0.99, right results at most 0.93: docs/trust.md); 1 = "
+                  "off.")
           .Double("min_probe_evidence",
                   &S::min_probe_evidence,
                   "sigma",

@@ -391,7 +391,7 @@ TEST(NdtBaseline, APlaneIsDegenerateWithAnInfiniteCovariance) {
 }
 
 // The corridor of issue 22 (40 m of input in a 100 m reference) at 8000 and
-// 45000 input points: with the probe of weak directions (max_flatness 0.8)
+// 45000 input points: with the probe of weak directions (on by default)
 // the same verdict as ML-NDT's, through the same check, whatever the
 // density: the corridor's length is free.
 TEST(NdtBaseline, ACorridorIsDegenerateAlongItsLengthAtAnyDensity) {
@@ -399,9 +399,7 @@ TEST(NdtBaseline, ACorridorIsDegenerateAlongItsLengthAtAnyDensity) {
     Isometry3d truth = Isometry3d::Identity();
     truth.translation() = Eigen::Vector3d(1.0, 0.1, 0.0);
     RegistrationSummary s;
-    NdtOptions probed = Ndt(0.0);
-    probed.quality_check.max_flatness = 0.8;
-    Register(probed,
+    Register(Ndt(0.0),
              testing::Corridor(50.0, n * 5 / 2, 1),
              TransformCloud(truth.inverse(), testing::Corridor(20.0, n, 2)),
              Isometry3d::Identity(),
