@@ -13,44 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/cloud/io.h"
-#include "mlndt/grid/layered_grid.h"
 #include "mlndt/registration/registration.h"
-#include "mlndt/sampling/point_sampler.h"
-#include "tests/testing/test_data.h"
+#include "tests/testing/koide3_pair.h"
 
 namespace mlndt {
 namespace {
 
-struct Koide3 {
-  LayeredGrid map;
-  std::vector<Eigen::Vector3d> samples;
-};
-
-const Koide3& Koide3Pair() {
-  static const Koide3* pair = [] {
-    auto* p = new Koide3;
-    PointCloud reference, input, sampled;
-    std::string error;
-    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251370668.pcd"),
-                         &reference,
-                         nullptr,
-                         &error))
-        << error;
-    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251371071.pcd"),
-                         &input,
-                         nullptr,
-                         &error))
-        << error;
-    CHECK(LayeredGrid::Build(LayeredGridOptions(), reference, &p->map, &error))
-        << error;
-    CHECK(SamplePoints(SamplingOptions(), input, &sampled, nullptr, &error))
-        << error;
-    p->samples = sampled.points();
-    return p;
-  }();
-  return *pair;
-}
+using testing::Koide3Pair;
 
 StageControl Stage(int stride) {
   StageControl control;
@@ -90,7 +59,7 @@ std::vector<Eigen::Vector3d> EveryNth(
 }
 
 TEST(CeresBackend, PointStrideMatchesPreThinnedPoints) {
-  const Koide3& pair = Koide3Pair();
+  const testing::Koide3MapAndSamples& pair = Koide3Pair();
   const UnmatchedPolicy policy = UnmatchedPolicy::NEAREST_CELL;
   for (const int stride : {2, 4}) {
     SCOPED_TRACE(stride);
@@ -106,7 +75,7 @@ TEST(CeresBackend, PointStrideMatchesPreThinnedPoints) {
 }
 
 TEST(CeresBackend, ReusedAcrossLayersLikeFreshBackends) {
-  const Koide3& pair = Koide3Pair();
+  const testing::Koide3MapAndSamples& pair = Koide3Pair();
   const UnmatchedPolicy policy = UnmatchedPolicy::NEAREST_CELL;
   CeresBackend reused{CeresBackendOptions()};
   reused.SetProblem(pair.samples, Objective(policy), 1);
@@ -121,7 +90,7 @@ TEST(CeresBackend, ReusedAcrossLayersLikeFreshBackends) {
 }
 
 TEST(CeresBackend, SetProblemAgainGivesWhatAFreshBackendGives) {
-  const Koide3& pair = Koide3Pair();
+  const testing::Koide3MapAndSamples& pair = Koide3Pair();
   const std::vector<Eigen::Vector3d> first_half(
       pair.samples.begin(), pair.samples.begin() + pair.samples.size() / 2);
   const std::vector<Eigen::Vector3d> second_half(

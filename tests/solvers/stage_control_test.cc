@@ -8,11 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/cloud/io.h"
-#include "mlndt/grid/layered_grid.h"
-#include "mlndt/sampling/point_sampler.h"
 #include "mlndt/solvers/backend_factory.h"
-#include "tests/testing/test_data.h"
+#include "tests/testing/koide3_pair.h"
 
 namespace mlndt {
 namespace {
@@ -39,35 +36,7 @@ TEST(StageControl, EndAfterFollowsItsFields) {
   EXPECT_EQ(summary.termination_type, TerminationType::FAILURE);
 }
 
-struct Koide3 {
-  LayeredGrid map;
-  std::vector<Eigen::Vector3d> samples;
-};
-
-const Koide3& Koide3Pair() {
-  static const Koide3* pair = [] {
-    auto* p = new Koide3;
-    PointCloud reference, input, sampled;
-    std::string error;
-    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251370668.pcd"),
-                         &reference,
-                         nullptr,
-                         &error))
-        << error;
-    CHECK(ReadPointCloud(testing::BundledDataPath("koide3/251371071.pcd"),
-                         &input,
-                         nullptr,
-                         &error))
-        << error;
-    CHECK(LayeredGrid::Build(LayeredGridOptions(), reference, &p->map, &error))
-        << error;
-    CHECK(SamplePoints(SamplingOptions(), input, &sampled, nullptr, &error))
-        << error;
-    p->samples = sampled.points();
-    return p;
-  }();
-  return *pair;
-}
+using testing::Koide3Pair;
 
 std::vector<BackendType> AllBackends() {
   return {BackendType::CERES,
