@@ -30,11 +30,11 @@ struct LayerScheduleOptions {
   int iterations_per_layer = 6;
   // Cap on the last layer's iterations. In [1, 10000].
   int max_final_iterations = 30;
-  // The last layer converges when a step, taken or rejected, has
-  // ||delta xi|| below this (metres and radians: 1 mm, 0.06 deg).
-  // In [1e-12, 1].
+  // The last layer converges when a successful step has ||delta xi|| below
+  // this (metres and radians: 1 mm, 0.06 deg). In [1e-12, 1].
   double step_tolerance = 1e-3;
-  // A coarse layer ends early once a step has ||delta xi|| below this; 0
+  // A coarse layer ends early once a successful step has ||delta xi||
+  // below this; 0
   // runs every coarse layer for exactly iterations_per_layer iterations, as
   // the paper. In [0, 1].
   double coarse_step_tolerance = 0.0;

@@ -26,7 +26,8 @@ bool StringToBackendType(std::string value, BackendType* type) {
 
 StageEnd StageControl::EndAfter(double step_norm,
                                 bool step_is_successful) const {
-  if (step_tolerance > 0.0 && step_norm < step_tolerance) {
+  if (step_is_successful && step_tolerance > 0.0 &&
+      step_norm < step_tolerance) {
     return StageEnd::CONVERGED;
   }
   if (!step_is_successful && end_on_rejected_step) {

@@ -48,17 +48,19 @@ struct IterationRecord {
 // Why a stage ended before its iteration cap.
 enum class StageEnd {
   NONE,           // It goes on.
-  CONVERGED,      // A step shorter than step_tolerance.
+  CONVERGED,      // A successful step below step_tolerance.
   LAYER_MINIMUM,  // A rejected step, with end_on_rejected_step.
 };
 
 // How long one stage runs.
 struct StageControl {
   int max_iterations = 1;  // Iterations in this stage. >= 1.
-  // > 0: the stage ends with CONVERGENCE once a step, taken or rejected, has
+  // > 0: the stage ends with CONVERGENCE once a successful step has
   // ||delta xi|| < step_tolerance (metres and radians mixed, as the paper's
-  // update norm): a rejected step that short says the minimum is nearer
-  // than the tolerance. 0: the stage runs max_iterations.
+  // update norm). A short rejected step does not count: a last layer that
+  // keeps rejecting steps ends at its cap, NO_CONVERGENCE (on the Livox
+  // sequence counting them let a wrong pose through as CONVERGENCE). 0: the
+  // stage runs max_iterations.
   double step_tolerance = 0.0;
   // True: the stage also ends (CONVERGENCE) at its first rejected step. The
   // objective is piecewise smooth (a point changes cell at a cell face); on

@@ -14,13 +14,14 @@
 namespace mlndt {
 namespace {
 
-// Catches: a rejected short step not counted as converged, a rejected step
-// ending a stage that did not ask for it.
+// Catches: a short rejected step counted as converged (a last layer that
+// keeps rejecting must end at its cap), a rejected step ending a stage that
+// did not ask for it.
 TEST(StageControl, EndAfterFollowsItsFields) {
   StageControl control;
   control.step_tolerance = 1e-3;
   EXPECT_EQ(control.EndAfter(5e-4, true), StageEnd::CONVERGED);
-  EXPECT_EQ(control.EndAfter(5e-4, false), StageEnd::CONVERGED);
+  EXPECT_EQ(control.EndAfter(5e-4, false), StageEnd::NONE);
   EXPECT_EQ(control.EndAfter(5e-3, false), StageEnd::NONE);
   control.end_on_rejected_step = true;
   EXPECT_EQ(control.EndAfter(5e-3, false), StageEnd::LAYER_MINIMUM);
@@ -76,10 +77,10 @@ TEST(StageControl, EveryBackendEndsACoarseLayerAtItsFirstRejectedStep) {
   }
 }
 
-// Catches: a trust-region backend that counts only taken steps towards
-// convergence (it would run on past a short rejected step) or stops before
-// a short step. (Newton also ends where its line search finds no decrease.)
-TEST(StageControl, TrustRegionBackendsConvergeOnTheFirstShortStep) {
+// Catches: a trust-region backend that converges on a short rejected step
+// or runs on past a short successful one. (Newton also ends where its line
+// search finds no decrease.)
+TEST(StageControl, TrustRegionBackendsConvergeOnTheFirstShortSuccessfulStep) {
   const int last = Koide3Pair().map.num_layers();
   for (const BackendType type :
        {BackendType::CERES, BackendType::LEVENBERG_MARQUARDT}) {
@@ -94,8 +95,10 @@ TEST(StageControl, TrustRegionBackendsConvergeOnTheFirstShortStep) {
     ASSERT_EQ(summary.termination_type, TerminationType::CONVERGENCE)
         << summary.message;
     EXPECT_LT(summary.trace.back().step_norm, 1e-3);
+    EXPECT_TRUE(summary.trace.back().step_is_successful);
     for (int i = 0; i + 1 < summary.iterations(); ++i) {
-      EXPECT_GE(summary.trace[static_cast<size_t>(i)].step_norm, 1e-3);
+      const IterationRecord& record = summary.trace[static_cast<size_t>(i)];
+      EXPECT_FALSE(record.step_is_successful && record.step_norm < 1e-3);
     }
     EXPECT_GT(xi.head<3>().norm(), 0.3);  // The pair is 0.5 m apart.
   }
