@@ -51,6 +51,7 @@ class LayerScheduleOptions(TypedDict, total=False):
     max_final_iterations: int
     step_tolerance: float
     coarse_step_tolerance: float
+    end_coarse_layer_on_rejected_step: bool
     max_coarse_point_stride: int
     cells_per_uncertainty: float
 
