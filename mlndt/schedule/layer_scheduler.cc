@@ -87,7 +87,6 @@ LayerScheduleOptions PaperLayerScheduleOptions() {
   options.start_layer = 2;
   options.iterations_per_layer = 3;
   options.max_coarse_point_stride = 1;
-  options.end_coarse_layer_on_rejected_step = false;
   options.step_tolerance = 1e-4;
   return options;
 }

@@ -40,9 +40,10 @@ struct LayerScheduleOptions {
   double coarse_step_tolerance = 0.0;
   // A coarse layer ends at its first rejected step: the objective is
   // piecewise smooth, and a step the layer rejects means its minimum is
-  // reached at its resolution (backend.h, StageControl). False runs the
-  // iterations the tolerances allow, as the paper.
-  bool end_coarse_layer_on_rejected_step = true;
+  // reached at its resolution (backend.h, StageControl). False (the
+  // default, docs/performance.md says why) runs the iterations the
+  // tolerances allow, as the paper.
+  bool end_coarse_layer_on_rejected_step = false;
   // Layer i of n uses every s-th sampled point, s = min(2^(n - i), this):
   // a cell twice as large needs fewer points to be located. 1 uses every
   // sampled point on every layer, as the paper. In [1, 1024].

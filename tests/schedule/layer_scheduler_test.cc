@@ -165,6 +165,7 @@ TEST(RunLayerSchedule, StageControlsFollowTheOptions) {
   options.max_final_iterations = 17;
   options.step_tolerance = 1e-5;
   options.coarse_step_tolerance = 1e-3;
+  options.end_coarse_layer_on_rejected_step = true;
   const struct {
     int max_stride;
     std::vector<int> strides;  // Layers 1..4.
