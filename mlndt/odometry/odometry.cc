@@ -8,6 +8,7 @@
 
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
+#include "mlndt/odometry/confirm_pose.h"
 #include "mlndt/odometry/deskew.h"
 #include "mlndt/registration/registration.h"
 
@@ -120,6 +121,34 @@ void Odometry::Register(const PointCloud& cloud, OdometryResult* result) {
   result->fallback = result->termination != TerminationType::CONVERGENCE &&
                      result->termination != TerminationType::NO_CONVERGENCE;
   if (result->fallback) result->world_from_sensor = result->predicted;
+  if (result->termination == TerminationType::CONVERGENCE) {
+    Confirm(options, cloud, result);
+  }
+}
+
+// CONVERGENCE only for a pose the registration returns to (confirm_pose.h);
+// an unconfirmed pose is kept, reported NO_CONVERGENCE.
+void Odometry::Confirm(const RegistrationOptions& options,
+                       const PointCloud& cloud,
+                       OdometryResult* result) {
+  if (!NeedsConfirmation(options_.confirmation,
+                         options_.prediction,
+                         result->uncertainty,
+                         result->predicted,
+                         result->world_from_sensor)) {
+    return;
+  }
+  const Confirmation confirmation = ConfirmPose(options,
+                                                options_.prediction,
+                                                local_map_.grid(),
+                                                cloud,
+                                                result->uncertainty,
+                                                result->predicted,
+                                                result->world_from_sensor);
+  result->registration_time_s += confirmation.time_s;
+  if (confirmation.confirmed) return;
+  result->termination = TerminationType::NO_CONVERGENCE;
+  result->message += "; " + confirmation.message;
 }
 
 bool Odometry::UpdateMap(const PointCloud& cloud,

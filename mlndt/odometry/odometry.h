@@ -18,7 +18,10 @@
 // from the guess); accept the pose when the registration is usable and
 // within gate_factor times that uncertainty of the prediction. Otherwise
 // the prediction stands in for the pose, flagged (`fallback`), and the
-// verdict says why: no wrong pose is reported as CONVERGENCE. Accepted
+// verdict says why. A CONVERGENCE with a large correction, or from a
+// prediction at its largest uncertainty, stands only when a second
+// registration from beyond the pose returns to it (confirm_pose.h); else
+// the pose is kept and reported NO_CONVERGENCE. Accepted
 // scans that moved far enough (keyframe_policy.h) join the local map. The
 // first scan defines the world frame (identity). After
 // max_consecutive_fallbacks scans without a pose the local map restarts
@@ -111,6 +114,9 @@ class Odometry {
 
  private:
   void Register(const PointCloud& cloud, OdometryResult* result);
+  void Confirm(const RegistrationOptions& options,
+               const PointCloud& cloud,
+               OdometryResult* result);
   bool UpdateMap(const PointCloud& cloud,
                  OdometryResult* result,
                  std::string* error);

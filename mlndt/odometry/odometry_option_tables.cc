@@ -1,5 +1,6 @@
 #include "mlndt/odometry/odometry_option_tables.h"
 
+#include "mlndt/odometry/confirm_pose.h"
 #include "mlndt/odometry/keyframe_policy.h"
 #include "mlndt/odometry/local_map.h"
 #include "mlndt/odometry/motion_prediction.h"
@@ -87,6 +88,26 @@ const OptionTable& MotionPredictionOptionsTable() {
   return table;
 }
 
+const OptionTable& ConfirmationOptionsTable() {
+  using S = ConfirmationOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("ConfirmationOptions")
+          .Bool("enabled",
+                &S::enabled,
+                "Confirm CONVERGENCE by a second registration from beyond "
+                "the pose (NO_CONVERGENCE when it does not return).")
+          .Double("min_correction_fraction",
+                  &S::min_correction_fraction,
+                  "",
+                  AtLeast(0.0),
+                  "Confirm a correction above this fraction of the "
+                  "prediction's uncertainty (and any from its largest); 0 = "
+                  "every scan.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
 const OptionTable& OdometryOwnOptionsTable() {
   using S = OdometryOptions;
   static const OptionTable table = [] {
@@ -122,6 +143,10 @@ const OptionTable& OdometryOwnOptionsTable() {
                 LeftOpen(0.0, 1.0),
                 "The probe of weak directions of the scans' registrations "
                 "(replaces the registration's max_flatness; 1 = off).")
+        .Struct("confirmation",
+                &S::confirmation,
+                ConfirmationOptionsTable(),
+                "The confirmation of CONVERGENCE from beyond the pose.")
         .Validator(&S::IsValid);
     return builder.Build();
   }();

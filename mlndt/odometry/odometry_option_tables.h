@@ -14,6 +14,7 @@ namespace mlndt {
 const OptionTable& LocalMapOptionsTable();
 const OptionTable& KeyframeOptionsTable();
 const OptionTable& MotionPredictionOptionsTable();
+const OptionTable& ConfirmationOptionsTable();
 // OdometryOptions without `registration` (its fields are the registration's
 // keywords beside these).
 const OptionTable& OdometryOwnOptionsTable();

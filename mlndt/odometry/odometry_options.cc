@@ -6,7 +6,8 @@ namespace mlndt {
 
 bool OdometryOptions::IsValid(std::string* error) const {
   if (!registration.IsValid(error) || !local_map.IsValid(error) ||
-      !keyframes.IsValid(error) || !prediction.IsValid(error)) {
+      !keyframes.IsValid(error) || !prediction.IsValid(error) ||
+      !confirmation.IsValid(error)) {
     return false;
   }
   MLNDT_OPTION_GE(gate_factor, 1.0);
