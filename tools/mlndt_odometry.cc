@@ -69,6 +69,8 @@ DEFINE_int32(max_consecutive_fallbacks, mlndt::OdometryOptions().max_consecutive
 DEFINE_bool(deskew, true, "Deskew scans whose bag messages have per-point times");
 DEFINE_double(gate_factor, mlndt::OdometryOptions().gate_factor,
               "A pose farther from the prediction than this times its uncertainty is refused");
+DEFINE_bool(confirm, mlndt::ConfirmationOptions().enabled, "Confirm CONVERGENCE from beyond the pose (else NO_CONVERGENCE)");
+DEFINE_double(confirm_fraction, mlndt::ConfirmationOptions().min_correction_fraction, "Confirm corrections above this fraction of the uncertainty (0 = all)");
 DEFINE_bool(plots, true, "Write trajectory_xy.png with gnuplot (exit 1 when gnuplot is missing)");
 DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 // clang-format on
@@ -114,6 +116,8 @@ bool OptionsFromFlags(OdometryOptions* options,
   options->max_consecutive_fallbacks = FLAGS_max_consecutive_fallbacks;
   options->deskew = FLAGS_deskew;
   options->gate_factor = FLAGS_gate_factor;
+  options->confirmation.enabled = FLAGS_confirm;
+  options->confirmation.min_correction_fraction = FLAGS_confirm_fraction;
   // The registration flag sets the odometry's probe (on by default here).
   if (tools::FlagGiven("max_flatness")) {
     options->max_flatness = options->registration.quality_check.max_flatness;
@@ -175,9 +179,8 @@ int Run() {
   OdometryOptions options;
   std::vector<double> lengths;
   std::string error;
-  if (!OptionsFromFlags(&options, &lengths, &error))
-    return tools::Refuse(kTool, error);
-  if (!tools::CheckStartLayerBeforeMap(options.registration, &error)) {
+  if (!OptionsFromFlags(&options, &lengths, &error) ||
+      !tools::CheckStartLayerBeforeMap(options.registration, &error)) {
     return tools::Refuse(kTool, error);
   }
   tools::ScanInput input;
