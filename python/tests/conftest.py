@@ -8,6 +8,8 @@ source tree:
     PYTHONPATH=build/python /usr/bin/python3 -m pytest python/tests
 """
 
+import importlib
+import importlib.util
 import json
 import os
 import subprocess
@@ -33,6 +35,26 @@ KITTI_DIR = BUNDLED_DATA_DIR / "kitti"
 KITTI_SCANS = sorted((KITTI_DIR / "pcd").glob("*.pcd"))
 KITTI_POSES = KITTI_DIR / "poses_velo.txt"
 KITTI_PAIRS = KITTI_DIR / "reference_pairs.json"
+
+
+def import_lab():
+    """The lab's module mlndt_lab, which the development build makes beside
+    mlndt (CMake option MLNDT_BUILD_PYTHON_LAB; never installed, not in the
+    wheel). Skips the calling test file, saying why, when this build has no
+    lab module; a build that says it made one (ctest passes the option) must
+    import it."""
+    built = os.environ.get("MLNDT_BUILD_PYTHON_LAB")
+    if built is None:
+        missing = importlib.util.find_spec("mlndt_lab") is None
+    else:
+        missing = built.upper() in ("", "0", "OFF", "FALSE", "NO", "N")
+    if missing:
+        pytest.skip(
+            "the lab's module mlndt_lab is not built (a development build makes it: "
+            "-DMLNDT_BUILD_PYTHON_LAB=ON, as scripts/test.sh configures)",
+            allow_module_level=True,
+        )
+    return importlib.import_module("mlndt_lab")
 
 
 def pytest_sessionfinish(session, exitstatus):

@@ -1,4 +1,4 @@
-# Type stubs of mlndt.lab (python/lab_src/*.cc). Poses are (N, 4, 4)
+# Type stubs of mlndt_lab (python/lab_src/*.cc). Poses are (N, 4, 4)
 # world_from_sensor arrays; registration options are mlndt.register's.
 
 import os
@@ -7,7 +7,7 @@ from typing import Any, Literal, Sequence, TypedDict, Union
 import numpy as np
 import numpy.typing as npt
 
-from . import InitialUncertaintyLike, Preset
+from mlndt import InitialUncertaintyLike, Preset
 
 __version__: str
 
