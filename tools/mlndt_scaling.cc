@@ -46,17 +46,16 @@
 #include <string>
 #include <vector>
 
+#include "lab/report/gnuplot.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/merged_cloud.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scaling_measure.h"
 #include "tools/common/scaling_report.h"
 #include "tools/common/tool_main.h"
-#include "tools/common/tool_utils.h"
 
 // clang-format off
 DEFINE_string(scans, MLNDT_DATA_DIR "/kitti/pcd",
@@ -165,11 +164,11 @@ int Run() {
       return tools::Refuse(kTool, error);
     }
   }
-  const bool gnuplot_ok = tools::GnuplotReadyForPlots(
-      kTool,
-      !FLAGS_output_dir.empty(),
-      FLAGS_gnuplot,
-      "scaling.png will be skipped (install gnuplot-nox)");
+  const bool gnuplot_ok =
+      GnuplotReadyForPlots(kTool,
+                           !FLAGS_output_dir.empty(),
+                           FLAGS_gnuplot,
+                           "scaling.png will be skipped (install gnuplot-nox)");
 
   PointCloud merged;
   size_t num_scans = 0;

@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "lab/eval/statistics.h"
+#include "lab/report/progress.h"
+#include "lab/report/text_format.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/sampling/point_sampler.h"
 #include "tools/common/list_flags.h"
-#include "tools/common/progress.h"
-#include "tools/common/tool_utils.h"
 
 namespace mlndt {
 namespace tools {
