@@ -1,4 +1,4 @@
-#include "tools/common/scaling_measure.h"
+#include "lab/experiments/scaling_measure.h"
 
 #include <glog/logging.h>
 
@@ -9,39 +9,8 @@
 #include "lab/report/text_format.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/sampling/point_sampler.h"
-#include "tools/common/list_flags.h"
 
 namespace mlndt {
-namespace tools {
-
-// Parses --sizes: strictly increasing positive integers.
-bool ParseSizes(const std::string& text,
-                std::vector<size_t>* sizes,
-                std::string* error) {
-  std::vector<double> values;
-  if (!ParseNumberList(text, &values) || values.empty()) {
-    *error = "--sizes=" + text +
-             ": expected comma-separated positive integers, e.g. 10000,30000";
-    return false;
-  }
-  sizes->clear();
-  for (double v : values) {
-    if (!(v >= 1) || v != std::floor(v) || v > 1e12) {
-      *error =
-          "--sizes=" + text + ": '" + Num(v) + "' is not a positive integer";
-      return false;
-    }
-    const size_t n = static_cast<size_t>(v);
-    if (!sizes->empty() && n <= sizes->back()) {
-      *error = "--sizes=" + text + ": sizes must be strictly increasing (" +
-               std::to_string(n) + " after " + std::to_string(sizes->back()) +
-               ")";
-      return false;
-    }
-    sizes->push_back(n);
-  }
-  return true;
-}
 
 // `n` distinct points of `cloud`, uniformly at random, kept in the cloud's
 // order: the library's random sampling with an exact count.
@@ -146,5 +115,4 @@ bool MeasureSizes(const ScalingSettings& settings,
   return true;
 }
 
-}  // namespace tools
 }  // namespace mlndt

@@ -1,6 +1,7 @@
 #pragma once
 
-// One point of mlndt_scaling: registering a random subset of N points of a
+// One point of mlndt_scaling (the tool parses --sizes: ParseSizes in
+// tools/common/list_flags.h): registering a random subset of N points of a
 // merged cloud onto another, independently drawn one, and what it measures.
 
 #include <cstdint>
@@ -11,12 +12,6 @@
 #include "mlndt/cloud/point_cloud.h"
 
 namespace mlndt {
-namespace tools {
-
-// Parses --sizes: strictly increasing positive integers.
-bool ParseSizes(const std::string& text,
-                std::vector<size_t>* sizes,
-                std::string* error);
 
 // The measurements at one size.
 struct SizeResult {
@@ -64,5 +59,4 @@ bool MeasureSizes(const ScalingSettings& settings,
                   std::vector<SizeResult>* results,
                   std::string* error);
 
-}  // namespace tools
 }  // namespace mlndt
