@@ -58,9 +58,11 @@ def import_lab():
 
 
 def pytest_sessionfinish(session, exitstatus):
-    """Exit 77 when every test was skipped, which ctest reports as skipped."""
+    """Exit 77 when every test was skipped, which ctest reports as skipped
+    (also when a file skipped as a whole, e.g. import_lab(), and pytest says
+    it collected no tests: exit status 5)."""
     reporter = session.config.pluginmanager.get_plugin("terminalreporter")
-    if exitstatus != 0 or reporter is None:
+    if exitstatus not in (0, pytest.ExitCode.NO_TESTS_COLLECTED) or reporter is None:
         return
     ran = sum(len(reporter.stats.get(k, [])) for k in ("passed", "failed", "error", "xfailed", "xpassed"))
     if ran == 0 and reporter.stats.get("skipped"):
