@@ -1,10 +1,11 @@
 """setuptools' side of pip install . (pyproject.toml has the metadata).
 
-build_ext runs the project's CMake: it configures a build of the library, the
-lab and the two extensions only (no tests, tools or benchmarks; no gflags or
-GoogleTest needed) for the interpreter running pip, builds the targets
-mlndt_python (mlndt._mlndt) and mlndt_python_lab (mlndt._lab) and copies them
-into the package. Extra CMake arguments: MLNDT_CMAKE_ARGS; parallel jobs:
+build_ext runs the project's CMake: it configures a build of the library and
+its extension only (no lab, tests, tools or benchmarks; no gflags, GoogleTest
+or nlohmann_json needed) for the interpreter running pip, builds the target
+mlndt_python (mlndt._mlndt) and copies it into the package. The wheel is the
+product: the lab's module mlndt_lab is a development build's
+(MLNDT_BUILD_PYTHON_LAB, scripts/test.sh), not pip's. Extra CMake arguments: MLNDT_CMAKE_ARGS; parallel jobs:
 CMAKE_BUILD_PARALLEL_LEVEL (default: all cores). ccache is used when
 installed.
 """
@@ -47,7 +48,7 @@ class CMakeBuild(build_ext):
             "cmake", "-S", str(ROOT), "-B", str(build_dir),
             "-DCMAKE_BUILD_TYPE=Release",
             "-DMLNDT_BUILD_TESTS=OFF", "-DMLNDT_BUILD_TOOLS=OFF", "-DMLNDT_BUILD_BENCHMARKS=OFF",
-            "-DMLNDT_BUILD_PYTHON=ON", f"-DPython_EXECUTABLE={sys.executable}",
+            "-DMLNDT_BUILD_PYTHON=ON", "-DMLNDT_BUILD_PYTHON_LAB=OFF", f"-DPython_EXECUTABLE={sys.executable}",
         ]  # fmt: skip
         env = dict(os.environ)
         if shutil.which("ccache"):
@@ -70,7 +71,7 @@ class CMakeBuild(build_ext):
 
 setup(
     version=project_version(),
-    ext_modules=[CMakeExtension("mlndt._mlndt", "mlndt_python"), CMakeExtension("mlndt._lab", "mlndt_python_lab")],
+    ext_modules=[CMakeExtension("mlndt._mlndt", "mlndt_python")],
     cmdclass={"build_ext": CMakeBuild},
     # Not build/: that is the CMake build of scripts/build.sh.
     options={"build": {"build_base": "build-pip/setuptools"}},

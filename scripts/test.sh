@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 scripts/install_deps.sh
 # ON: install_deps.sh has installed pybind11 and Python's packages (and the
 # ROS 1 bag libraries), and a build folder configured before they were there
-# would keep the module (and bag input) off.
-scripts/build.sh -DMLNDT_BUILD_PYTHON=ON -DMLNDT_WITH_ROSBAG=ON
+# would keep the module (and bag input) off. The lab's Python module
+# mlndt_lab (never installed, not in the wheel) is built here for its tests.
+scripts/build.sh -DMLNDT_BUILD_PYTHON=ON -DMLNDT_BUILD_PYTHON_LAB=ON -DMLNDT_WITH_ROSBAG=ON
 ctest --test-dir build --output-on-failure -j"$(nproc)" "$@"

@@ -29,9 +29,9 @@
 
 #include "lab/bench/bench.h"
 #include "lab/bench/bench_report.h"
+#include "lab/report/gnuplot.h"
 #include "mlndt/common/atomic_file.h"
 #include "tools/common/bench_plot.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/tool_main.h"
@@ -176,7 +176,7 @@ bool CheckOutputs(std::string* error) {
       !tools::CheckOutputFile("output_plot", FLAGS_output_plot, error)) {
     return false;
   }
-  if (!FLAGS_output_plot.empty() && !tools::GnuplotAvailable(FLAGS_gnuplot)) {
+  if (!FLAGS_output_plot.empty() && !GnuplotAvailable(FLAGS_gnuplot)) {
     *error = "--output_plot: '" + FLAGS_gnuplot +
              "' does not run (install gnuplot or pass --gnuplot)";
     return false;

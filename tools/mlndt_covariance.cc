@@ -39,13 +39,13 @@
 #include <vector>
 
 #include "lab/experiments/covariance_campaign.h"
+#include "lab/report/progress.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/atomic_file.h"
 #include "tools/common/covariance_output.h"
 #include "tools/common/json_output.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/output_files.h"
-#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/tool_main.h"
 
@@ -75,7 +75,7 @@ constexpr char kTool[] = "mlndt_covariance";
 struct Campaign {
   std::mt19937_64* rng;
   std::ostringstream* csv;  // nullptr without --output_csv.
-  tools::Progress* progress;
+  Progress* progress;
   size_t done = 0;
 };
 
@@ -193,9 +193,8 @@ int Main() {
     csv << tools::CovarianceCsvHeader();
   }
   std::mt19937_64 rng(FLAGS_perturbation_seed);
-  tools::Progress progress(
-      "mlndt_covariance",
-      tools::CovarianceRegistrations(datasets, FLAGS_starts));
+  Progress progress("mlndt_covariance",
+                    tools::CovarianceRegistrations(datasets, FLAGS_starts));
   Campaign campaign{&rng, FLAGS_output_csv.empty() ? nullptr : &csv, &progress};
   std::vector<PairRuns> pairs;
   for (const std::string& dataset : datasets) {

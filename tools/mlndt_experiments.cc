@@ -1,7 +1,7 @@
 // mlndt_experiments: reproduces the paper's Section 5 (Tables 2-9, Figs.
 // 10-18) on the data sets with references, under the paper preset and under
 // the defaults (plus the ablation between them), and writes the report
-// (issue 15; tools/experiments/ holds the logic):
+// (issue 15; lab/experiments/ holds the logic):
 //
 //   mlndt_experiments --data_dir=/work/shared/data --out=results/experiments
 //   mlndt_experiments --quick --out=/tmp/quick      # bundled data/, < 1 min
@@ -19,14 +19,14 @@
 #include <chrono>
 #include <iostream>
 
-#include "tools/common/gnuplot.h"
+#include "lab/experiments/datasets.h"
+#include "lab/experiments/experiment_plan.h"
+#include "lab/experiments/report.h"
+#include "lab/experiments/run_batch.h"
+#include "lab/experiments/trace_experiment.h"
+#include "lab/report/gnuplot.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
-#include "tools/experiments/datasets.h"
-#include "tools/experiments/experiment_plan.h"
-#include "tools/experiments/report.h"
-#include "tools/experiments/run_batch.h"
-#include "tools/experiments/trace_experiment.h"
 
 // clang-format off
 DEFINE_string(data_dir, MLNDT_DATA_DIR,
@@ -46,7 +46,7 @@ constexpr char kTool[] = "mlndt_experiments";
 int Run() {
   using namespace experiments;
   if (FLAGS_out.empty()) return tools::Fail(kTool, "--out is required");
-  if (FLAGS_plots && !tools::GnuplotAvailable(FLAGS_gnuplot))
+  if (FLAGS_plots && !GnuplotAvailable(FLAGS_gnuplot))
     return tools::Fail(
         kTool,
         "--gnuplot=" + FLAGS_gnuplot + " does not run (or --plots=false)");

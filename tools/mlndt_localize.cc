@@ -42,10 +42,10 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include "lab/report/gnuplot.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/localizer.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/localize_output.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
@@ -169,7 +169,7 @@ int Run() {
                                &error)) {
     return tools::Refuse(kTool, error);
   }
-  const bool gnuplot_ok = tools::GnuplotReadyForPlots(
+  const bool gnuplot_ok = GnuplotReadyForPlots(
       kTool,
       FLAGS_plots,
       FLAGS_gnuplot,
@@ -201,7 +201,7 @@ int Run() {
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
   if (FLAGS_plots) {
     if (!gnuplot_ok) {
-      return tools::Fail(kTool, tools::PlotSkippedMessage(FLAGS_gnuplot));
+      return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot));
     }
     if (!tools::WriteLocalizationPlot(FLAGS_output_dir,
                                       map,

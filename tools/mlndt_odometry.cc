@@ -31,18 +31,17 @@
 #include <iostream>
 
 #include "lab/eval/dataset.h"
+#include "lab/report/gnuplot.h"
+#include "lab/report/progress.h"
 #include "tools/common/flag_utils.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/odometry_output.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
-#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
-#include "tools/common/tool_utils.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
@@ -164,7 +163,7 @@ int WritePlot(bool gnuplot_ok,
               const std::vector<OdometryResult>& results,
               const std::vector<Isometry3d>& reference) {
   if (!gnuplot_ok) {
-    return tools::Fail(kTool, tools::PlotSkippedMessage(FLAGS_gnuplot));
+    return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot));
   }
   std::string error;
   if (!tools::WriteOdometryPlot(
@@ -193,8 +192,7 @@ int Run() {
                                &error)) {
     return tools::Refuse(kTool, error);
   }
-  const bool gnuplot_ok =
-      !FLAGS_plots || tools::GnuplotAvailable(FLAGS_gnuplot);
+  const bool gnuplot_ok = !FLAGS_plots || GnuplotAvailable(FLAGS_gnuplot);
 
   std::vector<OdometryResult> results;
   OdometrySummary summary;

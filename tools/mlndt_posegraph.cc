@@ -27,13 +27,13 @@
 #include <vector>
 
 #include "lab/eval/dataset.h"
+#include "lab/report/progress.h"
 #include "lab/runs/pose_graph.h"
 #include "tools/common/json_output.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/posegraph_output.h"
 #include "tools/common/posegraph_pairs.h"
-#include "tools/common/progress.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
@@ -180,8 +180,8 @@ int Run() {
   if (!PrepareRun(&options, &paths, &truth, &error)) return Refuse(error);
 
   const size_t cap = static_cast<size_t>(FLAGS_joint_max_iterations);
-  tools::Progress progress("mlndt_posegraph joint",
-                           static_cast<size_t>(FLAGS_joint_layers) * cap);
+  Progress progress("mlndt_posegraph joint",
+                    static_cast<size_t>(FLAGS_joint_layers) * cap);
   options.on_iteration =
       [&](const std::string& stage, int iteration, double cost) {
         const size_t before =

@@ -46,17 +46,16 @@
 #include <string>
 #include <vector>
 
+#include "lab/experiments/scaling_measure.h"
+#include "lab/report/gnuplot.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/merged_cloud.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
-#include "tools/common/scaling_measure.h"
 #include "tools/common/scaling_report.h"
 #include "tools/common/tool_main.h"
-#include "tools/common/tool_utils.h"
 
 // clang-format off
 DEFINE_string(scans, MLNDT_DATA_DIR "/kitti/pcd",
@@ -86,8 +85,6 @@ namespace mlndt {
 namespace {
 
 constexpr char kTool[] = "mlndt_scaling";
-
-using tools::SizeResult;
 
 // --sizes, --repetitions, the tolerances, --motion and the registration
 // flags; false with *error for a bad value.
@@ -165,11 +162,11 @@ int Run() {
       return tools::Refuse(kTool, error);
     }
   }
-  const bool gnuplot_ok = tools::GnuplotReadyForPlots(
-      kTool,
-      !FLAGS_output_dir.empty(),
-      FLAGS_gnuplot,
-      "scaling.png will be skipped (install gnuplot-nox)");
+  const bool gnuplot_ok =
+      GnuplotReadyForPlots(kTool,
+                           !FLAGS_output_dir.empty(),
+                           FLAGS_gnuplot,
+                           "scaling.png will be skipped (install gnuplot-nox)");
 
   PointCloud merged;
   size_t num_scans = 0;
@@ -186,19 +183,19 @@ int Run() {
                              std::to_string(merged.size()) + " points");
   }
 
-  tools::ScalingSettings settings;
+  ScalingSettings settings;
   settings.seed = tools::Uint64Flag("seed");
   settings.repetitions = FLAGS_repetitions;
   settings.max_translation_error_m = FLAGS_max_translation_error;
   settings.max_rotation_error_deg = FLAGS_max_rotation_error;
   std::vector<SizeResult> results;
-  if (!tools::MeasureSizes(settings,
-                           options,
-                           merged,
-                           sizes,
-                           reference_from_input,
-                           &results,
-                           &error)) {
+  if (!MeasureSizes(settings,
+                    options,
+                    merged,
+                    sizes,
+                    reference_from_input,
+                    &results,
+                    &error)) {
     return tools::Fail(kTool, error);
   }
 

@@ -57,9 +57,9 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include "lab/report/gnuplot.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
@@ -169,12 +169,12 @@ int Run() {
     return tools::Refuse(kTool, error);
   }
   const bool gnuplot_ok =
-      tools::GnuplotReadyForPlots(kTool,
-                                  FLAGS_plots,
-                                  FLAGS_gnuplot,
-                                  "plots will be skipped (install gnuplot-nox, "
-                                  "e.g. with scripts/install_deps.sh, or pass "
-                                  "--plots=false)");
+      GnuplotReadyForPlots(kTool,
+                           FLAGS_plots,
+                           FLAGS_gnuplot,
+                           "plots will be skipped (install gnuplot-nox, "
+                           "e.g. with scripts/install_deps.sh, or pass "
+                           "--plots=false)");
 
   ScanStore store = input.from_bag() ? ScanStore(input.names(), input.Loader())
                                      : ScanStore(input.paths());
@@ -197,8 +197,7 @@ int Run() {
   }
   tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
   if (FLAGS_plots && !gnuplot_ok) {
-    return tools::Fail(kTool,
-                       tools::PlotSkippedMessage(FLAGS_gnuplot, "plots"));
+    return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot, "plots"));
   }
   if (FLAGS_plots && !tools::WriteSequencePlotsAndList(FLAGS_gnuplot,
                                                        FLAGS_output_dir,

@@ -34,9 +34,9 @@
 #include <cstdio>
 
 #include "lab/eval/suite_report.h"
+#include "lab/report/gnuplot.h"
 #include "lab/runs/suite_runner.h"
 #include "tools/common/flag_utils.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"

@@ -1,4 +1,4 @@
-// mlndt.lab's trajectory evaluation: pairing poses (association), the ATE
+// mlndt_lab's trajectory evaluation: pairing poses (association), the ATE
 // and RPE (lab/eval/trajectory_metrics.h) and the KITTI devkit's segment
 // errors (lab/eval/kitti_segment_errors.h), as mlndt_eval computes them.
 

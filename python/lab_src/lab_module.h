@@ -1,9 +1,9 @@
 #pragma once
 
-// The parts of the lab module mlndt._lab (python/mlndt/lab.py re-exports
-// it): the lab's evaluation (lab/eval) and sequence runs (lab/runs) on numpy
-// arrays. Kept apart from python/src, which binds the installed library
-// only (scripts/check_boundaries.sh).
+// The parts of the lab module mlndt_lab._lab (python/mlndt_lab/__init__.py
+// re-exports it): the lab's evaluation (lab/eval) and sequence runs (lab/runs)
+// on numpy arrays. Kept apart from python/src, which binds the installed
+// library only (scripts/check_boundaries.sh).
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

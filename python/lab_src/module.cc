@@ -1,6 +1,6 @@
-// The lab module mlndt._lab (python/mlndt/lab.py re-exports it): the lab's
-// trajectory evaluation and sequence runs (lab/), which the core module
-// mlndt._mlndt must not include.
+// The lab module mlndt_lab._lab (python/mlndt_lab/__init__.py re-exports it):
+// the lab's trajectory evaluation and sequence runs (lab/), which the core
+// module mlndt._mlndt must not include.
 
 #include <pybind11/pybind11.h>
 

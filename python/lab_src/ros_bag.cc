@@ -1,4 +1,4 @@
-// mlndt.lab.RosBag and mlndt.lab.BagScan: the sensor_msgs/PointCloud2
+// mlndt_lab.RosBag and mlndt_lab.BagScan: the sensor_msgs/PointCloud2
 // messages of one topic of a ROS 1 bag (lab/io/ros_bag_scans.h), with their
 // header stamps and per-point times, as mlndt_odometry --bag reads them.
 
@@ -95,7 +95,7 @@ void DefineBagScan(py::module_& m) {
                     "The field the times came from (time, t, offset_time, "
                     "timestamp), or \"\".")
       .def("__repr__", [](const BagScan& s) {
-        return "<mlndt.lab.BagScan " + std::to_string(s.cloud.size()) +
+        return "<mlndt_lab.BagScan " + std::to_string(s.cloud.size()) +
                " points at " + std::to_string(s.stamp_s) + " s>";
       });
 }

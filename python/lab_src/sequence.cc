@@ -1,4 +1,4 @@
-// mlndt.lab.ScanStore, PairResult, run_sequence and chain_trajectory: the
+// mlndt_lab.ScanStore, PairResult, run_sequence and chain_trajectory: the
 // sequence run of mlndt_sequence (lab/runs/sequence_registration.h), scan
 // i + step onto scan i, on maps the store builds once (Section 4.3).
 
@@ -224,7 +224,7 @@ void DefinePairResult(py::module_& m) {
       .def_property_readonly("map_ms",
                              [](const PairResult& r) { return r.times.map_ms; })
       .def("__repr__", [](const PairResult& r) {
-        return "<mlndt.lab.PairResult " + std::to_string(r.reference) + "->" +
+        return "<mlndt_lab.PairResult " + std::to_string(r.reference) + "->" +
                std::to_string(r.input) + " " +
                TerminationTypeToString(r.termination) + ">";
       });

@@ -1,4 +1,4 @@
-// mlndt.lab.read_trajectory and write_trajectory: KITTI and TUM pose files
+// mlndt_lab.read_trajectory and write_trajectory: KITTI and TUM pose files
 // (lab/eval/trajectory_io.h), the files mlndt_eval reads.
 
 #include <pybind11/numpy.h>

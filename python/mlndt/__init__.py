@@ -3,10 +3,11 @@
 The Python face of the mlndt C++ library: register two scans, build, save and
 load layered NDT maps and register against them, localise a scan sequence
 against a map (Localizer), run scan-to-local-map odometry (Odometry,
-run_odometry), read and write cloud files. Submodules (imported
-by name): mlndt.lab (trajectory evaluation, sequence runs and ROS 1 bag
-reading, as mlndt_eval, mlndt_sequence and the tools' --bag do them) and mlndt.distributed (pairs and scans
-fanned out to Dask workers).
+run_odometry), read and write cloud files. Submodule (imported
+by name): mlndt.distributed (pairs and scans fanned out to Dask workers).
+The development build (scripts/test.sh) also makes the separate module
+mlndt_lab (trajectory evaluation, sequence runs and ROS 1 bag reading, as
+mlndt_eval, mlndt_sequence and the tools' --bag do them); pip install does not.
 
     import mlndt
     reference = mlndt.read_cloud("data/koide3/251370668.pcd")

@@ -1,7 +1,7 @@
 #pragma once
 
 // The parts of the mlndt Python module, one file each (module.cc puts them
-// together). They are also linked into the lab module mlndt._lab
+// together). They are also linked into the lab module mlndt_lab._lab
 // (python/lab_src/), which uses the converters and option parsers.
 
 #include <pybind11/pybind11.h>

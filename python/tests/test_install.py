@@ -14,7 +14,8 @@ import mlndt
 from conftest import BUILD_DIR, KOIDE3_INPUT, KOIDE3_REFERENCE, PYTHON
 
 SCRIPT = f"""
-import json, mlndt, mlndt.lab, mlndt.distributed
+import importlib.util, json, mlndt, mlndt.distributed
+assert importlib.util.find_spec('mlndt_lab') is None
 reference = mlndt.read_cloud({str(KOIDE3_REFERENCE)!r})
 input = mlndt.read_cloud({str(KOIDE3_INPUT)!r})
 result = mlndt.register(reference, input)
@@ -38,8 +39,10 @@ def test_installed_package_imports_and_registers(tmp_path, koide3_result):
     names = sorted(p.name for p in package.iterdir())
     assert "__init__.py" in names and "__init__.pyi" in names and "py.typed" in names
     assert any(name.startswith("_mlndt.") and name.endswith(".so") for name in names), names
-    assert any(name.startswith("_lab.") and name.endswith(".so") for name in names), names
-    assert "lab.py" in names and "distributed.py" in names
+    assert "distributed.py" in names
+    # The product only: the lab's module mlndt_lab is not installed.
+    assert not [name for name in names if name.startswith(("lab.", "_lab."))], names
+    assert sorted(p.name for p in package.parent.iterdir()) == ["mlndt"]
 
     environment = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     environment["PYTHONPATH"] = str(package.parent)

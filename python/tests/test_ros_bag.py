@@ -1,4 +1,4 @@
-"""mlndt.lab.RosBag: a ROS 1 bag written at test time by the real
+"""mlndt_lab.RosBag: a ROS 1 bag written at test time by the real
 python3-rosbag (tests/testing/write_test_bag.py, as the C++ reader's test
 does) reads point for point as the PCD files it was made from, with the header
 stamps and the per-point time field; the odometry on the bag's scans (deskewed
@@ -12,8 +12,9 @@ import numpy as np
 import pytest
 
 import mlndt
-import mlndt.lab as lab
-from conftest import KITTI_SCANS, SOURCE_DIR, read_kitti_lines, run_tool
+from conftest import KITTI_SCANS, SOURCE_DIR, import_lab, read_kitti_lines, run_tool
+
+lab = import_lab()
 
 WRITE_BAG = SOURCE_DIR / "tests" / "testing" / "write_test_bag.py"
 

@@ -3,11 +3,14 @@ and python/mlndt/__init__.pyi matches the module (a field added to a C++
 option struct and bound in python/src/options.cc must be added to the stub)."""
 
 import ast
+import importlib
 import pydoc
 import types
 
+import pytest
+
 import mlndt
-from conftest import BUILD_DIR, SOURCE_DIR
+from conftest import BUILD_DIR, SOURCE_DIR, import_lab
 
 STUB = SOURCE_DIR / "python" / "mlndt" / "__init__.pyi"
 
@@ -99,7 +102,7 @@ def test_every_public_name_has_a_stub():
     names = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
     names |= {node.target.id for node in tree.body if isinstance(node, ast.AnnAssign)}
     assert set(mlndt.__all__) <= names
-    # Submodules (mlndt.lab, mlndt.distributed) are attributes once imported.
+    # Submodules (mlndt.distributed) are attributes once imported.
     public = {name for name in dir(mlndt) if not name.startswith("_")}
     public -= {name for name in public if isinstance(getattr(mlndt, name), types.ModuleType)}
     assert set(mlndt.__all__) == public | {"__version__"}
@@ -148,13 +151,24 @@ def test_the_build_tree_has_the_stub_and_py_typed():
     assert (package / "py.typed").exists()
 
 
-def test_lab_stub_names_every_public_name():
-    import mlndt.lab
+def test_the_package_holds_no_lab():
+    # The lab is the separate development module mlndt_lab, never mlndt's.
+    package = BUILD_DIR / "python" / "mlndt"
+    assert not [p.name for p in package.iterdir() if p.name.startswith(("lab.", "_lab."))]
+    with pytest.raises(ModuleNotFoundError):
+        importlib.import_module("mlndt.lab")
 
-    tree = ast.parse((SOURCE_DIR / "python" / "mlndt" / "lab.pyi").read_text())
+
+def test_lab_stub_names_every_public_name():
+    lab = import_lab()
+    assert lab.__file__ == str(BUILD_DIR / "python" / "mlndt_lab" / "__init__.py")
+    stub = SOURCE_DIR / "python" / "mlndt_lab" / "__init__.pyi"
+    assert (BUILD_DIR / "python" / "mlndt_lab" / "__init__.pyi").read_text() == stub.read_text()
+    tree = ast.parse(stub.read_text())
     names = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
-    assert set(mlndt.lab.__all__) - {"__version__"} <= names
+    assert set(lab.__all__) - {"__version__"} <= names
     classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
-    for cls in (mlndt.lab.PairResult, mlndt.lab.ScanStore, mlndt.lab.RosBag, mlndt.lab.BagScan):
+    for cls in (lab.PairResult, lab.ScanStore, lab.RosBag, lab.BagScan):
+        assert cls.__module__ == "mlndt_lab"
         stubbed = {node.name for node in classes[cls.__name__].body if isinstance(node, ast.FunctionDef)}
         assert {name for name in dir(cls) if not name.startswith("_")} <= stubbed, cls.__name__

@@ -1,9 +1,9 @@
-// The figures of the plotting tools (tools/common/gnuplot.h): drawn into a
+// The figures of the plotting tools (lab/report/gnuplot.h): drawn into a
 // private folder and moved onto their targets like every other output, so
 // that a symbolic link, a FIFO or a full disk at a target never costs the
 // previous file or hangs the tool (issue 27, item 9).
 
-#include "tools/common/gnuplot.h"
+#include "lab/report/gnuplot.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -17,7 +17,6 @@
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
-namespace tools {
 namespace {
 
 namespace fs = std::filesystem;
@@ -215,5 +214,4 @@ TEST(PlottingTools, MlndtSuite) {
 }
 
 }  // namespace
-}  // namespace tools
 }  // namespace mlndt

@@ -4,8 +4,8 @@
 #include <numeric>
 #include <sstream>
 
+#include "lab/report/gnuplot.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/common/gnuplot.h"
 
 namespace mlndt {
 namespace tools {

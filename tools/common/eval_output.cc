@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tools/common/tool_utils.h"
+#include "lab/report/text_format.h"
 
 namespace mlndt {
 namespace tools {

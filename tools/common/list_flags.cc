@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "lab/report/text_format.h"
+
 namespace mlndt {
 namespace tools {
 
@@ -58,6 +60,34 @@ bool ParseIntList(const std::string& text, std::vector<int>* values) {
     } catch (...) {
       return false;
     }
+  }
+  return true;
+}
+
+bool ParseSizes(const std::string& text,
+                std::vector<size_t>* sizes,
+                std::string* error) {
+  std::vector<double> values;
+  if (!ParseNumberList(text, &values) || values.empty()) {
+    *error = "--sizes=" + text +
+             ": expected comma-separated positive integers, e.g. 10000,30000";
+    return false;
+  }
+  sizes->clear();
+  for (double v : values) {
+    if (!(v >= 1) || v != std::floor(v) || v > 1e12) {
+      *error =
+          "--sizes=" + text + ": '" + Num(v) + "' is not a positive integer";
+      return false;
+    }
+    const size_t n = static_cast<size_t>(v);
+    if (!sizes->empty() && n <= sizes->back()) {
+      *error = "--sizes=" + text + ": sizes must be strictly increasing (" +
+               std::to_string(n) + " after " + std::to_string(sizes->back()) +
+               ")";
+      return false;
+    }
+    sizes->push_back(n);
   }
   return true;
 }

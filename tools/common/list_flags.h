@@ -22,5 +22,11 @@ bool ParseNumberList(const std::string& text, std::vector<double>* values);
 // Parses "a,b,c" into integers (SplitList items); false on anything else.
 bool ParseIntList(const std::string& text, std::vector<int>* values);
 
+// Parses mlndt_scaling's --sizes: strictly increasing positive integers;
+// false with *error naming the flag and the bad item.
+bool ParseSizes(const std::string& text,
+                std::vector<size_t>* sizes,
+                std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

@@ -7,11 +7,12 @@
 
 #include "lab/eval/statistics.h"
 #include "lab/eval/trajectory_io.h"
+#include "lab/report/gnuplot.h"
+#include "lab/report/progress.h"
+#include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/map_memory.h"
-#include "tools/common/gnuplot.h"
-#include "tools/common/progress.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {

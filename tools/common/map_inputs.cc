@@ -12,7 +12,6 @@
 #include "tools/common/list_flags.h"
 #include "tools/common/matrix_text.h"
 #include "tools/common/pose_flags.h"
-#include "tools/common/tool_utils.h"
 
 namespace mlndt {
 namespace tools {

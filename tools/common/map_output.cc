@@ -4,9 +4,10 @@
 #include <filesystem>
 #include <iostream>
 
+#include "lab/report/progress.h"
+#include "lab/report/text_format.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/map_memory.h"
-#include "tools/common/progress.h"
 #include "tools/common/tool_utils.h"
 
 namespace mlndt {

@@ -5,9 +5,9 @@
 #include <iostream>
 #include <sstream>
 
+#include "lab/report/gnuplot.h"
+#include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/common/gnuplot.h"
-#include "tools/common/tool_utils.h"
 
 namespace mlndt {
 namespace tools {

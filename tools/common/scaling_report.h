@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "tools/common/scaling_measure.h"
+#include "lab/experiments/scaling_measure.h"
 
 namespace mlndt {
 namespace tools {

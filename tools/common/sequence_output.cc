@@ -5,12 +5,12 @@
 #include <sstream>
 
 #include "lab/eval/trajectory_io.h"
+#include "lab/report/progress.h"
+#include "lab/report/text_format.h"
 #include "lab/runs/sequence_totals.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/progress.h"
-#include "tools/common/tool_utils.h"
 #include "tools/common/verdict_counts.h"
 
 namespace mlndt {

@@ -6,10 +6,10 @@
 #include <sstream>
 #include <system_error>
 
+#include "lab/report/gnuplot.h"
+#include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/gnuplot.h"
-#include "tools/common/tool_utils.h"
 
 namespace mlndt {
 namespace tools {

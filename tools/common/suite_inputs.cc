@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "lab/report/gnuplot.h"
 #include "tools/common/flag_utils.h"
-#include "tools/common/gnuplot.h"
 #include "tools/common/list_flags.h"
 
 namespace mlndt {

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <sstream>
 
+#include "lab/report/gnuplot.h"
+#include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/gnuplot.h"
-#include "tools/common/tool_utils.h"
 
 namespace mlndt {
 namespace tools {
@@ -288,20 +288,6 @@ bool WriteSuiteQualityPlot(
   script += "unset multiplot\n";
   return RunGnuplot(
       gnuplot, data + "/quality.gp", script, {dir + "/quality.png"}, error);
-}
-
-std::string FormatDuration(double seconds) {
-  if (!std::isfinite(seconds) || seconds < 0.0) return "?";
-  const long s = std::lround(seconds);
-  char text[32];
-  if (s >= 3600) {
-    std::snprintf(text, sizeof(text), "%ldh%02ldm", s / 3600, (s / 60) % 60);
-  } else if (s >= 60) {
-    std::snprintf(text, sizeof(text), "%ldm%02lds", s / 60, s % 60);
-  } else {
-    std::snprintf(text, sizeof(text), "%lds", s);
-  }
-  return text;
 }
 
 bool WriteSuiteOutputs(const std::string& dir,

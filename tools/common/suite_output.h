@@ -1,8 +1,7 @@
 #pragma once
 
 // mlndt_suite's files: runs.csv (one row per run), summary.json (the
-// tables), quality.png (the verdict's measures of right and wrong runs),
-// and the progress line's ETA.
+// tables) and quality.png (the verdict's measures of right and wrong runs).
 
 #include <string>
 #include <vector>
@@ -48,9 +47,6 @@ bool WriteSuiteQualityPlot(
     const std::vector<std::vector<SuiteRunResult>>& results,
     const QualityCheckOptions* check,
     std::string* error);
-
-// "1m05s" (or "12s", "1h02m") for the progress line; "?" before any run.
-std::string FormatDuration(double seconds);
 
 // runs.csv and summary.json into `dir`, with `plot` quality.png
 // (WriteSuiteQualityPlot; `quality_check` as there), and the line naming

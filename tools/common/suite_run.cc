@@ -3,7 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "tools/common/progress.h"
+#include "lab/report/progress.h"
+#include "lab/report/text_format.h"
 #include "tools/common/suite_output.h"
 
 namespace mlndt {

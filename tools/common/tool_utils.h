@@ -1,22 +1,12 @@
 #pragma once
 
-// Small helpers shared by the tools: numbers for tables, CSV and data
-// files, the command line, peak memory.
+// Small helpers shared by the tools: the command line, peak memory (numbers
+// for tables and CSV files: lab/report/text_format.h).
 
 #include <string>
 
 namespace mlndt {
 namespace tools {
-
-// `value` with `precision` decimals for tables; "–" when not finite.
-std::string Fmt(double value, int precision);
-
-// A number for CSV and data files: 10 significant digits, "nan" when not
-// finite.
-std::string Num(double value);
-
-// `text` as one CSV field (quoted when it holds a comma, quote or newline).
-std::string CsvField(const std::string& text);
 
 // The command line the tool was started with (gflags' argv, space-joined).
 std::string CommandLine();
