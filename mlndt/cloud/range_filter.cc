@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
+#include "mlndt/cloud/squared_range.h"
 #include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/option_table.h"
 
@@ -36,13 +38,15 @@ void WarnWhenOriginIsFar(const RangeFilterOptions& options,
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (size_t i = 0; i < cloud.size(); ++i) centroid += cloud[i];
   centroid /= static_cast<double>(cloud.size());
+  const double distance = centroid.norm();
+  // The radius only matters beyond kFarOriginMinDistance: skip its pass.
+  if (distance <= kFarOriginMinDistance) return;
   double squared_radius = 0.0;
   for (size_t i = 0; i < cloud.size(); ++i) {
     squared_radius += (cloud[i] - centroid).squaredNorm();
   }
   const double radius =
       std::sqrt(squared_radius / static_cast<double>(cloud.size()));
-  const double distance = centroid.norm();
   if (distance <= std::max(kFarOriginMinDistance, kFarOriginRadii * radius)) {
     return;
   }
@@ -126,32 +130,45 @@ PointCloud FilterByRange(const RangeFilterOptions& options,
   WarnWhenOriginIsFar(options, cloud);
   RangeFilterSummary counts;
   counts.input_points = cloud.size();
-  std::vector<double> ranges(cloud.size());
-  double largest = 0.0;
-  for (size_t i = 0; i < cloud.size(); ++i) {
-    ranges[i] = cloud[i].norm();
-    largest = std::max(largest, ranges[i]);
+  const std::vector<Eigen::Vector3d>& points = cloud.points();
+  // Squared ranges against exact squared thresholds (squared_range.h): the
+  // same decisions as sqrt(s) < min_range_m etc., without a sqrt per point.
+  double largest_squared = 0.0;
+  for (const Eigen::Vector3d& p : points) {
+    largest_squared = std::max(largest_squared, p.squaredNorm());
   }
-  const size_t at_largest = static_cast<size_t>(
-      std::count_if(ranges.begin(), ranges.end(), [&](double r) {
-        return r >= largest - kSaturationBand;
-      }));
-  const bool saturated =
-      options.saturated_range_fraction > 0.0 &&
-      static_cast<double>(at_largest) >=
-          options.saturated_range_fraction * static_cast<double>(cloud.size());
+  // sqrt is monotone, so the largest range is the sqrt of the largest s.
+  const double largest = std::sqrt(largest_squared);
+  const double saturation_s =
+      SmallestSquareWithRangeAtLeast(largest - kSaturationBand);
+  bool saturated = false;
+  if (options.saturated_range_fraction > 0.0) {
+    const size_t at_largest = static_cast<size_t>(
+        std::count_if(points.begin(), points.end(), [&](const auto& p) {
+          return p.squaredNorm() >= saturation_s;
+        }));
+    saturated =
+        static_cast<double>(at_largest) >=
+        options.saturated_range_fraction * static_cast<double>(cloud.size());
+  }
+  const double min_s = SmallestSquareWithRangeAtLeast(options.min_range_m);
+  // r > max_range_m <=> s >= the smallest s whose range exceeds it.
+  const double too_far_s =
+      options.max_range_m > 0.0
+          ? SmallestSquareWithRangeAbove(options.max_range_m)
+          : std::numeric_limits<double>::infinity();
   PointCloud kept;
   kept.Reserve(cloud.size());
-  for (size_t i = 0; i < cloud.size(); ++i) {
-    const double r = ranges[i];
-    if (r < options.min_range_m) {
+  for (const Eigen::Vector3d& p : points) {
+    const double s = p.squaredNorm();
+    if (s < min_s) {
       ++counts.too_close;
-    } else if (options.max_range_m > 0.0 && r > options.max_range_m) {
+    } else if (s >= too_far_s) {
       ++counts.too_far;
-    } else if (saturated && r >= largest - kSaturationBand) {
+    } else if (saturated && s >= saturation_s) {
       ++counts.saturated;
     } else {
-      kept.Add(cloud[i]);
+      kept.Add(p);
     }
   }
   counts.kept_points = kept.size();

@@ -147,6 +147,38 @@ void AccumulateMoments(const std::vector<Eigen::Vector3d>& points,
   }
 }
 
+// Splitting process for one layer on one thread: each point's key, slot
+// (cells in order of first appearance) and moment update in one pass, in
+// input order: the sums of BinPoints, without its per-point buffers.
+RawLayer BinPointsSerial(const std::vector<Eigen::Vector3d>& points,
+                         const Eigen::Vector3d& origin,
+                         const Eigen::Vector3d& centre,
+                         const LayerGeometry& geometry) {
+  const double inverse_size = 1.0 / geometry.cell_size;
+  const Eigen::Vector3i max_ijk = geometry.dims - Eigen::Vector3i::Ones();
+  RawLayer raw;
+  CellIndex index(geometry.num_grid_cells());
+  // Consecutive scan points often share a cell: remember the last one.
+  int64_t last_key = -1;
+  size_t last_slot = 0;
+  for (const Eigen::Vector3d& p : points) {
+    // As in BinPoints: truncation is floor inside the box.
+    const int64_t key = geometry.Key(
+        ((p - origin) * inverse_size).cast<int>().cwiseMin(max_ijk));
+    if (key != last_key) {
+      const int32_t new_slot = static_cast<int32_t>(raw.keys.size());
+      last_slot = static_cast<size_t>(index.FindOrInsert(key, new_slot));
+      if (static_cast<int32_t>(last_slot) == new_slot) {
+        raw.keys.push_back(key);
+        raw.moments.emplace_back();
+      }
+      last_key = key;
+    }
+    raw.moments[last_slot].Add(p - centre);
+  }
+  return raw;
+}
+
 // Splitting process for one layer: every point goes to its cell. The cell
 // keys of the points are computed in parallel, the slots (cells in order of
 // first appearance) serially, the moments in parallel by cell.
@@ -225,11 +257,35 @@ RawLayer Aggregate(const RawLayer& fine,
   return raw;
 }
 
-// How a raw cell ended in FinishLayer.
-enum class CellOutcome : uint8_t { KEPT, SPARSE, DEGENERATE };
+// Generative process for one cell: mean (Eq. 2), unbiased covariance
+// (Eq. 3), regularised (MakeNdtCell). False for a degenerate cell.
+bool MakeCell(const Moments& m,
+              bool weighted,
+              const Eigen::Vector3d& centre,
+              const CellRegularization& regularization,
+              NdtCell* cell) {
+  const double n = static_cast<double>(m.count);
+  const Eigen::Matrix3d outer = m.outer.selfadjointView<Eigen::Upper>();
+  Eigen::Vector3d mean;
+  Eigen::Matrix3d covariance;
+  if (weighted) {
+    // The mixture of the finest cells, weighted as WeighCapped says;
+    // n / (n - 1) makes it Eq. (3) when one finest cell fills the cell.
+    mean = m.sum / m.weight;
+    covariance = (outer / m.weight - mean * mean.transpose()) * (n / (n - 1.0));
+  } else {
+    mean = m.sum / n;
+    covariance = (outer - n * mean * mean.transpose()) / (n - 1.0);
+  }
+  return MakeNdtCell(static_cast<int32_t>(m.count),
+                     mean + centre,
+                     covariance,
+                     regularization,
+                     cell);
+}
 
-// Generative process: mean (Eq. 2), unbiased covariance (Eq. 3), regularised.
-// The cells are computed in parallel, then kept in raw order.
+// The layer from its raw cells: the cells with enough points are computed
+// (in parallel), then kept in raw order; sparse and degenerate ones counted.
 NdtLayer FinishLayer(const RawLayer& raw,
                      const Eigen::Vector3d& origin,
                      const Eigen::Vector3d& centre,
@@ -237,60 +293,44 @@ NdtLayer FinishLayer(const RawLayer& raw,
                      const LayeredGridOptions& options,
                      int threads,
                      LayerInfo* info) {
-  const int64_t num_raw = static_cast<int64_t>(raw.keys.size());
-  std::vector<NdtCell> candidates(static_cast<size_t>(num_raw));
-  std::vector<CellOutcome> outcomes(static_cast<size_t>(num_raw));
+  // Raw cells with enough points; only these get a cell (most raw cells of
+  // a fine layer are sparse).
+  std::vector<int32_t> dense;
+  for (size_t i = 0; i < raw.keys.size(); ++i) {
+    if (raw.moments[i].count < options.min_points_per_cell) {
+      ++info->sparse_cells;
+    } else {
+      dense.push_back(static_cast<int32_t>(i));
+    }
+  }
+  const int64_t num_dense = static_cast<int64_t>(dense.size());
+  std::vector<NdtCell> cells(dense.size());
+  std::vector<char> made(dense.size());
 #pragma omp parallel for num_threads(threads) \
-    schedule(static) if (threads > 1 && num_raw >= kMinCellsToParallelise)
-  for (int64_t i = 0; i < num_raw; ++i) {
-    const Moments& m = raw.moments[static_cast<size_t>(i)];
-    CellOutcome& outcome = outcomes[static_cast<size_t>(i)];
-    if (m.count < options.min_points_per_cell) {
-      outcome = CellOutcome::SPARSE;
+    schedule(static) if (threads > 1 && num_dense >= kMinCellsToParallelise)
+  for (int64_t j = 0; j < num_dense; ++j) {
+    const size_t i = static_cast<size_t>(dense[static_cast<size_t>(j)]);
+    made[static_cast<size_t>(j)] = MakeCell(raw.moments[i],
+                                            raw.weighted,
+                                            centre,
+                                            options.regularization,
+                                            &cells[static_cast<size_t>(j)]);
+  }
+  std::vector<int64_t> keys;
+  keys.reserve(
+      static_cast<size_t>(std::count(made.begin(), made.end(), char{1})));
+  size_t kept = 0;
+  for (size_t j = 0; j < dense.size(); ++j) {
+    if (!made[j]) {
+      ++info->degenerate_cells;
       continue;
     }
-    const double n = static_cast<double>(m.count);
-    const Eigen::Matrix3d outer = m.outer.selfadjointView<Eigen::Upper>();
-    Eigen::Vector3d mean;
-    Eigen::Matrix3d covariance;
-    if (raw.weighted) {
-      // The mixture of the finest cells, weighted as WeighCapped says;
-      // n / (n - 1) makes it Eq. (3) when one finest cell fills the cell.
-      mean = m.sum / m.weight;
-      covariance =
-          (outer / m.weight - mean * mean.transpose()) * (n / (n - 1.0));
-    } else {
-      mean = m.sum / n;
-      covariance = (outer - n * mean * mean.transpose()) / (n - 1.0);
-    }
-    outcome = MakeNdtCell(static_cast<int32_t>(m.count),
-                          mean + centre,
-                          covariance,
-                          options.regularization,
-                          &candidates[static_cast<size_t>(i)])
-                  ? CellOutcome::KEPT
-                  : CellOutcome::DEGENERATE;
+    if (kept != j) cells[kept] = cells[j];
+    keys.push_back(raw.keys[static_cast<size_t>(dense[j])]);
+    ++kept;
   }
-  std::vector<NdtCell> cells;
-  std::vector<int64_t> keys;
-  const int64_t num_kept =
-      std::count(outcomes.begin(), outcomes.end(), CellOutcome::KEPT);
-  cells.reserve(static_cast<size_t>(num_kept));
-  keys.reserve(static_cast<size_t>(num_kept));
-  for (int64_t i = 0; i < num_raw; ++i) {
-    switch (outcomes[static_cast<size_t>(i)]) {
-      case CellOutcome::KEPT:
-        cells.push_back(candidates[static_cast<size_t>(i)]);
-        keys.push_back(raw.keys[static_cast<size_t>(i)]);
-        break;
-      case CellOutcome::SPARSE:
-        ++info->sparse_cells;
-        break;
-      case CellOutcome::DEGENERATE:
-        ++info->degenerate_cells;
-        break;
-    }
-  }
+  cells.resize(kept);
+  cells.shrink_to_fit();  // The capacity is MemoryBytes()'s.
   info->cell_size_m = geometry.cell_size;
   info->dims = geometry.dims;
   info->occupied_cells = cells.size();
@@ -524,8 +564,14 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
   for (int i = n; i >= 1; --i) {
     const size_t l = static_cast<size_t>(i - 1);
     if (i == n || ratio == 0) {
-      raw = BinPoints(
-          reference.points(), origin, centre, geometry[l], num_threads);
+      raw =
+          num_threads == 1
+              ? BinPointsSerial(reference.points(), origin, centre, geometry[l])
+              : BinPoints(reference.points(),
+                          origin,
+                          centre,
+                          geometry[l],
+                          num_threads);
     } else {
       if (options.coarse_weighting == CoarseWeighting::FINEST_CELLS &&
           !raw.weighted) {

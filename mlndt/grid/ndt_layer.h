@@ -66,6 +66,19 @@ class NdtLayer {
     return slot < 0 ? nullptr : &cells_[static_cast<size_t>(slot)];
   }
 
+  // The occupied cell of linear key `key` (LinearKey of coordinates inside
+  // the grid; not checked), or nullptr.
+  const NdtCell* CellAtKey(int64_t key) const {
+    const int32_t slot = index_.Find(key);
+    return slot < 0 ? nullptr : &cells_[static_cast<size_t>(slot)];
+  }
+
+  // True when `ijk` and its 26 neighbours all lie inside the grid, so that
+  // the neighbours' keys are LinearKey(ijk) plus fixed offsets.
+  bool NeighboursInside(const Eigen::Vector3i& ijk) const {
+    return (ijk.array() >= 1).all() && (ijk.array() < dims_.array() - 1).all();
+  }
+
   // O(1) lookup of the occupied cell containing `point`, or nullptr.
   const NdtCell* Lookup(const Eigen::Vector3d& point) const {
     return CellAt(CellCoordinates(point));

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "mlndt/cloud/io.h"
+#include "mlndt/cloud/squared_range.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -68,6 +70,121 @@ TEST(FilterByRange, MaxRangeAndOrderKept) {
   EXPECT_EQ(kept[1].x(), 3.0);
   EXPECT_EQ(kept[2].x(), 7.0);
   EXPECT_EQ(summary.too_far, 2u);
+}
+
+// The filter as first written: a sqrt per point, thresholds on ranges.
+PointCloud FilterByRangeWithSqrt(const RangeFilterOptions& options,
+                                 const PointCloud& cloud,
+                                 RangeFilterSummary* counts) {
+  *counts = RangeFilterSummary();
+  counts->input_points = cloud.size();
+  std::vector<double> ranges(cloud.size());
+  double largest = 0.0;
+  for (size_t i = 0; i < cloud.size(); ++i) {
+    ranges[i] = cloud[i].norm();
+    largest = std::max(largest, ranges[i]);
+  }
+  const double at_largest = static_cast<double>(
+      std::count_if(ranges.begin(), ranges.end(), [&](double r) {
+        return r >= largest - 0.01;
+      }));
+  const bool saturated = options.saturated_range_fraction > 0.0 &&
+                         at_largest >= options.saturated_range_fraction *
+                                           static_cast<double>(cloud.size());
+  PointCloud kept;
+  for (size_t i = 0; i < cloud.size(); ++i) {
+    const double r = ranges[i];
+    if (r < options.min_range_m) {
+      ++counts->too_close;
+    } else if (options.max_range_m > 0.0 && r > options.max_range_m) {
+      ++counts->too_far;
+    } else if (saturated && r >= largest - 0.01) {
+      ++counts->saturated;
+    } else {
+      kept.Add(cloud[i]);
+    }
+  }
+  counts->kept_points = kept.size();
+  return kept;
+}
+
+void ExpectSameAsSqrtFilter(const RangeFilterOptions& options,
+                            const PointCloud& cloud) {
+  RangeFilterSummary expected_counts, counts;
+  const PointCloud expected =
+      FilterByRangeWithSqrt(options, cloud, &expected_counts);
+  const PointCloud kept = FilterByRange(options, cloud, &counts);
+  EXPECT_EQ(kept.points(), expected.points());
+  EXPECT_EQ(counts.too_close, expected_counts.too_close);
+  EXPECT_EQ(counts.too_far, expected_counts.too_far);
+  EXPECT_EQ(counts.saturated, expected_counts.saturated);
+  EXPECT_EQ(counts.kept_points, expected_counts.kept_points);
+}
+
+TEST(FilterByRange, SameAsTheSqrtFilterOnRealScans) {
+  for (const char* scan : {"kitti/pcd/000000.pcd",
+                           "koide3/251370668.pcd",
+                           "koide3/251371071.pcd"}) {
+    SCOPED_TRACE(scan);
+    PointCloud cloud;
+    std::string error;
+    ASSERT_TRUE(
+        ReadPointCloud(testing::BundledDataPath(scan), &cloud, nullptr, &error))
+        << error;
+    RangeFilterOptions options;
+    ExpectSameAsSqrtFilter(options, cloud);
+    // Thresholds through the scan's ranges, and a saturation band that
+    // holds many points (fraction 1e-6: any point at the largest range).
+    options.min_range_m = 3.0;
+    options.max_range_m = 20.0;
+    options.saturated_range_fraction = 1e-6;
+    ExpectSameAsSqrtFilter(options, cloud);
+  }
+}
+
+TEST(FilterByRange, SameAsTheSqrtFilterAtTheThresholds) {
+  // Points whose range is the threshold itself and its neighbouring
+  // doubles, along directions whose squared norm rounds differently.
+  RangeFilterOptions options;
+  options.min_range_m = 0.3;
+  options.max_range_m = 7.1;
+  options.saturated_range_fraction = 0.0;
+  PointCloud cloud;
+  for (double r : {options.min_range_m, options.max_range_m}) {
+    for (int ulps = -4; ulps <= 4; ++ulps) {
+      double value = r;
+      for (int u = 0; u < std::abs(ulps); ++u) {
+        value = std::nextafter(value, ulps < 0 ? 0.0 : 1e9);
+      }
+      for (const Eigen::Vector3d& d :
+           {Eigen::Vector3d(1, 0, 0),
+            Eigen::Vector3d(0.6, 0.8, 0),
+            Eigen::Vector3d(Eigen::Vector3d(1, 1, 1).normalized()),
+            Eigen::Vector3d(Eigen::Vector3d(2, -3, 6) / 7.0)}) {
+        cloud.Add(value * d);
+      }
+    }
+  }
+  ExpectSameAsSqrtFilter(options, cloud);
+}
+
+TEST(SquaredRange, ThresholdsDecideAsTheSqrtDoes) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> log_range(-3.0, 6.0);
+  for (int i = 0; i < 2000; ++i) {
+    const double m = std::pow(10.0, log_range(rng));
+    const double at_least = SmallestSquareWithRangeAtLeast(m);
+    const double above = SmallestSquareWithRangeAbove(m);
+    for (double s : {at_least, above}) {
+      for (double t : {std::nextafter(s, 0.0), s, std::nextafter(s, 1e300)}) {
+        EXPECT_EQ(std::sqrt(t) >= m, t >= at_least) << m << " " << t;
+        EXPECT_EQ(std::sqrt(t) > m, t >= above) << m << " " << t;
+      }
+    }
+  }
+  EXPECT_EQ(SmallestSquareWithRangeAtLeast(0.0), 0.0);
+  EXPECT_EQ(SmallestSquareWithRangeAtLeast(-1.0), 0.0);
+  EXPECT_EQ(SmallestSquareWithRangeAtLeast(INFINITY), INFINITY);
 }
 
 TEST(RangeFilterOptions, RangesAreChecked) {
