@@ -154,8 +154,11 @@ void RegisterOnMap(const RegistrationOptions& options,
 
   const double t0 = NowSeconds();
   backend->SetProblem(points, options.objective, options.num_threads);
+  internal::AttemptsCost cost;
   const Attempt attempt = internal::SolveAttempts(
-      options, problem, initial_local, start_time_s, &summary->attempts);
+      options, problem, initial_local, start_time_s, &cost);
+  summary->attempts = cost.attempts;
+  summary->point_iterations = cost.point_iterations;
   summary->solve_time_s = NowSeconds() - t0;
   summary->start_layer = attempt.start_layer;
   summary->trace = GlobalTrace(attempt, anchor);

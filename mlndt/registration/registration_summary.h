@@ -5,6 +5,7 @@
 // timings, scores, and the score's Hessian with the pose covariance derived
 // from it. Shaped like ceres::Solver::Summary.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,13 @@ struct RegistrationSummary {
   std::vector<IterationRecord> trace;
   std::vector<int> iterations_per_layer;  // Index i - 1 for layer i.
   int num_iterations = 0;  // Of the reported solution (trace.size()).
-  // Schedule runs: 2 when a finest-layer run from a guess with a known
-  // uncertainty was compared with the schedule's result.
+  // Schedule runs: 2 when the result was checked against the last layer
+  // alone from the guess, more with yaw retries (attempts.h).
   int attempts = 0;
+  // The work of the solve, free of machine noise: the sampled points
+  // evaluated, summed over every iteration of every stage of every attempt
+  // (a stage over every s-th sample counts a 1/s share). 0 for NDT.
+  int64_t point_iterations = 0;
   int start_layer = 0;
   int num_layers = 0;
   double finest_cell_size_m = 0.0;  // Cell edge of the last layer [m].

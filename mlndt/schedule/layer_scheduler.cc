@@ -9,10 +9,9 @@
 #include "mlndt/common/timer.h"
 
 namespace mlndt {
-namespace {
-
-// The control of the stage on `layer` of n.
-StageControl ControlFor(const LayerScheduleOptions& options, int layer, int n) {
+StageControl StageControlFor(const LayerScheduleOptions& options,
+                             int layer,
+                             int n) {
   const bool last = layer == n;
   StageControl control;
   control.max_iterations =
@@ -26,8 +25,6 @@ StageControl ControlFor(const LayerScheduleOptions& options, int layer, int n) {
       std::min(options.max_coarse_point_stride, 1 << std::min(20, n - layer));
   return control;
 }
-
-}  // namespace
 
 const OptionTable& LayerScheduleOptionsTable() {
   using S = LayerScheduleOptions;
@@ -124,7 +121,7 @@ void RunLayerSchedule(const LayerScheduleOptions& options,
     const double stage_start_s = NowSeconds() - start_time_s;
     StageSummary stage;
     backend->SolveStage(reference_map.layer(layer),
-                        ControlFor(options, layer, n),
+                        StageControlFor(options, layer, n),
                         reference_from_input_xi,
                         &stage);
     summary->iterations_per_layer[static_cast<size_t>(layer - 1)] =

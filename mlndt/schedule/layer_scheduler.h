@@ -74,6 +74,12 @@ int StartLayerForUncertainty(const LayerScheduleOptions& options,
                              const LayeredGrid& map,
                              double displacement_m);
 
+// The control of the stage on `layer` (1-based) of n: iterations, tolerances
+// and the point stride (every stride-th sample on coarse layers).
+StageControl StageControlFor(const LayerScheduleOptions& options,
+                             int layer,
+                             int n);
+
 struct ScheduleSummary {
   TerminationType termination_type = TerminationType::FAILURE;
   std::string message;

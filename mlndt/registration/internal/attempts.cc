@@ -28,13 +28,36 @@ void Assess(const RegistrationOptions& options,
   attempt->verdict_message = std::move(judgement.message);
 }
 
-// Runs the schedule from `start_layer`; assesses the solution unless told
-// not to (the guess check assesses only a solution in another basin).
+// The samples a stage over every stride-th of them evaluates per iteration.
+int64_t PointsPerIteration(const Problem& problem, int stride) {
+  const int64_t n = static_cast<int64_t>(problem.points.size());
+  return (n + stride - 1) / stride;
+}
+
+// Adds the point iterations of a schedule run to *cost.
+void Count(const RegistrationOptions& options,
+           const Problem& problem,
+           const ScheduleSummary& schedule,
+           AttemptsCost* cost) {
+  const int n = problem.map.num_layers();
+  for (int layer = 1; layer <= n; ++layer) {
+    const int stride = StageControlFor(options.schedule, layer, n).point_stride;
+    cost->point_iterations +=
+        schedule.iterations_per_layer[static_cast<size_t>(layer - 1)] *
+        PointsPerIteration(problem, stride);
+  }
+}
+
+// Runs the schedule from `start_layer`, adding its point iterations to
+// *cost; assesses the
+// solution unless told not to (the guess check assesses only a solution in
+// another basin).
 Attempt Solve(const RegistrationOptions& options,
               const Problem& problem,
               int start_layer,
               const Vector6d& initial_local,
               double start_time_s,
+              AttemptsCost* cost,
               bool assess = true) {
   Attempt attempt;
   attempt.start_layer = start_layer;
@@ -46,6 +69,7 @@ Attempt Solve(const RegistrationOptions& options,
                    problem.backend,
                    &attempt.xi_local,
                    &attempt.schedule);
+  Count(options, problem, attempt.schedule, cost);
   if (assess && attempt.schedule.termination_type != TerminationType::FAILURE) {
     Assess(options, problem, &attempt);
   }
@@ -114,22 +138,68 @@ void KeepBetter(Attempt candidate, Attempt* best) {
   }
 }
 
-// True when the two solutions lie farther apart than a tenth of a last-layer
+// True when the two poses lie farther apart than a tenth of a last-layer
 // cell (rotation at the points' RMS range): different basins, of which the
 // better fit is kept. Closer, they are one minimum where each run stopped,
 // and the first is kept, so that the result does not flip between the two
 // on round-off.
 bool AnotherBasin(const Problem& problem,
-                  const Attempt& candidate,
-                  const Attempt& best) {
-  if (candidate.schedule.termination_type == TerminationType::FAILURE) {
-    return false;
-  }
-  const Isometry3d a = PoseVectorToIsometry(candidate.xi_local);
-  const Isometry3d b = PoseVectorToIsometry(best.xi_local);
+                  const Vector6d& xi_local,
+                  const Vector6d& best_xi_local) {
+  const Isometry3d a = PoseVectorToIsometry(xi_local);
+  const Isometry3d b = PoseVectorToIsometry(best_xi_local);
   const double apart_m =
       TranslationErrorM(a, b) + RotationErrorRad(a, b) * problem.rms_range_m;
   return apart_m > 0.1 * problem.map.layer_info().back().cell_size_m;
+}
+
+// Where the last layer alone leads from the guess over every s-th sample,
+// s = schedule.max_coarse_point_stride: the guess check's first look, at
+// the cost of a coarse stage. False when the stage failed.
+bool ExploreFromGuess(const RegistrationOptions& options,
+                      const Problem& problem,
+                      Vector6d* xi_local,
+                      AttemptsCost* cost) {
+  const int n = problem.map.num_layers();
+  StageControl control = StageControlFor(options.schedule, n, n);
+  control.point_stride = options.schedule.max_coarse_point_stride;
+  StageSummary stage;
+  problem.backend->SolveStage(problem.last(), control, xi_local, &stage);
+  cost->point_iterations +=
+      stage.iterations() * PointsPerIteration(problem, control.point_stride);
+  return stage.termination_type != TerminationType::FAILURE;
+}
+
+// Step 2 above. The last layer alone runs from the guess over a subset of
+// the samples; when it stays in best's basin, the guess leads there too and
+// the check ends. Otherwise the last layer runs over every sample from where
+// the subset led, and that solution, assessed, replaces best if it fits
+// better.
+void CheckTheGuess(const RegistrationOptions& options,
+                   const Problem& problem,
+                   const Vector6d& initial_local,
+                   double start_time_s,
+                   AttemptsCost* cost,
+                   Attempt* best) {
+  ++cost->attempts;
+  Vector6d start = initial_local;
+  if (options.schedule.max_coarse_point_stride > 1 &&
+      (!ExploreFromGuess(options, problem, &start, cost) ||
+       !AnotherBasin(problem, start, best->xi_local))) {
+    return;
+  }
+  Attempt from_guess = Solve(options,
+                             problem,
+                             problem.map.num_layers(),
+                             start,
+                             start_time_s,
+                             cost,
+                             /*assess=*/false);
+  if (from_guess.schedule.termination_type != TerminationType::FAILURE &&
+      AnotherBasin(problem, from_guess.xi_local, best->xi_local)) {
+    Assess(options, problem, &from_guess);
+    KeepBetter(std::move(from_guess), best);
+  }
 }
 
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
@@ -147,32 +217,28 @@ Attempt SolveAttempts(const RegistrationOptions& options,
                       const Problem& problem,
                       const Vector6d& initial_local,
                       double start_time_s,
-                      int* attempts) {
+                      AttemptsCost* cost) {
   const int n = problem.map.num_layers();
   const int start = StartLayer(options, problem);
-  Attempt best = Solve(options, problem, start, initial_local, start_time_s);
-  *attempts = 1;
+  Attempt best =
+      Solve(options, problem, start, initial_local, start_time_s, cost);
+  cost->attempts = 1;
   if (best.schedule.termination_type == TerminationType::FAILURE) return best;
   const InitialGuessUncertainty& u = options.initial_uncertainty;
   if (start < n &&
       LeftTheGuess(options, problem, initial_local, best.xi_local)) {
-    ++*attempts;
-    Attempt from_guess = Solve(
-        options, problem, n, initial_local, start_time_s, /*assess=*/false);
-    if (AnotherBasin(problem, from_guess, best)) {
-      Assess(options, problem, &from_guess);
-      KeepBetter(std::move(from_guess), &best);
-    }
+    CheckTheGuess(options, problem, initial_local, start_time_s, cost, &best);
   }
   for (const double yaw_deg : options.retry.yaw_seeds_deg) {
     if (best.verdict == TerminationType::CONVERGENCE) break;
     if (u.given && std::abs(yaw_deg) > u.rotation_deg) continue;
-    ++*attempts;
+    ++cost->attempts;
     KeepBetter(Solve(options,
                      problem,
                      start,
                      TurnedGuess(initial_local, yaw_deg),
-                     start_time_s),
+                     start_time_s,
+                     cost),
                &best);
   }
   return best;

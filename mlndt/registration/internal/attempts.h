@@ -5,14 +5,18 @@
 //  1. the schedule from the start layer (schedule.start_layer, or the layer
 //     the initial guess's uncertainty needs);
 //  2. when the result left the guess (beyond its uncertainty when one is
-//     given, else beyond half a last-layer cell): the last layer alone from
-//     the guess; the better fit wins, so a good guess is never made worse
-//     by the coarse layers (they can pull a sparse scan into another basin);
+//     given, else beyond a quarter of a last-layer cell): the last layer
+//     alone from the guess, first over every s-th sample (s =
+//     schedule.max_coarse_point_stride) and, only when that leads to another
+//     basin, over all of them; the better fit wins, so a good guess is never
+//     made worse by the coarse layers (they can pull a sparse scan into
+//     another basin);
 //  3. until a result converges and passes the quality check: the schedule
 //     again from the guess turned about the input's centroid by each yaw
 //     seed (retry); the best verdict wins, then the most inliers (every
 //     attempt scores the same points on the same last layer).
 
+#include <cstdint>
 #include <vector>
 
 #include "mlndt/grid/layered_grid.h"
@@ -51,12 +55,19 @@ struct Attempt {
   }
 };
 
-// Runs 1-3 above; *attempts counts the runs.
+// What the runs cost: how many ran, and the sampled points they evaluated
+// summed over every iteration of every stage (RegistrationSummary).
+struct AttemptsCost {
+  int attempts = 0;
+  int64_t point_iterations = 0;
+};
+
+// Runs 1-3 above.
 Attempt SolveAttempts(const RegistrationOptions& options,
                       const Problem& problem,
                       const Vector6d& initial_local,
                       double start_time_s,
-                      int* attempts);
+                      AttemptsCost* cost);
 
 }  // namespace internal
 }  // namespace mlndt
