@@ -389,6 +389,10 @@ class MotionPredictionOptions(TypedDict, total=False):
     min_rotation_deg: float
     max_rotation_deg: float
 
+class ConfirmationOptions(TypedDict, total=False):
+    enabled: bool
+    min_correction_fraction: float
+
 class OdometryResult:
     """One scan of the odometry (mlndt::OdometryResult); poses are world_from_sensor."""
 
@@ -451,6 +455,8 @@ class Odometry:
         deskew: bool = ...,
         gate_factor: float = ...,
         max_consecutive_fallbacks: int = ...,
+        max_flatness: float = ...,
+        confirmation: ConfirmationOptions = ...,
         preset: Preset = "default",
         range_filter: RangeFilterOptions = ...,
         grid: LayeredGridOptions = ...,
@@ -480,6 +486,8 @@ def run_odometry(
     deskew: bool = ...,
     gate_factor: float = ...,
     max_consecutive_fallbacks: int = ...,
+    max_flatness: float = ...,
+    confirmation: ConfirmationOptions = ...,
     preset: Preset = "default",
     range_filter: RangeFilterOptions = ...,
     grid: LayeredGridOptions = ...,

@@ -87,7 +87,16 @@ def test_stub_signatures_list_every_option():
     assert set(keyword_only(localizer)) == (top_level - {"initial_uncertainty", "grid"}) | {"preset"}
     build = function(layered_map.body, "build")
     assert set(keyword_only(build)) == set(mlndt.default_options()["grid"]) | {"preset"}
-    odometry_fields = {"local_map", "keyframes", "prediction", "deskew", "gate_factor", "max_consecutive_fallbacks"}
+    odometry_fields = {
+        "local_map",
+        "keyframes",
+        "prediction",
+        "deskew",
+        "gate_factor",
+        "max_consecutive_fallbacks",
+        "max_flatness",
+        "confirmation",
+    }
     odometry = function(stub_classes()["Odometry"].body, "__init__")
     assert set(keyword_only(odometry)) == (top_level - {"initial_uncertainty"}) | {"preset"} | odometry_fields
     run_odometry = function(tree.body, "run_odometry")
