@@ -49,9 +49,8 @@ void Count(const RegistrationOptions& options,
 }
 
 // Runs the schedule from `start_layer`, adding its point iterations to
-// *cost; assesses the
-// solution unless told not to (the guess check assesses only a solution in
-// another basin).
+// *cost; assesses the solution unless told not to (the guess check assesses
+// only a solution in another basin).
 Attempt Solve(const RegistrationOptions& options,
               const Problem& problem,
               int start_layer,
