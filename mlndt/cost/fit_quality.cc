@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mlndt/cost/cell_match.h"
 #include "mlndt/cost/transform_derivatives.h"
 
 namespace mlndt {
@@ -13,28 +12,33 @@ FitQuality EvaluateFitQuality(const NdtLayer& layer,
                               const Vector6d& reference_from_input_xi,
                               const ObjectiveOptions& objective,
                               double gate) {
-  FitQuality quality;
-  quality.points = input_points.size();
-  if (input_points.empty()) return quality;
   const TransformDerivatives transform(reference_from_input_xi);
+  return FitQualityOf(MatchPoints(layer,
+                                  input_points,
+                                  transform.rotation(),
+                                  transform.translation(),
+                                  objective.unmatched_policy),
+                      gate);
+}
+
+FitQuality FitQualityOf(const std::vector<PointMatch>& matches, double gate) {
+  FitQuality quality;
+  quality.points = matches.size();
+  if (matches.empty()) return quality;
   size_t own = 0, inliers = 0;
   double score = 0.0;
   std::vector<double> distances;
-  distances.reserve(input_points.size());
-  for (const Eigen::Vector3d& p : input_points) {
-    const Eigen::Vector3d x = transform.Transform(p);
-    own += layer.Lookup(x) != nullptr;
-    const NdtCell* cell = MatchCell(layer, x, objective.unmatched_policy);
-    if (cell == nullptr) continue;
-    const Eigen::Vector3d e = x - cell->mean;
-    const double s = e.dot(cell->information * e);
+  distances.reserve(matches.size());
+  for (const PointMatch& m : matches) {
+    own += m.own_cell;
+    if (m.cell == nullptr) continue;
     double rho = 0.0, rho_prime = 0.0;
-    EvaluateLoss(LossType::CAUCHY, gate, s, &rho, &rho_prime);
+    EvaluateLoss(LossType::CAUCHY, gate, m.score, &rho, &rho_prime);
     score += rho;
-    inliers += s < gate * gate;
-    distances.push_back(std::sqrt(s));
+    inliers += m.score < gate * gate;
+    distances.push_back(std::sqrt(m.score));
   }
-  const double n = static_cast<double>(input_points.size());
+  const double n = static_cast<double>(matches.size());
   quality.own_cell_fraction = static_cast<double>(own) / n;
   quality.inlier_fraction = static_cast<double>(inliers) / n;
   if (!distances.empty()) {

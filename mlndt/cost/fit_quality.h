@@ -18,6 +18,7 @@
 
 #include "mlndt/common/types.h"
 #include "mlndt/cost/objective_options.h"
+#include "mlndt/cost/point_matches.h"
 #include "mlndt/grid/ndt_layer.h"
 
 namespace mlndt {
@@ -38,5 +39,8 @@ FitQuality EvaluateFitQuality(const NdtLayer& layer,
                               const Vector6d& reference_from_input_xi,
                               const ObjectiveOptions& objective,
                               double gate);
+
+// The same from points already matched at the pose (point_matches.h).
+FitQuality FitQualityOf(const std::vector<PointMatch>& matches, double gate);
 
 }  // namespace mlndt

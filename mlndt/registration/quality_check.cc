@@ -12,7 +12,8 @@
 #include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/option_table.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/cost/cell_match.h"
+#include "mlndt/cost/point_matches.h"
+#include "mlndt/cost/transform_derivatives.h"
 
 namespace mlndt {
 
@@ -81,27 +82,25 @@ namespace {
 // The sum of the rows [v; (R p) x v / L] over the thin directions v of the
 // matched points' cells (quality_check.h).
 Matrix6d ThinDirectionInformation(
-    const NdtLayer& layer,
     const std::vector<Eigen::Vector3d>& input_points,
-    const Isometry3d& pose,
-    const ObjectiveOptions& objective,
+    const std::vector<PointMatch>& matches,
+    const Matrix3d& rotation,
     double rms_range_m) {
   const double inverse_lever = 1.0 / std::max(rms_range_m, 1e-3);
   Matrix6d information = Matrix6d::Zero();
-  for (const Eigen::Vector3d& p : input_points) {
-    const Eigen::Vector3d turned = pose.linear() * p;  // R p.
-    const NdtCell* cell = MatchCell(
-        layer, turned + pose.translation(), objective.unmatched_policy);
+  for (size_t k = 0; k < input_points.size(); ++k) {
+    const NdtCell* cell = matches[k].cell;
     if (cell == nullptr) continue;
+    const Eigen::Vector3d turned = rotation * input_points[k];  // R p.
     // Row k of W is v_k^T / sqrt(lambda_k) (ndt_cell.h).
     const Eigen::Vector3d inverse_variances =
         cell->whitening.rowwise().squaredNorm();
     const double largest_variance = 1.0 / inverse_variances.minCoeff();
-    for (int k = 0; k < 3; ++k) {
-      if (1.0 / inverse_variances(k) >= kThinCellDirection * largest_variance) {
+    for (int i = 0; i < 3; ++i) {
+      if (1.0 / inverse_variances(i) >= kThinCellDirection * largest_variance) {
         continue;
       }
-      const Eigen::Vector3d v = cell->whitening.row(k).transpose().normalized();
+      const Eigen::Vector3d v = cell->whitening.row(i).transpose().normalized();
       Vector6d row;
       row << v, turned.cross(v) * inverse_lever;
       information.selfadjointView<Eigen::Lower>().rankUpdate(row);
@@ -110,20 +109,13 @@ Matrix6d ThinDirectionInformation(
   return information.selfadjointView<Eigen::Lower>();
 }
 
-// Whether each point is an inlier (Mahalanobis distance below `gate`) at
-// `pose`, in the cell the objective's policy picks.
-std::vector<bool> InlierFlags(const NdtLayer& layer,
-                              const std::vector<Eigen::Vector3d>& input_points,
-                              const Isometry3d& pose,
-                              const ObjectiveOptions& objective,
+// Whether each matched point is an inlier (Mahalanobis distance below
+// `gate`).
+std::vector<bool> InlierFlags(const std::vector<PointMatch>& matches,
                               double gate) {
-  std::vector<bool> inlier(input_points.size(), false);
-  for (size_t k = 0; k < input_points.size(); ++k) {
-    const Eigen::Vector3d x = pose * input_points[k];
-    const NdtCell* cell = MatchCell(layer, x, objective.unmatched_policy);
-    if (cell == nullptr) continue;
-    inlier[k] =
-        (cell->whitening * (x - cell->mean)).squaredNorm() < gate * gate;
+  std::vector<bool> inlier(matches.size(), false);
+  for (size_t k = 0; k < matches.size(); ++k) {
+    inlier[k] = matches[k].cell != nullptr && matches[k].score < gate * gate;
   }
   return inlier;
 }
@@ -167,11 +159,14 @@ Probe ProbeDirection(const NdtLayer& layer,
   const double inliers = std::count(inlier.begin(), inlier.end(), true);
   Probe probe;
   for (const double sign : {1.0, -1.0}) {
+    const Isometry3d moved =
+        Moved(pose, sign * d, layer.cell_size(), rms_range_m);
     const std::vector<bool> there =
-        InlierFlags(layer,
-                    input_points,
-                    Moved(pose, sign * d, layer.cell_size(), rms_range_m),
-                    objective,
+        InlierFlags(MatchPoints(layer,
+                                input_points,
+                                moved.linear(),
+                                moved.translation(),
+                                objective.unmatched_policy),
                     gate);
     double lost = 0.0, gained = 0.0;
     for (size_t k = 0; k < inlier.size(); ++k) {
@@ -187,11 +182,11 @@ Probe ProbeDirection(const NdtLayer& layer,
   return probe;
 }
 
-}  // namespace
-
-ConstraintAnalysis AnalyseConstraints(
+// AnalyseConstraints on points already matched at the pose.
+ConstraintAnalysis AnalyseMatched(
     const NdtLayer& layer,
     const std::vector<Eigen::Vector3d>& input_points,
+    const std::vector<PointMatch>& matches,
     const Vector6d& reference_from_input_xi,
     const ObjectiveOptions& objective,
     double rms_range_m,
@@ -199,7 +194,7 @@ ConstraintAnalysis AnalyseConstraints(
   ConstraintAnalysis analysis;
   const Isometry3d pose = PoseVectorToIsometry(reference_from_input_xi);
   const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(ThinDirectionInformation(
-      layer, input_points, pose, objective, rms_range_m));
+      input_points, matches, pose.linear(), rms_range_m));
   const Vector6d lambda = solver.eigenvalues();  // Ascending.
   const double largest = lambda(5);
   for (int i = 0; i < 6; ++i) {
@@ -211,8 +206,7 @@ ConstraintAnalysis AnalyseConstraints(
   if (!(largest > 0.0)) return analysis;
   analysis.constraint_ratio = std::max(0.0, lambda(0)) / largest;
   if (options.max_flatness >= 1.0) return analysis;  // The probe is off.
-  const std::vector<bool> inlier =
-      InlierFlags(layer, input_points, pose, objective, options.inlier_gate);
+  const std::vector<bool> inlier = InlierFlags(matches, options.inlier_gate);
   const size_t by_ratio = analysis.degenerate_directions.size();
   for (int i = 0; i < 3 && lambda(i) < kProbedConstraintRatio * largest; ++i) {
     const Vector6d d = solver.eigenvectors().col(i);
@@ -236,6 +230,39 @@ ConstraintAnalysis AnalyseConstraints(
     }
   }
   return analysis;
+}
+
+// Every point matched once at the solution (point_matches.h).
+std::vector<PointMatch> MatchAtSolution(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const Vector6d& reference_from_input_xi,
+    const ObjectiveOptions& objective) {
+  const TransformDerivatives transform(reference_from_input_xi);
+  return MatchPoints(layer,
+                     input_points,
+                     transform.rotation(),
+                     transform.translation(),
+                     objective.unmatched_policy);
+}
+
+}  // namespace
+
+ConstraintAnalysis AnalyseConstraints(
+    const NdtLayer& layer,
+    const std::vector<Eigen::Vector3d>& input_points,
+    const Vector6d& reference_from_input_xi,
+    const ObjectiveOptions& objective,
+    double rms_range_m,
+    const QualityCheckOptions& options) {
+  return AnalyseMatched(
+      layer,
+      input_points,
+      MatchAtSolution(layer, input_points, reference_from_input_xi, objective),
+      reference_from_input_xi,
+      objective,
+      rms_range_m,
+      options);
 }
 
 namespace {
@@ -326,17 +353,17 @@ Judgement JudgeSolution(const QualityCheckOptions& options,
                         const ObjectiveOptions& objective,
                         double rms_range_m) {
   Judgement judgement;
-  judgement.fit = EvaluateFitQuality(layer,
-                                     input_points,
-                                     reference_from_input_xi,
-                                     objective,
-                                     options.inlier_gate);
-  judgement.constraints = AnalyseConstraints(layer,
-                                             input_points,
-                                             reference_from_input_xi,
-                                             objective,
-                                             rms_range_m,
-                                             options);
+  // One cell lookup per point serves the fit and the constraint analysis.
+  const std::vector<PointMatch> matches =
+      MatchAtSolution(layer, input_points, reference_from_input_xi, objective);
+  judgement.fit = FitQualityOf(matches, options.inlier_gate);
+  judgement.constraints = AnalyseMatched(layer,
+                                         input_points,
+                                         matches,
+                                         reference_from_input_xi,
+                                         objective,
+                                         rms_range_m,
+                                         options);
   judgement.verdict = CheckQuality(options,
                                    solver_termination,
                                    judgement.fit,

@@ -29,13 +29,11 @@ using internal::Problem;
 // The pose, score, counts, fit, constraints, Hessian and covariance at the
 // attempt's solution, on the last layer, in the input frame's
 // parametrisation (Eq. 11).
-void ReportSolution(const RegistrationOptions& options,
-                    const Problem& problem,
+void ReportSolution(const Problem& problem,
                     const Attempt& attempt,
                     RegistrationSummary* summary) {
   const Vector6d& local = attempt.xi_local;
-  const ScoreEvaluation final =
-      EvaluateScore(problem.last(), problem.points, local, options.objective);
+  const ScoreEvaluation& final = attempt.evaluation;
   // xi = f(xi_local): H = J^-T H_local J^-1, C = J C_local J^T.
   const Matrix6d j = problem.anchor.Jacobian(local);
   const Matrix6d j_inverse = j.inverse();
@@ -167,7 +165,7 @@ void RegisterOnMap(const RegistrationOptions& options,
   if (attempt.schedule.termination_type == TerminationType::FAILURE) {
     return Fail(attempt.schedule.message, summary);
   }
-  ReportSolution(options, problem, attempt, summary);
+  ReportSolution(problem, attempt, summary);
   Judge(options, attempt, summary);
 }
 

@@ -11,10 +11,8 @@ namespace {
 void Assess(const RegistrationOptions& options,
             const Problem& problem,
             Attempt* attempt) {
-  attempt->final_score =
-      EvaluateScore(
-          problem.last(), problem.points, attempt->xi_local, options.objective)
-          .score;
+  attempt->evaluation = EvaluateScore(
+      problem.last(), problem.points, attempt->xi_local, options.objective);
   Judgement judgement = JudgeSolution(options.quality_check,
                                       attempt->schedule.termination_type,
                                       problem.last(),

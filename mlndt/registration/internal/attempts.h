@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mlndt/cost/score.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/registration/internal/input_anchor.h"
 #include "mlndt/registration/registration_options.h"
@@ -44,7 +45,9 @@ struct Attempt {
   int start_layer = 1;
   Vector6d xi_local = Vector6d::Zero();
   ScheduleSummary schedule;
-  double final_score = 0.0;  // On the last layer.
+  // The objective on the last layer at the solution, with its Gauss-Newton
+  // Hessian: scored once, here, for the choice and the report.
+  ScoreEvaluation evaluation;
   FitQuality fit;
   ConstraintAnalysis constraints;
   TerminationType verdict = TerminationType::FAILURE;  // CheckQuality's.
