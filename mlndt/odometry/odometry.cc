@@ -257,13 +257,11 @@ bool Odometry::Process(const OdometryScan& scan,
   }
   if (!UpdateMap(cloud, result, error)) return false;
   if (result->map_restarted || !result->fallback) {
+    consecutive_fallbacks_ = 0;
     last_scan_ = std::move(cloud);
     last_scan_pose_ = result->world_from_sensor;
     has_last_scan_ = true;
     last_scan_map_built_ = false;
-  }
-  if (result->map_restarted || !result->fallback) {
-    consecutive_fallbacks_ = 0;
   } else {
     ++consecutive_fallbacks_;
   }
