@@ -15,7 +15,8 @@ With scans.csv a second count judges each scan with a registered pose
 (fallback 0) by its motion from the last such scan, so a scan right after a
 fallback is judged by its own pose, not by the stand-in before it (as
 tests/odometry/odometry_livox_test.cc scores); a local-map restart is a
-declared discontinuity, and the scans after it are judged from it.
+declared discontinuity, and the scans after it are judged from it. The
+scans off in that count are listed (verdict, error, the scan judged from).
 """
 import csv
 import sys
@@ -44,6 +45,7 @@ def step_error(a, b, c, d):
 def count_from_last_pose(estimate, reference, rows, max_m, max_deg):
     counts = Counter()
     right_convergence = 0
+    off = []
     last = 0
     for k in range(1, len(estimate)):
         if "the local map restarts" in rows[k]["message"]:
@@ -54,9 +56,12 @@ def count_from_last_pose(estimate, reference, rows, max_m, max_deg):
         t, a = step_error(estimate[last], estimate[k], reference[last], reference[k])
         if t > max_m or a > max_deg:
             counts[rows[k]["verdict"]] += 1
+            off.append(f"{k} ({rows[k]['verdict']}, {t:.2f} m {a:.1f} deg from {last})")
         elif rows[k]["verdict"] == "CONVERGENCE":
             right_convergence += 1
         last = k
+    if off:
+        print("off from the last registered pose: " + "; ".join(off))
     print(f"from the last registered pose: {sum(counts.values())} scans off; by "
           f"verdict: {dict(counts)}; CONVERGENCE and right: {right_convergence}")
 

@@ -70,6 +70,7 @@ DEFINE_double(gate_factor, mlndt::OdometryOptions().gate_factor,
               "A pose farther from the prediction than this times its uncertainty is refused");
 DEFINE_bool(confirm, mlndt::ConfirmationOptions().enabled, "Confirm CONVERGENCE from beyond the pose (else NO_CONVERGENCE)");
 DEFINE_double(confirm_fraction, mlndt::ConfirmationOptions().min_correction_fraction, "Confirm corrections above this fraction of the uncertainty (0 = all)");
+DEFINE_bool(confirm_last_scan, mlndt::ConfirmationOptions().check_last_scan, "A confirmed pose must agree with the scan registered onto the last registered scan alone");
 DEFINE_bool(plots, true, "Write trajectory_xy.png with gnuplot (exit 1 when gnuplot is missing)");
 DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 // clang-format on
@@ -117,6 +118,7 @@ bool OptionsFromFlags(OdometryOptions* options,
   options->gate_factor = FLAGS_gate_factor;
   options->confirmation.enabled = FLAGS_confirm;
   options->confirmation.min_correction_fraction = FLAGS_confirm_fraction;
+  options->confirmation.check_last_scan = FLAGS_confirm_last_scan;
   // The registration flag sets the odometry's probe (on by default here).
   if (tools::FlagGiven("max_flatness")) {
     options->max_flatness = options->registration.quality_check.max_flatness;

@@ -33,6 +33,9 @@ struct ConfirmationOptions {
   // (translation or rotation) needs the confirmation; 0 confirms every
   // scan. >= 0.
   double min_correction_fraction = 0.5;
+  // A pose the second run returned to must also agree with the scan
+  // registered onto the last registered scan alone (last_scan_check.h).
+  bool check_last_scan = true;
 
   bool IsValid(std::string* error) const;
 };

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/odometry/confirm_pose.h"
 #include "mlndt/odometry/deskew.h"
+#include "mlndt/odometry/last_scan_check.h"
 #include "mlndt/registration/registration.h"
 
 namespace mlndt {
@@ -71,7 +73,8 @@ void OdometrySummary::Add(const OdometryResult& result) {
 Odometry::Odometry(const OdometryOptions& options)
     : options_(options),
       predictor_(options.prediction),
-      local_map_(options.local_map) {
+      local_map_(options.local_map),
+      last_scan_map_(options.local_map) {
   std::string error;
   CHECK(options_.IsValid(&error)) << error;
 }
@@ -146,9 +149,44 @@ void Odometry::Confirm(const RegistrationOptions& options,
                                                 result->predicted,
                                                 result->world_from_sensor);
   result->registration_time_s += confirmation.time_s;
-  if (confirmation.confirmed) return;
+  if (!confirmation.confirmed) {
+    result->termination = TerminationType::NO_CONVERGENCE;
+    result->message += "; " + confirmation.message;
+    return;
+  }
+  if (options_.confirmation.check_last_scan) {
+    AgreesWithLastScan(options, cloud, result);
+  }
+}
+
+// A pose the second run returned to must agree with the scan registered
+// onto the last registered scan alone (last_scan_check.h); else
+// NO_CONVERGENCE, the pose kept.
+void Odometry::AgreesWithLastScan(const RegistrationOptions& options,
+                                  const PointCloud& cloud,
+                                  OdometryResult* result) {
+  if (!has_last_scan_) return;
+  if (!last_scan_map_built_) {
+    std::string map_error;
+    last_scan_map_.Clear();
+    if (!last_scan_map_.AddKeyframe(last_scan_,
+                                    last_scan_pose_,
+                                    options_.registration.num_threads,
+                                    &map_error)) {
+      return;  // No map, no evidence.
+    }
+    last_scan_map_built_ = true;
+  }
+  const Confirmation check = CheckAgainstLastScan(options,
+                                                  options_.prediction,
+                                                  last_scan_map_.grid(),
+                                                  cloud,
+                                                  result->predicted,
+                                                  result->world_from_sensor);
+  result->registration_time_s += check.time_s;
+  if (check.confirmed) return;
   result->termination = TerminationType::NO_CONVERGENCE;
-  result->message += "; " + confirmation.message;
+  result->message += "; " + check.message;
 }
 
 bool Odometry::UpdateMap(const PointCloud& cloud,
@@ -220,6 +258,10 @@ bool Odometry::Process(const OdometryScan& scan,
   if (!UpdateMap(cloud, result, error)) return false;
   if (result->map_restarted || !result->fallback) {
     consecutive_fallbacks_ = 0;
+    last_scan_ = std::move(cloud);
+    last_scan_pose_ = result->world_from_sensor;
+    has_last_scan_ = true;
+    last_scan_map_built_ = false;
   } else {
     ++consecutive_fallbacks_;
   }

@@ -20,10 +20,11 @@
 // the prediction stands in for the pose, flagged (`fallback`), and the
 // verdict says why. A CONVERGENCE with a large correction, or from a
 // prediction at its largest uncertainty, stands only when a second
-// registration from beyond the pose returns to it (confirm_pose.h); else
-// the pose is kept and reported NO_CONVERGENCE. Accepted
-// scans that moved far enough (keyframe_policy.h) join the local map. The
-// first scan defines the world frame (identity). After
+// registration from beyond the pose returns to it (confirm_pose.h) and the
+// scan registered onto the last registered scan alone agrees
+// (last_scan_check.h); else the pose is kept and reported NO_CONVERGENCE.
+// Accepted scans that moved far enough (keyframe_policy.h) join the local map.
+// The first scan defines the world frame (identity). After
 // max_consecutive_fallbacks scans without a pose the local map restarts
 // from the next scan, at its prediction.
 
@@ -117,6 +118,9 @@ class Odometry {
   void Confirm(const RegistrationOptions& options,
                const PointCloud& cloud,
                OdometryResult* result);
+  void AgreesWithLastScan(const RegistrationOptions& options,
+                          const PointCloud& cloud,
+                          OdometryResult* result);
   bool UpdateMap(const PointCloud& cloud,
                  OdometryResult* result,
                  std::string* error);
@@ -127,6 +131,13 @@ class Odometry {
   size_t num_processed_ = 0;
   size_t consecutive_fallbacks_ = 0;
   double last_stamp_s_ = 0.0;
+  // The last scan with a registered pose (or a restart scan), its pose and,
+  // built when a confirmation needs it, its map (last_scan_check.h).
+  PointCloud last_scan_;
+  Isometry3d last_scan_pose_ = Isometry3d::Identity();
+  bool has_last_scan_ = false;
+  LocalMap last_scan_map_;
+  bool last_scan_map_built_ = false;
 };
 
 }  // namespace mlndt

@@ -103,6 +103,10 @@ const OptionTable& ConfirmationOptionsTable() {
                   "Confirm a correction above this fraction of the "
                   "prediction's uncertainty (and any from its largest); 0 = "
                   "every scan.")
+          .Bool("check_last_scan",
+                &S::check_last_scan,
+                "A pose the second run returned to must also agree with the "
+                "scan registered onto the last registered scan alone.")
           .Validator(&S::IsValid)
           .Build();
   return table;

@@ -392,6 +392,7 @@ class MotionPredictionOptions(TypedDict, total=False):
 class ConfirmationOptions(TypedDict, total=False):
     enabled: bool
     min_correction_fraction: float
+    check_last_scan: bool
 
 class OdometryResult:
     """One scan of the odometry (mlndt::OdometryResult); poses are world_from_sensor."""
