@@ -3,11 +3,10 @@
 # dependency order is mlndt <- lab <- tools (README, "Modules"):
 #   mlndt/   the installed library: no lab/, tools/, gflags or nlohmann_json;
 #   lab/     evaluation and experiments: no tools/ and no gflags;
-#   python/src      the bindings of the library (mlndt._mlndt): no lab/
-#                   and no tools/;
-#   python/mlndt    the installed package: does not import the lab's module;
-#   python/lab_src  the bindings of the lab (the development module
-#                   mlndt_lab, never installed): no tools/.
+#   python/         the product's Python module (bindings, package, tests):
+#                   no lab/ or tools/ include, no import of the lab's module;
+#   lab/python/     the lab's development module mlndt_lab (never
+#                   installed): no tools/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,16 +25,22 @@ forbid mlndt 'lab/|tools/' "the lab or the tools (mlndt <- lab <- tools)"
 forbid mlndt 'gflags/|nlohmann/' "gflags or nlohmann_json (the installed package needs neither)"
 forbid lab 'tools/' "the tools (mlndt <- lab <- tools)"
 forbid lab 'gflags/' "gflags (flags belong to tools/)"
-forbid python/src 'lab/|tools/' "the lab or the tools (mlndt._mlndt binds the library only)"
-forbid python/lab_src 'tools/' "the tools (mlndt_lab binds the lab)"
-hits="$(grep -rnE '^\s*(import|from)\s.*\b(mlndt_lab|_lab|lab)\b' python/mlndt || true)"
+forbid python 'lab/|tools/' "the lab or the tools (python/ is the product: mlndt binds the library only)"
+forbid lab/python 'tools/' "the tools (mlndt_lab binds the lab)"
+# Python: an import statement or importlib.import_module naming the lab's
+# module (mlndt_lab, its extension _lab, the old submodule mlndt.lab) or a
+# path into lab/ (sys.path, spec_from_file_location).
+hits="$(grep -rnE --include=*.py --include=*.pyi \
+  -e '^\s*(import|from)\s.*\b(mlndt_lab|_lab|lab)\b' \
+  -e 'import_module\(.*\b(mlndt_lab|_lab|lab)\b' \
+  -e '["/]lab/' python || true)"
 if [[ -n $hits ]]; then
-  echo "check_boundaries: python/mlndt (the installed package) must not import the lab:" >&2
+  echo "check_boundaries: python/ (the product) must not import the lab:" >&2
   echo "$hits" >&2
   status=1
 fi
 
 if ((status == 0)); then
-  echo "check_boundaries: mlndt <- lab <- tools, python/src and python/mlndt -> mlndt, python/lab_src -> lab: ok"
+  echo "check_boundaries: mlndt <- lab <- tools, python/ -> mlndt, lab/python -> lab: ok"
 fi
 exit $status

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The README's second command: installs what is missing, builds, and runs the
 # whole test suite with ctest: the GoogleTest tests and the pytest suite of
-# the Python module (python/tests, one ctest test per file). Tests that need
+# the Python module (python/tests, one ctest test per file) and of the lab's
+# module (lab/python/tests). Tests that need
 # the larger shared LiDAR data set read it from $MLNDT_DATA_DIR and skip,
 # saying why, without it.
 set -euo pipefail

@@ -1,9 +1,8 @@
 #include "mlndt/cost/score.h"
 
-#include <omp.h>
-
 #include <algorithm>
 
+#include "mlndt/cost/internal/score_reduction.h"
 #include "mlndt/cost/transform_derivatives.h"
 
 namespace mlndt {
@@ -63,37 +62,22 @@ ScoreEvaluation EvaluateScore(const NdtLayer& layer,
                               HessianType hessian,
                               int num_threads) {
   const TransformDerivatives transform(reference_from_input_xi);
-  const int threads = std::max(1, num_threads);
-  std::vector<ScoreEvaluation> partial(static_cast<size_t>(threads));
-  const size_t n = input_points.size();
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-  for (int t = 0; t < threads; ++t) {
-    const size_t begin =
-        n * static_cast<size_t>(t) / static_cast<size_t>(threads);
-    const size_t end =
-        n * static_cast<size_t>(t + 1) / static_cast<size_t>(threads);
-    Accumulate(layer,
-               input_points,
-               begin,
-               end,
-               transform,
-               objective,
-               hessian,
-               &partial[static_cast<size_t>(t)]);
-  }
-  for (ScoreEvaluation& p : partial) {  // The lower-left block by symmetry.
-    p.hessian.bottomLeftCorner<3, 3>() =
-        p.hessian.topRightCorner<3, 3>().transpose();
-  }
-  ScoreEvaluation total = partial[0];
-  for (size_t t = 1; t < partial.size(); ++t) {
-    total.score += partial[t].score;
-    total.matched += partial[t].matched;
-    total.unmatched += partial[t].unmatched;
-    total.gradient += partial[t].gradient;
-    total.hessian += partial[t].hessian;
-  }
-  return total;
+  return internal::ReduceScoreInSlices(
+      input_points.size(),
+      std::max(1, num_threads),
+      [&](size_t begin, size_t end, ScoreEvaluation* partial) {
+        Accumulate(layer,
+                   input_points,
+                   begin,
+                   end,
+                   transform,
+                   objective,
+                   hessian,
+                   partial);
+        // The lower-left block by symmetry.
+        partial->hessian.bottomLeftCorner<3, 3>() =
+            partial->hessian.topRightCorner<3, 3>().transpose();
+      });
 }
 
 }  // namespace mlndt

@@ -1,12 +1,11 @@
 #include "mlndt/ndt/gaussian_score.h"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/cost/internal/score_reduction.h"
 #include "mlndt/cost/transform_derivatives.h"
 
 namespace mlndt {
@@ -123,33 +122,19 @@ ScoreEvaluation EvaluateGaussianScore(
   const TransformDerivatives transform(reference_from_input_xi);
   const GaussianScoreParameters parameters =
       ComputeGaussianScoreParameters(options.outlier_ratio, layer.cell_size());
-  const int threads = std::max(1, options.num_threads);
-  std::vector<ScoreEvaluation> partial(static_cast<size_t>(threads));
-  const size_t n = input_points.size();
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-  for (int t = 0; t < threads; ++t) {
-    const size_t begin =
-        n * static_cast<size_t>(t) / static_cast<size_t>(threads);
-    const size_t end =
-        n * static_cast<size_t>(t + 1) / static_cast<size_t>(threads);
-    Accumulate(layer,
-               input_points,
-               begin,
-               end,
-               transform,
-               parameters,
-               options,
-               &partial[static_cast<size_t>(t)]);
-  }
-  ScoreEvaluation total = partial[0];
-  for (size_t t = 1; t < partial.size(); ++t) {
-    total.score += partial[t].score;
-    total.matched += partial[t].matched;
-    total.unmatched += partial[t].unmatched;
-    total.gradient += partial[t].gradient;
-    total.hessian += partial[t].hessian;
-  }
-  return total;
+  return internal::ReduceScoreInSlices(
+      input_points.size(),
+      std::max(1, options.num_threads),
+      [&](size_t begin, size_t end, ScoreEvaluation* partial) {
+        Accumulate(layer,
+                   input_points,
+                   begin,
+                   end,
+                   transform,
+                   parameters,
+                   options,
+                   partial);
+      });
 }
 
 }  // namespace mlndt

@@ -1,7 +1,5 @@
 #include "mlndt/solvers/levenberg_marquardt_backend.h"
 
-#include <glog/logging.h>
-
 #include <Eigen/Cholesky>
 
 #include "mlndt/common/enum_table.h"
@@ -105,35 +103,23 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
                                 const StageControl& control,
                                 Vector6d* xi,
                                 StageSummary* summary) {
-  *summary = StageSummary();
   const auto evaluate = lm_options.residual == LmResidual::SCALAR_SCORE
                             ? EvaluateScalar
                             : EvaluateWhitened;
   internal::StageMonitor trace(control, summary);
-  summary->termination_type = TerminationType::NO_CONVERGENCE;
-  summary->message = "iteration cap reached";
   LmSystem current;
   if (!evaluate(objective, *xi, &current)) {
-    summary->termination_type = TerminationType::FAILURE;
-    summary->message = "the objective has no scalar residuals";
+    trace.Fail("the objective has no scalar residuals");
     return;
   }
   summary->final_score = current.score;
-  if (current.matched == 0) {
-    summary->termination_type = TerminationType::FAILURE;
-    summary->message = "no input point lies in an occupied cell";
-    return;
-  }
+  if (trace.FailIfUnmatched(current.matched)) return;
   double lambda =
       lm_options.initial_lambda_factor * current.jtj.diagonal().mean();
   for (int iteration = 0; iteration < control.max_iterations; ++iteration) {
     const Matrix6d damped = current.jtj + lambda * Matrix6d::Identity();
     const Vector6d step = -damped.ldlt().solve(current.jtr);
-    if (!step.allFinite()) {
-      summary->termination_type = TerminationType::FAILURE;
-      summary->message = "the Levenberg-Marquardt step is not finite";
-      return;
-    }
+    if (trace.FailIfNotFinite(step, "Levenberg-Marquardt")) return;
     const Vector6d candidate_xi = *xi + step;
     LmSystem candidate;
     evaluate(objective, candidate_xi, &candidate);
@@ -151,30 +137,12 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
   }
 }
 
-void LevenbergMarquardtBackend::SetProblem(
-    const std::vector<Eigen::Vector3d>& input_points,
-    const ObjectiveOptions& objective,
-    int num_threads) {
-  input_points_ = &input_points;
-  objective_ = objective;
-  num_threads_ = num_threads;
-}
-
-void LevenbergMarquardtBackend::SolveStage(const NdtLayer& layer,
-                                           const StageControl& control,
-                                           Vector6d* reference_from_input_xi,
-                                           StageSummary* summary) {
-  CHECK(input_points_ != nullptr)
-      << "LevenbergMarquardtBackend: SetProblem first";
-  std::vector<Eigen::Vector3d> thinned;
-  const auto& points =
-      internal::EveryNthPoint(*input_points_, control.point_stride, &thinned);
+void LevenbergMarquardtBackend::Minimize(const Objective& objective,
+                                         const StageControl& control,
+                                         Vector6d* reference_from_input_xi,
+                                         StageSummary* summary) const {
   MinimizeLevenbergMarquardt(
-      MlNdtObjective(layer, points, objective_, num_threads_),
-      options_,
-      control,
-      reference_from_input_xi,
-      summary);
+      objective, options_, control, reference_from_input_xi, summary);
 }
 
 }  // namespace mlndt

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "mlndt/solvers/backend.h"
+#include "mlndt/solvers/hand_written_backend.h"
 #include "mlndt/solvers/objective.h"
 
 namespace mlndt {
@@ -58,23 +59,20 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
                                 Vector6d* reference_from_input_xi,
                                 StageSummary* summary);
 
-class LevenbergMarquardtBackend : public Backend {
+// The hand-written shell (hand_written_backend.h) around
+// MinimizeLevenbergMarquardt.
+class LevenbergMarquardtBackend : public HandWrittenBackend {
  public:
   explicit LevenbergMarquardtBackend(const LevenbergMarquardtOptions& options)
-      : options_(options) {}
-  void SetProblem(const std::vector<Eigen::Vector3d>& input_points,
-                  const ObjectiveOptions& objective,
-                  int num_threads) override;
-  void SolveStage(const NdtLayer& layer,
-                  const StageControl& control,
-                  Vector6d* reference_from_input_xi,
-                  StageSummary* summary) override;
+      : HandWrittenBackend("LevenbergMarquardtBackend"), options_(options) {}
 
  private:
+  void Minimize(const Objective& objective,
+                const StageControl& control,
+                Vector6d* reference_from_input_xi,
+                StageSummary* summary) const override;
+
   LevenbergMarquardtOptions options_;
-  const std::vector<Eigen::Vector3d>* input_points_ = nullptr;
-  ObjectiveOptions objective_;
-  int num_threads_ = 1;
 };
 
 }  // namespace mlndt

@@ -1,7 +1,5 @@
 #include "mlndt/solvers/newton_backend.h"
 
-#include <glog/logging.h>
-
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -60,27 +58,16 @@ void MinimizeNewton(const Objective& objective,
                     const StageControl& control,
                     Vector6d* xi,
                     StageSummary* summary) {
-  *summary = StageSummary();
   internal::StageMonitor trace(control, summary);
-  summary->termination_type = TerminationType::NO_CONVERGENCE;
-  summary->message = "iteration cap reached";
   for (int iteration = 0; iteration < control.max_iterations; ++iteration) {
     const ScoreEvaluation current = objective.Evaluate(*xi, HessianType::FULL);
     summary->final_score = current.score;
-    if (current.matched == 0) {
-      summary->termination_type = TerminationType::FAILURE;
-      summary->message = "no input point lies in an occupied cell";
-      return;
-    }
+    if (trace.FailIfUnmatched(current.matched)) return;
     // Eq. (15): xi <- xi - H^-1 g.
     const Matrix6d h = SafelyPositiveDefinite(
         current.hessian, newton_options.min_eigenvalue_ratio);
     const Vector6d step = -h.ldlt().solve(current.gradient);
-    if (!step.allFinite()) {
-      summary->termination_type = TerminationType::FAILURE;
-      summary->message = "the Newton step is not finite";
-      return;
-    }
+    if (trace.FailIfNotFinite(step, "Newton")) return;
     double scale = 1.0;
     Vector6d candidate = *xi + step;
     double candidate_score = current.score;
@@ -118,27 +105,12 @@ void MinimizeNewton(const Objective& objective,
   }
 }
 
-void NewtonBackend::SetProblem(const std::vector<Eigen::Vector3d>& input_points,
-                               const ObjectiveOptions& objective,
-                               int num_threads) {
-  input_points_ = &input_points;
-  objective_ = objective;
-  num_threads_ = num_threads;
-}
-
-void NewtonBackend::SolveStage(const NdtLayer& layer,
-                               const StageControl& control,
-                               Vector6d* reference_from_input_xi,
-                               StageSummary* summary) {
-  CHECK(input_points_ != nullptr) << "NewtonBackend: SetProblem first";
-  std::vector<Eigen::Vector3d> thinned;
-  const auto& points =
-      internal::EveryNthPoint(*input_points_, control.point_stride, &thinned);
-  MinimizeNewton(MlNdtObjective(layer, points, objective_, num_threads_),
-                 options_,
-                 control,
-                 reference_from_input_xi,
-                 summary);
+void NewtonBackend::Minimize(const Objective& objective,
+                             const StageControl& control,
+                             Vector6d* reference_from_input_xi,
+                             StageSummary* summary) const {
+  MinimizeNewton(
+      objective, options_, control, reference_from_input_xi, summary);
 }
 
 }  // namespace mlndt

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "mlndt/solvers/backend.h"
+#include "mlndt/solvers/hand_written_backend.h"
 #include "mlndt/solvers/objective.h"
 
 namespace mlndt {
@@ -40,22 +41,19 @@ void MinimizeNewton(const Objective& objective,
                     Vector6d* reference_from_input_xi,
                     StageSummary* summary);
 
-class NewtonBackend : public Backend {
+// The hand-written shell (hand_written_backend.h) around MinimizeNewton.
+class NewtonBackend : public HandWrittenBackend {
  public:
-  explicit NewtonBackend(const NewtonOptions& options) : options_(options) {}
-  void SetProblem(const std::vector<Eigen::Vector3d>& input_points,
-                  const ObjectiveOptions& objective,
-                  int num_threads) override;
-  void SolveStage(const NdtLayer& layer,
-                  const StageControl& control,
-                  Vector6d* reference_from_input_xi,
-                  StageSummary* summary) override;
+  explicit NewtonBackend(const NewtonOptions& options)
+      : HandWrittenBackend("NewtonBackend"), options_(options) {}
 
  private:
+  void Minimize(const Objective& objective,
+                const StageControl& control,
+                Vector6d* reference_from_input_xi,
+                StageSummary* summary) const override;
+
   NewtonOptions options_;
-  const std::vector<Eigen::Vector3d>* input_points_ = nullptr;
-  ObjectiveOptions objective_;
-  int num_threads_ = 1;
 };
 
 }  // namespace mlndt

@@ -2,7 +2,7 @@
 
 // The parts of the mlndt Python module, one file each (module.cc puts them
 // together). They are also linked into the lab module mlndt_lab._lab
-// (python/lab_src/), which uses the converters and option parsers.
+// (lab/python/src/), which uses the converters and option parsers.
 
 #include <pybind11/pybind11.h>
 

@@ -8,8 +8,6 @@ source tree:
     PYTHONPATH=build/python /usr/bin/python3 -m pytest python/tests
 """
 
-import importlib
-import importlib.util
 import json
 import os
 import subprocess
@@ -37,30 +35,10 @@ KITTI_POSES = KITTI_DIR / "poses_velo.txt"
 KITTI_PAIRS = KITTI_DIR / "reference_pairs.json"
 
 
-def import_lab():
-    """The lab's module mlndt_lab, which the development build makes beside
-    mlndt (CMake option MLNDT_BUILD_PYTHON_LAB; never installed, not in the
-    wheel). Skips the calling test file, saying why, when this build has no
-    lab module; a build that says it made one (ctest passes the option) must
-    import it."""
-    built = os.environ.get("MLNDT_BUILD_PYTHON_LAB")
-    if built is None:
-        missing = importlib.util.find_spec("mlndt_lab") is None
-    else:
-        missing = built.upper() in ("", "0", "OFF", "FALSE", "NO", "N")
-    if missing:
-        pytest.skip(
-            "the lab's module mlndt_lab is not built (a development build makes it: "
-            "-DMLNDT_BUILD_PYTHON_LAB=ON, as scripts/test.sh configures)",
-            allow_module_level=True,
-        )
-    return importlib.import_module("mlndt_lab")
-
-
 def pytest_sessionfinish(session, exitstatus):
     """Exit 77 when every test was skipped, which ctest reports as skipped
-    (also when a file skipped as a whole, e.g. import_lab(), and pytest says
-    it collected no tests: exit status 5)."""
+    (also when a file skipped as a whole, e.g. the lab's tests without the
+    lab's module, and pytest says it collected no tests: exit status 5)."""
     reporter = session.config.pluginmanager.get_plugin("terminalreporter")
     if exitstatus not in (0, pytest.ExitCode.NO_TESTS_COLLECTED) or reporter is None:
         return

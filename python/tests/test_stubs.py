@@ -3,14 +3,14 @@ and python/mlndt/__init__.pyi matches the module (a field added to a C++
 option struct and bound in python/src/options.cc must be added to the stub)."""
 
 import ast
-import importlib
+import importlib.util
 import pydoc
 import types
 
 import pytest
 
 import mlndt
-from conftest import BUILD_DIR, SOURCE_DIR, import_lab
+from conftest import BUILD_DIR, SOURCE_DIR
 
 STUB = SOURCE_DIR / "python" / "mlndt" / "__init__.pyi"
 
@@ -164,20 +164,4 @@ def test_the_package_holds_no_lab():
     # The lab is the separate development module mlndt_lab, never mlndt's.
     package = BUILD_DIR / "python" / "mlndt"
     assert not [p.name for p in package.iterdir() if p.name.startswith(("lab.", "_lab."))]
-    with pytest.raises(ModuleNotFoundError):
-        importlib.import_module("mlndt.lab")
-
-
-def test_lab_stub_names_every_public_name():
-    lab = import_lab()
-    assert lab.__file__ == str(BUILD_DIR / "python" / "mlndt_lab" / "__init__.py")
-    stub = SOURCE_DIR / "python" / "mlndt_lab" / "__init__.pyi"
-    assert (BUILD_DIR / "python" / "mlndt_lab" / "__init__.pyi").read_text() == stub.read_text()
-    tree = ast.parse(stub.read_text())
-    names = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
-    assert set(lab.__all__) - {"__version__"} <= names
-    classes = {node.name: node for node in tree.body if isinstance(node, ast.ClassDef)}
-    for cls in (lab.PairResult, lab.ScanStore, lab.RosBag, lab.BagScan):
-        assert cls.__module__ == "mlndt_lab"
-        stubbed = {node.name for node in classes[cls.__name__].body if isinstance(node, ast.FunctionDef)}
-        assert {name for name in dir(cls) if not name.startswith("_")} <= stubbed, cls.__name__
+    assert importlib.util.find_spec("mlndt.lab") is None

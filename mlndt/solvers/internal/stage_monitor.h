@@ -1,7 +1,10 @@
 #pragma once
 
-// Records the iterations of a hand-written minimiser's stage and decides
-// convergence on the update norm, the way the Ceres backend's callback does.
+// The stage of a hand-written minimiser (Newton, LM): starts its summary,
+// records its iterations and decides convergence on the update norm, the way
+// the Ceres backend's callback does, and ends it on the failures both share.
+
+#include <string>
 
 #include "mlndt/common/timer.h"
 #include "mlndt/solvers/backend.h"
@@ -11,8 +14,35 @@ namespace internal {
 
 class StageMonitor {
  public:
+  // Resets *summary: NO_CONVERGENCE "iteration cap reached" until an
+  // iteration or a failure ends the stage.
   StageMonitor(const StageControl& control, StageSummary* summary)
-      : control_(control), summary_(summary), start_s_(NowSeconds()) {}
+      : control_(control), summary_(summary), start_s_(NowSeconds()) {
+    *summary_ = StageSummary();
+    summary_->termination_type = TerminationType::NO_CONVERGENCE;
+    summary_->message = "iteration cap reached";
+  }
+
+  // Ends the stage: FAILURE with `message`.
+  void Fail(const char* message) {
+    summary_->termination_type = TerminationType::FAILURE;
+    summary_->message = message;
+  }
+  // True, with the stage ended, when no point was scored (nothing to
+  // minimise).
+  bool FailIfUnmatched(size_t matched) {
+    if (matched > 0) return false;
+    Fail("no input point lies in an occupied cell");
+    return true;
+  }
+  // True, with the stage ended ("the <method> step is not finite"), when
+  // the solved step is not finite.
+  bool FailIfNotFinite(const Vector6d& step, const char* method) {
+    if (step.allFinite()) return false;
+    summary_->termination_type = TerminationType::FAILURE;
+    summary_->message = std::string("the ") + method + " step is not finite";
+    return true;
+  }
 
   // Records one iteration; returns true when it ends the stage (backend.h:
   // StageControl), with the summary's termination and message set.

@@ -1,4 +1,4 @@
-# Type stubs of mlndt_lab (python/lab_src/*.cc). Poses are (N, 4, 4)
+# Type stubs of mlndt_lab (lab/python/src/*.cc). Poses are (N, 4, 4)
 # world_from_sensor arrays; registration options are mlndt.register's.
 
 import os

@@ -1,10 +1,10 @@
-// The lab module mlndt_lab._lab (python/mlndt_lab/__init__.py re-exports it):
-// the lab's trajectory evaluation and sequence runs (lab/), which the core
+// The lab module mlndt_lab._lab (lab/python/mlndt_lab/__init__.py re-exports
+// it): the lab's trajectory evaluation and sequence runs (lab/), which the core
 // module mlndt._mlndt must not include.
 
 #include <pybind11/pybind11.h>
 
-#include "python/lab_src/lab_module.h"
+#include "lab/python/src/lab_module.h"
 
 PYBIND11_MODULE(_lab, m) {
   namespace py = pybind11;

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "python/lab_src/lab_module.h"
+#include "lab/python/src/lab_module.h"
 #include "python/src/arrays.h"
 
 namespace mlndt {

@@ -1,6 +1,6 @@
 #pragma once
 
-// The parts of the lab module mlndt_lab._lab (python/mlndt_lab/__init__.py
+// The parts of the lab module mlndt_lab._lab (lab/python/mlndt_lab/__init__.py
 // re-exports it): the lab's evaluation (lab/eval) and sequence runs (lab/runs)
 // on numpy arrays. Kept apart from python/src, which binds the installed
 // library only (scripts/check_boundaries.sh).

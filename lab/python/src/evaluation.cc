@@ -14,7 +14,7 @@
 #include "lab/eval/trajectory.h"
 #include "lab/eval/trajectory_association.h"
 #include "lab/eval/trajectory_metrics.h"
-#include "python/lab_src/lab_module.h"
+#include "lab/python/src/lab_module.h"
 
 namespace mlndt {
 namespace python {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "lab/io/ros_bag_scans.h"
-#include "python/lab_src/lab_module.h"
+#include "lab/python/src/lab_module.h"
 #include "python/src/arrays.h"
 #include "python/src/errors.h"
 #include "python/src/module.h"

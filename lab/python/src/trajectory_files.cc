@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lab/eval/trajectory_io.h"
-#include "python/lab_src/lab_module.h"
+#include "lab/python/src/lab_module.h"
 #include "python/src/errors.h"
 #include "python/src/module.h"
 

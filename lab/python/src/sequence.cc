@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "lab/python/src/lab_module.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
-#include "python/lab_src/lab_module.h"
 #include "python/src/arrays.h"
 #include "python/src/errors.h"
 #include "python/src/module.h"

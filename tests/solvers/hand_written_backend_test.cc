@@ -1,0 +1,104 @@
+// The shell both hand-written backends share (hand_written_backend.h):
+// SolveStage before SetProblem is a programming error naming the backend,
+// and the Newton backend thins the points by control.point_stride before it
+// minimises (the LM backend's test checks the same for LM), so that one
+// shell serves both.
+
+#include "mlndt/solvers/hand_written_backend.h"
+
+#include <glog/logging.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "mlndt/cloud/point_cloud.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/grid/layered_grid.h"
+#include "mlndt/solvers/levenberg_marquardt_backend.h"
+#include "mlndt/solvers/newton_backend.h"
+#include "tests/testing/synthetic_scene.h"
+
+namespace mlndt {
+namespace {
+
+struct StreetPair {
+  LayeredGrid map;
+  std::vector<Eigen::Vector3d> input;
+};
+
+// A street scene map and a second sampling of it moved by a small pose.
+const StreetPair& Street() {
+  static const StreetPair* pair = [] {
+    auto* p = new StreetPair;
+    std::string error;
+    CHECK(LayeredGrid::Build(LayeredGridOptions(),
+                             testing::StreetScene(20000, 0.02, 1),
+                             &p->map,
+                             &error))
+        << error;
+    const Vector6d offset = PoseVectorFromDegrees(0.4, -0.3, 0.1, 0, 0, 2);
+    p->input = TransformCloud(PoseVectorToIsometry(offset).inverse(),
+                              testing::StreetScene(3000, 0.02, 2))
+                   .points();
+    return p;
+  }();
+  return *pair;
+}
+
+StageControl Control(int max_iterations) {
+  StageControl control;
+  control.max_iterations = max_iterations;
+  return control;
+}
+
+TEST(HandWrittenBackendDeathTest, StageBeforeSetProblemNamesTheBackend) {
+  const NdtLayer& layer = Street().map.layer(1);
+  Vector6d xi = Vector6d::Zero();
+  StageSummary summary;
+  NewtonBackend newton{NewtonOptions()};
+  EXPECT_DEATH(newton.SolveStage(layer, Control(3), &xi, &summary),
+               "NewtonBackend: SetProblem first");
+  LevenbergMarquardtBackend lm{LevenbergMarquardtOptions()};
+  EXPECT_DEATH(lm.SolveStage(layer, Control(3), &xi, &summary),
+               "LevenbergMarquardtBackend: SetProblem first");
+}
+
+// Catches: a shell that ignores point_stride, thins from another offset or
+// hands the minimiser another objective than MlNdtObjective.
+TEST(HandWrittenBackend, NewtonStrideMatchesMinimizeOnThinnedPoints) {
+  const StreetPair& street = Street();
+  const NdtLayer& layer = street.map.layer(street.map.num_layers() - 1);
+  const ObjectiveOptions objective;
+  StageControl control = Control(6);
+  control.point_stride = 4;
+
+  NewtonBackend backend{NewtonOptions()};
+  backend.SetProblem(street.input, objective, 2);
+  Vector6d strided = Vector6d::Zero();
+  StageSummary strided_summary;
+  backend.SolveStage(layer, control, &strided, &strided_summary);
+
+  std::vector<Eigen::Vector3d> thinned;
+  for (size_t i = 0; i < street.input.size(); i += 4) {
+    thinned.push_back(street.input[i]);
+  }
+  control.point_stride = 1;
+  Vector6d direct = Vector6d::Zero();
+  StageSummary direct_summary;
+  MinimizeNewton(MlNdtObjective(layer, thinned, objective, 2),
+                 NewtonOptions(),
+                 control,
+                 &direct,
+                 &direct_summary);
+
+  ASSERT_NE(strided_summary.termination_type, TerminationType::FAILURE)
+      << strided_summary.message;
+  EXPECT_GT(strided.head<3>().norm(), 0.1);  // The stage moved the pose.
+  EXPECT_EQ(strided, direct);
+  EXPECT_EQ(strided_summary.trace.size(), direct_summary.trace.size());
+  EXPECT_EQ(strided_summary.message, direct_summary.message);
+}
+
+}  // namespace
+}  // namespace mlndt
