@@ -8,6 +8,7 @@
 #include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/option_table.h"
+#include "mlndt/grid/cell_coverage.h"
 
 namespace mlndt {
 namespace {
@@ -397,6 +398,13 @@ const OptionTable& LayeredGridOptionsTable() {
                   ClosedOrZero(1e-3, 1e5),
                   "When > 0, n is the smallest layer count whose finest cell "
                   "is <= this.")
+          .Double("min_covered_fraction",
+                  &S::min_covered_fraction,
+                  "",
+                  Closed(0.0, 1.0),
+                  "With n derived from finest_cell_size_m: n is lowered while "
+                  "fewer than this fraction of the reference points lie in "
+                  "finest cells of >= min_points_per_cell points; 0 = off.")
           .Double("cell_size_m",
                   &S::cell_size_m,
                   "m",
@@ -435,6 +443,7 @@ bool operator==(const LayeredGridOptions& a, const LayeredGridOptions& b) {
   return a.division_constant == b.division_constant &&
          a.num_layers == b.num_layers &&
          a.finest_cell_size_m == b.finest_cell_size_m &&
+         a.min_covered_fraction == b.min_covered_fraction &&
          a.cell_size_m == b.cell_size_m &&
          a.max_num_layers == b.max_num_layers &&
          a.min_points_per_cell == b.min_points_per_cell &&
@@ -504,6 +513,58 @@ bool LayerGeometries(const LayeredGridOptions& options,
   return true;
 }
 
+// Splitting process for one layer, serial or on `threads` threads (the same
+// cells and sums either way).
+RawLayer BinLayer(const std::vector<Eigen::Vector3d>& points,
+                  const Eigen::Vector3d& origin,
+                  const Eigen::Vector3d& centre,
+                  const LayerGeometry& geometry,
+                  int threads) {
+  return threads == 1 ? BinPointsSerial(points, origin, centre, geometry)
+                      : BinPoints(points, origin, centre, geometry, threads);
+}
+
+// The fraction of the points in cells of `raw` with >= min_points points.
+double CoveredFraction(const RawLayer& raw, int min_points) {
+  std::vector<int64_t> counts;
+  counts.reserve(raw.moments.size());
+  for (const Moments& m : raw.moments) counts.push_back(m.count);
+  return CoveredPointFraction(counts, min_points);
+}
+
+// The geometry of the *n layers and the finest layer's cells. With n derived
+// from finest_cell_size_m and min_covered_fraction > 0, *n is lowered (the
+// finest cell grows by cbrt(q)) while too few points lie in finest cells
+// that can hold a distribution (cell_coverage.h); the binning that decides is
+// the one the map keeps, so a cloud that passes pays nothing.
+bool BinFinestLayer(const LayeredGridOptions& options,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const Eigen::AlignedBox3d& bounds,
+                    int threads,
+                    int* n,
+                    std::vector<LayerGeometry>* geometry,
+                    RawLayer* raw,
+                    std::string* error) {
+  const Eigen::Vector3d extent = bounds.sizes();
+  const double volume = EffectiveExtent(extent).prod();
+  const bool derived = options.finest_cell_size_m > 0.0 &&
+                       options.cell_size_m == 0.0 &&
+                       options.min_covered_fraction > 0.0;
+  while (true) {
+    if (!LayerGeometries(options, extent, volume, *n, geometry, error)) {
+      return false;
+    }
+    *raw = BinLayer(
+        points, bounds.min(), bounds.center(), geometry->back(), threads);
+    if (!derived || *n == 1 ||
+        CoveredFraction(*raw, options.min_points_per_cell) >=
+            options.min_covered_fraction) {
+      return true;
+    }
+    --*n;
+  }
+}
+
 }  // namespace
 
 bool LayeredGrid::Build(const LayeredGridOptions& options,
@@ -539,8 +600,7 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
     return false;
   }
   const Eigen::Vector3d e = EffectiveExtent(extent);
-  const double volume = e.prod();
-  const int n = NumLayers(options, volume);
+  int n = NumLayers(options, e.prod());
   if (n > options.max_num_layers) {
     std::ostringstream message;
     message << "finest_cell_size_m = " << options.finest_cell_size_m
@@ -552,7 +612,15 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
 
   const int ratio = NestingRatio(options.division_constant);
   std::vector<LayerGeometry> geometry;
-  if (!LayerGeometries(options, extent, volume, n, &geometry, error)) {
+  RawLayer raw;
+  if (!BinFinestLayer(options,
+                      reference.points(),
+                      bounds,
+                      num_threads,
+                      &n,
+                      &geometry,
+                      &raw,
+                      error)) {
     return false;
   }
 
@@ -560,19 +628,12 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
   const Eigen::Vector3d centre = bounds.center();
   std::vector<NdtLayer> layers(static_cast<size_t>(n));
   std::vector<LayerInfo> info(static_cast<size_t>(n));
-  RawLayer raw;
   for (int i = n; i >= 1; --i) {
     const size_t l = static_cast<size_t>(i - 1);
-    if (i == n || ratio == 0) {
-      raw =
-          num_threads == 1
-              ? BinPointsSerial(reference.points(), origin, centre, geometry[l])
-              : BinPoints(reference.points(),
-                          origin,
-                          centre,
-                          geometry[l],
-                          num_threads);
-    } else {
+    if (i < n && ratio == 0) {
+      raw = BinLayer(
+          reference.points(), origin, centre, geometry[l], num_threads);
+    } else if (i < n) {
       if (options.coarse_weighting == CoarseWeighting::FINEST_CELLS &&
           !raw.weighted) {
         for (Moments& m : raw.moments)

@@ -9,6 +9,11 @@
 // Example from the paper: a 100 x 100 x 20 m box with q = 8 gives, on layer
 // 2, 14.62 m cells in a 7 x 7 x 2 grid.
 //
+// The finest cell is sized from the data: n is the smallest layer count
+// whose finest cell is <= finest_cell_size_m, lowered while fewer than
+// min_covered_fraction of the points lie in finest cells that can hold a
+// distribution (cell_coverage.h), so a sparse cloud gets cells it fills.
+//
 // Generative process: every cell with at least `min_points_per_cell` points
 // (the paper: "more than 4") keeps its mean (Eq. 2), unbiased covariance
 // (Eq. 3), regularised as in Section 4.1 (see ndt_cell.h), the inverse and
@@ -62,6 +67,12 @@ struct LayeredGridOptions {
   // When > 0, n is the smallest number of layers whose finest cell edge is
   // <= this [m] (docs/defaults.md: why 1.2 m). 0, or in [1e-3, 1e5].
   double finest_cell_size_m = 1.2;
+  // With n derived from finest_cell_size_m: while fewer than this fraction
+  // of the reference points lie in finest cells holding at least
+  // min_points_per_cell points, n is lowered by one (the finest cell
+  // grows by cbrt(q)), so a sparse cloud gets cells it can fill
+  // (cell_coverage.h; docs/defaults.md). 0: off. In [0, 1].
+  double min_covered_fraction = 0.5;
   // When > 0, the map has one layer of cubic cells of exactly this edge [m]
   // (the conventional NDT grid) and q, n and finest_cell_size_m are ignored.
   // 0, or in [1e-3, 1e5].

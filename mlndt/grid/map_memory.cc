@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mlndt/grid/cell_coverage.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/ndt_cell.h"
 #include "mlndt/grid/ndt_layer.h"
@@ -46,15 +47,19 @@ struct Geometry {
 // The layer geometries of LayeredGrid::Build (layered_grid.cc), finest
 // last, and the nesting ratio (0 when q is not a perfect cube). Kept in
 // step with Build by tests/grid/map_memory_test.cc.
+// `layers` > 0 overrides the layer count (the coverage rule's lower n).
 bool LayerGeometries(const LayeredGridOptions& options,
                      const Eigen::Vector3d& extent,
+                     int layers,
                      std::vector<Geometry>* geometry,
                      int* ratio,
                      std::string* error) {
   const Eigen::Vector3d e = extent.cwiseMax(0.01 * extent.maxCoeff());
   const double volume = e.prod();
   int n = options.num_layers;
-  if (options.cell_size_m > 0.0) {
+  if (layers > 0) {
+    n = layers;
+  } else if (options.cell_size_m > 0.0) {
     n = 1;
   } else if (options.finest_cell_size_m > 0.0) {
     const double f = options.finest_cell_size_m;
@@ -343,6 +348,38 @@ std::string FormatBytes(double bytes) {
   return text;
 }
 
+// LayeredGrid::Build's coverage rule (layered_grid.cc, BinFinestLayer):
+// with n derived and min_covered_fraction > 0, one layer fewer while too
+// few points lie in finest cells of >= min_points_per_cell points.
+bool ApplyCoverageRule(const LayeredGridOptions& options,
+                       const PointCloud& cloud,
+                       const Eigen::AlignedBox3d& bounds,
+                       std::vector<Geometry>* geometry,
+                       int* ratio,
+                       std::string* error) {
+  if (!(options.finest_cell_size_m > 0.0 && options.cell_size_m == 0.0 &&
+        options.min_covered_fraction > 0.0)) {
+    return true;
+  }
+  while (geometry->size() > 1) {
+    CellCounts cells;
+    if (!CountPoints(
+            cloud.points(), bounds.min(), geometry->back(), 0, &cells, error)) {
+      return false;
+    }
+    const std::vector<int64_t> counts(cells.counts.begin(), cells.counts.end());
+    if (CoveredPointFraction(counts, options.min_points_per_cell) >=
+        options.min_covered_fraction) {
+      return true;
+    }
+    const int n = static_cast<int>(geometry->size()) - 1;
+    if (!LayerGeometries(options, bounds.sizes(), n, geometry, ratio, error)) {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool EstimateMapMemory(const LayeredGridOptions& options,
                        const PointCloud& cloud,
                        size_t max_total_bytes,
@@ -356,7 +393,8 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
   if (!CheckCloud(cloud, &bounds, error)) return false;
   std::vector<Geometry> geometry;
   int ratio = 0;
-  if (!LayerGeometries(options, bounds.sizes(), &geometry, &ratio, error)) {
+  if (!LayerGeometries(options, bounds.sizes(), 0, &geometry, &ratio, error) ||
+      !ApplyCoverageRule(options, cloud, bounds, &geometry, &ratio, error)) {
     return false;
   }
   const int n = static_cast<int>(geometry.size());

@@ -29,6 +29,7 @@ class LayeredGridOptions(TypedDict, total=False):
     division_constant: int
     num_layers: int
     finest_cell_size_m: float
+    min_covered_fraction: float
     cell_size_m: float
     max_num_layers: int
     min_points_per_cell: int
@@ -256,6 +257,7 @@ class LayeredMap:
         division_constant: int = ...,
         num_layers: int = ...,
         finest_cell_size_m: float = ...,
+        min_covered_fraction: float = ...,
         cell_size_m: float = ...,
         max_num_layers: int = ...,
         min_points_per_cell: int = ...,

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <random>
 
 #include "mlndt/cloud/io.h"
@@ -475,6 +477,121 @@ TEST(LayeredGrid, FinestCellWeightingMakesCoarseCellsTheMixtureOfFineCells) {
   EXPECT_TRUE(StringToCoarseWeighting("finest_cells", &parsed));
   EXPECT_EQ(parsed, CoarseWeighting::FINEST_CELLS);
   EXPECT_EQ(name, "FINEST_CELLS");
+}
+
+}  // namespace
+}  // namespace mlndt
+
+namespace mlndt {
+namespace {
+
+// The fraction of `cloud`'s points in cells of the map's finest layer that
+// hold >= min_points points, counted here from the points (cells anchored at
+// the box's minimum, the max face inside the last cell).
+double FinestCoverage(const LayeredGrid& grid,
+                      const PointCloud& cloud,
+                      int min_points) {
+  const NdtLayer& finest = grid.layer(grid.num_layers());
+  std::map<std::array<int, 3>, int64_t> counts;
+  for (const Eigen::Vector3d& p : cloud.points()) {
+    std::array<int, 3> key;
+    for (int a = 0; a < 3; ++a) {
+      const int i = static_cast<int>(
+          std::floor((p(a) - grid.bounds().min()(a)) / finest.cell_size()));
+      key[static_cast<size_t>(a)] = std::min(i, finest.dims()(a) - 1);
+    }
+    ++counts[key];
+  }
+  int64_t covered = 0;
+  for (const auto& entry : counts) {
+    if (entry.second >= min_points) covered += entry.second;
+  }
+  return static_cast<double>(covered) / static_cast<double>(cloud.size());
+}
+
+TEST(LayeredGridCoverage, SparseCloudGetsTheFinestCellItCanFill) {
+  // 3000 points in a 40 x 30 x 10 m box: 1.2 m derives 0.72 m cells, which
+  // hold less than one point each.
+  const PointCloud cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(40, 30, 10), 3000, 7);
+  LayeredGridOptions fixed;
+  fixed.min_covered_fraction = 0.0;
+  LayeredGridOptions derived = fixed;
+  derived.min_covered_fraction = 0.5;
+  LayeredGrid fixed_grid;
+  LayeredGrid derived_grid;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(fixed, cloud, &fixed_grid, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(derived, cloud, &derived_grid, &error))
+      << error;
+  EXPECT_EQ(fixed_grid.num_layers(), 5);
+  EXPECT_LT(FinestCoverage(fixed_grid, cloud, 5), 0.5);
+  ASSERT_LT(derived_grid.num_layers(), fixed_grid.num_layers());
+  EXPECT_GE(FinestCoverage(derived_grid, cloud, 5), 0.5);
+  // The finest layer that covers enough, not a coarser one: one layer more
+  // would not.
+  LayeredGridOptions one_finer = fixed;
+  one_finer.finest_cell_size_m = 0.0;
+  one_finer.num_layers = derived_grid.num_layers() + 1;
+  LayeredGrid finer_grid;
+  ASSERT_TRUE(LayeredGrid::Build(one_finer, cloud, &finer_grid, &error))
+      << error;
+  EXPECT_LT(FinestCoverage(finer_grid, cloud, 5), 0.5);
+  EXPECT_NEAR(derived_grid.layer(derived_grid.num_layers()).cell_size(),
+              finer_grid.layer(finer_grid.num_layers() - 1).cell_size(),
+              1e-9);
+}
+
+TEST(LayeredGridCoverage, DenseCloudKeepsTheDerivedLayers) {
+  // 30000 points in a 10 m cube: 0.625 m cells hold ~7 points each.
+  const PointCloud cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 10, 10), 30000, 8);
+  LayeredGridOptions fixed;
+  fixed.min_covered_fraction = 0.0;
+  LayeredGridOptions derived = fixed;
+  derived.min_covered_fraction = 0.5;
+  LayeredGrid fixed_grid;
+  LayeredGrid derived_grid;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(fixed, cloud, &fixed_grid, &error)) << error;
+  ASSERT_TRUE(LayeredGrid::Build(derived, cloud, &derived_grid, &error))
+      << error;
+  EXPECT_GE(FinestCoverage(fixed_grid, cloud, 5), 0.5);
+  ASSERT_EQ(derived_grid.num_layers(), fixed_grid.num_layers());
+  for (int i = 1; i <= fixed_grid.num_layers(); ++i) {
+    EXPECT_EQ(
+        derived_grid.layer_info()[static_cast<size_t>(i - 1)].occupied_cells,
+        fixed_grid.layer_info()[static_cast<size_t>(i - 1)].occupied_cells);
+  }
+}
+
+TEST(LayeredGridCoverage, GivenLayerCountOrCellSizeIsKept) {
+  const PointCloud cloud =
+      BoxCloud(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(40, 30, 10), 3000, 7);
+  LayeredGridOptions layers;
+  layers.finest_cell_size_m = 0.0;
+  layers.num_layers = 5;
+  layers.min_covered_fraction = 1.0;
+  LayeredGridOptions cell;
+  cell.cell_size_m = 0.3;
+  cell.min_covered_fraction = 1.0;
+  LayeredGrid grid;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(layers, cloud, &grid, &error)) << error;
+  EXPECT_EQ(grid.num_layers(), 5);
+  ASSERT_TRUE(LayeredGrid::Build(cell, cloud, &grid, &error)) << error;
+  ASSERT_EQ(grid.num_layers(), 1);
+  EXPECT_EQ(grid.layer(1).cell_size(), 0.3);
+}
+
+TEST(LayeredGridCoverage, OutOfRangeFractionIsRefused) {
+  LayeredGridOptions options;
+  std::string error;
+  options.min_covered_fraction = 1.5;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("min_covered_fraction"), std::string::npos) << error;
+  options.min_covered_fraction = -0.1;
+  EXPECT_FALSE(options.IsValid(&error));
 }
 
 }  // namespace
