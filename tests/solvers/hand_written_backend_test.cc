@@ -17,34 +17,13 @@
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/solvers/levenberg_marquardt_backend.h"
 #include "mlndt/solvers/newton_backend.h"
-#include "tests/testing/synthetic_scene.h"
+#include "tests/testing/street_pair.h"
 
 namespace mlndt {
 namespace {
 
-struct StreetPair {
-  LayeredGrid map;
-  std::vector<Eigen::Vector3d> input;
-};
-
-// A street scene map and a second sampling of it moved by a small pose.
-const StreetPair& Street() {
-  static const StreetPair* pair = [] {
-    auto* p = new StreetPair;
-    std::string error;
-    CHECK(LayeredGrid::Build(LayeredGridOptions(),
-                             testing::StreetScene(20000, 0.02, 1),
-                             &p->map,
-                             &error))
-        << error;
-    const Vector6d offset = PoseVectorFromDegrees(0.4, -0.3, 0.1, 0, 0, 2);
-    p->input = TransformCloud(PoseVectorToIsometry(offset).inverse(),
-                              testing::StreetScene(3000, 0.02, 2))
-                   .points();
-    return p;
-  }();
-  return *pair;
-}
+using testing::Street;
+using testing::StreetPair;
 
 StageControl Control(int max_iterations) {
   StageControl control;

@@ -21,7 +21,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/layered_grid.h"
 #include "tests/testing/eigen_near.h"
-#include "tests/testing/synthetic_scene.h"
+#include "tests/testing/street_pair.h"
 
 namespace mlndt {
 namespace {
@@ -406,29 +406,8 @@ TEST(NewtonOptions, IsValidRanges) {
   }
 }
 
-// A street scene map and a second sampling of it moved by a small pose.
-struct StreetPair {
-  LayeredGrid map;
-  std::vector<Eigen::Vector3d> input;
-};
-
-const StreetPair& Street() {
-  static const StreetPair* pair = [] {
-    auto* p = new StreetPair;
-    std::string error;
-    CHECK(LayeredGrid::Build(LayeredGridOptions(),
-                             testing::StreetScene(20000, 0.02, 1),
-                             &p->map,
-                             &error))
-        << error;
-    const Vector6d offset = PoseVectorFromDegrees(0.4, -0.3, 0.1, 0, 0, 2);
-    p->input = TransformCloud(PoseVectorToIsometry(offset).inverse(),
-                              testing::StreetScene(3000, 0.02, 2))
-                   .points();
-    return p;
-  }();
-  return *pair;
-}
+using testing::Street;
+using testing::StreetPair;
 
 // Catches: a backend that ignores point_stride, thins from another offset or
 // with another stride, or minimises another objective than MlNdtObjective.
