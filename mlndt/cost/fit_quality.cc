@@ -35,7 +35,7 @@ FitQuality FitQualityOf(const std::vector<PointMatch>& matches, double gate) {
     double rho = 0.0, rho_prime = 0.0;
     EvaluateLoss(LossType::CAUCHY, gate, m.score, &rho, &rho_prime);
     score += rho;
-    inliers += m.score < gate * gate;
+    inliers += m.IsInlier(gate);
     distances.push_back(std::sqrt(m.score));
   }
   const double n = static_cast<double>(matches.size());

@@ -20,7 +20,17 @@ struct PointMatch {
   // s = e^T C^-1 e with e = x - mean in that cell (Eq. 10); 0 if unmatched.
   double score = 0.0;
   bool own_cell = false;  // The cell x lies in is occupied (overlap).
+
+  // Matched, at a Mahalanobis distance below `gate`.
+  bool IsInlier(double gate) const {
+    return cell != nullptr && score < gate * gate;
+  }
 };
+
+// One transformed point x matched on `layer` with `policy`.
+PointMatch MatchPoint(const NdtLayer& layer,
+                      const Eigen::Vector3d& x,
+                      UnmatchedPolicy policy);
 
 // Every point of `input_points` moved by x = rotation p + translation and
 // matched on `layer` with `policy`, in input order.

@@ -115,7 +115,7 @@ std::vector<bool> InlierFlags(const std::vector<PointMatch>& matches,
                               double gate) {
   std::vector<bool> inlier(matches.size(), false);
   for (size_t k = 0; k < matches.size(); ++k) {
-    inlier[k] = matches[k].cell != nullptr && matches[k].score < gate * gate;
+    inlier[k] = matches[k].IsInlier(gate);
   }
   return inlier;
 }
@@ -161,17 +161,15 @@ Probe ProbeDirection(const NdtLayer& layer,
   for (const double sign : {1.0, -1.0}) {
     const Isometry3d moved =
         Moved(pose, sign * d, layer.cell_size(), rms_range_m);
-    const std::vector<bool> there =
-        InlierFlags(MatchPoints(layer,
-                                input_points,
-                                moved.linear(),
-                                moved.translation(),
-                                objective.unmatched_policy),
-                    gate);
+    // Streamed: the probe needs each point's flag only, not its match.
     double lost = 0.0, gained = 0.0;
-    for (size_t k = 0; k < inlier.size(); ++k) {
-      lost += inlier[k] && !there[k];
-      gained += !inlier[k] && there[k];
+    for (size_t k = 0; k < input_points.size(); ++k) {
+      const Eigen::Vector3d x =
+          moved.linear() * input_points[k] + moved.translation();
+      const bool there =
+          MatchPoint(layer, x, objective.unmatched_policy).IsInlier(gate);
+      lost += inlier[k] && !there;
+      gained += !inlier[k] && there;
     }
     probe.kept =
         std::min(probe.kept, 1.0 - (lost - gained) / std::max(inliers, 1.0));
