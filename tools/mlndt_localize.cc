@@ -47,6 +47,7 @@
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/localizer.h"
 #include "tools/common/localize_output.h"
+#include "tools/common/localizer_flags.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
@@ -68,9 +69,6 @@ DEFINE_string(initial_matrix, "", "First scan's map_from_scan: 12 comma-separate
 DEFINE_string(initial_poses, "", "Pose file (KITTI or TUM) whose first pose is the first scan's "
               "map_from_scan");
 DEFINE_string(initial_poses_format, "auto", "auto | kitti | tum");
-DEFINE_string(motion_model, "constant_velocity",
-              "Initial guess of scan k > 0: constant_velocity (previous pose x last motion) | "
-              "constant_pose (previous pose)");
 DEFINE_string(output_dir, "", "Folder for the trajectories, scans.csv, summary.json and the plot");
 DEFINE_bool(plots, true, "Write trajectory_xy.png with gnuplot (exit 1 when gnuplot is missing)");
 DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
@@ -111,11 +109,8 @@ bool CheckFlags(LocalizerOptions* options,
                                     error)) {
     return false;
   }
-  if (!StringToMotionModel(FLAGS_motion_model, &options->motion_model)) {
-    *error = "--motion_model=" + FLAGS_motion_model +
-             ": expected constant_velocity or constant_pose";
-    return false;
-  }
+  // --motion_model (LocalizerOwnOptionsTable).
+  if (!tools::LocalizerFlags().Apply(options, error)) return false;
   if (!tools::RefuseMapFlags(kTool, error) ||
       !tools::RegistrationOptionsFromFlags(&options->registration, error)) {
     return false;

@@ -48,6 +48,7 @@
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/map_builder.h"
 #include "tools/common/json_output.h"
+#include "tools/common/map_build_flags.h"
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/map_output.h"
@@ -65,10 +66,8 @@ DEFINE_string(poses, "", "world_from_scan of every scan, in scan order: KITTI (1
 DEFINE_string(poses_format, "auto", "auto (by extension, then by the first line) | kitti | tum");
 DEFINE_string(cloud, "", "One cloud already in the world frame, instead of --scans and --poses");
 DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
-DEFINE_double(voxel_size, 0.0, "Voxel filter of the merged cloud: voxel edge [m], 0 = none, else "
-              "in [0.001, 1000]");
 DEFINE_double(max_memory_gb, 8.0, "Refuse a build that needs more than this many GB (10^9 bytes) "
-              "at once: merged cloud plus working memory (0 = no limit)");
+              "at once: merged cloud plus working memory (0 = no limit); sets max_memory_bytes");
 DEFINE_string(output, "", "The map file to write (SaveLayeredGrid)");
 DEFINE_string(output_json, "", "Also write the build's summary as JSON to this file");
 // clang-format on
@@ -130,12 +129,8 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
   if (!tools::RangeFilterOptionsFromFlags(&options->range_filter, error)) {
     return false;
   }
-  if (FLAGS_voxel_size != 0.0 &&
-      !(FLAGS_voxel_size >= 1e-3 && FLAGS_voxel_size <= 1e3)) {
-    *error = "--voxel_size must be 0 (no filter) or in [0.001, 1000] m";
-    return false;
-  }
-  options->voxel_size_m = FLAGS_voxel_size;
+  // --voxel_size (voxel_size_m) and --num_threads (MapBuildOwnOptionsTable).
+  if (!tools::MapBuildFlags().Apply(options, error)) return false;
   if (!(FLAGS_max_memory_gb >= 0.0 && FLAGS_max_memory_gb <= 1e6)) {
     *error = "--max_memory_gb must be in [0, 1e6] (0 = no limit)";
     return false;
@@ -143,11 +138,6 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
   options->max_memory_bytes =
       static_cast<size_t>(std::llround(FLAGS_max_memory_gb * 1e9));
   if (!tools::GridOptionsFromFlags(kTool, &options->grid, error)) return false;
-  options->num_threads = tools::IntFlag("num_threads");
-  if (options->num_threads < 1 || options->num_threads > 256) {
-    *error = tools::GivenFlagName("num_threads") + " must be in [1, 256]";
-    return false;
-  }
   if (!tools::CheckOutputFolderExists("output", FLAGS_output, error) ||
       !tools::CheckOutputFile("output", FLAGS_output, error) ||
       !tools::CheckOutputFile("output_json", FLAGS_output_json, error)) {

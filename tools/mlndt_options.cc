@@ -1,6 +1,7 @@
 // mlndt_options: the option reference made from the library's option tables
 // (docs/options.md is its output): every registration flag with the field
-// it sets, type, default, unit, valid values and help.
+// it sets, type, default, unit, valid values and help, and the tools' own
+// options (mlndt_map's, mlndt_localize's).
 //   mlndt_options                 # Markdown (docs/options.md)
 //   mlndt_options --format=json   # the same as JSON
 
@@ -11,6 +12,7 @@
 #include "tools/common/option_flags.h"
 #include "tools/common/options_doc.h"
 #include "tools/common/tool_main.h"
+#include "tools/common/tool_table_flags.h"
 
 DEFINE_string(format, "markdown", "markdown | json");
 
@@ -21,6 +23,11 @@ int main(int argc, char** argv) {
   }
   for (const auto& [alias, name] : mlndt::tools::FlagAliases()) {
     option_flags.push_back(alias);
+  }
+  for (const auto* table_flags : mlndt::tools::ToolTableFlags()) {
+    for (const std::string& flag : table_flags->RegisteredFlags()) {
+      option_flags.push_back(flag);
+    }
   }
   mlndt::tools::HideFlagsFromHelp(option_flags);
   if (!mlndt::tools::StartTool(

@@ -8,6 +8,7 @@
 #include "mlndt/cost/mlndt_pair_cost.h"
 #include "mlndt/cost/mlndt_pair_cost_analytic.h"
 #include "mlndt/cost/mlndt_pair_factor.h"
+#include "mlndt/cost/pair_residual_option_table.h"
 
 namespace mlndt {
 namespace {
@@ -59,12 +60,7 @@ bool PairResidualOptions::IsValid(std::string* error) const {
     *error = "objective: " + *error;
     return false;
   }
-  if (!(information_scale > 0.0 && information_scale <= 1e3)) {
-    *error = "information_scale must be in (0, 1e3], got " +
-             std::to_string(information_scale);
-    return false;
-  }
-  return true;
+  return PairResidualOptionsTable().Check(*this, error);
 }
 
 std::vector<ceres::ResidualBlockId> AddMlNdtPairResiduals(

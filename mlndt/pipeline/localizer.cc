@@ -3,15 +3,16 @@
 #include <glog/logging.h>
 
 #include "mlndt/common/enum_table.h"
-#include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/timer.h"
+#include "mlndt/pipeline/pipeline_option_tables.h"
 
 namespace mlndt {
 
 const EnumTable& MotionModelTable() {
   static const EnumTable table({
-      {static_cast<int>(MotionModel::CONSTANT_POSE), "CONSTANT_POSE"},
+      // The default first: the choices are listed in this order.
       {static_cast<int>(MotionModel::CONSTANT_VELOCITY), "CONSTANT_VELOCITY"},
+      {static_cast<int>(MotionModel::CONSTANT_POSE), "CONSTANT_POSE"},
   });
   return table;
 }
@@ -25,9 +26,8 @@ bool StringToMotionModel(std::string value, MotionModel* model) {
 }
 
 bool LocalizerOptions::IsValid(std::string* error) const {
-  if (!registration.IsValid(error)) return false;
-  MLNDT_OPTION_ENUM(motion_model, MotionModelToString);
-  return true;
+  return registration.IsValid(error) &&
+         LocalizerOwnOptionsTable().Check(*this, error);
 }
 
 Localizer::Localizer(const LocalizerOptions& options,

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "mlndt/cloud/io.h"
-#include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/rigid_transform.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/grid/map_check.h"
+#include "mlndt/pipeline/pipeline_option_tables.h"
 #include "mlndt/sampling/point_sampler.h"
 
 namespace mlndt {
@@ -89,10 +89,8 @@ bool FilterAndBuild(const MapBuildOptions& options,
 }  // namespace
 
 bool MapBuildOptions::IsValid(std::string* error) const {
-  if (!grid.IsValid(error) || !range_filter.IsValid(error)) return false;
-  if (voxel_size_m != 0.0) MLNDT_OPTION_IN_RANGE(voxel_size_m, 1e-3, 1e3);
-  MLNDT_OPTION_IN_RANGE(num_threads, 1, 256);
-  return true;
+  return grid.IsValid(error) && range_filter.IsValid(error) &&
+         MapBuildOwnOptionsTable().Check(*this, error);
 }
 
 bool BuildMapFromScans(const MapBuildOptions& options,

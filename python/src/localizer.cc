@@ -12,9 +12,11 @@
 #include <mutex>
 #include <string>
 
+#include "mlndt/pipeline/pipeline_option_tables.h"
 #include "python/src/arrays.h"
 #include "python/src/map.h"
 #include "python/src/module.h"
+#include "python/src/option_binding.h"
 #include "python/src/options.h"
 
 namespace mlndt {
@@ -23,6 +25,19 @@ namespace {
 
 using Result = LocalizationResult;
 
+// LocalizerOptions without the registration (LocalizerOwnOptionsTable).
+const StructBinding<LocalizerOptions>& LocalizerOwnBinding() {
+  static const StructBinding<LocalizerOptions> binding(
+      LocalizerOwnOptionsTable());
+  return binding;
+}
+
+// The default of an own field as its keyword's default ("constant_velocity").
+std::string OwnDefault(const std::string& name) {
+  const OptionTable& table = LocalizerOwnOptionsTable();
+  return table.Find(name)->Format(table.defaults());
+}
+
 // Holds the map (shared with the LayeredMap it came from) for as long as
 // the C++ Localizer refers to it; one Localize at a time (the motion model
 // is state).
@@ -30,7 +45,7 @@ class PyLocalizer {
  public:
   PyLocalizer(const LayeredMap& map,
               const py::object& first_map_from_scan,
-              const std::string& motion_model,
+              const py::object& motion_model,
               const py::object& initial_uncertainty,
               const py::kwargs& kwargs)
       : grid_(map.grid_ptr()) {
@@ -39,17 +54,24 @@ class PyLocalizer {
           "invalid option: grid does not apply to Localizer (the map is "
           "built already; give grid options to LayeredMap.build)");
     }
+    // LocalizerOptions' own fields (motion_model and any other of its
+    // table) apart from the registration's keywords.
+    py::dict own;
+    py::dict registration = py::dict(kwargs);  // A copy.
+    own["motion_model"] = motion_model;
+    for (const std::string& name : LocalizerOwnBinding().Names()) {
+      if (!registration.contains(name)) continue;
+      own[name.c_str()] = registration[name.c_str()];
+      PyDict_DelItemString(registration.ptr(), name.c_str());
+    }
     LocalizerOptions options;
-    options.registration =
-        RegistrationOptionsFromPython(kwargs, initial_uncertainty, true);
-    if (!StringToMotionModel(motion_model, &options.motion_model)) {
-      throw py::value_error("invalid option: motion_model = '" + motion_model +
-                            "'; expected constant_velocity or constant_pose");
-    }
+    LocalizerOwnBinding().Update(own, "", &options);
+    options.registration = RegistrationOptionsFromPython(
+        py::reinterpret_borrow<py::kwargs>(registration),
+        initial_uncertainty,
+        true);
     std::string error;
-    if (!options.IsValid(&error)) {
-      throw py::value_error("invalid option: " + error);
-    }
+    if (!options.IsValid(&error)) throw py::value_error(error);
     const Isometry3d first =
         TransformFromPython(first_map_from_scan, "first_map_from_scan");
     localizer_ = std::make_unique<Localizer>(options, *grid_, first);
@@ -140,6 +162,27 @@ void DefineResult(py::module_& m) {
       });
 }
 
+// The constructor's doc: the own fields' from their table.
+const std::string& LocalizerDoc() {
+  static const std::string doc =
+      "Localizer(map, first_map_from_scan=None, motion_model=\"" +
+      OwnDefault("motion_model") +
+      "\",\n"
+      "          initial_uncertainty=None, **options)\n\n"
+      "map: a LayeredMap (kept alive by the localizer).\n"
+      "first_map_from_scan: 4x4 (or 3x4) guess of the first scan's pose; "
+      "None: identity.\n"
+      "LocalizerOptions' own keywords (lower-case enum names accepted; a "
+      "FAILURE keeps\nits prediction as its pose and leaves the motion as it "
+      "was):\n" +
+      LocalizerOwnBinding().Describe(LocalizerOptions(), "    ") +
+      "initial_uncertainty and **options: as LayeredMap.register "
+      "(RegistrationOptions\n"
+      "    fields; grid does not apply), used for every scan.\n"
+      "Raises ValueError naming the option or argument that is invalid.";
+  return doc;
+}
+
 }  // namespace
 
 void DefineLocalizer(py::module_& m) {
@@ -152,30 +195,14 @@ void DefineLocalizer(py::module_& m) {
       "prediction and is registered onto the map.")
       .def(py::init<const LayeredMap&,
                     const py::object&,
-                    const std::string&,
+                    const py::object&,
                     const py::object&,
                     const py::kwargs&>(),
            py::arg("map"),
            py::arg("first_map_from_scan") = py::none(),
-           py::arg("motion_model") = "constant_velocity",
+           py::arg("motion_model") = OwnDefault("motion_model"),
            py::arg("initial_uncertainty") = py::none(),
-           "Localizer(map, first_map_from_scan=None, "
-           "motion_model=\"constant_velocity\",\n"
-           "          initial_uncertainty=None, **options)\n\n"
-           "map: a LayeredMap (kept alive by the localizer).\n"
-           "first_map_from_scan: 4x4 (or 3x4) guess of the first scan's "
-           "pose; None: identity.\n"
-           "motion_model: \"constant_velocity\" (scan k starts from "
-           "pose_{k-1} moved by the\n"
-           "    last relative motion) or \"constant_pose\" (from "
-           "pose_{k-1}). A FAILURE keeps\n"
-           "    its prediction as its pose and leaves the motion as it "
-           "was.\n"
-           "initial_uncertainty and **options: as LayeredMap.register "
-           "(RegistrationOptions\n"
-           "    fields; grid does not apply), used for every scan.\n"
-           "Raises ValueError naming the option or argument that is "
-           "invalid.")
+           LocalizerDoc().c_str())
       .def("localize",
            &PyLocalizer::Localize,
            py::arg("scan"),

@@ -2,15 +2,18 @@
 option tables, printed by mlndt_options --format=json): every described field
 of RegistrationOptions is a keyword at its path with the same default, no
 keyword is undescribed, a value outside a field's range is refused naming the
-field, and docs/options.md is the current description."""
+field, every field of the tools' own tables that Python reaches is a keyword
+of its class documented with the same default, and docs/options.md is the
+current description."""
 
 import json
+import re
 import subprocess
 
 import pytest
 
 import mlndt
-from conftest import SOURCE_DIR, TOOLS_DIR
+from conftest import KITTI_SCANS, SOURCE_DIR, TOOLS_DIR
 
 # Fields that are Python keywords but not flags (the --initial_uncertainty=t,r
 # flag sets them); they are described all the same.
@@ -90,3 +93,55 @@ def test_docstring_carries_units_and_ranges():
 
 def test_docs_options_md_is_current():
     assert (SOURCE_DIR / "docs" / "options.md").read_text() == run_options_tool()
+
+
+# The tools' own tables (mlndt_options' "tool_options") and where Python
+# reaches them: LocalizerOptions' fields are mlndt.Localizer keywords;
+# MapBuildOptions is mlndt_map's only (LayeredMap.build takes the grid
+# keywords and num_threads, not a voxel filter or a memory limit).
+PYTHON_TOOL_TABLES = {"LocalizerOptions": lambda: mlndt.Localizer}
+TOOL_ONLY_TABLES = {"MapBuildOptions"}
+
+
+def test_every_tool_table_has_its_python_place(description):
+    structs = {table["struct"] for table in description["tool_options"]}
+    assert structs == set(PYTHON_TOOL_TABLES) | TOOL_ONLY_TABLES
+
+
+def documented_defaults(doc):
+    """{name: default} of the "    name: type = default" lines a table's
+    description puts into a docstring."""
+    return {m.group(1): m.group(2).strip('"') for m in re.finditer(r"^    (\w+): .+ = (.+)$", doc, re.M)}
+
+
+def python_value(text, kind):
+    if kind == "bool":
+        return text in ("true", "True")
+    if kind in ("int", "uint64"):
+        return int(text)
+    if kind == "double":
+        return float(text)
+    return text
+
+
+@pytest.fixture(scope="module")
+def small_map():
+    return mlndt.LayeredMap.build(mlndt.filter_range(mlndt.read_cloud(KITTI_SCANS[0])))
+
+
+def test_tool_table_fields_are_keywords_with_their_defaults(description, small_map):
+    checked = 0
+    for table in description["tool_options"]:
+        if table["struct"] not in PYTHON_TOOL_TABLES:
+            continue
+        cls = PYTHON_TOOL_TABLES[table["struct"]]()
+        documented = documented_defaults(cls.__init__.__doc__)
+        for row in table["options"]:
+            name, kind = row["field"], row["type"]
+            assert name in documented, f"{table['struct']}.{name} is not documented by {cls.__name__}"
+            assert same_default(python_value(documented[name], kind), row["default"], kind), (name, documented[name])
+            cls(small_map, **{name: python_value(row["default"], kind)})  # A keyword.
+            with pytest.raises(ValueError, match=r"invalid option: " + name + " = "):
+                cls(small_map, **{name: object()})
+            checked += 1
+    assert checked >= 1

@@ -15,31 +15,46 @@ namespace mlndt {
 namespace tools {
 namespace {
 
+// The naming rules below are function-local statics: OptionFlags() may be
+// first called while another file's flags are registered at
+// static-initialisation time (table_flags.h), before this file's statics.
 // Fields whose flag is not their name.
-const std::map<std::string, std::string> kRenamed = {
-    {"sampling.method", "sampling"},
-    {"backend.type", "backend"},
-    {"quality_check.enabled", "quality_check"}};
+const std::map<std::string, std::string>& Renamed() {
+  static const std::map<std::string, std::string> renamed = {
+      {"sampling.method", "sampling"},
+      {"backend.type", "backend"},
+      {"quality_check.enabled", "quality_check"}};
+  return renamed;
+}
 // Nested structs whose fields' flags get a prefix.
-const std::vector<std::pair<std::string, std::string>> kPrefixes = {
-    {"backend.newton.", "newton_"},
-    {"newton.", "newton_"},
-    {"backend.levenberg_marquardt.", "lm_"}};
+const std::vector<std::pair<std::string, std::string>>& Prefixes() {
+  static const std::vector<std::pair<std::string, std::string>> prefixes = {
+      {"backend.newton.", "newton_"},
+      {"newton.", "newton_"},
+      {"backend.levenberg_marquardt.", "lm_"}};
+  return prefixes;
+}
 // NdtOptions' own fields: their flags are --ndt_<name>.
-const std::set<std::string> kNdtOwn = {"cell_size_m",
-                                       "outlier_ratio",
-                                       "neighbors",
-                                       "max_iterations",
-                                       "max_step_norm"};
+const std::set<std::string>& NdtOwn() {
+  static const std::set<std::string> own = {"cell_size_m",
+                                            "outlier_ratio",
+                                            "neighbors",
+                                            "max_iterations",
+                                            "max_step_norm"};
+  return own;
+}
 // Structs without flags.
-const std::set<std::string> kNoFlags = {"initial_uncertainty"};
+const std::set<std::string>& NoFlags() {
+  static const std::set<std::string> none = {"initial_uncertainty"};
+  return none;
+}
 
 std::string FlagName(const std::string& path, bool ndt) {
-  const auto renamed = kRenamed.find(path);
-  if (renamed != kRenamed.end()) return renamed->second;
-  if (ndt && kNdtOwn.count(path) > 0) return "ndt_" + path;
+  const auto renamed = Renamed().find(path);
+  if (renamed != Renamed().end()) return renamed->second;
+  if (ndt && NdtOwn().count(path) > 0) return "ndt_" + path;
   const std::string leaf = path.substr(path.rfind('.') + 1);
-  for (const auto& [prefix, flag_prefix] : kPrefixes) {
+  for (const auto& [prefix, flag_prefix] : Prefixes()) {
     if (path.rfind(prefix, 0) == 0) return flag_prefix + leaf;
   }
   return leaf;
@@ -52,7 +67,7 @@ void Collect(const OptionTable& table,
   for (const OptionField& field : table.fields()) {
     const std::string path = prefix + field.name;
     if (field.type == OptionType::STRUCT) {
-      if (kNoFlags.count(path) == 0) {
+      if (NoFlags().count(path) == 0) {
         Collect(*field.nested, path + ".", ndt, flags);
       }
       continue;
@@ -89,56 +104,46 @@ std::string HelpText(const OptionFlag& flag) {
   return help;
 }
 
-// Registers the flags with gflags at static-initialisation time (what the
-// DEFINE_ macros do), with storage that lives as long as the program.
-class FlagRegistry {
+// The flags' storage, which lives as long as the program.
+class FlagStore {
  public:
-  FlagRegistry() {
-    std::vector<std::string> aliases;
-    for (const OptionFlag& flag : OptionFlags()) {
-      Register(flag.name, HelpText(flag), flag.field->type, DefaultText(flag));
-    }
-    for (const auto& [alias, name] : FlagAliases()) {
-      const OptionFlag& flag = *FlagOfName(name);
-      Register(alias,
-               "Deprecated name of --" + name + ".",
-               flag.field->type,
-               DefaultText(flag));
-      RegisterFlagAlias(alias, name);
-      aliases.push_back(alias);
-    }
-    // The old names work but --help lists only the new ones.
-    HideFlagsFromHelp(aliases);
-  }
-
- private:
-  template <typename T>
-  void Add(const char* name, const char* help, std::deque<T>* store, T v) {
-    store->push_back(v);
-    T* current = &store->back();
-    store->push_back(v);
-    new gflags::FlagRegisterer(name, help, __FILE__, current, &store->back());
-  }
-
   void Register(const std::string& name,
                 const std::string& help,
+                const char* file,
                 OptionType type,
                 const std::string& value) {
     const char* n = strings_.emplace_back(name).c_str();
     const char* h = strings_.emplace_back(help).c_str();
     switch (type) {
       case OptionType::BOOL:
-        return Add(n, h, &bools_, value == "true");
+        return Add(n, h, file, &bools_, value == "true");
       case OptionType::INT:
-        return Add(n, h, &ints_, static_cast<gflags::int32>(std::stoi(value)));
-      case OptionType::UINT64:
         return Add(
-            n, h, &uints_, static_cast<gflags::uint64>(std::stoull(value)));
+            n, h, file, &ints_, static_cast<gflags::int32>(std::stoi(value)));
+      case OptionType::UINT64:
+        return Add(n,
+                   h,
+                   file,
+                   &uints_,
+                   static_cast<gflags::uint64>(std::stoull(value)));
       case OptionType::DOUBLE:
-        return Add(n, h, &doubles_, std::stod(value));
+        return Add(n, h, file, &doubles_, std::stod(value));
       default:
-        return Add(n, h, &texts_, value);
+        return Add(n, h, file, &texts_, value);
     }
+  }
+
+ private:
+  template <typename T>
+  void Add(const char* name,
+           const char* help,
+           const char* file,
+           std::deque<T>* store,
+           T v) {
+    store->push_back(v);
+    T* current = &store->back();
+    store->push_back(v);
+    new gflags::FlagRegisterer(name, help, file, current, &store->back());
   }
 
   std::deque<std::string> strings_;
@@ -149,9 +154,46 @@ class FlagRegistry {
   std::deque<std::string> texts_;
 };
 
+// Registers the shared flags with gflags at static-initialisation time
+// (what the DEFINE_ macros do).
+class FlagRegistry {
+ public:
+  FlagRegistry() {
+    std::vector<std::string> aliases;
+    for (const OptionFlag& flag : OptionFlags()) {
+      RegisterOptionFlag(flag.name,
+                         HelpText(flag),
+                         __FILE__,
+                         flag.field->type,
+                         DefaultText(flag));
+    }
+    for (const auto& [alias, name] : FlagAliases()) {
+      const OptionFlag& flag = *FlagOfName(name);
+      RegisterOptionFlag(alias,
+                         "Deprecated name of --" + name + ".",
+                         __FILE__,
+                         flag.field->type,
+                         DefaultText(flag));
+      RegisterFlagAlias(alias, name);
+      aliases.push_back(alias);
+    }
+    // The old names work but --help lists only the new ones.
+    HideFlagsFromHelp(aliases);
+  }
+};
+
 const FlagRegistry kRegistry;
 
 }  // namespace
+
+void RegisterOptionFlag(const std::string& name,
+                        const std::string& help,
+                        const char* file,
+                        OptionType type,
+                        const std::string& default_text) {
+  static FlagStore store;
+  store.Register(name, help, file, type, default_text);
+}
 
 const std::vector<OptionFlag>& OptionFlags() {
   static const std::vector<OptionFlag> flags = [] {

@@ -5,6 +5,7 @@
 #include "mlndt/ndt/ndt_registration.h"
 #include "mlndt/registration/registration_options.h"
 #include "tools/common/option_flags.h"
+#include "tools/common/tool_table_flags.h"
 
 namespace mlndt {
 namespace tools {
@@ -55,6 +56,61 @@ std::string Cell(const std::string& text) {
   return out;
 }
 
+// "--flag" of a tool table's field, or what sets it.
+std::string ToolFlagCell(const TableFlags& flags, const OptionField& field) {
+  const std::string flag = flags.FlagOf(field.name);
+  if (!flag.empty()) return "`--" + flag + "`";
+  for (const auto& [name, tool_flag] : flags.set_by_tool_flag()) {
+    if (name == field.name) return "(`--" + tool_flag + "`)";
+  }
+  return "";
+}
+
+// The tools' own option tables (tool_table_flags.h), one section each.
+std::string ToolOptionsMarkdown() {
+  std::ostringstream out;
+  out << "\n## Options of one tool\n\n"
+         "Made from the option tables of the structs a tool fills beside "
+         "the registration's;\nthe flag is the field's name (or another where "
+         "the field's name is a registration\nflag). A flag in parentheses "
+         "sets the field in another unit.\n";
+  for (const TableFlags* flags : ToolTableFlags()) {
+    const OptionTable& table = flags->table();
+    out << "\n### " << table.struct_name() << " (" << flags->tool()
+        << ")\n\n| flag | field | type | default | unit | valid values | "
+           "help |\n|---|---|---|---|---|---|---|\n";
+    for (const OptionField& field : table.fields()) {
+      out << "| " << ToolFlagCell(*flags, field) << " | " << field.name << " | "
+          << TypeName(field.type) << " | "
+          << Cell(field.Format(table.defaults())) << " | " << field.unit
+          << " | " << Cell(RangeText(field)) << " | " << Cell(field.help)
+          << " |\n";
+    }
+  }
+  return out.str();
+}
+
+Json ToolOptionsJson() {
+  Json tables = Json::array();
+  for (const TableFlags* flags : ToolTableFlags()) {
+    const OptionTable& table = flags->table();
+    Json rows = Json::array();
+    for (const OptionField& field : table.fields()) {
+      rows.push_back({{"flag", flags->FlagOf(field.name)},
+                      {"field", field.name},
+                      {"type", TypeName(field.type)},
+                      {"default", field.Format(table.defaults())},
+                      {"unit", field.unit},
+                      {"range", RangeText(field)},
+                      {"help", field.help}});
+    }
+    tables.push_back({{"struct", table.struct_name()},
+                      {"tool", flags->tool()},
+                      {"options", rows}});
+  }
+  return tables;
+}
+
 }  // namespace
 
 std::string OptionsMarkdown() {
@@ -92,7 +148,7 @@ std::string OptionsMarkdown() {
     out << (first ? "" : ", ") << "`--" << alias << "` = `--" << name << "`";
     first = false;
   }
-  out << ".\n";
+  out << ".\n" << ToolOptionsMarkdown();
   return out.str();
 }
 
@@ -111,7 +167,9 @@ Json OptionsJson() {
   }
   Json aliases = Json::object();
   for (const auto& [alias, name] : FlagAliases()) aliases[alias] = name;
-  return {{"options", rows}, {"aliases", aliases}};
+  return {{"options", rows},
+          {"aliases", aliases},
+          {"tool_options", ToolOptionsJson()}};
 }
 
 }  // namespace tools

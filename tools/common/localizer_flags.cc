@@ -1,0 +1,19 @@
+#include "tools/common/localizer_flags.h"
+
+#include "mlndt/pipeline/pipeline_option_tables.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+const TableFlags kLocalizerFlags(LocalizerOwnOptionsTable(),
+                                 "mlndt_localize",
+                                 {},
+                                 {});
+
+}  // namespace
+
+const TableFlags& LocalizerFlags() { return kLocalizerFlags; }
+
+}  // namespace tools
+}  // namespace mlndt

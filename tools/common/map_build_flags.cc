@@ -1,0 +1,19 @@
+#include "tools/common/map_build_flags.h"
+
+#include "mlndt/pipeline/pipeline_option_tables.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+const TableFlags kMapBuildFlags(MapBuildOwnOptionsTable(),
+                                "mlndt_map",
+                                {{"voxel_size_m", "voxel_size"}},
+                                {{"max_memory_bytes", "max_memory_gb"}});
+
+}  // namespace
+
+const TableFlags& MapBuildFlags() { return kMapBuildFlags; }
+
+}  // namespace tools
+}  // namespace mlndt

@@ -1,0 +1,14 @@
+#include "tools/common/tool_table_flags.h"
+
+#include "tools/common/localizer_flags.h"
+#include "tools/common/map_build_flags.h"
+
+namespace mlndt {
+namespace tools {
+
+std::vector<const TableFlags*> ToolTableFlags() {
+  return {&MapBuildFlags(), &LocalizerFlags()};
+}
+
+}  // namespace tools
+}  // namespace mlndt
