@@ -24,15 +24,6 @@ bool ParseSuiteDatasets(const std::string& text,
                         std::vector<SuiteDataset>* datasets,
                         std::string* error);
 
-// A data set ready to run.
-struct LoadedSuiteDataset {
-  SuiteDataset dataset;
-  std::map<std::string, ReferencePair> pairs;  // reference_pairs.json.
-  std::vector<SuiteRun> runs;                  // PlanDatasetRuns.
-  SuiteSkips skips;
-  std::map<int64_t, std::string> scan_paths;  // Every scan the runs read.
-};
-
 // Reads dir/reference_pairs.json, plans the runs and finds the file of
 // every scan they read (FindScanFile). False with *error naming the data
 // set and the problem.

@@ -1,14 +1,12 @@
-#include "tools/common/suite_run.h"
+#include "lab/runs/suite_run.h"
 
 #include <chrono>
 #include <cstdio>
 
 #include "lab/report/progress.h"
 #include "lab/report/text_format.h"
-#include "tools/common/suite_output.h"
 
 namespace mlndt {
-namespace tools {
 
 std::string SuitePlanText(const std::vector<LoadedSuiteDataset>& datasets) {
   std::string out;
@@ -89,5 +87,4 @@ SuiteScore ScoreLoadedSuite(
       names, plan.starts, plan.offsets, skips, outcomes, reach_share);
 }
 
-}  // namespace tools
 }  // namespace mlndt

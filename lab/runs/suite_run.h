@@ -6,13 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/suite_plan.h"
 #include "lab/eval/suite_score.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/suite_runner.h"
-#include "tools/common/suite_inputs.h"
 
 namespace mlndt {
-namespace tools {
 
 // One line per data set (folder, pairs, runs, scans, tolerance) and the
 // total.
@@ -34,5 +33,4 @@ SuiteScore ScoreLoadedSuite(
     double reach_share,
     size_t* runs);
 
-}  // namespace tools
 }  // namespace mlndt
