@@ -1,7 +1,8 @@
 #pragma once
 
-// Running mlndt_suite's data sets one after the other with a progress line
-// (and its ETA) on stderr, and the lines that say what will run.
+// Loading mlndt_suite's data sets, running them one after the other with a
+// progress line (and its ETA) on stderr, the lines that say what will run,
+// and their score.
 
 #include <string>
 #include <vector>
@@ -12,6 +13,16 @@
 #include "lab/runs/suite_runner.h"
 
 namespace mlndt {
+
+// Reads dataset.dir/reference_pairs.json, plans the runs (PlanDatasetRuns;
+// `index` is the data set's place in the suite) and finds the file of every
+// scan they read (FindScanFile). False with *error naming the folder, file
+// or pair and the problem.
+bool LoadSuiteDataset(const SuiteDataset& dataset,
+                      size_t index,
+                      const SuitePlanOptions& plan,
+                      LoadedSuiteDataset* loaded,
+                      std::string* error);
 
 // One line per data set (folder, pairs, runs, scans, tolerance) and the
 // total.

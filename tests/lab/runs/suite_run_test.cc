@@ -1,13 +1,15 @@
-// Running and scoring loaded suite data sets (lab/runs/suite_run.h) on the
-// bundled koide3 and room pairs: the plan's lines, one result per planned
-// run in order, a start 50 m off never right (nor reported CONVERGENCE),
-// the score counting the same runs, and an unreadable scan refused with the
-// data set's name.
+// Loading, running and scoring suite data sets (lab/runs/suite_run.h) on
+// the bundled koide3 and room pairs: the runs planned and their scans found
+// (a missing folder or reference file named), the plan's lines, one result per
+// planned run in order, a start 50 m off never right (nor reported
+// CONVERGENCE), the score counting the same runs, and an unreadable scan
+// refused with the data set's name.
 
 #include "lab/runs/suite_run.h"
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,27 +27,45 @@ SuitePlanOptions Plan() {
   return plan;
 }
 
-// What tools/common/suite_inputs.h LoadSuiteDataset does, with lab calls.
 LoadedSuiteDataset Load(const std::string& name,
                         size_t index,
                         const SuitePlanOptions& plan) {
+  SuiteDataset dataset;
+  dataset.name = name;
+  dataset.dir = testing::BundledDataPath(name);
   LoadedSuiteDataset set;
-  set.dataset.name = name;
-  set.dataset.dir = testing::BundledDataPath(name);
   std::string error;
-  EXPECT_TRUE(ReadReferencePairs(
-      set.dataset.dir + "/reference_pairs.json", &set.pairs, &error))
-      << error;
-  DatasetScanFiles files;
-  EXPECT_TRUE(ListDatasetScanFiles(set.dataset.dir, &files, &error)) << error;
-  set.runs = PlanDatasetRuns(plan, index, name, set.pairs, &set.skips);
-  for (const SuiteRun& run : set.runs) {
-    for (const int64_t number : {run.reference_index, run.input_index}) {
-      EXPECT_TRUE(FindScanFile(files, number, &set.scan_paths[number], &error))
-          << error;
-    }
-  }
+  EXPECT_TRUE(LoadSuiteDataset(dataset, index, plan, &set, &error)) << error;
   return set;
+}
+
+TEST(LoadSuiteDataset, PlansTheRunsAndFindsTheirScans) {
+  const LoadedSuiteDataset set = Load("koide3", 3, Plan());
+  EXPECT_EQ(set.dataset.name, "koide3");
+  ASSERT_EQ(set.pairs.size(), 1u);
+  ASSERT_EQ(set.runs.size(), 2u);  // Identity and x = 50 m.
+  EXPECT_EQ(set.runs[0].dataset, 3u);
+  EXPECT_EQ(set.runs[0].pair_key, "251370668_251371071");
+  EXPECT_EQ(set.runs[1].start, "x=50");
+  EXPECT_EQ(
+      set.scan_paths,
+      (std::map<int64_t, std::string>{
+          {251370668, testing::BundledDataPath("koide3/251370668.pcd")},
+          {251371071, testing::BundledDataPath("koide3/251371071.pcd")}}));
+}
+
+TEST(LoadSuiteDataset, NamesAMissingFolderOrReferenceFile) {
+  SuiteDataset dataset;
+  dataset.name = "missing";
+  dataset.dir = testing::BundledDataPath("missing");
+  LoadedSuiteDataset set;
+  std::string error;
+  EXPECT_FALSE(LoadSuiteDataset(dataset, 0, Plan(), &set, &error));
+  EXPECT_EQ(error, dataset.dir + ": not a folder");
+  // kitti/pcd holds scans but no reference_pairs.json.
+  dataset.dir = testing::BundledDataPath("kitti/pcd");
+  EXPECT_FALSE(LoadSuiteDataset(dataset, 0, Plan(), &set, &error));
+  EXPECT_NE(error.find("reference_pairs.json"), std::string::npos) << error;
 }
 
 TEST(SuitePlanText, NamesEveryDataSetAndTheTotal) {
