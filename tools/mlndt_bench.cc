@@ -28,10 +28,10 @@
 #include <vector>
 
 #include "lab/bench/bench.h"
+#include "lab/bench/bench_plot.h"
 #include "lab/bench/bench_report.h"
 #include "lab/report/gnuplot.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/common/bench_plot.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/tool_main.h"
@@ -197,7 +197,7 @@ int Run() {
       (FLAGS_output_csv.empty() ||
        WriteFileAtomically(FLAGS_output_csv, BenchCsvText(result), &error)) &&
       (FLAGS_output_plot.empty() ||
-       tools::WriteBenchPlot(
+       WriteBenchPlot(
            FLAGS_gnuplot, FLAGS_output_plot, BenchPlotPoints(result), &error));
   if (!written) {
     std::cerr << "mlndt_bench: " << error << std::endl;

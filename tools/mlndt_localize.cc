@@ -191,8 +191,7 @@ int Run() {
           &error)) {
     return tools::Fail(kTool, error);
   }
-  const tools::VerdictCounts verdicts =
-      tools::PrintLocalizationTable(paths, results);
+  const VerdictCounts verdicts = tools::PrintLocalizationTable(paths, results);
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
   if (FLAGS_plots) {
     if (!gnuplot_ok) {

@@ -202,14 +202,14 @@ int Run() {
       options, &input, &results, &summary, &error);
   if (!ok) return tools::Fail(kTool, error);
 
-  tools::OdometryMetrics metrics;
+  OdometryMetrics metrics;
   const bool has_metrics = !reference.empty();
   if (has_metrics &&
-      !tools::ComputeOdometryMetrics(
+      !ComputeOdometryMetrics(
           reference, results, FLAGS_rpe_delta, lengths, &metrics, &error)) {
     return tools::Fail(kTool, "metrics: " + error);
   }
-  const tools::OdometryMetrics* m = has_metrics ? &metrics : nullptr;
+  const OdometryMetrics* m = has_metrics ? &metrics : nullptr;
   if (!tools::WriteOdometryFiles(FLAGS_output_dir, input, results, &error) ||
       !tools::WriteJsonFile(FLAGS_output_dir + "/summary.json",
                             tools::OdometrySummaryJson(summary, results, m),

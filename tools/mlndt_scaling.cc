@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "lab/experiments/scaling_measure.h"
+#include "lab/experiments/scaling_report.h"
 #include "lab/report/gnuplot.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/merged_cloud.h"
@@ -54,7 +55,7 @@
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/registration_flags.h"
-#include "tools/common/scaling_report.h"
+#include "tools/common/scaling_output.h"
 #include "tools/common/tool_main.h"
 
 // clang-format off
@@ -121,7 +122,7 @@ int WriteOutputs(const MatcherOptions& options,
                  bool gnuplot_ok) {
   const std::string dir = FLAGS_output_dir;
   std::string error;
-  if (!tools::WriteScalingCsv(dir + "/scaling.csv", results, &error)) {
+  if (!WriteScalingCsv(dir + "/scaling.csv", results, &error)) {
     return tools::Fail(kTool, error);
   }
   std::printf("\noutput: %s/scaling.csv", dir.c_str());
@@ -132,16 +133,15 @@ int WriteOutputs(const MatcherOptions& options,
         "scaling.png skipped: gnuplot ('" + FLAGS_gnuplot +
             "') not found; scaling.csv is written. Install gnuplot-nox");
   }
-  if (!tools::WriteScalingPlot(
-          FLAGS_gnuplot,
-          dir,
-          tools::ScalingPlotTitle(FLAGS_repetitions,
-                                  options.method,
-                                  tools::FlagText("backend"),
-                                  tools::FlagText("sampling")),
-          results,
-          slopes,
-          &error)) {
+  if (!WriteScalingPlot(FLAGS_gnuplot,
+                        dir,
+                        ScalingPlotTitle(FLAGS_repetitions,
+                                         options.method,
+                                         tools::FlagText("backend"),
+                                         tools::FlagText("sampling")),
+                        results,
+                        slopes,
+                        &error)) {
     return tools::Fail(kTool, error);
   }
   std::printf(", scaling.gp, scaling.png\n");
@@ -203,12 +203,12 @@ int Run() {
               merged.size(),
               num_scans,
               FLAGS_scans.c_str(),
-              tools::ScalingRunLine(options.method,
-                                    tools::FlagText("backend"),
-                                    tools::FlagText("sampling"),
-                                    tools::IntFlag("num_threads"),
-                                    FLAGS_motion,
-                                    FLAGS_repetitions)
+              ScalingRunLine(options.method,
+                             tools::FlagText("backend"),
+                             tools::FlagText("sampling"),
+                             tools::IntFlag("num_threads"),
+                             FLAGS_motion,
+                             FLAGS_repetitions)
                   .c_str());
   tools::PrintScalingTable(results);
   const std::vector<double> slopes = tools::PrintScalingSlopes(sizes, results);

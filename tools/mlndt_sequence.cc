@@ -66,7 +66,7 @@
 #include "tools/common/scan_input.h"
 #include "tools/common/sequence_inputs.h"
 #include "tools/common/sequence_output.h"
-#include "tools/common/sequence_plots.h"
+#include "tools/common/sequence_plot_list.h"
 #include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 

@@ -35,6 +35,7 @@
 
 #include "lab/eval/suite_report.h"
 #include "lab/report/gnuplot.h"
+#include "lab/runs/suite_run.h"
 #include "lab/runs/suite_runner.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/list_flags.h"
@@ -42,7 +43,6 @@
 #include "tools/common/registration_flags.h"
 #include "tools/common/suite_inputs.h"
 #include "tools/common/suite_output.h"
-#include "tools/common/suite_run.h"
 #include "tools/common/tool_main.h"
 
 // clang-format off
@@ -180,7 +180,7 @@ int Run() {
   SuiteConfig config;
   std::string error;
   if (!ParseConfig(&config, &error)) return tools::Refuse(kTool, error);
-  std::vector<tools::LoadedSuiteDataset> loaded;
+  std::vector<LoadedSuiteDataset> loaded;
   if (!tools::LoadSuiteDatasets(
           config.datasets, config.plan, &loaded, &error)) {
     return tools::Refuse(kTool, error);
@@ -192,17 +192,17 @@ int Run() {
                                       &error)) {
     return tools::Refuse(kTool, error);
   }
-  std::printf("%s", tools::SuitePlanText(loaded).c_str());
+  std::printf("%s", SuitePlanText(loaded).c_str());
   std::fflush(stdout);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<SuiteRunResult>> results;
-  if (!tools::RunSuiteWithProgress(config.matcher, loaded, &results, &error)) {
+  if (!RunSuiteWithProgress(config.matcher, loaded, &results, &error)) {
     return tools::Fail(kTool, error);
   }
 
   size_t runs = 0;
-  const SuiteScore score = tools::ScoreLoadedSuite(
-      loaded, results, config.plan, FLAGS_reach_share, &runs);
+  const SuiteScore score =
+      ScoreLoadedSuite(loaded, results, config.plan, FLAGS_reach_share, &runs);
   tools::SuiteRunInfo info;
   info.method = MethodToString(config.matcher.method);
   info.wall_time_s =

@@ -179,4 +179,14 @@ std::vector<SuiteRun> PlanDatasetRuns(
     const std::map<std::string, ReferencePair>& pairs,
     SuiteSkips* skips);
 
+// A data set ready to run (tools/common/suite_inputs.h LoadSuiteDataset
+// reads one).
+struct LoadedSuiteDataset {
+  SuiteDataset dataset;
+  std::map<std::string, ReferencePair> pairs;  // reference_pairs.json.
+  std::vector<SuiteRun> runs;                  // PlanDatasetRuns.
+  SuiteSkips skips;
+  std::map<int64_t, std::string> scan_paths;  // Every scan the runs read.
+};
+
 }  // namespace mlndt

@@ -9,6 +9,7 @@
 #include <glog/logging.h>
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -43,29 +44,45 @@ TEST(HandWrittenBackendDeathTest, StageBeforeSetProblemNamesTheBackend) {
                "LevenbergMarquardtBackend: SetProblem first");
 }
 
+// The stride and thread counts of the Newton backend's stage; the
+// minimiser runs on the same threads.
+struct StrideCase {
+  int stride;
+  int threads;
+};
+
+void PrintTo(const StrideCase& c, std::ostream* os) {
+  *os << "stride " << c.stride << ", " << c.threads << " thread(s)";
+}
+
+class NewtonStride : public ::testing::TestWithParam<StrideCase> {};
+
 // Catches: a shell that ignores point_stride, thins from another offset or
-// hands the minimiser another objective than MlNdtObjective.
-TEST(HandWrittenBackend, NewtonStrideMatchesMinimizeOnThinnedPoints) {
+// with another stride, or hands the minimiser another objective than
+// MlNdtObjective.
+TEST_P(NewtonStride, MatchesMinimizeNewtonOnThinnedPoints) {
+  const StrideCase c = GetParam();
   const StreetPair& street = Street();
   const NdtLayer& layer = street.map.layer(street.map.num_layers() - 1);
   const ObjectiveOptions objective;
   StageControl control = Control(6);
-  control.point_stride = 4;
+  control.point_stride = c.stride;
 
   NewtonBackend backend{NewtonOptions()};
-  backend.SetProblem(street.input, objective, 2);
+  backend.SetProblem(street.input, objective, c.threads);
   Vector6d strided = Vector6d::Zero();
   StageSummary strided_summary;
   backend.SolveStage(layer, control, &strided, &strided_summary);
 
   std::vector<Eigen::Vector3d> thinned;
-  for (size_t i = 0; i < street.input.size(); i += 4) {
+  for (size_t i = 0; i < street.input.size();
+       i += static_cast<size_t>(c.stride)) {
     thinned.push_back(street.input[i]);
   }
   control.point_stride = 1;
   Vector6d direct = Vector6d::Zero();
   StageSummary direct_summary;
-  MinimizeNewton(MlNdtObjective(layer, thinned, objective, 2),
+  MinimizeNewton(MlNdtObjective(layer, thinned, objective, c.threads),
                  NewtonOptions(),
                  control,
                  &direct,
@@ -75,9 +92,20 @@ TEST(HandWrittenBackend, NewtonStrideMatchesMinimizeOnThinnedPoints) {
       << strided_summary.message;
   EXPECT_GT(strided.head<3>().norm(), 0.1);  // The stage moved the pose.
   EXPECT_EQ(strided, direct);
+  EXPECT_EQ(strided_summary.final_score, direct_summary.final_score);
+  EXPECT_EQ(strided_summary.iterations(), direct_summary.iterations());
   EXPECT_EQ(strided_summary.trace.size(), direct_summary.trace.size());
   EXPECT_EQ(strided_summary.message, direct_summary.message);
 }
+
+INSTANTIATE_TEST_SUITE_P(HandWrittenBackend,
+                         NewtonStride,
+                         ::testing::Values(StrideCase{2, 1}, StrideCase{4, 2}),
+                         [](const ::testing::TestParamInfo<StrideCase>& info) {
+                           return "stride" + std::to_string(info.param.stride) +
+                                  "_threads" +
+                                  std::to_string(info.param.threads);
+                         });
 
 }  // namespace
 }  // namespace mlndt

@@ -1,7 +1,8 @@
 // MinimizeNewton on synthetic objectives whose minimum is known analytically
 // (the pattern of ceres' dogleg_strategy_test.cc: a Hessian Q diag(d) Q^T in
 // a random orthonormal basis Q, so that nothing is axis-aligned), and the
-// NewtonBackend on a real layer. Each test names the wrong implementation it
+// NewtonBackend on a real layer (its point stride is tested with the shell,
+// hand_written_backend_test.cc). Each test names the wrong implementation it
 // catches.
 
 #include "mlndt/solvers/newton_backend.h"
@@ -407,43 +408,6 @@ TEST(NewtonOptions, IsValidRanges) {
 }
 
 using testing::Street;
-using testing::StreetPair;
-
-// Catches: a backend that ignores point_stride, thins from another offset or
-// with another stride, or minimises another objective than MlNdtObjective.
-TEST(NewtonBackend, PointStrideMatchesMinimizeNewtonOnThinnedPoints) {
-  const StreetPair& street = Street();
-  const NdtLayer& layer = street.map.layer(street.map.num_layers() - 1);
-  const ObjectiveOptions objective;
-  StageControl control = Control(6);
-  control.point_stride = 2;
-
-  NewtonBackend backend{NewtonOptions()};
-  backend.SetProblem(street.input, objective, 1);
-  Vector6d strided = Vector6d::Zero();
-  StageSummary strided_summary;
-  backend.SolveStage(layer, control, &strided, &strided_summary);
-
-  std::vector<Eigen::Vector3d> thinned;
-  for (size_t i = 0; i < street.input.size(); i += 2) {
-    thinned.push_back(street.input[i]);
-  }
-  Vector6d direct = Vector6d::Zero();
-  StageSummary direct_summary;
-  control.point_stride = 1;
-  MinimizeNewton(MlNdtObjective(layer, thinned, objective, 1),
-                 NewtonOptions(),
-                 control,
-                 &direct,
-                 &direct_summary);
-
-  ASSERT_NE(strided_summary.termination_type, TerminationType::FAILURE)
-      << strided_summary.message;
-  EXPECT_GT(strided.head<3>().norm(), 0.1);  // The stage moved the pose.
-  EXPECT_EQ(strided, direct);
-  EXPECT_EQ(strided_summary.final_score, direct_summary.final_score);
-  EXPECT_EQ(strided_summary.iterations(), direct_summary.iterations());
-}
 
 TEST(NewtonBackendDeathTest, StageBeforeSetProblemIsAProgrammingError) {
   const NdtLayer& layer = Street().map.layer(1);  // Built outside the child.

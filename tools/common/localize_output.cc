@@ -14,6 +14,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/map_memory.h"
 #include "tools/common/tool_utils.h"
+#include "tools/common/verdict_counts_json.h"
 
 namespace mlndt {
 namespace tools {
@@ -99,7 +100,7 @@ Json LocalizationSummaryJson(const LocalizerOptions& options,
   json["motion_model"] = MotionModelToString(options.motion_model);
   json["backend"] = BackendTypeToString(options.registration.backend.type);
   json["first_guess"] = PoseJson(first_guess);
-  json["terminations"] = verdicts.ToJson();
+  json["terminations"] = VerdictCountsJson(verdicts);
   json["usable"] = verdicts.usable();
   json["unusable"] = verdicts.unusable();
   json["unusable_pose"] =

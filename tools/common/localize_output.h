@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/verdict_counts.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/pipeline/localizer.h"
 #include "tools/common/json_output.h"
 #include "tools/common/scan_input.h"
-#include "tools/common/verdict_counts.h"
 
 namespace mlndt {
 namespace tools {

@@ -2,13 +2,13 @@
 
 // What mlndt_odometry writes: the trajectories (KITTI, and TUM stamped with
 // the scans' times), scans.csv (one row per scan with its verdict), the
-// trajectory metrics against a reference, and the top-view plot.
+// trajectory metrics against a reference (lab/eval/odometry_metrics.h), and
+// the top-view plot.
 
 #include <string>
 #include <vector>
 
-#include "lab/eval/kitti_segment_errors.h"
-#include "lab/eval/trajectory_metrics.h"
+#include "lab/eval/odometry_metrics.h"
 #include "mlndt/odometry/odometry.h"
 #include "tools/common/json_output.h"
 #include "tools/common/scan_input.h"
@@ -22,23 +22,6 @@ bool WriteOdometryFiles(const std::string& dir,
                         const ScanInput& input,
                         const std::vector<OdometryResult>& results,
                         std::string* error);
-
-// Errors against a reference of one world_from_sensor pose per scan: ATE
-// after an SE(3) alignment, RPE over `rpe_delta` scans, and the KITTI
-// devkit's segment errors over `lengths_m`.
-struct OdometryMetrics {
-  AteSummary ate;
-  int rpe_delta = 1;
-  RpeSummary rpe;
-  KittiSegmentSummary segments;
-};
-
-bool ComputeOdometryMetrics(const std::vector<Isometry3d>& reference,
-                            const std::vector<OdometryResult>& results,
-                            int rpe_delta,
-                            const std::vector<double>& lengths_m,
-                            OdometryMetrics* metrics,
-                            std::string* error);
 
 // summary.json: verdict counts, times per scan and, when given, metrics.
 Json OdometrySummaryJson(const OdometrySummary& summary,

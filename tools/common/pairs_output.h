@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include "lab/eval/verdict_counts.h"
 #include "lab/experiments/gap_pairs.h"
-#include "tools/common/verdict_counts.h"
 
 namespace mlndt {
 namespace tools {

@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "mlndt/cloud/pose_io.h"
-#include "tools/common/posegraph_metrics.h"
+#include "tools/common/posegraph_metrics_json.h"
 
 namespace mlndt {
 namespace tools {

@@ -11,7 +11,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/verdict_counts.h"
+#include "tools/common/verdict_counts_json.h"
 
 namespace mlndt {
 namespace tools {
@@ -135,7 +135,7 @@ Json SummaryJson(const Json& header, const std::vector<PairResult>& results) {
            {"termination", TerminationTypeToString(r.termination)}});
     }
   }
-  o["terminations"] = verdicts.ToJson();
+  o["terminations"] = VerdictCountsJson(verdicts);
   o["usable_pairs"] = verdicts.usable();
   o["unusable_pairs"] = verdicts.unusable();
   o["unusable_pair_list"] = unusable;

@@ -4,7 +4,7 @@
 // summary.json and trace.csv, and the totals on stdout. The summary's numbers
 // are computed from the same values pairs.csv holds (ComputeTotals,
 // pipeline/sequence_totals.h), printed with 10 significant digits in both.
-// Figures: sequence_plots.h.
+// Figures: lab/report/sequence_plots.h.
 
 #include <string>
 #include <vector>

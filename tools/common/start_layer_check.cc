@@ -1,7 +1,7 @@
 #include "tools/common/start_layer_check.h"
 
 #include "mlndt/cloud/range_filter.h"
-#include "mlndt/grid/layered_grid.h"
+#include "mlndt/grid/map_memory.h"
 #include "tools/common/flag_utils.h"
 
 namespace mlndt {
@@ -41,16 +41,30 @@ bool CheckStartLayerBeforeMap(const RegistrationOptions& options,
                       error);
 }
 
+bool ReferenceMapNumLayers(const RegistrationOptions& options,
+                           const PointCloud& reference,
+                           int* num_layers,
+                           std::string* error) {
+  const PointCloud kept =
+      FilterByRange(options.range_filter, reference, nullptr);
+  MapMemoryEstimate estimate;
+  if (!EstimateMapMemory(options.grid, kept, 0, &estimate, error)) {
+    return false;
+  }
+  *num_layers = static_cast<int>(estimate.layers.size());
+  return true;
+}
+
 bool CheckStartLayerForReference(const RegistrationOptions& options,
                                  const PointCloud& reference,
                                  std::string* error) {
   if (!FlagGiven("start_layer")) return true;
-  const PointCloud kept =
-      FilterByRange(options.range_filter, reference, nullptr);
-  if (kept.empty()) return true;  // Register() reports it.
-  const int num_layers = static_cast<int>(
-      LayerCellSizes(options.grid, BoundingBox(kept).sizes()).size());
-  if (num_layers == 0) return true;  // Invalid options: IsValid reports them.
+  int num_layers = 0;
+  std::string refused;
+  // Register() reports a reference or options it refuses.
+  if (!ReferenceMapNumLayers(options, reference, &num_layers, &refused)) {
+    return true;
+  }
   return CheckAgainst(options.schedule.start_layer,
                       num_layers,
                       "the reference's map will have",

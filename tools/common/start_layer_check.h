@@ -20,10 +20,22 @@ namespace tools {
 bool CheckStartLayerBeforeMap(const RegistrationOptions& options,
                               std::string* error);
 
+// The layer count of the map Register() builds from `reference`: the
+// range filter, then the layers LayeredGrid::Build chooses, with its
+// coverage rule (LayeredGridOptions::min_covered_fraction lowers n while
+// too few points lie in finest cells that can hold a distribution,
+// mlndt/grid/cell_coverage.h), found by EstimateMapMemory without building
+// the map. False when Register() will refuse the reference or the options
+// (it reports why); *error then says so.
+bool ReferenceMapNumLayers(const RegistrationOptions& options,
+                           const PointCloud& reference,
+                           int* num_layers,
+                           std::string* error);
+
 // Once the reference is read, before the map is built: the layer count of
-// the map Register() will build from `reference` (range-filtered, then
-// LayerCellSizes over its bounding box). True when --start_layer was not
-// given.
+// the map Register() will build from it (ReferenceMapNumLayers). True when
+// --start_layer was not given, or when Register() will refuse the reference
+// itself.
 bool CheckStartLayerForReference(const RegistrationOptions& options,
                                  const PointCloud& reference,
                                  std::string* error);

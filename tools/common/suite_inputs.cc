@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "lab/report/gnuplot.h"
+#include "lab/runs/suite_run.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/list_flags.h"
 
@@ -79,47 +80,6 @@ bool ParseSuiteDatasets(const std::string& text,
   return true;
 }
 
-bool LoadSuiteDataset(const SuiteDataset& dataset,
-                      size_t index,
-                      const SuitePlanOptions& plan,
-                      LoadedSuiteDataset* loaded,
-                      std::string* error) {
-  *loaded = LoadedSuiteDataset();
-  loaded->dataset = dataset;
-  const std::string prefix = "--datasets '" + dataset.name + "': ";
-  std::error_code ec;
-  if (!fs::is_directory(dataset.dir, ec)) {
-    *error = prefix + dataset.dir + ": not a folder";
-    return false;
-  }
-  const std::string pairs_path =
-      (fs::path(dataset.dir) / "reference_pairs.json").string();
-  if (!ReadReferencePairs(pairs_path, &loaded->pairs, error)) {
-    *error = prefix + *error;
-    return false;
-  }
-  DatasetScanFiles files;
-  if (!ListDatasetScanFiles(dataset.dir, &files, error)) {
-    *error = prefix + *error;
-    return false;
-  }
-  loaded->runs =
-      PlanDatasetRuns(plan, index, dataset.name, loaded->pairs, &loaded->skips);
-  for (const SuiteRun& run : loaded->runs) {
-    for (const int64_t number : {run.reference_index, run.input_index}) {
-      if (loaded->scan_paths.count(number) > 0) continue;
-      std::string path;
-      if (!FindScanFile(files, number, &path, error)) {
-        *error =
-            prefix + dataset.dir + ": pair " + run.pair_key + ": " + *error;
-        return false;
-      }
-      loaded->scan_paths[number] = path;
-    }
-  }
-  return true;
-}
-
 bool HasStart(const SuitePlanOptions& plan, StartKind kind) {
   return std::find(plan.starts.begin(), plan.starts.end(), kind) !=
          plan.starts.end();
@@ -171,6 +131,7 @@ bool LoadSuiteDatasets(const std::vector<SuiteDataset>& datasets,
   loaded->assign(datasets.size(), LoadedSuiteDataset());
   for (size_t d = 0; d < datasets.size(); ++d) {
     if (!LoadSuiteDataset(datasets[d], d, plan, &(*loaded)[d], error)) {
+      *error = "--datasets '" + datasets[d].name + "': " + *error;
       return false;
     }
   }

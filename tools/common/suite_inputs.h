@@ -24,24 +24,6 @@ bool ParseSuiteDatasets(const std::string& text,
                         std::vector<SuiteDataset>* datasets,
                         std::string* error);
 
-// A data set ready to run.
-struct LoadedSuiteDataset {
-  SuiteDataset dataset;
-  std::map<std::string, ReferencePair> pairs;  // reference_pairs.json.
-  std::vector<SuiteRun> runs;                  // PlanDatasetRuns.
-  SuiteSkips skips;
-  std::map<int64_t, std::string> scan_paths;  // Every scan the runs read.
-};
-
-// Reads dir/reference_pairs.json, plans the runs and finds the file of
-// every scan they read (FindScanFile). False with *error naming the data
-// set and the problem.
-bool LoadSuiteDataset(const SuiteDataset& dataset,
-                      size_t index,
-                      const SuitePlanOptions& plan,
-                      LoadedSuiteDataset* loaded,
-                      std::string* error);
-
 // `plan` runs the start `kind`.
 bool HasStart(const SuitePlanOptions& plan, StartKind kind);
 
@@ -59,7 +41,8 @@ bool ParseBound(const char* flag,
                 double* rotation_deg,
                 std::string* error);
 
-// LoadSuiteDataset of every data set, in order.
+// LoadSuiteDataset (lab/runs/suite_run.h) of every data set, in order;
+// *error names the data set (--datasets 'NAME': ...).
 bool LoadSuiteDatasets(const std::vector<SuiteDataset>& datasets,
                        const SuitePlanOptions& plan,
                        std::vector<LoadedSuiteDataset>* loaded,

@@ -36,20 +36,9 @@ struct SuiteRunInfo {
 // the scored tables.
 Json SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info);
 
-// quality.png in `dir` (data and script in dir/plot_data): the share of
-// right and of wrong runs at or below each value of the inlier fraction and
-// of the mean score (empirical distribution curves), with the quality
-// check's thresholds as vertical lines (none when `check` is null: NDT).
-// Runs without a fit (no points evaluated) are left out.
-bool WriteSuiteQualityPlot(
-    const std::string& gnuplot,
-    const std::string& dir,
-    const std::vector<std::vector<SuiteRunResult>>& results,
-    const QualityCheckOptions* check,
-    std::string* error);
-
 // runs.csv and summary.json into `dir`, with `plot` quality.png
-// (WriteSuiteQualityPlot; `quality_check` as there), and the line naming
+// (WriteSuiteQualityPlot, lab/report/suite_quality_plot.h; `quality_check`
+// as there), and the line naming
 // them on stdout.
 bool WriteSuiteOutputs(const std::string& dir,
                        const std::vector<LoadedSuiteDataset>& loaded,

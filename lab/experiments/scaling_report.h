@@ -1,7 +1,9 @@
 #pragma once
 
-// What mlndt_scaling measures at one cloud size, and its reports: the
-// log-log slopes, scaling.csv and the gnuplot figure.
+// mlndt_scaling's reports of what it measured at every cloud size
+// (lab/experiments/scaling_measure.h): the log-log slopes, the markdown
+// table, scaling.csv and the gnuplot figure. The tool prints the texts
+// (tools/common/scaling_output.h).
 
 #include <string>
 #include <utility>
@@ -10,7 +12,6 @@
 #include "lab/experiments/scaling_measure.h"
 
 namespace mlndt {
-namespace tools {
 
 // Least-squares slope b of log(y) = a + b log(x); NaN with fewer than two
 // points or a non-positive value.
@@ -18,7 +19,7 @@ double LogLogSlope(const std::vector<double>& x, const std::vector<double>& y);
 
 // The quantities whose slopes are reported, by name, one value per size:
 // map, sampling, solve, total, sampled points, finest-layer cells.
-std::vector<std::pair<std::string, std::vector<double>>> Series(
+std::vector<std::pair<std::string, std::vector<double>>> ScalingSeries(
     const std::vector<SizeResult>& results);
 
 // scaling.csv: one row per size.
@@ -37,19 +38,28 @@ bool WriteScalingPlot(const std::string& gnuplot,
                       const std::vector<double>& slopes,
                       std::string* error);
 
-// The markdown table of the sizes on stdout.
-void PrintScalingTable(const std::vector<SizeResult>& results);
+// The markdown table of the sizes: one row per size, its last column "ok",
+// "FAILED" or "LARGE ERROR".
+std::string ScalingTableText(const std::vector<SizeResult>& results);
 
-// Prints the slope of every series and of the solve against the sampled
-// points; returns the series' slopes.
-std::vector<double> PrintScalingSlopes(const std::vector<size_t>& sizes,
-                                       const std::vector<SizeResult>& results);
+// The log-log slope (LogLogSlope against `sizes`) of every ScalingSeries, in
+// its order.
+std::vector<double> ScalingSlopes(const std::vector<size_t>& sizes,
+                                  const std::vector<SizeResult>& results);
 
-// Names on stderr every size whose solve failed or missed the motion by
-// more than the tolerances.
-void PrintBrokenSolves(const std::vector<SizeResult>& results,
-                       double max_translation_error_m,
-                       double max_rotation_error_deg);
+// The slope of every series (`slopes`, ScalingSlopes) and of the solve
+// against the sampled points, one line each after a heading.
+std::string ScalingSlopesText(const std::vector<size_t>& sizes,
+                              const std::vector<SizeResult>& results,
+                              const std::vector<double>& slopes);
+
+// One line per size whose solve failed or missed the motion by more than
+// the tolerances: "N = 4000: registration FAILED: ..." or "N = 4000:
+// recovered motion off by ...".
+std::vector<std::string> BrokenSolveLines(
+    const std::vector<SizeResult>& results,
+    double max_translation_error_m,
+    double max_rotation_error_deg);
 
 // "Registration time against cloud size (median of R runs; METHOD,
 // BACKEND, SAMPLING sampling)".
@@ -66,5 +76,4 @@ std::string ScalingRunLine(Method method,
                            const std::string& motion,
                            int repetitions);
 
-}  // namespace tools
 }  // namespace mlndt

@@ -1,18 +1,28 @@
 #pragma once
 
-// Running mlndt_suite's data sets one after the other with a progress line
-// (and its ETA) on stderr, and the lines that say what will run.
+// Loading mlndt_suite's data sets, running them one after the other with a
+// progress line (and its ETA) on stderr, the lines that say what will run,
+// and their score.
 
 #include <string>
 #include <vector>
 
+#include "lab/eval/suite_plan.h"
 #include "lab/eval/suite_score.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/suite_runner.h"
-#include "tools/common/suite_inputs.h"
 
 namespace mlndt {
-namespace tools {
+
+// Reads dataset.dir/reference_pairs.json, plans the runs (PlanDatasetRuns;
+// `index` is the data set's place in the suite) and finds the file of every
+// scan they read (FindScanFile). False with *error naming the folder, file
+// or pair and the problem.
+bool LoadSuiteDataset(const SuiteDataset& dataset,
+                      size_t index,
+                      const SuitePlanOptions& plan,
+                      LoadedSuiteDataset* loaded,
+                      std::string* error);
 
 // One line per data set (folder, pairs, runs, scans, tolerance) and the
 // total.
@@ -34,5 +44,4 @@ SuiteScore ScoreLoadedSuite(
     double reach_share,
     size_t* runs);
 
-}  // namespace tools
 }  // namespace mlndt

@@ -10,7 +10,6 @@
 #include "lab/bench/bench_pareto.h"
 
 namespace mlndt {
-namespace tools {
 
 // Writes png_path + ".dat" (one gnuplot index per set: time, error, front
 // 0/1, label; the front's points sorted by time) and png_path + ".gp", and
@@ -20,5 +19,4 @@ bool WriteBenchPlot(const std::string& gnuplot,
                     const std::vector<BenchPlotPoint>& points,
                     std::string* error);
 
-}  // namespace tools
 }  // namespace mlndt

@@ -1,7 +1,6 @@
-#include "tools/common/sequence_plots.h"
+#include "lab/report/sequence_plots.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <system_error>
@@ -12,7 +11,6 @@
 #include "mlndt/common/pose.h"
 
 namespace mlndt {
-namespace tools {
 namespace {
 
 // Where one figure's data and script lines go.
@@ -218,24 +216,4 @@ bool WriteSequencePlots(const std::string& gnuplot,
       gnuplot, data_dir + "/plots.gp", script.str(), figures, error);
 }
 
-bool WriteSequencePlotsAndList(const std::string& gnuplot,
-                               const std::string& dir,
-                               const std::vector<PairResult>& results,
-                               size_t step,
-                               int trace_pairs,
-                               std::string* error) {
-  std::vector<std::string> pngs;
-  if (!WriteSequencePlots(
-          gnuplot, dir, results, step, trace_pairs, &pngs, error)) {
-    return false;
-  }
-  std::printf("plots: ");
-  for (size_t k = 0; k < pngs.size(); ++k) {
-    std::printf("%s%s", k ? ", " : "", pngs[k].c_str());
-  }
-  std::printf("\n");
-  return true;
-}
-
-}  // namespace tools
 }  // namespace mlndt

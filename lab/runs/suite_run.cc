@@ -1,14 +1,49 @@
-#include "tools/common/suite_run.h"
+#include "lab/runs/suite_run.h"
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "lab/report/progress.h"
 #include "lab/report/text_format.h"
-#include "tools/common/suite_output.h"
 
 namespace mlndt {
-namespace tools {
+
+namespace fs = std::filesystem;
+
+bool LoadSuiteDataset(const SuiteDataset& dataset,
+                      size_t index,
+                      const SuitePlanOptions& plan,
+                      LoadedSuiteDataset* loaded,
+                      std::string* error) {
+  *loaded = LoadedSuiteDataset();
+  loaded->dataset = dataset;
+  std::error_code ec;
+  if (!fs::is_directory(dataset.dir, ec)) {
+    *error = dataset.dir + ": not a folder";
+    return false;
+  }
+  const std::string pairs_path =
+      (fs::path(dataset.dir) / "reference_pairs.json").string();
+  if (!ReadReferencePairs(pairs_path, &loaded->pairs, error)) return false;
+  DatasetScanFiles files;
+  if (!ListDatasetScanFiles(dataset.dir, &files, error)) return false;
+  loaded->runs =
+      PlanDatasetRuns(plan, index, dataset.name, loaded->pairs, &loaded->skips);
+  for (const SuiteRun& run : loaded->runs) {
+    for (const int64_t number : {run.reference_index, run.input_index}) {
+      if (loaded->scan_paths.count(number) > 0) continue;
+      std::string path;
+      if (!FindScanFile(files, number, &path, error)) {
+        *error = dataset.dir + ": pair " + run.pair_key + ": " + *error;
+        return false;
+      }
+      loaded->scan_paths[number] = path;
+    }
+  }
+  return true;
+}
 
 std::string SuitePlanText(const std::vector<LoadedSuiteDataset>& datasets) {
   std::string out;
@@ -89,5 +124,4 @@ SuiteScore ScoreLoadedSuite(
       names, plan.starts, plan.offsets, skips, outcomes, reach_share);
 }
 
-}  // namespace tools
 }  // namespace mlndt

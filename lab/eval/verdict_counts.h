@@ -1,8 +1,9 @@
 #pragma once
 
 // Results counted by verdict, for the printed summaries and summary.json of
-// the tools that run many registrations (mlndt_localize, mlndt_sequence):
-// one count per TerminationType (CONVERGENCE, NO_CONVERGENCE, LOW_QUALITY,
+// the tools that run many registrations (mlndt_localize, mlndt_sequence;
+// the JSON form is tools/common/verdict_counts_json.h): one count per
+// TerminationType (CONVERGENCE, NO_CONVERGENCE, LOW_QUALITY,
 // DEGENERATE, FAILURE; every key always present) and the usable ones by the
 // library's one definition (IsUsableTermination, mlndt/common/types.h). A
 // tool exits 1 when unusable() > 0.
@@ -12,13 +13,15 @@
 #include <string>
 
 #include "mlndt/common/types.h"
-#include "tools/common/json_output.h"
 
 namespace mlndt {
-namespace tools {
 
 class VerdictCounts {
  public:
+  // Every verdict in report order, usable first: CONVERGENCE,
+  // NO_CONVERGENCE, LOW_QUALITY, DEGENERATE, FAILURE.
+  static const std::array<TerminationType, 5>& Verdicts();
+
   void Add(TerminationType type);
 
   size_t count(TerminationType type) const;
@@ -29,8 +32,6 @@ class VerdictCounts {
   // "CONVERGENCE 3, NO_CONVERGENCE 0, LOW_QUALITY 5, DEGENERATE 0,
   // FAILURE 0".
   std::string Line() const;
-  // {"CONVERGENCE": 3, ..., "FAILURE": 0}, every verdict a key.
-  Json ToJson() const;
 
  private:
   std::array<size_t, 5> counts_{};
@@ -38,5 +39,4 @@ class VerdictCounts {
   size_t usable_ = 0;
 };
 
-}  // namespace tools
 }  // namespace mlndt

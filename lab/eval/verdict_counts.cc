@@ -1,7 +1,6 @@
-#include "tools/common/verdict_counts.h"
+#include "lab/eval/verdict_counts.h"
 
 namespace mlndt {
-namespace tools {
 namespace {
 
 // Every verdict, in report order: usable first.
@@ -20,6 +19,10 @@ size_t Index(TerminationType type) {
 }
 
 }  // namespace
+
+const std::array<TerminationType, 5>& VerdictCounts::Verdicts() {
+  return kVerdicts;
+}
 
 void VerdictCounts::Add(TerminationType type) {
   ++counts_[Index(type)];
@@ -41,13 +44,4 @@ std::string VerdictCounts::Line() const {
   return out;
 }
 
-Json VerdictCounts::ToJson() const {
-  Json json = Json::object();
-  for (size_t k = 0; k < kVerdicts.size(); ++k) {
-    json[TerminationTypeToString(kVerdicts[k])] = counts_[k];
-  }
-  return json;
-}
-
-}  // namespace tools
 }  // namespace mlndt

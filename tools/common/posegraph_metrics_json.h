@@ -1,10 +1,9 @@
 #pragma once
 
-// mlndt_posegraph's accuracy figures: for the initial (chained or odometry)
-// and the jointly refined trajectory, the ATE after aligning the first poses
-// (estimate_k -> gt_0 est_0^-1 est_k; ComputeAte with FIRST_POSE) and the
-// mean relative pose error of consecutive scans (ComputeRpe, delta 1), see
-// lab/eval/trajectory_metrics.h.
+// mlndt_posegraph's accuracy figures in its summary.json: for the initial
+// (chained or odometry) and the jointly refined trajectory, the ATE after
+// aligning the first poses and the mean RPE of consecutive scans
+// (EvaluatePoseGraphAccuracy, lab/eval/posegraph_metrics.h).
 
 #include <string>
 #include <vector>

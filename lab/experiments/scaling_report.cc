@@ -1,8 +1,7 @@
-#include "tools/common/scaling_report.h"
+#include "lab/experiments/scaling_report.h"
 
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <sstream>
 
 #include "lab/report/gnuplot.h"
@@ -10,7 +9,6 @@
 #include "mlndt/common/atomic_file.h"
 
 namespace mlndt {
-namespace tools {
 
 double LogLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
   if (x.size() < 2 || x.size() != y.size()) return std::nan("");
@@ -30,7 +28,7 @@ double LogLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
   return sxy / sxx;
 }
 
-std::vector<std::pair<std::string, std::vector<double>>> Series(
+std::vector<std::pair<std::string, std::vector<double>>> ScalingSeries(
     const std::vector<SizeResult>& results) {
   std::vector<std::pair<std::string, std::vector<double>>> series = {
       {"map", {}},
@@ -113,14 +111,17 @@ bool WriteScalingPlot(const std::string& gnuplot,
                     error);
 }
 
-void PrintScalingTable(const std::vector<SizeResult>& results) {
-  std::printf(
+std::string ScalingTableText(const std::vector<SizeResult>& results) {
+  std::string out =
       "| points | map ms | sampling ms | solve ms | total ms | sampled | "
       "finest-layer "
-      "cells | layers | iterations | t error cm | r error deg | solve |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+      "cells | layers | iterations | t error cm | r error deg | solve |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const SizeResult& r : results) {
-    std::printf(
+    char row[512];
+    std::snprintf(
+        row,
+        sizeof(row),
         "| %zu | %s | %s | %s | %s | %zu | %zu | %d | %d | %s | %s | %s |\n",
         r.points,
         Fmt(r.map_ms, 1).c_str(),
@@ -136,22 +137,37 @@ void PrintScalingTable(const std::vector<SizeResult>& results) {
         r.ok ? "ok"
              : (r.termination == TerminationType::FAILURE ? "FAILED"
                                                           : "LARGE ERROR"));
+    out += row;
   }
+  return out;
 }
 
-std::vector<double> PrintScalingSlopes(const std::vector<size_t>& sizes,
-                                       const std::vector<SizeResult>& results) {
-  std::printf(
-      "\nlog-log slope over N = %zu..%zu (time ∝ N^slope; 1 = linear):\n",
-      sizes.front(),
-      sizes.back());
+std::vector<double> ScalingSlopes(const std::vector<size_t>& sizes,
+                                  const std::vector<SizeResult>& results) {
   std::vector<double> x;
   for (size_t n : sizes) x.push_back(static_cast<double>(n));
   std::vector<double> slopes;
-  for (const auto& [name, values] : Series(results)) {
-    slopes.push_back(LogLogSlope(x, values));
-    std::printf(
-        "  %-19s %s\n", (name + ":").c_str(), Fmt(slopes.back(), 2).c_str());
+  for (const auto& series : ScalingSeries(results)) {
+    slopes.push_back(LogLogSlope(x, series.second));
+  }
+  return slopes;
+}
+
+std::string ScalingSlopesText(const std::vector<size_t>& sizes,
+                              const std::vector<SizeResult>& results,
+                              const std::vector<double>& slopes) {
+  std::ostringstream out;
+  out << "\nlog-log slope over N = " << sizes.front() << ".." << sizes.back()
+      << " (time ∝ N^slope; 1 = linear):\n";
+  const auto series = ScalingSeries(results);
+  for (size_t k = 0; k < series.size() && k < slopes.size(); ++k) {
+    char line[128];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  %-19s %s\n",
+                  (series[k].first + ":").c_str(),
+                  Fmt(slopes[k], 2).c_str());
+    out << line;
   }
   // The solve's cost per residual: its time against the sampled points.
   std::vector<double> sampled, solve_ms;
@@ -159,26 +175,29 @@ std::vector<double> PrintScalingSlopes(const std::vector<size_t>& sizes,
     sampled.push_back(static_cast<double>(r.sampled_points));
     solve_ms.push_back(r.solve_ms);
   }
-  std::printf("  solve against sampled points (time ∝ S^slope): %s\n",
-              Fmt(LogLogSlope(sampled, solve_ms), 2).c_str());
-  return slopes;
+  out << "  solve against sampled points (time ∝ S^slope): "
+      << Fmt(LogLogSlope(sampled, solve_ms), 2) << "\n";
+  return out.str();
 }
 
-void PrintBrokenSolves(const std::vector<SizeResult>& results,
-                       double max_translation_error_m,
-                       double max_rotation_error_deg) {
+std::vector<std::string> BrokenSolveLines(
+    const std::vector<SizeResult>& results,
+    double max_translation_error_m,
+    double max_rotation_error_deg) {
+  std::vector<std::string> lines;
   for (const SizeResult& r : results) {
     if (r.ok) continue;
-    std::cerr << "mlndt_scaling: N = " << r.points << ": "
-              << (r.termination == TerminationType::FAILURE
-                      ? "registration FAILED: " + r.message
-                      : "recovered motion off by " +
-                            Fmt(r.translation_error_m * 100.0, 2) + " cm, " +
-                            Fmt(r.rotation_error_deg, 3) + " deg (tolerance " +
-                            Fmt(max_translation_error_m * 100.0, 1) + " cm, " +
-                            Fmt(max_rotation_error_deg, 2) + " deg)")
-              << std::endl;
+    lines.push_back(
+        "N = " + std::to_string(r.points) + ": " +
+        (r.termination == TerminationType::FAILURE
+             ? "registration FAILED: " + r.message
+             : "recovered motion off by " +
+                   Fmt(r.translation_error_m * 100.0, 2) + " cm, " +
+                   Fmt(r.rotation_error_deg, 3) + " deg (tolerance " +
+                   Fmt(max_translation_error_m * 100.0, 1) + " cm, " +
+                   Fmt(max_rotation_error_deg, 2) + " deg)"));
   }
+  return lines;
 }
 
 std::string ScalingPlotTitle(int repetitions,
@@ -202,5 +221,4 @@ std::string ScalingRunLine(Method method,
          " runs";
 }
 
-}  // namespace tools
 }  // namespace mlndt

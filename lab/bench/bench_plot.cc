@@ -1,4 +1,4 @@
-#include "tools/common/bench_plot.h"
+#include "lab/bench/bench_plot.h"
 
 #include <algorithm>
 #include <numeric>
@@ -8,7 +8,6 @@
 #include "mlndt/common/atomic_file.h"
 
 namespace mlndt {
-namespace tools {
 namespace {
 
 std::vector<std::string> Sets(const std::vector<BenchPlotPoint>& points) {
@@ -92,5 +91,4 @@ bool WriteBenchPlot(const std::string& gnuplot,
                     error);
 }
 
-}  // namespace tools
 }  // namespace mlndt

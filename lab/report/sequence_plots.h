@@ -8,7 +8,6 @@
 #include "lab/runs/sequence_registration.h"
 
 namespace mlndt {
-namespace tools {
 
 // Writes into `dir` (data and scripts into dir/plot_data):
 // errors_translation.png, errors_rotation.png (signed error components per
@@ -17,7 +16,8 @@ namespace tools {
 // score_vs_iteration.png (score per sampled point against the iteration
 // for up to `trace_pairs` pairs, like Figs. 11 and 13, with the translation
 // error along the way when the ground truth is known). `pngs` receives the
-// file names written.
+// file names written. False with *error naming the file that could not be
+// written (or gnuplot's failure).
 bool WriteSequencePlots(const std::string& gnuplot,
                         const std::string& dir,
                         const std::vector<PairResult>& results,
@@ -26,13 +26,4 @@ bool WriteSequencePlots(const std::string& gnuplot,
                         std::vector<std::string>* pngs,
                         std::string* error);
 
-// WriteSequencePlots, then "plots: a.png, b.png, ..." on stdout.
-bool WriteSequencePlotsAndList(const std::string& gnuplot,
-                               const std::string& dir,
-                               const std::vector<PairResult>& results,
-                               size_t step,
-                               int trace_pairs,
-                               std::string* error);
-
-}  // namespace tools
 }  // namespace mlndt
