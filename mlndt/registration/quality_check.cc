@@ -120,26 +120,6 @@ std::vector<bool> InlierFlags(const std::vector<PointMatch>& matches,
   return inlier;
 }
 
-// The pose moved by `step_m` along the scaled direction d = [a; b] (a a
-// translation, b a rotation times the lever L applied about the origin after
-// R, as the rows above).
-Isometry3d Moved(const Isometry3d& pose,
-                 const Vector6d& d,
-                 double step_m,
-                 double rms_range_m) {
-  const Eigen::Vector3d omega =
-      step_m * d.tail<3>() / std::max(rms_range_m, 1e-3);
-  Isometry3d moved = pose;
-  const double angle = omega.norm();
-  if (angle > 0.0) {
-    moved.linear() =
-        Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix() *
-        pose.linear();
-  }
-  moved.translation() += step_m * d.head<3>();
-  return moved;
-}
-
 // How much worse the fit is one cell edge away along d, the weaker of the
 // two ways: `kept`, the share of the inliers left; `evidence`, the inliers
 // lost net of those gained over the square root of all that changed.
@@ -160,7 +140,7 @@ Probe ProbeDirection(const NdtLayer& layer,
   Probe probe;
   for (const double sign : {1.0, -1.0}) {
     const Isometry3d moved =
-        Moved(pose, sign * d, layer.cell_size(), rms_range_m);
+        MovedAlong(pose, sign * d, layer.cell_size(), rms_range_m);
     // Streamed: the probe needs each point's flag only, not its match.
     double lost = 0.0, gained = 0.0;
     for (size_t k = 0; k < input_points.size(); ++k) {
@@ -219,6 +199,7 @@ ConstraintAnalysis AnalyseMatched(
     if (probe.kept > analysis.flatness) {
       analysis.flatness = probe.kept;
       analysis.probe_evidence = probe.evidence;
+      analysis.flattest_direction = d;
     }
     if (static_cast<size_t>(i) >= by_ratio &&
         probe.kept > options.max_flatness &&
@@ -245,6 +226,23 @@ std::vector<PointMatch> MatchAtSolution(
 }
 
 }  // namespace
+
+Isometry3d MovedAlong(const Isometry3d& pose,
+                      const Vector6d& d,
+                      double step_m,
+                      double rms_range_m) {
+  const Eigen::Vector3d omega =
+      step_m * d.tail<3>() / std::max(rms_range_m, 1e-3);
+  Isometry3d moved = pose;
+  const double angle = omega.norm();
+  if (angle > 0.0) {
+    moved.linear() =
+        Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix() *
+        pose.linear();
+  }
+  moved.translation() += step_m * d.head<3>();
+  return moved;
+}
 
 ConstraintAnalysis AnalyseConstraints(
     const NdtLayer& layer,

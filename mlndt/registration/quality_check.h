@@ -93,6 +93,9 @@ struct ConstraintAnalysis {
   // Along the flattest direction: the inliers lost net of those gained, over
   // the square root of all that changed (a z-score; near 0 when free).
   double probe_evidence = 0.0;
+  // The flattest probed direction (unit, scaled as the rows above); zero
+  // when nothing was probed.
+  Vector6d flattest_direction = Vector6d::Zero();
   // How many of degenerate_directions were found flat by the probe.
   int flat_directions = 0;
 };
@@ -100,6 +103,14 @@ struct ConstraintAnalysis {
 // Directions whose eigenvalue is below this fraction of the largest are
 // probed (at most the three weakest).
 constexpr double kProbedConstraintRatio = 0.25;
+
+// The pose moved by `step_m` along the scaled direction d = [a; b] (a a
+// translation, b a rotation times the lever `rms_range_m`, applied about the
+// origin after the pose's rotation), as the probe moves it.
+Isometry3d MovedAlong(const Isometry3d& pose,
+                      const Vector6d& d,
+                      double step_m,
+                      double rms_range_m);
 
 // A cell direction counts as thin when its variance is below this fraction
 // of the cell's largest.

@@ -43,6 +43,20 @@ const OptionTable& RetryOptionsTable() {
                       "Yaw turns of the guess tried, in order, until a result "
                       "converges and passes the quality check; empty = no "
                       "retry. At most 36.")
+          .Int("weak_direction_rounds",
+               &S::weak_direction_rounds,
+               Closed(0, 16),
+               "Rounds of the search along the flattest weak direction: the "
+               "last layer again from the solution moved one cell edge along "
+               "it, both ways; a better fit in another basin replaces it. "
+               "0 = off.")
+          .Double("weak_direction_min_flatness",
+                  &S::weak_direction_min_flatness,
+                  "",
+                  Closed(0.0, 1.0),
+                  "The search along the flattest weak direction runs only "
+                  "when the probe kept at least this share of the inliers one "
+                  "cell edge along it (the result's flatness).")
           .Validator(&S::IsValid)
           .Build();
   return table;
@@ -132,6 +146,7 @@ RegistrationOptions PaperRegistrationOptions() {
   options.objective = PaperObjectiveOptions();
   options.backend.type = BackendType::NEWTON;
   options.retry.yaw_seeds_deg.clear();
+  options.retry.weak_direction_rounds = 0;
   return options;
 }
 

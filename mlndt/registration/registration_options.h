@@ -47,6 +47,19 @@ const OptionTable& InitialGuessUncertaintyTable();
 struct RetryOptions {
   // Yaw turns [deg], each in [-180, 180]; at most 36. Empty: no retry.
   std::vector<double> yaw_seeds_deg = {45, -45, 90, -90, 135, -135, 180};
+  // Rounds of the search along the flattest weak direction (the probe's,
+  // quality_check.h): the last layer runs again from the solution moved one
+  // cell edge along it, both ways; a solution in another basin that fits
+  // better replaces it, and the search goes on from there. A weakly
+  // constrained direction (a road seen within a few metres) holds several
+  // minima, and the one nearest the guess need not be the best. In [0, 16];
+  // 0 = off.
+  int weak_direction_rounds = 4;
+  // The search runs only when the probe kept at least this share of the
+  // inliers one cell edge along the flattest direction (flatness,
+  // quality_check.h): a direction where a cell away fits nearly as well
+  // may hold another minimum. In [0, 1].
+  double weak_direction_min_flatness = 0.6;
 
   bool IsValid(std::string* error) const;
 };

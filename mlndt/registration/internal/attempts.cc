@@ -1,6 +1,9 @@
 #include "mlndt/registration/internal/attempts.h"
 
+#include <cmath>
+
 #include "mlndt/common/pose.h"
+#include "mlndt/cost/point_matches.h"
 #include "mlndt/cost/score.h"
 
 namespace mlndt {
@@ -126,13 +129,16 @@ int Rank(const Attempt& attempt) {
 // `candidate` replaces `best` when its verdict ranks higher, or ranks alike
 // and more of its points are inliers. (Not the lower score: points that
 // leave the map score nothing, so a pose off the map can score lower.)
-void KeepBetter(Attempt candidate, Attempt* best) {
+// True when it did.
+bool KeepBetter(Attempt candidate, Attempt* best) {
   const int rank = Rank(candidate), best_rank = Rank(*best);
   if (rank > best_rank ||
       (rank == best_rank && rank > 0 &&
        candidate.fit.inlier_fraction > best->fit.inlier_fraction)) {
     *best = std::move(candidate);
+    return true;
   }
+  return false;
 }
 
 // True when the two poses lie farther apart than a tenth of a last-layer
@@ -199,6 +205,102 @@ void CheckTheGuess(const RegistrationOptions& options,
   }
 }
 
+// A solution found by the search replaces best only when it has more
+// inliers by at least this many standard deviations of the points that
+// changed (InlierGainEvidence): among the minima of a wide, flat basin
+// (hand-held Livox scans) the inlier count differs by chance, and a smaller
+// margin swaps a right result for another one nearby (docs/trust.md).
+constexpr double kMinInlierGainEvidence = 1.0;
+
+// How clearly `to` fits better than `from`: the points that are inliers at
+// `to` and not at `from`, net of the reverse, over the square root of all
+// that changed (a z-score, as the probe's evidence).
+double InlierGainEvidence(const RegistrationOptions& options,
+                          const Problem& problem,
+                          const Vector6d& from,
+                          const Vector6d& to) {
+  const Isometry3d a = PoseVectorToIsometry(from);
+  const Isometry3d b = PoseVectorToIsometry(to);
+  const double gate = options.quality_check.inlier_gate;
+  const UnmatchedPolicy policy = options.objective.unmatched_policy;
+  double gained = 0.0, lost = 0.0;
+  for (const Eigen::Vector3d& p : problem.points) {
+    const bool at_a = MatchPoint(problem.last(), a * p, policy).IsInlier(gate);
+    const bool at_b = MatchPoint(problem.last(), b * p, policy).IsInlier(gate);
+    gained += at_b && !at_a;
+    lost += at_a && !at_b;
+  }
+  return (gained - lost) / std::sqrt(std::max(gained + lost, 1.0));
+}
+
+// One round of the search along best's flattest weak direction: the last
+// layer from best moved one cell edge along it, each way (over a subset of
+// the samples first, as the guess check); true when a solution in another
+// basin replaced best.
+bool ExploreWeakDirection(const RegistrationOptions& options,
+                          const Problem& problem,
+                          const Vector6d& initial_local,
+                          double start_time_s,
+                          AttemptsCost* cost,
+                          Attempt* best) {
+  const Vector6d d = best->constraints.flattest_direction;
+  if (d.isZero() ||
+      best->constraints.flatness < options.retry.weak_direction_min_flatness) {
+    return false;
+  }
+  const double cell_m = problem.last().cell_size();
+  for (const double sign : {1.0, -1.0}) {
+    ++cost->attempts;
+    Vector6d start =
+        IsometryToPoseVector(MovedAlong(PoseVectorToIsometry(best->xi_local),
+                                        sign * d,
+                                        cell_m,
+                                        problem.rms_range_m));
+    if (options.schedule.max_coarse_point_stride > 1 &&
+        (!ExploreFromGuess(options, problem, &start, cost) ||
+         !AnotherBasin(problem, start, best->xi_local))) {
+      continue;
+    }
+    Attempt moved = Solve(options,
+                          problem,
+                          problem.map.num_layers(),
+                          start,
+                          start_time_s,
+                          cost,
+                          /*assess=*/false);
+    if (moved.schedule.termination_type == TerminationType::FAILURE ||
+        !AnotherBasin(problem, moved.xi_local, best->xi_local) ||
+        (options.initial_uncertainty.given &&
+         LeftTheGuess(options, problem, initial_local, moved.xi_local))) {
+      continue;
+    }
+    Assess(options, problem, &moved);
+    const double z =
+        InlierGainEvidence(options, problem, best->xi_local, moved.xi_local);
+    if (z >= kMinInlierGainEvidence && KeepBetter(std::move(moved), best)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Step 3 above: rounds of ExploreWeakDirection while the result converged
+// and the last round found a better minimum.
+void SearchWeakDirection(const RegistrationOptions& options,
+                         const Problem& problem,
+                         const Vector6d& initial_local,
+                         double start_time_s,
+                         AttemptsCost* cost,
+                         Attempt* best) {
+  for (int round = 0; round < options.retry.weak_direction_rounds; ++round) {
+    if (best->verdict != TerminationType::CONVERGENCE ||
+        !ExploreWeakDirection(
+            options, problem, initial_local, start_time_s, cost, best)) {
+      return;
+    }
+  }
+}
+
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
 Vector6d TurnedGuess(const Vector6d& initial_local, double yaw_deg) {
   Isometry3d turned = PoseVectorToIsometry(initial_local);
@@ -226,6 +328,8 @@ Attempt SolveAttempts(const RegistrationOptions& options,
       LeftTheGuess(options, problem, initial_local, best.xi_local)) {
     CheckTheGuess(options, problem, initial_local, start_time_s, cost, &best);
   }
+  SearchWeakDirection(
+      options, problem, initial_local, start_time_s, cost, &best);
   for (const double yaw_deg : options.retry.yaw_seeds_deg) {
     if (best.verdict == TerminationType::CONVERGENCE) break;
     if (u.given && std::abs(yaw_deg) > u.rotation_deg) continue;

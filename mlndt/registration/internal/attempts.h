@@ -11,7 +11,18 @@
 //     basin, over all of them; the better fit wins, so a good guess is never
 //     made worse by the coarse layers (they can pull a sparse scan into
 //     another basin);
-//  3. until a result converges and passes the quality check: the schedule
+//  3. when the result converged and the probe of weak directions kept at
+//     least retry.weak_direction_min_flatness of its inliers one cell edge
+//     along the flattest one (quality_check.h): the last layer from the
+//     result moved one cell edge along that direction, each way (a subset
+//     first, as in 2); a solution in another basin (within the guess's
+//     uncertainty when one is given) that has clearly more inliers
+//     (InlierGainEvidence >= 1 standard deviation) replaces it, and the
+//     search goes on from there for up to retry.weak_direction_rounds
+//     rounds: a weakly constrained direction (a road seen within a few
+//     metres, a sparse hand-held scan) holds several minima, and the one
+//     the schedule found need not be the best;
+//  4. until a result converges and passes the quality check: the schedule
 //     again from the guess turned about the input's centroid by each yaw
 //     seed (retry); the best verdict wins, then the most inliers (every
 //     attempt scores the same points on the same last layer).
@@ -65,7 +76,7 @@ struct AttemptsCost {
   int64_t point_iterations = 0;
 };
 
-// Runs 1-3 above.
+// Runs 1-4 above.
 Attempt SolveAttempts(const RegistrationOptions& options,
                       const Problem& problem,
                       const Vector6d& initial_local,
