@@ -6,13 +6,6 @@
 //                  --calib=calib.txt]] [--max_scans=N] [odometry flags]
 //                  [any mlndt_align registration flag]
 //
-// Each scan is predicted with constant velocity at its time stamp, deskewed
-// when the bag has per-point times, and registered onto a local layered map
-// of the last keyframes; the prediction's uncertainty (from how far recent
-// predictions missed) sets the registration's initial_uncertainty and so
-// its start layer. A scan whose registration is not usable gets its
-// prediction as its pose, flagged as a fallback in scans.csv.
-//
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,
 // as its header line says), scans.csv (per scan: verdict, fallback,
@@ -119,9 +112,14 @@ bool OptionsFromFlags(OdometryOptions* options,
   options->confirmation.enabled = FLAGS_confirm;
   options->confirmation.min_correction_fraction = FLAGS_confirm_fraction;
   options->confirmation.check_last_scan = FLAGS_confirm_last_scan;
-  // The registration flag sets the odometry's probe (on by default here).
+  // The registration flags set the odometry's probe (on by default here)
+  // and search along the weak direction (off by default here).
+  const RegistrationOptions& given = options->registration;
   if (tools::FlagGiven("max_flatness")) {
-    options->max_flatness = options->registration.quality_check.max_flatness;
+    options->max_flatness = given.quality_check.max_flatness;
+  }
+  if (tools::FlagGiven("weak_direction_rounds")) {
+    options->weak_direction_rounds = given.retry.weak_direction_rounds;
   }
   if (!options->IsValid(error)) {
     *error = "odometry flags: " + *error;

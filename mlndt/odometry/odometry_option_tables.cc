@@ -147,6 +147,12 @@ const OptionTable& OdometryOwnOptionsTable() {
                 LeftOpen(0.0, 1.0),
                 "The probe of weak directions of the scans' registrations "
                 "(replaces the registration's max_flatness; 1 = off).")
+        .Int("weak_direction_rounds",
+             &S::weak_direction_rounds,
+             Closed(0, 16),
+             "The search along the weak direction of the scans' "
+             "registrations (replaces the registration's "
+             "retry.weak_direction_rounds; 0 = off).")
         .Struct("confirmation",
                 &S::confirmation,
                 ConfirmationOptionsTable(),

@@ -14,6 +14,7 @@ bool OdometryOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_GE(max_consecutive_fallbacks, 1);
   MLNDT_OPTION_GT(max_flatness, 0.0);
   MLNDT_OPTION_LE(max_flatness, 1.0);
+  MLNDT_OPTION_IN_RANGE(weak_direction_rounds, 0, 16);
   return true;
 }
 

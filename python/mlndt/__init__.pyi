@@ -99,6 +99,8 @@ class InitialGuessUncertainty(TypedDict, total=False):
 
 class RetryOptions(TypedDict, total=False):
     yaw_seeds_deg: Sequence[float]
+    weak_direction_rounds: int
+    weak_direction_min_flatness: float
 
 class RegistrationOptions(TypedDict, total=False):
     range_filter: RangeFilterOptions
@@ -459,6 +461,7 @@ class Odometry:
         gate_factor: float = ...,
         max_consecutive_fallbacks: int = ...,
         max_flatness: float = ...,
+        weak_direction_rounds: int = ...,
         confirmation: ConfirmationOptions = ...,
         preset: Preset = "default",
         range_filter: RangeFilterOptions = ...,
@@ -490,6 +493,7 @@ def run_odometry(
     gate_factor: float = ...,
     max_consecutive_fallbacks: int = ...,
     max_flatness: float = ...,
+    weak_direction_rounds: int = ...,
     confirmation: ConfirmationOptions = ...,
     preset: Preset = "default",
     range_filter: RangeFilterOptions = ...,

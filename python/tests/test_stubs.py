@@ -95,6 +95,7 @@ def test_stub_signatures_list_every_option():
         "gate_factor",
         "max_consecutive_fallbacks",
         "max_flatness",
+        "weak_direction_rounds",
         "confirmation",
     }
     odometry = function(stub_classes()["Odometry"].body, "__init__")
