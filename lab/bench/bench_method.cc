@@ -35,6 +35,7 @@ BenchEstimate MlndtBenchMethod::Run(size_t /*pair_index*/,
   e.covariance = summary.covariance;
   e.time_ms = summary.total_time_s * 1e3;
   e.iterations = summary.num_iterations;
+  e.point_iterations = summary.point_iterations;
   e.score = summary.final_score;
   return e;
 }

@@ -104,10 +104,11 @@ std::vector<std::string> BenchTableHeader() {
           "jacobians",     "loss",
           "threads",       "runs",
           "time med [ms]", "time min-max [ms]",
-          "iters",         "score",
-          "err_t [m]",     "err_r [deg]",
-          "converged",     "success",
-          "nees mean/med", "pcl/ours"};
+          "iters",         "point iters",
+          "score",         "err_t [m]",
+          "err_r [deg]",   "converged",
+          "success",       "nees mean/med",
+          "pcl/ours"};
 }
 
 std::vector<std::string> BenchTableRow(const std::string& set,
@@ -132,6 +133,7 @@ std::vector<std::string> BenchTableRow(const std::string& set,
           BenchFormat("%.1f", t.median),
           BenchFormat("%.1f", t.min) + "-" + BenchFormat("%.1f", t.max),
           BenchFormat("%.1f", s.mean_iterations),
+          BenchFormat("%.0f", s.mean_point_iterations),
           BenchFormat("%.1f", s.mean_score),
           BenchFormat("%.4f", s.mean_translation_error_m),
           BenchFormat("%.3f", s.mean_rotation_error_deg),
@@ -147,7 +149,8 @@ std::string BenchCsvHeader() {
   return "pairs,defaults,method,backend,sampling,start_layer,linear_solver,"
          "trust_"
          "region,minimizer,jacobians,loss,threads,runs,"
-         "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_final_"
+         "time_median_ms,time_min_ms,time_max_ms,mean_iterations,mean_point_"
+         "iterations,mean_final_"
          "score,"
          "mean_translation_error_m,max_translation_error_m,mean_rotation_"
          "error_deg,"
@@ -178,6 +181,7 @@ std::string BenchCsvRow(const std::string& set,
       CsvNumber(t.min),
       CsvNumber(t.max),
       CsvNumber(s.mean_iterations),
+      CsvNumber(s.mean_point_iterations),
       CsvNumber(s.mean_score),
       CsvNumber(s.mean_translation_error_m),
       CsvNumber(s.max_translation_error_m),

@@ -25,6 +25,7 @@ BenchRun ScoreEstimate(const BenchEstimate& estimate,
   r.time_ms = estimate.time_ms;
   r.align_ms = estimate.align_ms;
   r.iterations = estimate.iterations;
+  r.point_iterations = estimate.point_iterations;
   r.score = estimate.score;
   r.converged = estimate.converged;
   return r;

@@ -3,6 +3,7 @@
 // One registration of mlndt_bench: what a method returns (BenchEstimate)
 // and the run scored against the pair's reference (BenchRun).
 
+#include <cstdint>
 #include <limits>
 
 #include "mlndt/common/types.h"
@@ -22,6 +23,10 @@ struct BenchEstimate {
   double time_ms = 0.0;   // Everything after loading.
   double align_ms = 0.0;  // PCL only: align() alone.
   int iterations = 0;
+  // mlndt: RegistrationSummary::point_iterations (samples evaluated over all
+  // iterations, stages and attempts: the solve's work free of machine
+  // noise); -1: not counted (PCL).
+  int64_t point_iterations = -1;
   double score = std::numeric_limits<double>::quiet_NaN();  // Eq. (10).
 };
 
@@ -30,6 +35,7 @@ struct BenchRun {
   double time_ms = 0.0;
   double align_ms = 0.0;  // PCL only: align() alone.
   int iterations = 0;
+  int64_t point_iterations = -1;  // As BenchEstimate's; -1: not counted.
   double score = std::numeric_limits<double>::quiet_NaN();
   double translation_error_m = 0.0;
   double rotation_error_deg = 0.0;

@@ -22,7 +22,8 @@ double Median(const std::vector<double>& v) { return ComputeStats(v).median; }
 BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
                             const std::vector<size_t>& pair_indices) {
   BenchRowStats s;
-  std::vector<double> iterations, scores, translation, rotation, nees;
+  std::vector<double> iterations, point_iterations, scores, translation,
+      rotation, nees;
   for (const std::vector<BenchRun>& round : results) {
     std::vector<double> times, align;
     for (const size_t p : pair_indices) {
@@ -30,6 +31,9 @@ BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
       times.push_back(r.time_ms);
       align.push_back(r.align_ms);
       iterations.push_back(r.iterations);
+      if (r.point_iterations >= 0) {
+        point_iterations.push_back(static_cast<double>(r.point_iterations));
+      }
       scores.push_back(r.score);
       translation.push_back(r.translation_error_m);
       rotation.push_back(r.rotation_error_deg);
@@ -42,6 +46,7 @@ BenchRowStats SummariseRuns(const std::vector<std::vector<BenchRun>>& results,
     s.round_align_ms.push_back(Mean(align));
   }
   s.mean_iterations = Mean(iterations);
+  s.mean_point_iterations = Mean(point_iterations);
   s.mean_score = Mean(scores);
   s.mean_translation_error_m = Mean(translation);
   s.max_translation_error_m =

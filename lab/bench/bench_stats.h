@@ -15,6 +15,8 @@ struct BenchRowStats {
   std::vector<double> round_times_ms;  // Per round: mean over the set's pairs.
   std::vector<double> round_align_ms;  // PCL only, same shape.
   double mean_iterations = 0.0;
+  // Over the runs that count them (mlndt); NaN when none does (PCL).
+  double mean_point_iterations = std::numeric_limits<double>::quiet_NaN();
   double mean_score = 0.0;
   double mean_translation_error_m = 0.0;
   double max_translation_error_m = 0.0;

@@ -125,6 +125,16 @@ std::string DescribeDroppedPoints(const RangeFilterOptions& options,
 PointCloud FilterByRange(const RangeFilterOptions& options,
                          const PointCloud& cloud,
                          RangeFilterSummary* summary) {
+  PointCloud kept;
+  FilterByRange(options, cloud, &kept, summary);
+  return kept;
+}
+
+void FilterByRange(const RangeFilterOptions& options,
+                   const PointCloud& cloud,
+                   PointCloud* kept,
+                   RangeFilterSummary* summary) {
+  CHECK(kept != nullptr && kept != &cloud);
   std::string error;
   CHECK(options.IsValid(&error)) << error;
   WarnWhenOriginIsFar(options, cloud);
@@ -157,8 +167,11 @@ PointCloud FilterByRange(const RangeFilterOptions& options,
       options.max_range_m > 0.0
           ? SmallestSquareWithRangeAbove(options.max_range_m)
           : std::numeric_limits<double>::infinity();
-  PointCloud kept;
-  kept.Reserve(cloud.size());
+  // A buffer that can hold every point keeps its memory (reserve() only
+  // grows it).
+  std::vector<Eigen::Vector3d>& out = *kept->mutable_points();
+  out.clear();
+  out.reserve(points.size());
   for (const Eigen::Vector3d& p : points) {
     const double s = p.squaredNorm();
     if (s < min_s) {
@@ -168,12 +181,11 @@ PointCloud FilterByRange(const RangeFilterOptions& options,
     } else if (saturated && s >= saturation_s) {
       ++counts.saturated;
     } else {
-      kept.Add(p);
+      out.push_back(p);
     }
   }
-  counts.kept_points = kept.size();
+  counts.kept_points = out.size();
   if (summary != nullptr) *summary = counts;
-  return kept;
 }
 
 }  // namespace mlndt

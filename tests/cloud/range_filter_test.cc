@@ -44,6 +44,25 @@ TEST(FilterByRange, DropsPointsAtTheSensorAndAtASaturatedMaximum) {
   }
 }
 
+// Into a buffer: the same points and counts as by value, the previous
+// points replaced, and a buffer that holds the kept points keeps its memory.
+TEST(FilterByRange, IntoABufferReusesItsMemory) {
+  const PointCloud scan = Scan(40, 20);
+  RangeFilterSummary by_value_summary, summary;
+  const PointCloud by_value =
+      FilterByRange(RangeFilterOptions(), scan, &by_value_summary);
+  PointCloud buffer;
+  buffer.Reserve(scan.size());
+  for (int i = 0; i < 5; ++i) buffer.Add(Eigen::Vector3d(7.0, 7.0, 7.0));
+  const Eigen::Vector3d* memory = buffer.points().data();
+  FilterByRange(RangeFilterOptions(), scan, &buffer, &summary);
+  EXPECT_EQ(buffer.points(), by_value.points());
+  EXPECT_EQ(summary.kept_points, by_value_summary.kept_points);
+  EXPECT_EQ(summary.too_close, by_value_summary.too_close);
+  EXPECT_EQ(summary.saturated, by_value_summary.saturated);
+  EXPECT_EQ(buffer.points().data(), memory);
+}
+
 TEST(FilterByRange, AFewPointsAtTheLargestRangeAreKept) {
   // 2 of 1002 at the maximum: a real far return, not a saturated range.
   RangeFilterSummary summary;

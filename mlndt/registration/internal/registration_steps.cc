@@ -24,7 +24,8 @@ bool SampleInput(const RangeFilterOptions& range_filter,
                  const Isometry3d& initial_reference_from_input,
                  PointCloud* sampled,
                  RegistrationSummary* summary,
-                 std::string* error) {
+                 std::string* error,
+                 PointCloud* buffer) {
   if (input.empty()) {
     *error = "the input cloud is empty";
     return false;
@@ -48,7 +49,9 @@ bool SampleInput(const RangeFilterOptions& range_filter,
   }
   const double t0 = NowSeconds();
   RangeFilterSummary filter_summary;
-  const PointCloud kept = FilterByRange(range_filter, input, &filter_summary);
+  PointCloud own_buffer;
+  PointCloud& kept = buffer != nullptr ? *buffer : own_buffer;
+  FilterByRange(range_filter, input, &kept, &filter_summary);
   summary->input_points = input.size();
   summary->range_filtered_points = input.size() - kept.size();
   if (kept.empty()) {
@@ -75,7 +78,7 @@ bool FilterReference(const RangeFilterOptions& range_filter,
                      PointCloud* filtered,
                      std::string* error) {
   RangeFilterSummary summary;
-  *filtered = FilterByRange(range_filter, reference, &summary);
+  FilterByRange(range_filter, reference, filtered, &summary);
   if (filtered->empty() && !reference.empty()) {
     *error = "the range filter dropped every reference point: " +
              DescribeDroppedPoints(range_filter, summary);

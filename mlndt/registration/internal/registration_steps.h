@@ -24,14 +24,17 @@ void Fail(const char* entry_point,
 // rotation, not a reflection or a scaled matrix), drops the returns the range
 // filter rejects and samples the rest (Section 4.3), filling the counts and the
 // sampling time. False (and the message in *error) when nothing usable is
-// left.
+// left. `buffer` (optional) holds the range filter's output: its memory
+// is reused (Register passes the filtered reference's, no longer needed once
+// the map exists).
 bool SampleInput(const RangeFilterOptions& range_filter,
                  const SamplingOptions& options,
                  const PointCloud& input,
                  const Isometry3d& initial_reference_from_input,
                  PointCloud* sampled,
                  RegistrationSummary* summary,
-                 std::string* error);
+                 std::string* error,
+                 PointCloud* buffer = nullptr);
 
 // The reference scan without the returns the range filter rejects; false
 // with *error when none is left.

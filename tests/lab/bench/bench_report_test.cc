@@ -16,6 +16,7 @@ BenchRowStats Stats(std::vector<double> times, int successes) {
   s.converged = s.runs;
   s.successes = successes;
   s.mean_iterations = 12.0;
+  s.mean_point_iterations = 34567.4;
   s.mean_score = 345.67;
   s.mean_translation_error_m = 0.01234;
   s.mean_rotation_error_deg = 0.2345;
@@ -49,6 +50,7 @@ TEST(BenchReport, TableRowsWithThePclRatio) {
   EXPECT_EQ(row["linear solver"], "-");  // Ceres only.
   EXPECT_EQ(row["time med [ms]"], "15.0");
   EXPECT_EQ(row["time min-max [ms]"], "10.0-20.0");
+  EXPECT_EQ(row["point iters"], "34567");
   EXPECT_EQ(row["score"], "345.7");
   EXPECT_EQ(row["err_t [m]"], "0.0123");
   EXPECT_EQ(row["success"], "2/2 (100%)");

@@ -25,6 +25,7 @@ TEST(ScoreEstimate, ErrorsAndSuccessAgainstTheThresholds) {
   e.converged = true;
   e.time_ms = 12.0;
   e.iterations = 7;
+  e.point_iterations = 123456;
   const BenchThresholds thresholds{0.2, 1.0};
   const BenchRun r = ScoreEstimate(e, Pose(1.0, 0.0), thresholds);
   EXPECT_NEAR(r.translation_error_m, 0.1, 1e-12);
@@ -32,6 +33,7 @@ TEST(ScoreEstimate, ErrorsAndSuccessAgainstTheThresholds) {
   EXPECT_TRUE(r.success);
   EXPECT_TRUE(r.converged);
   EXPECT_EQ(r.iterations, 7);
+  EXPECT_EQ(r.point_iterations, 123456);
   EXPECT_EQ(r.time_ms, 12.0);
   EXPECT_TRUE(std::isnan(r.nees));  // No covariance.
 

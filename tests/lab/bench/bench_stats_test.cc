@@ -16,6 +16,7 @@ BenchRun MakeRun(double time_ms,
   r.translation_error_m = err_t;
   r.rotation_error_deg = 10.0 * err_t;
   r.iterations = static_cast<int>(time_ms);
+  r.point_iterations = 100 * static_cast<int64_t>(time_ms);
   r.score = 2.0 * time_ms;
   r.success = success;
   r.converged = true;
@@ -40,6 +41,7 @@ TEST(SummariseRuns, MeansPerRoundAndOverRunsOfTheChosenPairs) {
   EXPECT_EQ(s.successes, 3);
   EXPECT_EQ(s.converged, 4);
   EXPECT_DOUBLE_EQ(s.mean_iterations, 30.0);
+  EXPECT_DOUBLE_EQ(s.mean_point_iterations, 3000.0);
   EXPECT_DOUBLE_EQ(s.mean_score, 60.0);
   EXPECT_DOUBLE_EQ(s.mean_translation_error_m, 0.3);
   EXPECT_DOUBLE_EQ(s.max_translation_error_m, 0.6);
@@ -48,6 +50,18 @@ TEST(SummariseRuns, MeansPerRoundAndOverRunsOfTheChosenPairs) {
   // NEES over the runs that have one (4 and 8).
   EXPECT_DOUBLE_EQ(s.nees_mean, 6.0);
   EXPECT_DOUBLE_EQ(s.nees_median, 6.0);
+}
+
+// PCL's runs count no point iterations (-1): the mean skips them, and is
+// NaN when no run counts them.
+TEST(SummariseRuns, PointIterationsOverTheRunsThatCountThem) {
+  BenchRun uncounted = MakeRun(10, 0.1, true);
+  uncounted.point_iterations = -1;
+  EXPECT_TRUE(
+      std::isnan(SummariseRuns({{uncounted}}, {0}).mean_point_iterations));
+  const BenchRowStats s =
+      SummariseRuns({{uncounted, MakeRun(20, 0.1, true)}}, {0, 1});
+  EXPECT_DOUBLE_EQ(s.mean_point_iterations, 2000.0);
 }
 
 TEST(SummariseRuns, NoNeesWithoutCovariances) {
