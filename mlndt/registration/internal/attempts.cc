@@ -173,11 +173,36 @@ bool ExploreFromGuess(const RegistrationOptions& options,
   return stage.termination_type != TerminationType::FAILURE;
 }
 
-// Step 2 above. The last layer alone runs from the guess over a subset of
-// the samples; when it stays in best's basin, the guess leads there too and
-// the check ends. Otherwise the last layer runs over every sample from where
-// the subset led, and that solution, assessed, replaces best if it fits
-// better.
+// The last layer alone from `start`, first over every s-th sample (s =
+// schedule.max_coarse_point_stride) and over all of them only when that
+// leads out of best's basin: true, with the (unassessed) solution in
+// *candidate, when it converged in another basin than best's.
+bool LastLayerInAnotherBasin(const RegistrationOptions& options,
+                             const Problem& problem,
+                             Vector6d start,
+                             double start_time_s,
+                             AttemptsCost* cost,
+                             const Attempt& best,
+                             Attempt* candidate) {
+  if (options.schedule.max_coarse_point_stride > 1 &&
+      (!ExploreFromGuess(options, problem, &start, cost) ||
+       !AnotherBasin(problem, start, best.xi_local))) {
+    return false;
+  }
+  *candidate = Solve(options,
+                     problem,
+                     problem.map.num_layers(),
+                     start,
+                     start_time_s,
+                     cost,
+                     /*assess=*/false);
+  return candidate->schedule.termination_type != TerminationType::FAILURE &&
+         AnotherBasin(problem, candidate->xi_local, best.xi_local);
+}
+
+// Step 2 above. The last layer alone runs from the guess; when it stays in
+// best's basin, the guess leads there too and the check ends. Otherwise
+// that solution, assessed, replaces best if it fits better.
 void CheckTheGuess(const RegistrationOptions& options,
                    const Problem& problem,
                    const Vector6d& initial_local,
@@ -185,21 +210,14 @@ void CheckTheGuess(const RegistrationOptions& options,
                    AttemptsCost* cost,
                    Attempt* best) {
   ++cost->attempts;
-  Vector6d start = initial_local;
-  if (options.schedule.max_coarse_point_stride > 1 &&
-      (!ExploreFromGuess(options, problem, &start, cost) ||
-       !AnotherBasin(problem, start, best->xi_local))) {
-    return;
-  }
-  Attempt from_guess = Solve(options,
-                             problem,
-                             problem.map.num_layers(),
-                             start,
-                             start_time_s,
-                             cost,
-                             /*assess=*/false);
-  if (from_guess.schedule.termination_type != TerminationType::FAILURE &&
-      AnotherBasin(problem, from_guess.xi_local, best->xi_local)) {
+  Attempt from_guess;
+  if (LastLayerInAnotherBasin(options,
+                              problem,
+                              initial_local,
+                              start_time_s,
+                              cost,
+                              *best,
+                              &from_guess)) {
     Assess(options, problem, &from_guess);
     KeepBetter(std::move(from_guess), best);
   }
@@ -251,25 +269,14 @@ bool ExploreWeakDirection(const RegistrationOptions& options,
   const double cell_m = problem.last().cell_size();
   for (const double sign : {1.0, -1.0}) {
     ++cost->attempts;
-    Vector6d start =
+    const Vector6d start =
         IsometryToPoseVector(MovedAlong(PoseVectorToIsometry(best->xi_local),
                                         sign * d,
                                         cell_m,
                                         problem.rms_range_m));
-    if (options.schedule.max_coarse_point_stride > 1 &&
-        (!ExploreFromGuess(options, problem, &start, cost) ||
-         !AnotherBasin(problem, start, best->xi_local))) {
-      continue;
-    }
-    Attempt moved = Solve(options,
-                          problem,
-                          problem.map.num_layers(),
-                          start,
-                          start_time_s,
-                          cost,
-                          /*assess=*/false);
-    if (moved.schedule.termination_type == TerminationType::FAILURE ||
-        !AnotherBasin(problem, moved.xi_local, best->xi_local) ||
+    Attempt moved;
+    if (!LastLayerInAnotherBasin(
+            options, problem, start, start_time_s, cost, *best, &moved) ||
         (options.initial_uncertainty.given &&
          LeftTheGuess(options, problem, initial_local, moved.xi_local))) {
       continue;
