@@ -2,12 +2,13 @@
 
 #include "tools/common/localizer_flags.h"
 #include "tools/common/map_build_flags.h"
+#include "tools/common/odometry_flags.h"
 
 namespace mlndt {
 namespace tools {
 
 std::vector<const TableFlags*> ToolTableFlags() {
-  return {&MapBuildFlags(), &LocalizerFlags()};
+  return {&MapBuildFlags(), &LocalizerFlags(), &OdometryFlags()};
 }
 
 }  // namespace tools
