@@ -98,9 +98,10 @@ def test_docs_options_md_is_current():
 # The tools' own tables (mlndt_options' "tool_options") and where Python
 # reaches them: LocalizerOptions' fields are mlndt.Localizer keywords;
 # MapBuildOptions is mlndt_map's only (LayeredMap.build takes the grid
-# keywords and num_threads, not a voxel filter or a memory limit).
+# keywords and num_threads, not a voxel filter or a memory limit);
+# TrajectoryEvaluationOptions is the lab's (mlndt_eval).
 PYTHON_TOOL_TABLES = {"LocalizerOptions": lambda: mlndt.Localizer}
-TOOL_ONLY_TABLES = {"MapBuildOptions"}
+TOOL_ONLY_TABLES = {"MapBuildOptions", "TrajectoryEvaluationOptions"}
 # OdometryOptions' fields are mlndt.Odometry keywords, a nested struct's as a
 # dict (local_map={"max_keyframes": 3} for --local_map_max_keyframes=3).
 NESTED_TOOL_TABLES = {"OdometryOptions": lambda: mlndt.Odometry}

@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "lab/eval/trajectory_evaluation.h"
 #include "mlndt/odometry/odometry_options.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"
@@ -24,6 +25,7 @@
 #include "tools/common/odometry_flags.h"
 #include "tools/common/option_flags.h"
 #include "tools/common/tool_table_flags.h"
+#include "tools/common/trajectory_evaluation_flags.h"
 
 namespace mlndt {
 namespace {
@@ -69,8 +71,10 @@ TEST(ToolOptionFlags, EveryToolTableIsListed) {
     tables.insert(flags->table().struct_name());
   }
   EXPECT_EQ(tables,
-            (std::set<std::string>{
-                "MapBuildOptions", "LocalizerOptions", "OdometryOptions"}));
+            (std::set<std::string>{"MapBuildOptions",
+                                   "LocalizerOptions",
+                                   "OdometryOptions",
+                                   "TrajectoryEvaluationOptions"}));
 }
 
 TEST(ToolOptionFlags, EveryFieldHasItsFlagHelpAndDefault) {
@@ -150,10 +154,12 @@ struct ToolStructs {
   MapBuildOptions map;
   LocalizerOptions localizer;
   OdometryOptions odometry;
+  TrajectoryEvaluationOptions evaluation;
 
   void* Of(const std::string& struct_name) {
     if (struct_name == "MapBuildOptions") return &map;
     if (struct_name == "LocalizerOptions") return &localizer;
+    if (struct_name == "TrajectoryEvaluationOptions") return &evaluation;
     EXPECT_EQ(struct_name, "OdometryOptions");
     return &odometry;
   }
@@ -209,7 +215,7 @@ TEST(ToolOptionFlags, AnOlderNameSetsTheSameField) {
       ++checked;
     }
   }
-  EXPECT_GE(checked, 9);  // mlndt_odometry's older names.
+  EXPECT_GE(checked, 12);  // mlndt_odometry's 9 older names, mlndt_eval's 3.
 }
 
 TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
@@ -249,6 +255,18 @@ TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
     gflags::SetCommandLineOption("max_uncertainty_deg", "20");
     ASSERT_TRUE(tools::OdometryFlags().Apply(&odometry, &error)) << error;
     EXPECT_EQ(odometry.prediction.max_rotation_deg, 20.0);
+  }
+  {
+    gflags::FlagSaver saver;
+    gflags::SetCommandLineOption("max_time_difference", "0");
+    TrajectoryEvaluationOptions evaluation;
+    EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
+    EXPECT_EQ(error, "--max_time_difference must be > 0 (s), not 0");
+    gflags::SetCommandLineOption("alignment", "affine");
+    gflags::SetCommandLineOption("max_time_difference", "0.1");
+    EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
+    EXPECT_EQ(error,
+              "--alignment=affine: expected se3, sim3, first_pose or none");
   }
 }
 

@@ -1,6 +1,7 @@
 #include "tools/common/odometry_flags.h"
 
 #include "mlndt/odometry/odometry_option_tables.h"
+#include "tools/common/option_flags.h"
 
 namespace mlndt {
 namespace tools {
@@ -19,7 +20,8 @@ const TableFlags kOdometryFlags(
      {"max_uncertainty_deg", "prediction_max_rotation_deg"},
      {"confirm", "confirmation_enabled"},
      {"confirm_fraction", "confirmation_min_correction_fraction"},
-     {"confirm_last_scan", "confirmation_check_last_scan"}});
+     {"confirm_last_scan", "confirmation_check_last_scan"}},
+    &IsSharedFlag);
 
 }  // namespace
 

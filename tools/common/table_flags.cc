@@ -3,13 +3,11 @@
 #include <glog/logging.h>
 
 #include "tools/common/flag_utils.h"
-#include "tools/common/option_flags.h"
+#include "tools/common/option_flags_store.h"
 
 namespace mlndt {
 namespace tools {
 namespace {
-
-bool IsShared(const std::string& name) { return FlagOfName(name) != nullptr; }
 
 void CollectFields(const OptionTable& table,
                    const std::string& prefix,
@@ -36,19 +34,21 @@ TableFlags::TableFlags(const OptionTable& table,
                        const std::string& tool,
                        Names renamed,
                        Names set_by_tool_flag,
-                       Names aliases)
+                       Names aliases,
+                       IsShared is_shared)
     : table_(table),
       tool_(tool),
       file_("tools/" + tool + ".cc"),
       renamed_(std::move(renamed)),
       set_by_tool_flag_(std::move(set_by_tool_flag)),
-      aliases_(std::move(aliases)) {
+      aliases_(std::move(aliases)),
+      is_shared_(is_shared) {
   CollectFields(table_, "", &fields_);
   // Leaked on purpose: gflags keeps the file name for the program's life.
   const char* file = (new std::string(file_))->c_str();
   for (const Field& f : fields_) {
     const std::string flag = FlagOf(f.path);
-    if (flag.empty() || IsShared(flag)) continue;
+    if (flag.empty() || Shared(flag)) continue;
     const std::string value = f.field->Format(Owner(f.path, table_.defaults()));
     RegisterOptionFlag(flag, f.field->FullHelp(), file, f.field->type, value);
     for (const auto& [alias, name] : aliases_) {
@@ -67,6 +67,10 @@ const void* TableFlags::Owner(const std::string& path, const void* s) const {
   return owner;
 }
 
+bool TableFlags::Shared(const std::string& flag) const {
+  return is_shared_ != nullptr && is_shared_(flag);
+}
+
 std::string TableFlags::FlagOf(const std::string& path) const {
   for (const auto& [field, flag] : renamed_) {
     if (field == path) return flag;
@@ -81,7 +85,7 @@ std::vector<std::string> TableFlags::RegisteredFlags() const {
   std::vector<std::string> flags;
   for (const Field& f : fields_) {
     const std::string flag = FlagOf(f.path);
-    if (!flag.empty() && !IsShared(flag)) flags.push_back(flag);
+    if (!flag.empty() && !Shared(flag)) flags.push_back(flag);
   }
   for (const auto& [alias, name] : aliases_) flags.push_back(alias);
   return flags;

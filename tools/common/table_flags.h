@@ -34,6 +34,9 @@ class TableFlags {
  public:
   // {field path, flag name}; for aliases {old flag name, flag name}.
   using Names = std::vector<std::pair<std::string, std::string>>;
+  // Whether a flag name is a shared registration flag (IsSharedFlag of
+  // option_flags.h, which links them); nullptr for a tool without them.
+  using IsShared = bool (*)(const std::string& name);
 
   // A field of the table or of a struct nested in it.
   struct Field {
@@ -45,12 +48,13 @@ class TableFlags {
   // tools/<tool>.cc. `renamed`: fields whose flag is not their path's;
   // `set_by_tool_flag`: fields without a flag of their own, and the tool's
   // flag (defined in the tool's main) that sets them; `aliases`: older
-  // names of the flags.
+  // names of the flags; `is_shared`: see IsShared.
   TableFlags(const OptionTable& table,
              const std::string& tool,
              Names renamed,
              Names set_by_tool_flag,
-             Names aliases = {});
+             Names aliases,
+             IsShared is_shared);
 
   const OptionTable& table() const { return table_; }
   const std::string& tool() const { return tool_; }
@@ -64,6 +68,8 @@ class TableFlags {
   // The flag that sets field `path`: its own, a shared one, or "" when a
   // tool flag in another unit sets it.
   std::string FlagOf(const std::string& path) const;
+  // Whether `flag` is a shared registration flag (not registered here).
+  bool Shared(const std::string& flag) const;
   // The flags registered here (aliases included).
   std::vector<std::string> RegisteredFlags() const;
 
@@ -80,6 +86,7 @@ class TableFlags {
   Names renamed_;
   Names set_by_tool_flag_;
   Names aliases_;
+  IsShared is_shared_;
   std::vector<Field> fields_;
 };
 

@@ -3,12 +3,16 @@
 #include "tools/common/localizer_flags.h"
 #include "tools/common/map_build_flags.h"
 #include "tools/common/odometry_flags.h"
+#include "tools/common/trajectory_evaluation_flags.h"
 
 namespace mlndt {
 namespace tools {
 
 std::vector<const TableFlags*> ToolTableFlags() {
-  return {&MapBuildFlags(), &LocalizerFlags(), &OdometryFlags()};
+  return {&MapBuildFlags(),
+          &LocalizerFlags(),
+          &OdometryFlags(),
+          &TrajectoryEvaluationFlags()};
 }
 
 }  // namespace tools
