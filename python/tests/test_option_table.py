@@ -99,9 +99,10 @@ def test_docs_options_md_is_current():
 # reaches them: LocalizerOptions' fields are mlndt.Localizer keywords;
 # MapBuildOptions is mlndt_map's only (LayeredMap.build takes the grid
 # keywords and num_threads, not a voxel filter or a memory limit);
-# TrajectoryEvaluationOptions is the lab's (mlndt_eval).
+# TrajectoryEvaluationOptions and AdaptiveStartLayerOptions are the lab's
+# (mlndt_eval, mlndt_sequence).
 PYTHON_TOOL_TABLES = {"LocalizerOptions": lambda: mlndt.Localizer}
-TOOL_ONLY_TABLES = {"MapBuildOptions", "TrajectoryEvaluationOptions"}
+TOOL_ONLY_TABLES = {"MapBuildOptions", "TrajectoryEvaluationOptions", "AdaptiveStartLayerOptions"}
 # OdometryOptions' fields are mlndt.Odometry keywords, a nested struct's as a
 # dict (local_map={"max_keyframes": 3} for --local_map_max_keyframes=3).
 NESTED_TOOL_TABLES = {"OdometryOptions": lambda: mlndt.Odometry}

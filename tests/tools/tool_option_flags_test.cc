@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "lab/eval/trajectory_evaluation.h"
+#include "lab/runs/adaptive_start_layer.h"
 #include "mlndt/odometry/odometry_options.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"
@@ -74,7 +75,8 @@ TEST(ToolOptionFlags, EveryToolTableIsListed) {
             (std::set<std::string>{"MapBuildOptions",
                                    "LocalizerOptions",
                                    "OdometryOptions",
-                                   "TrajectoryEvaluationOptions"}));
+                                   "TrajectoryEvaluationOptions",
+                                   "AdaptiveStartLayerOptions"}));
 }
 
 TEST(ToolOptionFlags, EveryFieldHasItsFlagHelpAndDefault) {
@@ -155,11 +157,13 @@ struct ToolStructs {
   LocalizerOptions localizer;
   OdometryOptions odometry;
   TrajectoryEvaluationOptions evaluation;
+  AdaptiveStartLayerOptions adaptive;
 
   void* Of(const std::string& struct_name) {
     if (struct_name == "MapBuildOptions") return &map;
     if (struct_name == "LocalizerOptions") return &localizer;
     if (struct_name == "TrajectoryEvaluationOptions") return &evaluation;
+    if (struct_name == "AdaptiveStartLayerOptions") return &adaptive;
     EXPECT_EQ(struct_name, "OdometryOptions");
     return &odometry;
   }
@@ -215,7 +219,8 @@ TEST(ToolOptionFlags, AnOlderNameSetsTheSameField) {
       ++checked;
     }
   }
-  EXPECT_GE(checked, 12);  // mlndt_odometry's 9 older names, mlndt_eval's 3.
+  // mlndt_odometry's 9 older names, mlndt_eval's 3, mlndt_sequence's 3.
+  EXPECT_GE(checked, 15);
 }
 
 TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
@@ -260,6 +265,7 @@ TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
     gflags::FlagSaver saver;
     gflags::SetCommandLineOption("max_time_difference", "0");
     TrajectoryEvaluationOptions evaluation;
+    AdaptiveStartLayerOptions adaptive;
     EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
     EXPECT_EQ(error, "--max_time_difference must be > 0 (s), not 0");
     gflags::SetCommandLineOption("alignment", "affine");

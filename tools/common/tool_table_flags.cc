@@ -1,5 +1,6 @@
 #include "tools/common/tool_table_flags.h"
 
+#include "tools/common/adaptive_start_layer_flags.h"
 #include "tools/common/localizer_flags.h"
 #include "tools/common/map_build_flags.h"
 #include "tools/common/odometry_flags.h"
@@ -12,7 +13,8 @@ std::vector<const TableFlags*> ToolTableFlags() {
   return {&MapBuildFlags(),
           &LocalizerFlags(),
           &OdometryFlags(),
-          &TrajectoryEvaluationFlags()};
+          &TrajectoryEvaluationFlags(),
+          &AdaptiveStartLayerFlags()};
 }
 
 }  // namespace tools
