@@ -99,10 +99,15 @@ def test_docs_options_md_is_current():
 # reaches them: LocalizerOptions' fields are mlndt.Localizer keywords;
 # MapBuildOptions is mlndt_map's only (LayeredMap.build takes the grid
 # keywords and num_threads, not a voxel filter or a memory limit);
-# TrajectoryEvaluationOptions and AdaptiveStartLayerOptions are the lab's
-# (mlndt_eval, mlndt_sequence).
+# TrajectoryEvaluationOptions, AdaptiveStartLayerOptions and PoseGraphOptions
+# are the lab's (mlndt_eval, mlndt_sequence, mlndt_posegraph).
 PYTHON_TOOL_TABLES = {"LocalizerOptions": lambda: mlndt.Localizer}
-TOOL_ONLY_TABLES = {"MapBuildOptions", "TrajectoryEvaluationOptions", "AdaptiveStartLayerOptions"}
+TOOL_ONLY_TABLES = {
+    "MapBuildOptions",
+    "TrajectoryEvaluationOptions",
+    "AdaptiveStartLayerOptions",
+    "PoseGraphOptions",
+}
 # OdometryOptions' fields are mlndt.Odometry keywords, a nested struct's as a
 # dict (local_map={"max_keyframes": 3} for --local_map_max_keyframes=3).
 NESTED_TOOL_TABLES = {"OdometryOptions": lambda: mlndt.Odometry}

@@ -17,6 +17,7 @@
 
 #include "lab/eval/trajectory_evaluation.h"
 #include "lab/runs/adaptive_start_layer.h"
+#include "lab/runs/pose_graph.h"
 #include "mlndt/odometry/odometry_options.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"
@@ -76,6 +77,7 @@ TEST(ToolOptionFlags, EveryToolTableIsListed) {
                                    "LocalizerOptions",
                                    "OdometryOptions",
                                    "TrajectoryEvaluationOptions",
+                                   "PoseGraphOptions",
                                    "AdaptiveStartLayerOptions"}));
 }
 
@@ -158,12 +160,14 @@ struct ToolStructs {
   OdometryOptions odometry;
   TrajectoryEvaluationOptions evaluation;
   AdaptiveStartLayerOptions adaptive;
+  PoseGraphOptions pose_graph;
 
   void* Of(const std::string& struct_name) {
     if (struct_name == "MapBuildOptions") return &map;
     if (struct_name == "LocalizerOptions") return &localizer;
     if (struct_name == "TrajectoryEvaluationOptions") return &evaluation;
     if (struct_name == "AdaptiveStartLayerOptions") return &adaptive;
+    if (struct_name == "PoseGraphOptions") return &pose_graph;
     EXPECT_EQ(struct_name, "OdometryOptions");
     return &odometry;
   }
@@ -219,8 +223,9 @@ TEST(ToolOptionFlags, AnOlderNameSetsTheSameField) {
       ++checked;
     }
   }
-  // mlndt_odometry's 9 older names, mlndt_eval's 3, mlndt_sequence's 3.
-  EXPECT_GE(checked, 15);
+  // mlndt_odometry's 9 older names, mlndt_eval's 3, mlndt_sequence's 3,
+  // mlndt_posegraph's 3.
+  EXPECT_GE(checked, 18);
 }
 
 TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
@@ -265,7 +270,6 @@ TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
     gflags::FlagSaver saver;
     gflags::SetCommandLineOption("max_time_difference", "0");
     TrajectoryEvaluationOptions evaluation;
-    AdaptiveStartLayerOptions adaptive;
     EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
     EXPECT_EQ(error, "--max_time_difference must be > 0 (s), not 0");
     gflags::SetCommandLineOption("alignment", "affine");

@@ -4,6 +4,7 @@
 #include "tools/common/localizer_flags.h"
 #include "tools/common/map_build_flags.h"
 #include "tools/common/odometry_flags.h"
+#include "tools/common/pose_graph_flags.h"
 #include "tools/common/trajectory_evaluation_flags.h"
 
 namespace mlndt {
@@ -14,7 +15,8 @@ std::vector<const TableFlags*> ToolTableFlags() {
           &LocalizerFlags(),
           &OdometryFlags(),
           &TrajectoryEvaluationFlags(),
-          &AdaptiveStartLayerFlags()};
+          &AdaptiveStartLayerFlags(),
+          &PoseGraphFlags()};
 }
 
 }  // namespace tools
