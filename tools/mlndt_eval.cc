@@ -7,6 +7,7 @@
 //   mlndt_eval --reference=gt.txt --estimate=a.txt[,b.tum,...]
 //              [--alignment=se3|sim3|first_pose|none] [--delta=1]
 //              [--output_json=eval.json]
+//              [--segments_lengths_m=100,...] [--segments_first_frame_step=10]
 //   mlndt_eval chain reference_pairs.json poses.txt
 //
 // Files are KITTI (12 numbers a line, the line index is the frame) or TUM
@@ -14,7 +15,7 @@
 // .tum, else the first line) or given (--format for the estimates,
 // --reference_format). Poses are paired by index (KITTI, the devkit's
 // convention) or, when both have time stamps, by timestamp within
-// --max_time_difference (--association; evo's nearest-stamp matching, so
+// --max_time_difference_s (--association; evo's nearest-stamp matching, so
 // trajectories of different rates and offsets pair up by time). TUM files
 // have stamps unless their header says they are scan indices (as the mlndt
 // tools write when no times were known); a KITTI reference gets them from
@@ -32,6 +33,10 @@
 // gaps); pose 0 is the identity and pose k+1 = pose k * reference_from_input
 // of that pair, for as long as a next pair exists. One line per chained
 // scan; the printed line lists the scans when they are not consecutive.
+//
+// The evaluation's flags are TrajectoryEvaluationOptions' fields
+// (tools/common/trajectory_evaluation_flags.h; the older names
+// --max_time_difference, --segment_lengths and --segment_step still work).
 //
 // Exit codes: 2 on a bad flag or an input refused before any work (an
 // unreadable file, trajectories of different lengths paired by index); 1
@@ -53,6 +58,7 @@
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
 #include "tools/common/tool_main.h"
+#include "tools/common/trajectory_evaluation_flags.h"
 
 // clang-format off
 DEFINE_string(reference, "", "The reference trajectory (KITTI or TUM)");
@@ -63,14 +69,6 @@ DEFINE_string(reference_times, "", "Time stamps of a KITTI --reference: a file o
               "per pose (times.txt); then TUM estimates are associated by time");
 DEFINE_string(reference_calib, "", "KITTI calib.txt: --reference holds camera (cam0) poses, "
               "converted into the Velodyne frame with its Tr line");
-DEFINE_string(alignment, "se3", "ATE alignment: se3 | sim3 | first_pose | none");
-DEFINE_int32(delta, 1, "RPE: frames (associated poses) between the two poses of a motion, >= 1");
-DEFINE_string(association, "auto", "auto (timestamp when both files are TUM, else index) | "
-              "index | timestamp");
-DEFINE_double(max_time_difference, 0.02, "Timestamp association: largest |dt| [s], > 0");
-DEFINE_string(segment_lengths, "100,200,300,400,500,600,700,800",
-              "KITTI segment lengths [m], comma-separated, each > 0");
-DEFINE_int32(segment_step, 10, "KITTI segments: a first frame every this many frames, >= 1");
 DEFINE_string(output_json, "", "Also write the results as JSON to this file");
 // clang-format on
 
@@ -87,9 +85,9 @@ const std::vector<std::string> kEvalFlags = {"reference",
                                              "alignment",
                                              "delta",
                                              "association",
-                                             "max_time_difference",
-                                             "segment_lengths",
-                                             "segment_step",
+                                             "max_time_difference_s",
+                                             "segments_lengths_m",
+                                             "segments_first_frame_step",
                                              "output_json"};
 
 // ---- chain --------------------------------------------------------------
@@ -156,37 +154,18 @@ bool ParseFlags(EvalFlags* flags, std::string* error) {
       !ParseFileFlags(flags, error)) {
     return false;
   }
-  TrajectoryEvaluationOptions& options = flags->options;
-  if (!StringToTrajectoryAlignment(FLAGS_alignment, &options.alignment)) {
-    *error = "--alignment=" + FLAGS_alignment +
-             ": expected se3, sim3, first_pose or none";
+  // The lengths' own check first (positive, none twice), for its message.
+  const std::string lengths = "segments_lengths_m";
+  std::vector<double> parsed;
+  if (tools::FlagGiven(lengths) &&
+      !tools::ParseSegmentLengths(tools::GivenFlagName(lengths),
+                                  tools::FlagText(lengths),
+                                  &parsed,
+                                  error)) {
     return false;
   }
-  if (FLAGS_delta < 1) {
-    *error = "--delta must be >= 1";
-    return false;
-  }
-  options.delta = FLAGS_delta;
-  if (!StringToPoseAssociation(FLAGS_association, &options.association)) {
-    *error = "--association=" + FLAGS_association +
-             ": expected auto, index or timestamp";
-    return false;
-  }
-  if (!(FLAGS_max_time_difference > 0.0)) {
-    *error = "--max_time_difference must be > 0 [s]";
-    return false;
-  }
-  options.max_time_difference_s = FLAGS_max_time_difference;
-  if (!tools::ParseSegmentLengths(
-          FLAGS_segment_lengths, &options.segments.lengths_m, error)) {
-    return false;
-  }
-  if (FLAGS_segment_step < 1) {
-    *error = "--segment_step must be >= 1";
-    return false;
-  }
-  options.segments.first_frame_step = FLAGS_segment_step;
-  return true;
+  return tools::CheckFlagAliases(error) &&
+         tools::TrajectoryEvaluationFlags().Apply(&flags->options, error);
 }
 
 int Run() {
@@ -209,7 +188,8 @@ int Run() {
       return tools::Fail(kTool, error);
     }
   }
-  tools::PrintEvaluations(flags.options, FLAGS_alignment, reference, results);
+  tools::PrintEvaluations(
+      flags.options, tools::FlagText("alignment"), reference, results);
   if (!FLAGS_output_json.empty() &&
       !tools::WriteJsonFile(
           FLAGS_output_json,

@@ -1,7 +1,13 @@
 // mlndt_info: describes point-cloud files, one JSON object per line.
 //
-//   mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]
+//   mlndt_info [--layers [--num_layers=4 | --finest_cell_size_m=1]
 //              [--division_constant=8] [--min_points_per_cell=5]] FILE...
+//
+// The map flags are the shared ones of LayeredGridOptions (option_flags.h;
+// --finest_cell_size is the older name of --finest_cell_size_m); the map
+// starts from the paper's (PaperLayeredGridOptions: n = 4, no finest cell
+// size, coarse weighting by points), the defaults --help shows. The other
+// registration flags are refused.
 //
 // For every file:
 //   {"schema_version": 1, "tool": "mlndt_info", "version": ..., "command": ...,
@@ -31,28 +37,13 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
+#include "tools/common/grid_flags.h"
 #include "tools/common/json_output.h"
 #include "tools/common/tool_main.h"
 
 DEFINE_bool(layers,
             false,
             "Also build the layered NDT map and report its layers");
-DEFINE_int32(num_layers,
-             mlndt::PaperLayeredGridOptions().num_layers,
-             "--layers: number of layers n (the paper's 4); ignored with "
-             "--finest_cell_size");
-DEFINE_int32(division_constant,
-             mlndt::PaperLayeredGridOptions().division_constant,
-             "--layers: division constant q (layer i has about q^i cells)");
-DEFINE_double(finest_cell_size,
-              mlndt::PaperLayeredGridOptions().finest_cell_size_m,
-              "--layers: when > 0, use the fewest layers whose finest cell "
-              "edge is <= this [m] "
-              "instead of --num_layers; 0 = paper sizing");
-DEFINE_int32(min_points_per_cell,
-             mlndt::PaperLayeredGridOptions().min_points_per_cell,
-             "--layers: a cell keeps a distribution when it holds at least "
-             "this many points");
 
 namespace mlndt {
 namespace {
@@ -63,39 +54,16 @@ void PrintError(const std::string& message) {
   std::cerr << kToolName << ": " << message << std::endl;
 }
 
-bool IsDefault(const char* flag) {
-  return gflags::GetCommandLineFlagInfoOrDie(flag).is_default;
-}
-
-// Map options from the flags; false with *error for contradictory flags.
+// Map options (the paper's, n = 4) from the shared grid flags given;
+// false with *error for bad or contradictory flags.
 bool GridOptionsFromFlags(LayeredGridOptions* options, std::string* error) {
-  const bool grid_flags_given =
-      !IsDefault("num_layers") || !IsDefault("division_constant") ||
-      !IsDefault("finest_cell_size") || !IsDefault("min_points_per_cell");
-  if (!FLAGS_layers) {
-    if (grid_flags_given) {
-      *error =
-          "--num_layers, --division_constant, --finest_cell_size and "
-          "--min_points_per_cell "
-          "need --layers";
-      return false;
-    }
-    return true;
-  }
-  if (!IsDefault("num_layers") && FLAGS_finest_cell_size > 0.0) {
-    *error = "give --num_layers or --finest_cell_size, not both";
+  if (!FLAGS_layers && tools::GridFlagsGiven()) {
+    *error =
+        "--num_layers, --division_constant, --finest_cell_size_m, "
+        "--min_points_per_cell and the other map flags need --layers";
     return false;
   }
-  options->num_layers = FLAGS_num_layers;
-  options->division_constant = FLAGS_division_constant;
-  options->finest_cell_size_m = FLAGS_finest_cell_size;
-  options->min_points_per_cell = FLAGS_min_points_per_cell;
-  std::string why;
-  if (!options->IsValid(&why)) {
-    *error = "invalid map options: " + why;
-    return false;
-  }
-  return true;
+  return tools::ApplyGridFlags(kToolName, options, error);
 }
 
 tools::Json PointJson(const Eigen::Vector3d& point) {
@@ -189,11 +157,13 @@ int main(int argc, char** argv) {
       "Prints one JSON line per point-cloud file: format, point count, "
       "bounding box and, with "
       "--layers, the layers of its ML-NDT map.\n"
-      "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size=1]] "
+      "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size_m=1]] "
       "FILE...\n"
       "Exit 2 when a FILE is missing or cannot be opened (before any is "
       "described), 1 when one cannot be parsed or its map cannot be built "
       "(the others are still described).";
+  mlndt::tools::HideFlagsFromHelp(mlndt::tools::NonGridFlags());
+  mlndt::tools::SetGridFlagDefaults(mlndt::PaperLayeredGridOptions());
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

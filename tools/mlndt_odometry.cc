@@ -6,6 +6,18 @@
 //                  --calib=calib.txt]] [--max_scans=N] [odometry flags]
 //                  [any mlndt_align registration flag]
 //
+// Each scan is predicted with constant velocity at its time stamp, deskewed
+// when the bag has per-point times, and registered onto a local layered map
+// of the last keyframes; the prediction's uncertainty (from how far recent
+// predictions missed) sets the registration's initial_uncertainty and so
+// its start layer. A scan whose registration is not usable gets its
+// prediction as its pose, flagged as a fallback in scans.csv. The odometry
+// flags are OdometryOptions' fields (tools/common/odometry_flags.h:
+// --local_map_max_keyframes, --keyframes_min_translation_m,
+// --prediction_max_translation_m, --gate_factor, --confirmation_enabled,
+// ...; the older names --local_map_keyframes, --keyframe_distance,
+// --max_uncertainty_m, --confirm, ... still work).
+//
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,
 // as its header line says), scans.csv (per scan: verdict, fallback,
@@ -28,6 +40,7 @@
 #include "lab/report/progress.h"
 #include "tools/common/flag_utils.h"
 #include "tools/common/list_flags.h"
+#include "tools/common/odometry_flags.h"
 #include "tools/common/odometry_output.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
@@ -44,26 +57,6 @@ DEFINE_string(gt_poses, "", "Optional KITTI reference poses, one line per scan (
 DEFINE_int32(rpe_delta, 100, "RPE: scans between the two poses of a motion (>= 1; shorter "
              "sequences use their length - 1)");
 DEFINE_string(segment_lengths, "10,100", "KITTI devkit segment lengths [m], comma-separated");
-DEFINE_double(keyframe_distance, mlndt::KeyframeOptions().min_translation_m,
-              "A scan joins the local map when this far [m] from the last keyframe");
-DEFINE_double(keyframe_angle, mlndt::KeyframeOptions().min_rotation_deg,
-              "... or turned this much [deg]");
-DEFINE_int32(local_map_keyframes, mlndt::LocalMapOptions().max_keyframes,
-             "Keyframes in the local map");
-DEFINE_double(local_map_radius, mlndt::LocalMapOptions().radius_m,
-              "Local map points farther than this from the last keyframe are left out [m]");
-DEFINE_double(max_uncertainty_m, mlndt::MotionPredictionOptions().max_translation_m,
-              "Largest uncertainty of the prediction [m] (also the largest correction accepted)");
-DEFINE_double(max_uncertainty_deg, mlndt::MotionPredictionOptions().max_rotation_deg,
-              "Largest uncertainty of the prediction [deg] (also the largest correction accepted)");
-DEFINE_int32(max_consecutive_fallbacks, mlndt::OdometryOptions().max_consecutive_fallbacks,
-             "After this many scans in a row without a pose the local map restarts");
-DEFINE_bool(deskew, true, "Deskew scans whose bag messages have per-point times");
-DEFINE_double(gate_factor, mlndt::OdometryOptions().gate_factor,
-              "A pose farther from the prediction than this times its uncertainty is refused");
-DEFINE_bool(confirm, mlndt::ConfirmationOptions().enabled, "Confirm CONVERGENCE from beyond the pose (else NO_CONVERGENCE)");
-DEFINE_double(confirm_fraction, mlndt::ConfirmationOptions().min_correction_fraction, "Confirm corrections above this fraction of the uncertainty (0 = all)");
-DEFINE_bool(confirm_last_scan, mlndt::ConfirmationOptions().check_last_scan, "A confirmed pose must agree with the scan registered onto the last registered scan alone");
 DEFINE_bool(plots, true, "Write trajectory_xy.png with gnuplot (exit 1 when gnuplot is missing)");
 DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 // clang-format on
@@ -100,18 +93,7 @@ bool OptionsFromFlags(OdometryOptions* options,
     return false;
   }
   options->local_map.grid = options->registration.grid;
-  options->local_map.max_keyframes = FLAGS_local_map_keyframes;
-  options->local_map.radius_m = FLAGS_local_map_radius;
-  options->keyframes.min_translation_m = FLAGS_keyframe_distance;
-  options->keyframes.min_rotation_deg = FLAGS_keyframe_angle;
-  options->prediction.max_translation_m = FLAGS_max_uncertainty_m;
-  options->prediction.max_rotation_deg = FLAGS_max_uncertainty_deg;
-  options->max_consecutive_fallbacks = FLAGS_max_consecutive_fallbacks;
-  options->deskew = FLAGS_deskew;
-  options->gate_factor = FLAGS_gate_factor;
-  options->confirmation.enabled = FLAGS_confirm;
-  options->confirmation.min_correction_fraction = FLAGS_confirm_fraction;
-  options->confirmation.check_last_scan = FLAGS_confirm_last_scan;
+  if (!tools::OdometryFlags().Apply(options, error)) return false;
   // The registration flags set the odometry's probe (on by default here)
   // and search along the weak direction (off by default here).
   const RegistrationOptions& given = options->registration;

@@ -5,11 +5,15 @@
 // in lab/runs/pose_graph.h.
 //
 //   mlndt_posegraph --scans=DIR [--gt_poses=poses.txt] [--neighbors=2]
-//                   [--odometry_poses=FILE [--odometry_sigma_m=0.05
-//                   --odometry_sigma_deg=0.5] [--init=odometry]]
+//                   [--odometry_poses=FILE [--odometry_noise_sigma_m=0.05
+//                   --odometry_noise_sigma_deg=0.5] [--init=odometry]]
 //                   [--pairs=i:j,...] [--information_scale=w]
 //                   [--output_dir=DIR] [--output_json=FILE] [registration
 //                   flags]
+//
+// The joint problem's flags are PoseGraphOptions' fields
+// (tools/common/pose_graph_flags.h); the older names --joint_point_blocks,
+// --odometry_sigma_m and --odometry_sigma_deg still work.
 //
 // Writes trajectory_<init>.txt (chained or odometry) and trajectory_joint.txt
 // (KITTI lines, world_from_scan, scan 0 = world) into --output_dir when
@@ -29,9 +33,11 @@
 #include "lab/eval/dataset.h"
 #include "lab/report/progress.h"
 #include "lab/runs/pose_graph.h"
+#include "tools/common/flag_utils.h"
 #include "tools/common/json_output.h"
 #include "tools/common/output_files.h"
 #include "tools/common/pose_flags.h"
+#include "tools/common/pose_graph_flags.h"
 #include "tools/common/posegraph_output.h"
 #include "tools/common/posegraph_pairs.h"
 #include "tools/common/registration_flags.h"
@@ -41,30 +47,12 @@
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (files with a cloud extension, sorted by name)");
 DEFINE_string(gt_poses, "", "Optional KITTI-format ground truth (world_from_scan, scan frame)");
-DEFINE_int32(neighbors, 2, "Edges i -> i+1 .. i+neighbors in the joint problem; >= 1");
-DEFINE_int32(joint_layers, 1,
-             "Finest map layers used by the joint solve, coarse to fine: 1 (finest only) or 2. "
-             "The chained poses already sit at a finest-layer optimum; on KITTI 0-7 a stage on "
-             "layer n-1 first moved them away (joint cost 1023435 vs 1023387, twice the time)");
-DEFINE_int32(joint_max_iterations, 50, "Ceres iteration cap per joint stage; >= 1");
 DEFINE_bool(joint_one_way, false,
-            "Only score scan j's points against scan i's map (default: both directions)");
-DEFINE_bool(joint_point_blocks, false,
-            "One Ceres residual block per sampled point (~1.2 kB each, 1.18 GB peak on the "
-            "21 MulRan KAIST03 keyframes) instead of one block per directed pair with the "
-            "same normal equations (mlndt_pair_factor.h)");
-DEFINE_double(information_scale, mlndt::kCalibratedPairInformationScale,
-              "Weight w of every pair's information (1: every sampled point a unit-information "
-              "measurement; the default is calibrated, docs/embedding.md). Matters only against "
-              "odometry factors");
+            "Only score scan j's points against scan i's map (= --both_directions=false)");
 DEFINE_string(pairs, "", "Extra pairs i:j,... (0-based, file-name order), e.g. loop closures");
 DEFINE_string(odometry_poses, "",
               "KITTI-format odometry (world_from_scan per scan): a factor between consecutive "
               "scans with the noise below");
-DEFINE_double(odometry_sigma_m, mlndt::OdometryNoise().sigma_m,
-              "Stated noise of each odometry step, per translation axis [m]");
-DEFINE_double(odometry_sigma_deg, mlndt::OdometryNoise().sigma_deg,
-              "Stated noise of each odometry step, per rotation axis [deg]");
 DEFINE_string(init, "chained", "Initial poses: chained (registrations) or odometry");
 DEFINE_string(output_dir, "", "Folder for trajectory_<init>.txt and trajectory_joint.txt");
 DEFINE_string(output_json, "", "Also write the JSON result to this file");
@@ -97,13 +85,15 @@ bool OptionsFromFlags(PoseGraphOptions* options, std::string* error) {
     *error = "--pairs: " + *error;
     return false;
   }
-  options->neighbors = FLAGS_neighbors;
-  options->joint_layers = FLAGS_joint_layers;
-  options->max_iterations = FLAGS_joint_max_iterations;
-  options->both_directions = !FLAGS_joint_one_way;
-  options->point_blocks = FLAGS_joint_point_blocks;
-  options->information_scale = FLAGS_information_scale;
-  options->odometry_noise = {FLAGS_odometry_sigma_m, FLAGS_odometry_sigma_deg};
+  if (tools::FlagGiven("joint_one_way") &&
+      tools::FlagGiven("both_directions")) {
+    *error = "give --both_directions or --joint_one_way, not both";
+    return false;
+  }
+  if (!tools::PoseGraphFlags().Apply(options, error)) return false;
+  if (tools::FlagGiven("joint_one_way")) {
+    options->both_directions = !FLAGS_joint_one_way;
+  }
   options->init_from_odometry = FLAGS_init == "odometry";
   return tools::CheckStartLayerBeforeMap(options->registration, error);
 }
@@ -179,13 +169,13 @@ int Run() {
   std::string error;
   if (!PrepareRun(&options, &paths, &truth, &error)) return Refuse(error);
 
-  const size_t cap = static_cast<size_t>(FLAGS_joint_max_iterations);
+  const size_t cap = static_cast<size_t>(options.max_iterations);
   Progress progress("mlndt_posegraph joint",
-                    static_cast<size_t>(FLAGS_joint_layers) * cap);
+                    static_cast<size_t>(options.joint_layers) * cap);
   options.on_iteration =
       [&](const std::string& stage, int iteration, double cost) {
         const size_t before =
-            stage == "layer n-0" && FLAGS_joint_layers == 2 ? cap : 0;
+            stage == "layer n-0" && options.joint_layers == 2 ? cap : 0;
         progress.Update(before + static_cast<size_t>(iteration),
                         stage + " cost " + std::to_string(cost));
       };

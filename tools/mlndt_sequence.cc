@@ -35,6 +35,10 @@
 // a pair fails when its estimate is more than 1 m or 15 deg from its --init
 // guess (or the registration fails); while the running fail rate over the
 // pairs so far exceeds 5 % start one layer coarser, above 20 % two coarser.
+// Its flags are AdaptiveStartLayerOptions' (adaptive_start_layer_flags.h:
+// --adaptive_max_translation_m, --adaptive_max_rotation_deg,
+// --adaptive_fail_rate_thresholds; the older names --adaptive_max_translation,
+// --adaptive_max_rotation, --adaptive_fail_rates still work).
 //
 // Writes into --output_dir: pairs.csv, summary.json, trace.csv,
 // trajectory.txt (chained estimates of scans 0, step, 2 step, ...; KITTI
@@ -80,14 +84,6 @@ DEFINE_string(output_dir, "", "Folder for pairs.csv, summary.json, trajectories 
 DEFINE_bool(plots, true, "Write PNG figures with gnuplot (exit 1 when gnuplot is missing)");
 DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
 DEFINE_int32(trace_plot_pairs, 3, "Pairs shown in score_vs_iteration.png");
-DEFINE_bool(adaptive_start_layer, false,
-            "Paper's adaptive start layer: last layer, coarser as the fail rate grows");
-DEFINE_double(adaptive_max_translation, 1.0,
-              "Adaptive: a deviation from the --init guess above this [m] is a failure");
-DEFINE_double(adaptive_max_rotation, 15.0,
-              "Adaptive: a deviation from the --init guess above this [deg] is a failure");
-DEFINE_string(adaptive_fail_rates, "0.05,0.2",
-              "Adaptive: ascending running fail rates; above the k-th start k layers coarser");
 // clang-format on
 
 namespace mlndt {
@@ -115,12 +111,7 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   options->release_used_scans = true;
   if (!tools::MatcherOptionsFromFlags(&options->registration, error) ||
       !ParseInitSpec(FLAGS_init, &options->init, error) ||
-      !tools::AdaptiveOptionsFromValues(FLAGS_adaptive_start_layer,
-                                        FLAGS_adaptive_max_translation,
-                                        FLAGS_adaptive_max_rotation,
-                                        FLAGS_adaptive_fail_rates,
-                                        &options->adaptive,
-                                        error)) {
+      !tools::AdaptiveOptionsFromFlags(&options->adaptive, error)) {
     return false;
   }
   if (options->adaptive.enabled &&

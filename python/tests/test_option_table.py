@@ -98,14 +98,46 @@ def test_docs_options_md_is_current():
 # The tools' own tables (mlndt_options' "tool_options") and where Python
 # reaches them: LocalizerOptions' fields are mlndt.Localizer keywords;
 # MapBuildOptions is mlndt_map's only (LayeredMap.build takes the grid
-# keywords and num_threads, not a voxel filter or a memory limit).
+# keywords and num_threads, not a voxel filter or a memory limit);
+# TrajectoryEvaluationOptions, AdaptiveStartLayerOptions and PoseGraphOptions
+# are the lab's (mlndt_eval, mlndt_sequence, mlndt_posegraph).
 PYTHON_TOOL_TABLES = {"LocalizerOptions": lambda: mlndt.Localizer}
-TOOL_ONLY_TABLES = {"MapBuildOptions"}
+TOOL_ONLY_TABLES = {
+    "MapBuildOptions",
+    "TrajectoryEvaluationOptions",
+    "AdaptiveStartLayerOptions",
+    "PoseGraphOptions",
+}
+# OdometryOptions' fields are mlndt.Odometry keywords, a nested struct's as a
+# dict (local_map={"max_keyframes": 3} for --local_map_max_keyframes=3).
+NESTED_TOOL_TABLES = {"OdometryOptions": lambda: mlndt.Odometry}
 
 
 def test_every_tool_table_has_its_python_place(description):
     structs = {table["struct"] for table in description["tool_options"]}
-    assert structs == set(PYTHON_TOOL_TABLES) | TOOL_ONLY_TABLES
+    assert structs == set(PYTHON_TOOL_TABLES) | TOOL_ONLY_TABLES | set(NESTED_TOOL_TABLES)
+
+
+def test_nested_tool_table_fields_are_keywords(description):
+    checked = 0
+    for table in description["tool_options"]:
+        if table["struct"] not in NESTED_TOOL_TABLES:
+            continue
+        cls = NESTED_TOOL_TABLES[table["struct"]]()
+        for row in table["options"]:
+            path, kind = row["field"], row["type"]
+            assert row["flag"] in ("", path.replace(".", "_")), row
+            def keyword(value):
+                if "." not in path:
+                    return {path: value}
+                outer, inner = path.split(".")
+                return {outer: {inner: value}}
+
+            cls(**keyword(python_value(row["default"], kind)))  # A keyword.
+            with pytest.raises(ValueError, match=re.escape(path)):
+                cls(**keyword(object()))
+            checked += 1
+    assert checked >= 16
 
 
 def documented_defaults(doc):

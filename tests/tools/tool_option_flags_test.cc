@@ -1,25 +1,33 @@
 // The tools' own option tables against their flags (tools/common/
-// table_flags.h): every field of every table in ToolTableFlags() has a flag
-// named as the field (or as listed), registered as the tool's, whose --help
-// is the field's FullHelp and whose default is the struct's, or a shared
-// flag of the same option (type, unit, range and default); no flag of the
-// tool's table is undescribed; a flag given lands in its field; a value out
-// of range is refused naming the flag.
+// table_flags.h): every field of every table in ToolTableFlags() (nested
+// structs' fields too) has a flag named as the field's path (or as listed),
+// registered as the tool's, whose --help is the field's FullHelp and whose
+// default is the struct's, or a shared flag of the same option (type, unit,
+// range and default); no flag of the tool's table is undescribed; a flag
+// given, or its older name, lands in its field; a value out of range is
+// refused naming the flag as given.
 
 #include <gflags/gflags.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
 
+#include "lab/eval/trajectory_evaluation.h"
+#include "lab/runs/adaptive_start_layer.h"
+#include "lab/runs/pose_graph.h"
+#include "mlndt/odometry/odometry_options.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"
 #include "mlndt/pipeline/pipeline_option_tables.h"
 #include "tools/common/localizer_flags.h"
 #include "tools/common/map_build_flags.h"
+#include "tools/common/odometry_flags.h"
 #include "tools/common/option_flags.h"
 #include "tools/common/tool_table_flags.h"
+#include "tools/common/trajectory_evaluation_flags.h"
 
 namespace mlndt {
 namespace {
@@ -29,10 +37,12 @@ using tools::ToolTableFlags;
 
 // gflags writes a double default its own way; compare values.
 void ExpectSameDefault(const std::string& flag_default,
-                       const OptionField& field,
-                       const OptionTable& table,
+                       const TableFlags& flags,
+                       const TableFlags::Field& f,
                        const std::string& what) {
-  const std::string field_default = field.Format(table.defaults());
+  const OptionField& field = *f.field;
+  const std::string field_default =
+      field.Format(flags.Owner(f.path, flags.table().defaults()));
   if (field.type == OptionType::DOUBLE) {
     EXPECT_EQ(std::stod(flag_default), std::stod(field_default)) << what;
   } else {
@@ -63,26 +73,33 @@ TEST(ToolOptionFlags, EveryToolTableIsListed) {
     tables.insert(flags->table().struct_name());
   }
   EXPECT_EQ(tables,
-            (std::set<std::string>{"MapBuildOptions", "LocalizerOptions"}));
+            (std::set<std::string>{"MapBuildOptions",
+                                   "LocalizerOptions",
+                                   "OdometryOptions",
+                                   "TrajectoryEvaluationOptions",
+                                   "PoseGraphOptions",
+                                   "AdaptiveStartLayerOptions"}));
 }
 
 TEST(ToolOptionFlags, EveryFieldHasItsFlagHelpAndDefault) {
   for (const TableFlags* flags : ToolTableFlags()) {
-    const OptionTable& table = flags->table();
-    for (const OptionField& field : table.fields()) {
-      const std::string what = table.struct_name() + "." + field.name;
-      const std::string flag = flags->FlagOf(field.name);
+    for (const TableFlags::Field& f : flags->fields()) {
+      const OptionField& field = *f.field;
+      const std::string what = flags->table().struct_name() + "." + f.path;
+      const std::string flag = flags->FlagOf(f.path);
       if (flag.empty()) {
-        EXPECT_TRUE(Listed(flags->set_by_tool_flag(), field.name)) << what;
+        EXPECT_TRUE(Listed(flags->set_by_tool_flag(), f.path)) << what;
         continue;
       }
-      if (!Listed(flags->renamed(), field.name)) {
-        EXPECT_EQ(flag, field.name) << what;
+      if (!Listed(flags->renamed(), f.path)) {
+        std::string underscored = f.path;
+        std::replace(underscored.begin(), underscored.end(), '.', '_');
+        EXPECT_EQ(flag, underscored) << what;
       }
       gflags::CommandLineFlagInfo info;
       ASSERT_TRUE(gflags::GetCommandLineFlagInfo(flag.c_str(), &info))
           << what << ": --" << flag << " is not registered";
-      ExpectSameDefault(info.default_value, field, table, what);
+      ExpectSameDefault(info.default_value, *flags, f, what);
       if (tools::FlagOfName(flag) != nullptr) {  // Shared: its help.
         ExpectSameOption(field, flag);
         continue;
@@ -111,9 +128,8 @@ TEST(ToolOptionFlags, NoFlagOfATableIsUndescribed) {
   }
 }
 
-// A valid value of the field other than its default.
-std::string OtherValue(const OptionField& field, const OptionTable& table) {
-  const std::string current = field.Format(table.defaults());
+// A valid value of the field other than its default `current`.
+std::string OtherValue(const OptionField& field, const std::string& current) {
   if (field.type == OptionType::BOOL) {
     return current == "true" ? "false" : "true";
   }
@@ -137,28 +153,79 @@ std::string OtherValue(const OptionField& field, const OptionTable& table) {
   return "";
 }
 
+// One default-constructed struct of each tool table.
+struct ToolStructs {
+  MapBuildOptions map;
+  LocalizerOptions localizer;
+  OdometryOptions odometry;
+  TrajectoryEvaluationOptions evaluation;
+  AdaptiveStartLayerOptions adaptive;
+  PoseGraphOptions pose_graph;
+
+  void* Of(const std::string& struct_name) {
+    if (struct_name == "MapBuildOptions") return &map;
+    if (struct_name == "LocalizerOptions") return &localizer;
+    if (struct_name == "TrajectoryEvaluationOptions") return &evaluation;
+    if (struct_name == "AdaptiveStartLayerOptions") return &adaptive;
+    if (struct_name == "PoseGraphOptions") return &pose_graph;
+    EXPECT_EQ(struct_name, "OdometryOptions");
+    return &odometry;
+  }
+};
+
+// Gives --<flag>=<other value> (or its older name `given`) and expects
+// Apply to set field f.
+void ExpectFlagSetsField(const TableFlags& flags,
+                         const TableFlags::Field& f,
+                         const std::string& given) {
+  const OptionField& field = *f.field;
+  const std::string current =
+      field.Format(flags.Owner(f.path, flags.table().defaults()));
+  const std::string value = OtherValue(field, current);
+  gflags::FlagSaver saver;
+  ASSERT_FALSE(
+      gflags::SetCommandLineOption(given.c_str(), value.c_str()).empty())
+      << given << "=" << value;
+  ToolStructs structs;
+  void* s = structs.Of(flags.table().struct_name());
+  std::string error;
+  ASSERT_TRUE(flags.Apply(s, &error)) << error;
+  EXPECT_NE(field.Format(flags.Owner(f.path, s)), current)
+      << "--" << given << "=" << value << " did not reach " << f.path;
+}
+
 TEST(ToolOptionFlags, AGivenFlagSetsItsField) {
   for (const TableFlags* flags : ToolTableFlags()) {
-    const OptionTable& table = flags->table();
-    for (const OptionField& field : table.fields()) {
-      const std::string flag = flags->FlagOf(field.name);
-      if (flag.empty()) continue;
-      const std::string value = OtherValue(field, table);
-      gflags::FlagSaver saver;
-      ASSERT_FALSE(
-          gflags::SetCommandLineOption(flag.c_str(), value.c_str()).empty())
-          << flag << "=" << value;
-      MapBuildOptions map;
-      LocalizerOptions localizer;
-      void* s = table.struct_name() == "MapBuildOptions"
-                    ? static_cast<void*>(&map)
-                    : static_cast<void*>(&localizer);
-      std::string error;
-      ASSERT_TRUE(flags->Apply(s, &error)) << error;
-      EXPECT_NE(field.Format(s), field.Format(table.defaults()))
-          << "--" << flag << "=" << value << " did not reach " << field.name;
+    for (const TableFlags::Field& f : flags->fields()) {
+      const std::string flag = flags->FlagOf(f.path);
+      if (!flag.empty()) ExpectFlagSetsField(*flags, f, flag);
     }
   }
+}
+
+TEST(ToolOptionFlags, AnOlderNameSetsTheSameField) {
+  int checked = 0;
+  for (const TableFlags* flags : ToolTableFlags()) {
+    for (const auto& [alias, name] : flags->aliases()) {
+      const TableFlags::Field* field = nullptr;
+      for (const TableFlags::Field& f : flags->fields()) {
+        if (flags->FlagOf(f.path) == name) field = &f;
+      }
+      ASSERT_NE(field, nullptr) << "--" << alias << ": no field has --" << name;
+      gflags::CommandLineFlagInfo info;
+      gflags::CommandLineFlagInfo alias_info;
+      ASSERT_TRUE(gflags::GetCommandLineFlagInfo(name.c_str(), &info));
+      ASSERT_TRUE(gflags::GetCommandLineFlagInfo(alias.c_str(), &alias_info))
+          << "--" << alias << " is not registered";
+      EXPECT_EQ(alias_info.type, info.type) << alias;
+      EXPECT_EQ(alias_info.default_value, info.default_value) << alias;
+      ExpectFlagSetsField(*flags, *field, alias);
+      ++checked;
+    }
+  }
+  // mlndt_odometry's 9 older names, mlndt_eval's 3, mlndt_sequence's 3,
+  // mlndt_posegraph's 3.
+  EXPECT_GE(checked, 18);
 }
 
 TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
@@ -187,6 +254,29 @@ TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
     EXPECT_EQ(error,
               "--motion_model=kalman: expected constant_velocity or "
               "constant_pose");
+  }
+  {
+    gflags::FlagSaver saver;
+    gflags::SetCommandLineOption("max_uncertainty_deg", "200");
+    OdometryOptions odometry;
+    EXPECT_FALSE(tools::OdometryFlags().Apply(&odometry, &error));
+    EXPECT_EQ(error,
+              "--max_uncertainty_deg must be in [0, 180] (deg), not 200");
+    gflags::SetCommandLineOption("max_uncertainty_deg", "20");
+    ASSERT_TRUE(tools::OdometryFlags().Apply(&odometry, &error)) << error;
+    EXPECT_EQ(odometry.prediction.max_rotation_deg, 20.0);
+  }
+  {
+    gflags::FlagSaver saver;
+    gflags::SetCommandLineOption("max_time_difference", "0");
+    TrajectoryEvaluationOptions evaluation;
+    EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
+    EXPECT_EQ(error, "--max_time_difference must be > 0 (s), not 0");
+    gflags::SetCommandLineOption("alignment", "affine");
+    gflags::SetCommandLineOption("max_time_difference", "0.1");
+    EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
+    EXPECT_EQ(error,
+              "--alignment=affine: expected se3, sim3, first_pose or none");
   }
 }
 

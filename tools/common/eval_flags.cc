@@ -23,21 +23,21 @@ bool SplitEstimateList(const std::string& text,
   return true;
 }
 
-bool ParseSegmentLengths(const std::string& text,
+bool ParseSegmentLengths(const std::string& flag,
+                         const std::string& text,
                          std::vector<double>* lengths,
                          std::string* error) {
   if (!ParseNumberList(text, lengths) || lengths->empty() ||
       std::any_of(lengths->begin(), lengths->end(), [](double l) {
         return !(l > 0.0);
       })) {
-    *error = "--segment_lengths=" + text +
-             ": expected comma-separated lengths > 0 [m]";
+    *error = flag + "=" + text + ": expected comma-separated lengths > 0 [m]";
     return false;
   }
   std::vector<double> sorted = *lengths;
   std::sort(sorted.begin(), sorted.end());
   if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
-    *error = "--segment_lengths=" + text + ": a length is given twice";
+    *error = flag + "=" + text + ": a length is given twice";
     return false;
   }
   return true;

@@ -1,7 +1,8 @@
 #pragma once
 
 // mlndt_eval's list flags: the file list of --estimate and the KITTI
-// segment lengths of --segment_lengths (the flags stay in the main).
+// segment lengths of --segments_lengths_m (its flag is made from the table,
+// trajectory_evaluation_flags.h; this checks it further).
 
 #include <string>
 #include <vector>
@@ -16,8 +17,10 @@ bool SplitEstimateList(const std::string& text,
                        std::string* error);
 
 // "100,200,..." into lengths [m]; false with *error naming
-// --segment_lengths=`text` when one is not > 0 or is given twice.
-bool ParseSegmentLengths(const std::string& text,
+// `flag`=`text` ("--segment_lengths=...") when one is not > 0 or is given
+// twice.
+bool ParseSegmentLengths(const std::string& flag,
+                         const std::string& text,
                          std::vector<double>* lengths,
                          std::string* error);
 

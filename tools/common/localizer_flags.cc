@@ -1,15 +1,14 @@
 #include "tools/common/localizer_flags.h"
 
 #include "mlndt/pipeline/pipeline_option_tables.h"
+#include "tools/common/option_flags.h"
 
 namespace mlndt {
 namespace tools {
 namespace {
 
-const TableFlags kLocalizerFlags(LocalizerOwnOptionsTable(),
-                                 "mlndt_localize",
-                                 {},
-                                 {});
+const TableFlags kLocalizerFlags(
+    LocalizerOwnOptionsTable(), "mlndt_localize", {}, {}, {}, &IsSharedFlag);
 
 }  // namespace
 

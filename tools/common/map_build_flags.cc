@@ -1,6 +1,7 @@
 #include "tools/common/map_build_flags.h"
 
 #include "mlndt/pipeline/pipeline_option_tables.h"
+#include "tools/common/option_flags.h"
 
 namespace mlndt {
 namespace tools {
@@ -9,7 +10,9 @@ namespace {
 const TableFlags kMapBuildFlags(MapBuildOwnOptionsTable(),
                                 "mlndt_map",
                                 {{"voxel_size_m", "voxel_size"}},
-                                {{"max_memory_bytes", "max_memory_gb"}});
+                                {{"max_memory_bytes", "max_memory_gb"}},
+                                {},
+                                &IsSharedFlag);
 
 }  // namespace
 

@@ -24,6 +24,7 @@
 
 #include "mlndt/common/option_table.h"
 #include "tools/common/flag_utils.h"
+#include "tools/common/option_flags_store.h"
 
 namespace mlndt {
 namespace tools {
@@ -46,15 +47,8 @@ const OptionFlag* FlagOfName(const std::string& name);
 // The deprecated names: {old, new}.
 const std::vector<std::pair<std::string, std::string>>& FlagAliases();
 
-// Registers --<name> with gflags as if DEFINE_d in `file` (a string that
-// outlives the program; --help groups flags by it): a bool, int32, uint64,
-// double or (lists, enums) string flag by `type`, whose default is
-// `default_text` (OptionField::Format's text).
-void RegisterOptionFlag(const std::string& name,
-                        const std::string& help,
-                        const char* file,
-                        OptionType type,
-                        const std::string& default_text);
+// Whether --<name> is one of these flags (for TableFlags).
+bool IsSharedFlag(const std::string& name);
 
 // Sets the fields of *s (of `table`, the struct at `prefix` in
 // RegistrationOptions, or in NdtOptions with `ndt`) from the flags given;

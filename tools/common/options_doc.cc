@@ -57,11 +57,17 @@ std::string Cell(const std::string& text) {
 }
 
 // "--flag" of a tool table's field, or what sets it.
-std::string ToolFlagCell(const TableFlags& flags, const OptionField& field) {
-  const std::string flag = flags.FlagOf(field.name);
-  if (!flag.empty()) return "`--" + flag + "`";
+std::string ToolFlagCell(const TableFlags& flags, const std::string& path) {
+  const std::string flag = flags.FlagOf(path);
+  if (!flag.empty()) {
+    std::string cell = "`--" + flag + "`";
+    for (const auto& [alias, name] : flags.aliases()) {
+      if (name == flag) cell += " (older name `--" + alias + "`)";
+    }
+    return cell;
+  }
   for (const auto& [name, tool_flag] : flags.set_by_tool_flag()) {
-    if (name == field.name) return "(`--" + tool_flag + "`)";
+    if (name == path) return "(`--" + tool_flag + "`)";
   }
   return "";
 }
@@ -71,20 +77,24 @@ std::string ToolOptionsMarkdown() {
   std::ostringstream out;
   out << "\n## Options of one tool\n\n"
          "Made from the option tables of the structs a tool fills beside "
-         "the registration's;\nthe flag is the field's name (or another where "
-         "the field's name is a registration\nflag). A flag in parentheses "
-         "sets the field in another unit.\n";
+         "the registration's;\nthe flag is the field's name (a nested "
+         "struct's field: its path with `_` for `.`),\nor another where the "
+         "field's name is a registration flag; an older name still\nsets the "
+         "field. A flag in parentheses is another flag that sets the field "
+         "(in\nanother unit, or a registration flag over the tool's own "
+         "default).\n";
   for (const TableFlags* flags : ToolTableFlags()) {
     const OptionTable& table = flags->table();
     out << "\n### " << table.struct_name() << " (" << flags->tool()
         << ")\n\n| flag | field | type | default | unit | valid values | "
            "help |\n|---|---|---|---|---|---|---|\n";
-    for (const OptionField& field : table.fields()) {
-      out << "| " << ToolFlagCell(*flags, field) << " | " << field.name << " | "
+    for (const TableFlags::Field& f : flags->fields()) {
+      const OptionField& field = *f.field;
+      out << "| " << ToolFlagCell(*flags, f.path) << " | " << f.path << " | "
           << TypeName(field.type) << " | "
-          << Cell(field.Format(table.defaults())) << " | " << field.unit
-          << " | " << Cell(RangeText(field)) << " | " << Cell(field.help)
-          << " |\n";
+          << Cell(field.Format(flags->Owner(f.path, table.defaults()))) << " | "
+          << field.unit << " | " << Cell(RangeText(field)) << " | "
+          << Cell(field.help) << " |\n";
     }
   }
   return out.str();
@@ -95,14 +105,16 @@ Json ToolOptionsJson() {
   for (const TableFlags* flags : ToolTableFlags()) {
     const OptionTable& table = flags->table();
     Json rows = Json::array();
-    for (const OptionField& field : table.fields()) {
-      rows.push_back({{"flag", flags->FlagOf(field.name)},
-                      {"field", field.name},
-                      {"type", TypeName(field.type)},
-                      {"default", field.Format(table.defaults())},
-                      {"unit", field.unit},
-                      {"range", RangeText(field)},
-                      {"help", field.help}});
+    for (const TableFlags::Field& f : flags->fields()) {
+      const OptionField& field = *f.field;
+      rows.push_back(
+          {{"flag", flags->FlagOf(f.path)},
+           {"field", f.path},
+           {"type", TypeName(field.type)},
+           {"default", field.Format(flags->Owner(f.path, table.defaults()))},
+           {"unit", field.unit},
+           {"range", RangeText(field)},
+           {"help", field.help}});
     }
     tables.push_back({{"struct", table.struct_name()},
                       {"tool", flags->tool()},

@@ -5,49 +5,25 @@
 
 #include "lab/eval/dataset.h"
 #include "lab/eval/pose_convention.h"
+#include "tools/common/adaptive_start_layer_flags.h"
+#include "tools/common/flag_utils.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/pose_flags.h"
 
 namespace mlndt {
 namespace tools {
 
-namespace {
-
-// --adaptive_fail_rates=`text`: ascending numbers in [0, 1].
-bool ParseFailRates(const std::string& text,
-                    std::vector<double>* rates,
-                    std::string* error) {
-  std::vector<double> values;
-  if (!ParseNumberList(text, &values) ||
-      !std::is_sorted(values.begin(), values.end()) ||
-      std::any_of(values.begin(), values.end(), [](double r) {
-        return r < 0 || r > 1;
-      })) {
-    *error = "--adaptive_fail_rates=" + text +
+bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
+                              std::string* error) {
+  if (!AdaptiveStartLayerFlags().Apply(adaptive, error)) return false;
+  const std::vector<double>& rates = adaptive->fail_rate_thresholds;
+  if (!std::is_sorted(rates.begin(), rates.end())) {
+    const std::string flag = "adaptive_fail_rate_thresholds";
+    *error = GivenFlagName(flag) + "=" + FlagText(flag) +
              ": expected ascending numbers in [0, 1], e.g. 0.05,0.2";
     return false;
   }
-  *rates = values;
   return true;
-}
-
-}  // namespace
-
-bool AdaptiveOptionsFromValues(bool enabled,
-                               double max_translation_m,
-                               double max_rotation_deg,
-                               const std::string& fail_rates,
-                               AdaptiveStartLayerOptions* adaptive,
-                               std::string* error) {
-  adaptive->enabled = enabled;
-  adaptive->max_translation_m = max_translation_m;
-  adaptive->max_rotation_deg = max_rotation_deg;
-  if (!(adaptive->max_translation_m > 0) || !(adaptive->max_rotation_deg > 0)) {
-    *error =
-        "--adaptive_max_translation and --adaptive_max_rotation must be > 0";
-    return false;
-  }
-  return ParseFailRates(fail_rates, &adaptive->fail_rate_thresholds, error);
 }
 
 bool ReadSequenceRunPoses(const SequenceOptions& options,

@@ -14,15 +14,11 @@
 namespace mlndt {
 namespace tools {
 
-// The adaptive start layer from the values of mlndt_sequence's
-// --adaptive_* flags: both deviations > 0, the fail rates (a comma-separated
-// text) ascending in [0, 1].
-bool AdaptiveOptionsFromValues(bool enabled,
-                               double max_translation_m,
-                               double max_rotation_deg,
-                               const std::string& fail_rates,
-                               AdaptiveStartLayerOptions* adaptive,
-                               std::string* error);
+// The adaptive start layer from mlndt_sequence's --adaptive_* flags
+// (adaptive_start_layer_flags.h); false with *error naming the flag for a
+// value out of range or fail rates not ascending.
+bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
+                              std::string* error);
 
 // The scans of --scans=`scans_dir` (or --bag; at most `max_scans`, the
 // pose, calib and times files left out) and ReadSequenceRunPoses.

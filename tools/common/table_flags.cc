@@ -3,74 +3,109 @@
 #include <glog/logging.h>
 
 #include "tools/common/flag_utils.h"
-#include "tools/common/option_flags.h"
+#include "tools/common/option_flags_store.h"
 
 namespace mlndt {
 namespace tools {
 namespace {
 
-bool IsShared(const std::string& name) { return FlagOfName(name) != nullptr; }
+void CollectFields(const OptionTable& table,
+                   const std::string& prefix,
+                   std::vector<TableFlags::Field>* fields) {
+  for (const OptionField& field : table.fields()) {
+    if (field.type == OptionType::STRUCT) {
+      CollectFields(*field.nested, prefix + field.name + ".", fields);
+    } else {
+      fields->push_back({prefix + field.name, &field});
+    }
+  }
+}
+
+std::string Underscored(std::string path) {
+  for (char& c : path) {
+    if (c == '.') c = '_';
+  }
+  return path;
+}
 
 }  // namespace
 
 TableFlags::TableFlags(const OptionTable& table,
                        const std::string& tool,
                        Names renamed,
-                       Names set_by_tool_flag)
+                       Names set_by_tool_flag,
+                       Names aliases,
+                       IsShared is_shared)
     : table_(table),
       tool_(tool),
       file_("tools/" + tool + ".cc"),
       renamed_(std::move(renamed)),
-      set_by_tool_flag_(std::move(set_by_tool_flag)) {
+      set_by_tool_flag_(std::move(set_by_tool_flag)),
+      aliases_(std::move(aliases)),
+      is_shared_(is_shared) {
+  CollectFields(table_, "", &fields_);
   // Leaked on purpose: gflags keeps the file name for the program's life.
   const char* file = (new std::string(file_))->c_str();
-  for (const OptionField& field : table_.fields()) {
-    CHECK(field.type != OptionType::STRUCT)
-        << table_.struct_name() << "." << field.name
-        << ": nested structs have their own tables";
-    const std::string flag = FlagOf(field.name);
-    if (flag.empty() || IsShared(flag)) continue;
-    RegisterOptionFlag(flag,
-                       field.FullHelp(),
-                       file,
-                       field.type,
-                       field.Format(table_.defaults()));
+  for (const Field& f : fields_) {
+    const std::string flag = FlagOf(f.path);
+    if (flag.empty() || Shared(flag)) continue;
+    const std::string value = f.field->Format(Owner(f.path, table_.defaults()));
+    RegisterOptionFlag(flag, f.field->FullHelp(), file, f.field->type, value);
+    for (const auto& [alias, name] : aliases_) {
+      if (name != flag) continue;
+      RegisterOptionFlag(
+          alias, "Older name of --" + flag + ".", file, f.field->type, value);
+      RegisterFlagAlias(alias, flag);
+    }
   }
 }
 
-std::string TableFlags::FlagOf(const std::string& name) const {
+const void* TableFlags::Owner(const std::string& path, const void* s) const {
+  const void* owner = nullptr;
+  CHECK(table_.FindPath(path, s, &owner) != nullptr)
+      << table_.struct_name() << " has no field " << path;
+  return owner;
+}
+
+bool TableFlags::Shared(const std::string& flag) const {
+  return is_shared_ != nullptr && is_shared_(flag);
+}
+
+std::string TableFlags::FlagOf(const std::string& path) const {
   for (const auto& [field, flag] : renamed_) {
-    if (field == name) return flag;
+    if (field == path) return flag;
   }
   for (const auto& [field, flag] : set_by_tool_flag_) {
-    if (field == name) return "";
+    if (field == path) return "";
   }
-  return name;
+  return Underscored(path);
 }
 
 std::vector<std::string> TableFlags::RegisteredFlags() const {
   std::vector<std::string> flags;
-  for (const OptionField& field : table_.fields()) {
-    const std::string flag = FlagOf(field.name);
-    if (!flag.empty() && !IsShared(flag)) flags.push_back(flag);
+  for (const Field& f : fields_) {
+    const std::string flag = FlagOf(f.path);
+    if (!flag.empty() && !Shared(flag)) flags.push_back(flag);
   }
+  for (const auto& [alias, name] : aliases_) flags.push_back(alias);
   return flags;
 }
 
 bool TableFlags::Apply(void* s, std::string* error) const {
-  for (const OptionField& field : table_.fields()) {
-    const std::string flag = FlagOf(field.name);
+  for (const Field& f : fields_) {
+    const std::string flag = FlagOf(f.path);
     if (flag.empty() || !FlagGiven(flag)) continue;
+    void* owner = const_cast<void*>(Owner(f.path, s));
     const std::string text = FlagText(flag);
-    if (!field.Parse(text, s, error)) {
+    if (!f.field->Parse(text, owner, error)) {
       *error = GivenFlagName(flag) + "=" + text + ": " + *error;
       return false;
     }
     std::string why;
-    if (!field.CheckRange(s, "", &why)) {
-      *error = GivenFlagName(flag) + " must be " + field.range.ToString() +
-               (field.unit.empty() ? "" : " (" + field.unit + ")") + ", not " +
-               text;
+    if (!f.field->CheckRange(owner, "", &why)) {
+      *error = GivenFlagName(flag) + " must be " + f.field->range.ToString() +
+               (f.field->unit.empty() ? "" : " (" + f.field->unit + ")") +
+               ", not " + text;
       return false;
     }
   }
