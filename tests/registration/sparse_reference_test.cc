@@ -17,25 +17,11 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
+#include "tests/testing/kitti_bundle.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
-
-// Every 40th point of bundled KITTI frame i.
-PointCloud ThinnedScan(int i) {
-  PointCloud cloud;
-  std::string error;
-  EXPECT_TRUE(ReadPointCloud(
-      testing::BundledDataPath("kitti/pcd/00000" + std::to_string(i) + ".pcd"),
-      &cloud,
-      nullptr,
-      &error))
-      << error;
-  PointCloud thinned;
-  for (size_t k = 0; k < cloud.size(); k += 40) thinned.Add(cloud[k]);
-  return thinned;
-}
 
 TEST(SparseReference, ThinnedKittiPairsConvergeRightWithCellsTheyFill) {
   std::map<std::string, ReferencePair> pairs;
@@ -47,11 +33,14 @@ TEST(SparseReference, ThinnedKittiPairsConvergeRightWithCellsTheyFill) {
   ASSERT_GT(options.grid.min_covered_fraction, 0.0);
   for (int i = 0; i + 1 < 8; ++i) {
     SCOPED_TRACE("pair " + std::to_string(i) + "_" + std::to_string(i + 1));
-    const PointCloud reference = ThinnedScan(i);
+    const PointCloud reference = testing::BundledKittiScan(i, 40);
     ASSERT_LT(reference.size(), 3200u);
     RegistrationSummary s;
-    Register(
-        options, reference, ThinnedScan(i + 1), Isometry3d::Identity(), &s);
+    Register(options,
+             reference,
+             testing::BundledKittiScan(i + 1, 40),
+             Isometry3d::Identity(),
+             &s);
     const Isometry3d truth =
         pairs.at(ReferencePairKey(i, i + 1)).reference_from_input;
     EXPECT_EQ(s.termination_type, TerminationType::CONVERGENCE) << s.message;

@@ -25,22 +25,11 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
+#include "tests/testing/kitti_bundle.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
-
-PointCloud Scan(int i) {
-  PointCloud cloud;
-  std::string error;
-  EXPECT_TRUE(ReadPointCloud(
-      testing::BundledDataPath("kitti/pcd/00000" + std::to_string(i) + ".pcd"),
-      &cloud,
-      nullptr,
-      &error))
-      << error;
-  return cloud;
-}
 
 PointCloud Crop(const PointCloud& cloud,
                 const std::function<bool(int, const Eigen::Vector3d&)>& keep) {
@@ -74,8 +63,11 @@ Tally RegisterCrops(
     const Isometry3d truth =
         pairs.at(ReferencePairKey(i, i + 1)).reference_from_input;
     RegistrationSummary s;
-    Register(
-        options, Scan(i), Crop(Scan(i + 1), keep), Isometry3d::Identity(), &s);
+    Register(options,
+             testing::BundledKittiScan(i),
+             Crop(testing::BundledKittiScan(i + 1), keep),
+             Isometry3d::Identity(),
+             &s);
     const double error_m = TranslationErrorM(truth, s.reference_from_input);
     const bool right =
         error_m < 0.2 &&

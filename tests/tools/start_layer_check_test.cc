@@ -17,25 +17,12 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/registration/registration.h"
+#include "tests/testing/kitti_bundle.h"
 #include "tests/testing/run_tool.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
-
-PointCloud KittiScan(int i, size_t stride) {
-  PointCloud cloud;
-  std::string error;
-  EXPECT_TRUE(ReadPointCloud(
-      testing::BundledDataPath("kitti/pcd/00000" + std::to_string(i) + ".pcd"),
-      &cloud,
-      nullptr,
-      &error))
-      << error;
-  PointCloud thinned;
-  for (size_t k = 0; k < cloud.size(); k += stride) thinned.Add(cloud[k]);
-  return thinned;
-}
 
 // The layers of the map Register() builds, and of the 1.2 m rule alone.
 void ExpectLayersOfTheLibrary(const PointCloud& reference,
@@ -61,11 +48,13 @@ void ExpectLayersOfTheLibrary(const PointCloud& reference,
 
 TEST(ReferenceMapNumLayers, CountsTheLayersOfTheMapRegisterBuilds) {
   int built = 0, without_coverage = 0;
-  ExpectLayersOfTheLibrary(KittiScan(0, 40), &built, &without_coverage);
+  ExpectLayersOfTheLibrary(
+      testing::BundledKittiScan(0, 40), &built, &without_coverage);
   // The sparse scan: the coverage rule took a layer off.
   EXPECT_EQ(built + 1, without_coverage);
   // The full scan fills its finest cells: no layer taken off.
-  ExpectLayersOfTheLibrary(KittiScan(0, 1), &built, &without_coverage);
+  ExpectLayersOfTheLibrary(
+      testing::BundledKittiScan(0, 1), &built, &without_coverage);
   EXPECT_EQ(built, without_coverage);
 }
 
@@ -80,10 +69,11 @@ TEST(ReferenceMapNumLayers, FailsWhereRegisterRefusesTheReference) {
 
 TEST(MlndtAlignStartLayer, RefusesALayerTheSparseMapLacksBeforeRegistering) {
   const std::string dir = testing::FreshTestDir("start_layer_check");
-  const PointCloud reference = KittiScan(0, 40);
+  const PointCloud reference = testing::BundledKittiScan(0, 40);
   std::string error;
   ASSERT_TRUE(WritePointCloud(dir + "/ref.pcd", reference, &error)) << error;
-  ASSERT_TRUE(WritePointCloud(dir + "/in.pcd", KittiScan(1, 40), &error))
+  ASSERT_TRUE(WritePointCloud(
+      dir + "/in.pcd", testing::BundledKittiScan(1, 40), &error))
       << error;
   const RegistrationOptions options;
   int built = 0;

@@ -14,24 +14,17 @@
 
 #include "lab/eval/trajectory_io.h"
 #include "mlndt/common/pose.h"
-#include "tests/testing/test_data.h"
+#include "tests/testing/kitti_bundle.h"
 
 namespace mlndt {
 namespace {
 
 // The KITTI poses in a world frame moved by 10 m and 30 deg.
 std::vector<Isometry3d> Reference() {
-  Trajectory trajectory;
-  std::string error;
-  EXPECT_TRUE(ReadTrajectory(testing::BundledDataPath("kitti/poses_velo.txt"),
-                             TrajectoryFormat::KITTI,
-                             &trajectory,
-                             &error))
-      << error;
   const Isometry3d world = PoseVectorToIsometry(
       PoseVectorFromDegrees(10.0, -4.0, 1.0, 2.0, -3.0, 30.0));
   std::vector<Isometry3d> poses;
-  for (const Isometry3d& pose : trajectory.poses()) {
+  for (const Isometry3d& pose : testing::BundledKittiPoses()) {
     poses.push_back(world * pose);
   }
   return poses;

@@ -13,21 +13,10 @@
 
 #include "lab/eval/trajectory_io.h"
 #include "mlndt/common/pose.h"
-#include "tests/testing/test_data.h"
+#include "tests/testing/kitti_bundle.h"
 
 namespace mlndt {
 namespace {
-
-std::vector<Isometry3d> KittiTruth() {
-  Trajectory trajectory;
-  std::string error;
-  EXPECT_TRUE(ReadTrajectory(testing::BundledDataPath("kitti/poses_velo.txt"),
-                             TrajectoryFormat::KITTI,
-                             &trajectory,
-                             &error))
-      << error;
-  return trajectory.poses();
-}
 
 // Pose k's own error: 1 cm and 0.1 deg of yaw per index (none on pose 0).
 Isometry3d PoseError(size_t k) {
@@ -48,7 +37,7 @@ std::vector<Isometry3d> Estimate(const std::vector<Isometry3d>& truth) {
 }
 
 TEST(EvaluatePoseGraphAccuracy, MatchesTheDefinitionsOnKitti) {
-  const std::vector<Isometry3d> truth = KittiTruth();
+  const std::vector<Isometry3d> truth = testing::BundledKittiPoses();
   ASSERT_EQ(truth.size(), 8u);
   const std::vector<Isometry3d> estimate = Estimate(truth);
   // ATE: aligned_k = truth_0 estimate_0^-1 estimate_k.
@@ -86,7 +75,7 @@ TEST(EvaluatePoseGraphAccuracy, MatchesTheDefinitionsOnKitti) {
 }
 
 TEST(EvaluatePoseGraphAccuracy, IsZeroForTheTruthInAnotherWorldFrame) {
-  const std::vector<Isometry3d> truth = KittiTruth();
+  const std::vector<Isometry3d> truth = testing::BundledKittiPoses();
   const Isometry3d world_change =
       PoseVectorToIsometry(PoseVectorFromDegrees(5, 6, 7, 10, 20, 30));
   std::vector<Isometry3d> estimate;
@@ -100,7 +89,7 @@ TEST(EvaluatePoseGraphAccuracy, IsZeroForTheTruthInAnotherWorldFrame) {
 }
 
 TEST(EvaluatePoseGraphAccuracy, RefusesTrajectoriesThatDoNotMatch) {
-  const std::vector<Isometry3d> truth = KittiTruth();
+  const std::vector<Isometry3d> truth = testing::BundledKittiPoses();
   std::vector<Isometry3d> shorter = truth;
   shorter.pop_back();
   PoseGraphAccuracy accuracy;

@@ -19,6 +19,7 @@
 
 #include "lab/eval/trajectory_io.h"
 #include "mlndt/common/pose.h"
+#include "tests/testing/kitti_bundle.h"
 #include "tests/testing/scratch_dir.h"
 #include "tests/testing/test_data.h"
 
@@ -29,17 +30,6 @@ namespace fs = std::filesystem;
 
 bool GnuplotRuns() {
   return std::system("gnuplot --version >/dev/null 2>&1") == 0;
-}
-
-std::vector<Isometry3d> KittiPoses() {
-  Trajectory trajectory;
-  std::string error;
-  EXPECT_TRUE(ReadTrajectory(testing::BundledDataPath("kitti/poses_velo.txt"),
-                             TrajectoryFormat::KITTI,
-                             &trajectory,
-                             &error))
-      << error;
-  return trajectory.poses();
 }
 
 // Pairs (k, k + 1) of the KITTI poses; estimate = truth * (k + 1) cm and
@@ -95,7 +85,7 @@ std::vector<std::vector<double>> Rows(const std::string& path,
 
 TEST(WriteSequencePlots, WritesEveryFigureAndTheResultsSeries) {
   if (!GnuplotRuns()) GTEST_SKIP() << "gnuplot is not installed";
-  const std::vector<Isometry3d> poses = KittiPoses();
+  const std::vector<Isometry3d> poses = testing::BundledKittiPoses();
   ASSERT_EQ(poses.size(), 8u);
   const std::vector<PairResult> results = Results(poses, true);
   const std::string dir = testing::TestScratchDir();
@@ -156,8 +146,13 @@ TEST(WriteSequencePlots, WithoutTruthDrawsNoErrors) {
   const std::string dir = testing::TestScratchDir();
   std::vector<std::string> pngs;
   std::string error;
-  ASSERT_TRUE(WriteSequencePlots(
-      "gnuplot", dir, Results(KittiPoses(), false), 1, 0, &pngs, &error))
+  ASSERT_TRUE(WriteSequencePlots("gnuplot",
+                                 dir,
+                                 Results(testing::BundledKittiPoses(), false),
+                                 1,
+                                 0,
+                                 &pngs,
+                                 &error))
       << error;
   EXPECT_EQ(pngs, std::vector<std::string>{"trajectory_xy.png"});
   EXPECT_FALSE(fs::exists(dir + "/plot_data/errors.dat"));
@@ -165,7 +160,8 @@ TEST(WriteSequencePlots, WithoutTruthDrawsNoErrors) {
 }
 
 TEST(WriteSequencePlots, RefusesAnUnusableFolderOrGnuplot) {
-  const std::vector<PairResult> results = Results(KittiPoses(), true);
+  const std::vector<PairResult> results =
+      Results(testing::BundledKittiPoses(), true);
   const std::string file = testing::ScratchPath("not_a_folder");
   std::ofstream(file) << "x";
   std::vector<std::string> pngs;
