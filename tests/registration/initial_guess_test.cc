@@ -10,6 +10,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
 #include "mlndt/schedule/layer_scheduler.h"
+#include "tests/testing/shared_pair.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -145,25 +146,12 @@ TEST(InitialGuess, TheGuessCheckLooksOverASubsetWhenItFindsTheSameBasin) {
 // another basin. The last-layer run from the guess fits better and wins.
 TEST(InitialGuess, AGoodGuessWithoutUncertaintyIsNotMadeWorseOnSparseScans) {
   MLNDT_REQUIRE_SHARED_DATA(dir);
-  const std::string folder = dir + "/fastlio_avia_hku_2_pairs";
-  std::map<std::string, ReferencePair> references;
-  std::string error;
-  ASSERT_TRUE(
-      ReadReferencePairs(folder + "/reference_pairs.json", &references, &error))
-      << error;
   for (const char* key : {"185_188", "207_210"}) {
-    const ReferencePair& pair = references.at(key);
-    PointCloud reference, input;
-    const auto scan = [&](int64_t index) {
-      std::string name = std::to_string(index);
-      return folder + "/pcd/" + std::string(6 - name.size(), '0') + name +
-             ".pcd";
-    };
-    ASSERT_TRUE(
-        ReadPointCloud(scan(pair.reference_index), &reference, nullptr, &error))
-        << error;
-    ASSERT_TRUE(ReadPointCloud(scan(pair.input_index), &input, nullptr, &error))
-        << error;
+    const testing::SharedPair shared =
+        testing::ReadSharedPair(dir + "/fastlio_avia_hku_2_pairs", key);
+    const ReferencePair& pair = shared.pair;
+    const PointCloud& reference = shared.reference;
+    const PointCloud& input = shared.input;
     Isometry3d guess = pair.reference_from_input;
     guess.linear() = Eigen::Quaterniond(guess.linear()).normalized().matrix();
     RegistrationSummary s;

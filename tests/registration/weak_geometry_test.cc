@@ -26,6 +26,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
 #include "tests/testing/kitti_bundle.h"
+#include "tests/testing/shared_pair.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {
@@ -119,27 +120,12 @@ TEST(WeakGeometry, TheSearchAlongTheRoadLeavesTheIdentityForTheBetterMinimum) {
 // more inliers.
 TEST(WeakGeometry, LivoxPairsFromTheIdentityEndInTheBetterMinimum) {
   MLNDT_REQUIRE_SHARED_DATA(dir);
-  const std::string folder = dir + "/fastlio_avia_hku_2_pairs";
-  std::map<std::string, ReferencePair> references;
-  std::string error;
-  ASSERT_TRUE(
-      ReadReferencePairs(folder + "/reference_pairs.json", &references, &error))
-      << error;
-  const auto scan = [&](int64_t index) {
-    PointCloud cloud;
-    const std::string name = std::to_string(index);
-    EXPECT_TRUE(ReadPointCloud(
-        folder + "/pcd/" + std::string(6 - name.size(), '0') + name + ".pcd",
-        &cloud,
-        nullptr,
-        &error))
-        << error;
-    return cloud;
-  };
   for (const char* key : {"185_188", "186_188"}) {
-    const ReferencePair& pair = references.at(key);
-    const PointCloud reference = scan(pair.reference_index);
-    const PointCloud input = scan(pair.input_index);
+    const testing::SharedPair shared =
+        testing::ReadSharedPair(dir + "/fastlio_avia_hku_2_pairs", key);
+    const ReferencePair& pair = shared.pair;
+    const PointCloud& reference = shared.reference;
+    const PointCloud& input = shared.input;
     RegistrationOptions no_search;
     no_search.retry.weak_direction_rounds = 0;
     for (const bool search : {false, true}) {
