@@ -221,8 +221,6 @@ void Register(const RegistrationOptions& options,
     Fail("reference map: " + error, summary);
   } else {
     summary->map_time_s = NowSeconds() - start;
-    // The filtered reference's memory holds the filtered input next: no
-    // fresh pages for it (docs/performance.md).
     RegisterOnMap(options,
                   map,
                   input,

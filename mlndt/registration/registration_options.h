@@ -42,8 +42,10 @@ const OptionTable& InitialGuessUncertaintyTable();
 // Runs again when the result fails the quality check (a wrong local
 // minimum, most often a rotation beyond the coarse layers' basin): from the
 // guess turned by each yaw seed about the input's centroid, in order, until
-// one passes. Costs nothing when the first run passes. With a known guess
-// uncertainty only the seeds within its rotation are tried.
+// one passes; free when the first run passes. With a known guess
+// uncertainty only the seeds within its rotation are tried. And when a
+// converged result lies on a weakly constrained direction: the search
+// along it (below), which finds the better of several minima.
 struct RetryOptions {
   // Yaw turns [deg], each in [-180, 180]; at most 36. Empty: no retry.
   std::vector<double> yaw_seeds_deg = {45, -45, 90, -90, 135, -135, 180};
