@@ -47,8 +47,7 @@ struct OdometryOptions {
   // (RetryOptions::weak_direction_rounds, which it replaces): off here
   // although the library has it on. On the Livox sequence it takes the ATE
   // from 3.45 m to 2.38 m, but two steps are then reported CONVERGENCE
-  // 0.4-0.6 m off (docs/odometry.md): the confirmation does not judge a
-  // pose the search moved. In [0, 16]; 0 = off.
+  // 0.4-0.6 m off (docs/odometry.md; 0 without it). In [0, 16]; 0 = off.
   int weak_direction_rounds = 0;
   // A second registration from beyond the pose for CONVERGENCE with a large
   // correction or from a prediction at its largest uncertainty
