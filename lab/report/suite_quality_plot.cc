@@ -58,21 +58,21 @@ bool WriteSuiteQualityPlot(
     return data + "/" + name + (right ? "_right" : "_wrong") + ".txt";
   };
   size_t counts[2] = {0, 0};
-  double score_min = check ? check->max_mean_score : 1.0;
-  double score_max = score_min;
+  double distance_min = check ? check->max_median_distance : 1.0;
+  double distance_max = distance_min;
   for (const bool right : {true, false}) {
     const std::vector<double> inliers =
         Measure(results, right, &FitQuality::inlier_fraction);
-    const std::vector<double> scores =
-        Measure(results, right, &FitQuality::mean_score);
-    counts[right ? 0 : 1] = scores.size();
-    for (const double v : scores) {
+    const std::vector<double> distances =
+        Measure(results, right, &FitQuality::median_distance);
+    counts[right ? 0 : 1] = distances.size();
+    for (const double v : distances) {
       if (v <= 0.0) continue;
-      score_min = std::min(score_min, v);
-      score_max = std::max(score_max, v);
+      distance_min = std::min(distance_min, v);
+      distance_max = std::max(distance_max, v);
     }
     if (!WriteCurve(path("inlier_fraction", right), inliers, error) ||
-        !WriteCurve(path("mean_score", right), scores, error)) {
+        !WriteCurve(path("median_distance", right), distances, error)) {
       return false;
     }
   }
@@ -103,12 +103,14 @@ bool WriteSuiteQualityPlot(
   script += "plot " + curve("inlier_fraction", true) + ", " +
             curve("inlier_fraction", false) + "\n";
   script += "unset arrow 1\nset logscale x\nset xtics 2\n";
-  script += "set xrange [" + Num(score_min / 1.5) + ":" + Num(score_max * 1.5) +
-            "]\n";
-  script += "set xlabel 'mean score per matched point (Cauchy at the gate)'\n";
-  if (check) script += threshold(2, check->max_mean_score);
-  script += "plot " + curve("mean_score", true) + ", " +
-            curve("mean_score", false) + "\n";
+  script += "set xrange [" + Num(distance_min / 1.5) + ":" +
+            Num(distance_max * 1.5) + "]\n";
+  script +=
+      "set xlabel 'median Mahalanobis distance of the matched points "
+      "(sigma)'\n";
+  if (check) script += threshold(2, check->max_median_distance);
+  script += "plot " + curve("median_distance", true) + ", " +
+            curve("median_distance", false) + "\n";
   script += "unset multiplot\n";
   return RunGnuplot(
       gnuplot, data + "/quality.gp", script, {dir + "/quality.png"}, error);

@@ -14,9 +14,9 @@ namespace mlndt {
 
 // quality.png in `dir` (data and script in dir/plot_data): the share of
 // right and of wrong runs at or below each value of the inlier fraction and
-// of the mean score (empirical distribution curves), with the quality
-// check's thresholds as vertical lines (none when `check` is null: NDT).
-// Runs without a fit (no points evaluated) are left out.
+// of the median Mahalanobis distance (empirical distribution curves), with the
+// quality check's thresholds as vertical lines (none when `check` is null:
+// NDT). Runs without a fit (no points evaluated) are left out.
 bool WriteSuiteQualityPlot(
     const std::string& gnuplot,
     const std::string& dir,

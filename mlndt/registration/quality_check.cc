@@ -31,16 +31,24 @@ const OptionTable& QualityCheckOptionsTable() {
                   "",
                   Closed(0.5, 10.0),
                   "Mahalanobis distance below which a point is an inlier.")
+          .Double("max_median_distance",
+                  &S::max_median_distance,
+                  "",
+                  LeftOpen(0.0, 100.0),
+                  "LOW_QUALITY above this median Mahalanobis distance of the "
+                  "matched points to their cells (sigma).")
           .Double("min_inlier_fraction",
                   &S::min_inlier_fraction,
                   "",
                   Closed(0.0, 1.0),
-                  "LOW_QUALITY below this share of inliers.")
+                  "LOW_QUALITY below this share of inliers (too little "
+                  "overlap to judge).")
           .Double("max_mean_score",
                   &S::max_mean_score,
                   "",
                   LeftOpen(0.0, 1e6),
-                  "LOW_QUALITY above this mean score per matched point.")
+                  "LOW_QUALITY above this mean score per matched point; 1e6 "
+                  "= off.")
           .Double("min_constraint_ratio",
                   &S::min_constraint_ratio,
                   "",
@@ -330,6 +338,10 @@ TerminationType CheckQuality(const QualityCheckOptions& options,
     why << "low quality: " << fit.inlier_fraction
         << " of the sampled points are inliers at the solution (below "
         << options.min_inlier_fraction << "); the pose is probably wrong";
+  } else if (fit.median_distance > options.max_median_distance) {
+    why << "low quality: the matched points' median Mahalanobis distance "
+        << fit.median_distance << " at the solution is above "
+        << options.max_median_distance << "; the pose is probably wrong";
   } else if (fit.mean_score > options.max_mean_score) {
     why << "low quality: mean score " << fit.mean_score
         << " per matched point at the solution (above "

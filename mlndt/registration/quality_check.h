@@ -4,9 +4,9 @@
 // stopping on a small step says nothing about whether it stopped at the
 // right pose; the fit of the input to the map at the solution does. Two
 // checks, on the last layer:
-//  - fit (FitQuality, cost/fit_quality.h): enough inliers under a
-//    Mahalanobis gate and a low enough score per matched point; a wrong
-//    pose leaves most points far from their cells (docs/trust.md shows the
+//  - fit (FitQuality, cost/fit_quality.h): the matched points' median
+//    Mahalanobis distance to their cells, and some overlap; a wrong pose
+//    leaves most points far from their cells (docs/trust.md shows the
 //    measures of right and wrong results on the shared suite, and how the
 //    thresholds were chosen);
 //  - constraint: the surfaces the points lie on constrain every direction of
@@ -43,11 +43,19 @@ struct QualityCheckOptions {
   bool enabled = true;
   // Mahalanobis distance below which a point is an inlier. In [0.5, 10].
   double inlier_gate = 3.0;
-  // LOW_QUALITY below this share of inliers among the sampled points. In
-  // [0, 1].
-  double min_inlier_fraction = 0.25;
-  // LOW_QUALITY above this mean score per matched point. In (0, 1e6].
-  double max_mean_score = 11.0;
+  // LOW_QUALITY above this median Mahalanobis distance of the matched
+  // points (sqrt of Eq. 10's e^T C^-1 e): the bulk of a right fit sits within
+  // a few sigma of its cells whatever the sensor, while a wrong pose moves
+  // most points off their surfaces. A median, so that the points outside the
+  // overlap do not count: the share of those depends on the scene and the
+  // sensor's field of view, not on the pose (docs/trust.md). In (0, 100].
+  double max_median_distance = 3.8;
+  // LOW_QUALITY below this share of inliers among the sampled points: too
+  // little overlap to judge the fit. In [0, 1].
+  double min_inlier_fraction = 0.1;
+  // LOW_QUALITY above this mean score per matched point. In (0, 1e6]; the
+  // default 1e6 is off (the mean counts the points outside the overlap).
+  double max_mean_score = 1e6;
   // DEGENERATE when the weakest direction of the pose gets less than this
   // fraction of the strongest one's constraint (ConstraintAnalysis). In
   // [0, 1).

@@ -168,6 +168,7 @@ TEST(QualityCheck, RulesByHand) {
   FitQuality good;
   good.inlier_fraction = 0.6;
   good.mean_score = 7.0;
+  good.median_distance = 2.5;
   good.points = 2000;
   std::string message;
   EXPECT_EQ(CheckQuality(options,
@@ -193,11 +194,29 @@ TEST(QualityCheck, RulesByHand) {
             TerminationType::LOW_QUALITY);
   EXPECT_NE(message.find("too few"), std::string::npos) << message;
   FitQuality far = good;
-  far.mean_score = options.max_mean_score + 0.1;
+  far.median_distance = options.max_median_distance + 0.1;
   EXPECT_EQ(
       CheckQuality(
           options, TerminationType::CONVERGENCE, far, constrained, &message),
       TerminationType::LOW_QUALITY);
+  EXPECT_NE(message.find("median Mahalanobis distance"), std::string::npos)
+      << message;
+  // The mean score is off by default (it counts the points outside the
+  // overlap) and judges when set.
+  FitQuality spread = good;
+  spread.mean_score = 50.0;
+  EXPECT_EQ(
+      CheckQuality(
+          options, TerminationType::CONVERGENCE, spread, constrained, &message),
+      TerminationType::CONVERGENCE);
+  QualityCheckOptions with_mean = options;
+  with_mean.max_mean_score = 11.0;
+  EXPECT_EQ(CheckQuality(with_mean,
+                         TerminationType::CONVERGENCE,
+                         spread,
+                         constrained,
+                         &message),
+            TerminationType::LOW_QUALITY);
   EXPECT_NE(message.find("mean score"), std::string::npos) << message;
   ConstraintAnalysis free = constrained;
   free.degenerate_directions.push_back(Vector6d::Unit(5));
@@ -223,6 +242,10 @@ TEST(QualityCheckOptions, RangesAreChecked) {
   options = QualityCheckOptions();
   options.max_mean_score = std::nan("");
   EXPECT_FALSE(options.IsValid(&error));
+  options = QualityCheckOptions();
+  options.max_median_distance = 0.0;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("max_median_distance"), std::string::npos) << error;
   options = QualityCheckOptions();
   options.min_constraint_ratio = 1.0;
   EXPECT_FALSE(options.IsValid(&error));

@@ -239,7 +239,7 @@ TEST(MlndtSuite, PlotWritesTheQualityCurves) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_GT(fs::file_size(dir + "/quality.png"), 1000u);
   EXPECT_TRUE(fs::exists(dir + "/plot_data/inlier_fraction_right.txt"));
-  EXPECT_TRUE(fs::exists(dir + "/plot_data/mean_score_wrong.txt"));
+  EXPECT_TRUE(fs::exists(dir + "/plot_data/median_distance_wrong.txt"));
 }
 
 // A data set folder of copies of the bundled koide3 scans under other names.

@@ -144,6 +144,9 @@ Json RegistrationSummaryJson(const RegistrationSummary& summary,
         {"own_cell_fraction", Number(summary.quality.own_cell_fraction)},
         {"inlier_fraction", Number(summary.quality.inlier_fraction)},
         {"mean_score", Number(summary.quality.mean_score)},
+        {"median_distance", Number(summary.quality.median_distance)},
+        // Deprecated: the same value under its first, wrong name (it is a
+        // Mahalanobis distance, not metres); kept for existing readers.
         {"median_distance_m", Number(summary.quality.median_distance)},
         {"constraint_ratio", Number(summary.constraints.constraint_ratio)},
         {"flatness", Number(summary.constraints.flatness)},

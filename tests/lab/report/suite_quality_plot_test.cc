@@ -33,16 +33,16 @@ std::string ReadText(const std::string& path) {
   return text.str();
 }
 
-SuiteRunResult Run(bool right, size_t points, double inliers, double score) {
+SuiteRunResult Run(bool right, size_t points, double inliers, double distance) {
   SuiteRunResult r;
   r.outcome.right = right;
   r.quality.points = points;
   r.quality.inlier_fraction = inliers;
-  r.quality.mean_score = score;
+  r.quality.median_distance = distance;
   return r;
 }
 
-// Two data sets; the wrong runs have no finite score.
+// Two data sets; the wrong runs have no finite distance.
 std::vector<std::vector<SuiteRunResult>> Results() {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   return {{Run(true, 4000, 0.8, 2.0),
@@ -63,15 +63,15 @@ TEST(WriteSuiteQualityPlot, WritesTheSortedCurvesOfRightAndWrongRuns) {
   const std::string data = dir + "/plot_data/";
   EXPECT_EQ(ReadText(data + "inlier_fraction_right.txt"),
             "0.6 0.3333333333\n0.7 0.6666666667\n0.8 1\n");
-  EXPECT_EQ(ReadText(data + "mean_score_right.txt"),
+  EXPECT_EQ(ReadText(data + "median_distance_right.txt"),
             "2 0.3333333333\n3 0.6666666667\n4 1\n");
   EXPECT_EQ(ReadText(data + "inlier_fraction_wrong.txt"), "0.1 0.5\n0.2 1\n");
-  EXPECT_EQ(ReadText(data + "mean_score_wrong.txt"), "nan nan\n");
+  EXPECT_EQ(ReadText(data + "median_distance_wrong.txt"), "nan nan\n");
   const std::string script = ReadText(data + "quality.gp");
   EXPECT_NE(script.find("title 'right (3)'"), std::string::npos);
   EXPECT_NE(script.find("title 'wrong (0)'"), std::string::npos);
-  EXPECT_NE(script.find("\nset arrow 1 from 0.25,"), std::string::npos);
-  EXPECT_NE(script.find("\nset arrow 2 from"), std::string::npos);
+  EXPECT_NE(script.find("\nset arrow 1 from 0.1,"), std::string::npos);
+  EXPECT_NE(script.find("\nset arrow 2 from 3.8,"), std::string::npos);
   EXPECT_GT(std::filesystem::file_size(dir + "/quality.png"), 1000u);
 
   // NDT: no quality check, no threshold lines.
