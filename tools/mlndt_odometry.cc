@@ -94,14 +94,18 @@ bool OptionsFromFlags(OdometryOptions* options,
   }
   options->local_map.grid = options->registration.grid;
   if (!tools::OdometryFlags().Apply(options, error)) return false;
-  // The registration flags set the odometry's probe (on by default here)
-  // and search along the weak direction (off by default here).
+  // The registration flags set the odometry's probe (on by default here),
+  // search along the weak direction (off here) and mean-score check (on
+  // here).
   const RegistrationOptions& given = options->registration;
   if (tools::FlagGiven("max_flatness")) {
     options->max_flatness = given.quality_check.max_flatness;
   }
   if (tools::FlagGiven("weak_direction_rounds")) {
     options->weak_direction_rounds = given.retry.weak_direction_rounds;
+  }
+  if (tools::FlagGiven("max_mean_score")) {
+    options->max_mean_score = given.quality_check.max_mean_score;
   }
   if (!options->IsValid(error)) {
     *error = "odometry flags: " + *error;

@@ -87,6 +87,7 @@ void Odometry::Register(const PointCloud& cloud, OdometryResult* result) {
   options.initial_uncertainty.rotation_deg = result->uncertainty.rotation_deg;
   options.quality_check.max_flatness = options_.max_flatness;
   options.retry.weak_direction_rounds = options_.weak_direction_rounds;
+  options.quality_check.max_mean_score = options_.max_mean_score;
   RegistrationSummary summary;
   mlndt::Register(
       options, local_map_.grid(), cloud, result->predicted, &summary);

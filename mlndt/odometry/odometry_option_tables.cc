@@ -153,6 +153,13 @@ const OptionTable& OdometryOwnOptionsTable() {
              "The search along the weak direction of the scans' "
              "registrations (replaces the registration's "
              "retry.weak_direction_rounds; 0 = off).")
+        .Double("max_mean_score",
+                &S::max_mean_score,
+                "",
+                LeftOpen(0.0, 1e6),
+                "LOW_QUALITY above this mean score per matched point of "
+                "the scans' registrations (replaces the registration's "
+                "max_mean_score; 1e6 = off).")
         .Struct("confirmation",
                 &S::confirmation,
                 ConfirmationOptionsTable(),

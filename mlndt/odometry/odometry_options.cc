@@ -15,6 +15,8 @@ bool OdometryOptions::IsValid(std::string* error) const {
   MLNDT_OPTION_GT(max_flatness, 0.0);
   MLNDT_OPTION_LE(max_flatness, 1.0);
   MLNDT_OPTION_IN_RANGE(weak_direction_rounds, 0, 16);
+  MLNDT_OPTION_GT(max_mean_score, 0.0);
+  MLNDT_OPTION_LE(max_mean_score, 1e6);
   return true;
 }
 

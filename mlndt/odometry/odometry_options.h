@@ -15,8 +15,9 @@ namespace mlndt {
 struct OdometryOptions {
   // The registration of each scan onto the local map. Its grid does not
   // apply (local_map.grid builds the map), its initial_uncertainty is set
-  // per scan from the prediction, and its quality_check.max_flatness is
-  // replaced by max_flatness below.
+  // per scan from the prediction, and its quality_check.max_flatness and
+  // max_mean_score and retry.weak_direction_rounds are replaced by the
+  // fields of those names below.
   RegistrationOptions registration;
   LocalMapOptions local_map;
   KeyframeOptions keyframes;
@@ -49,6 +50,15 @@ struct OdometryOptions {
   // from 3.45 m to 2.38 m, but two steps are then reported CONVERGENCE
   // 0.4-0.6 m off (docs/odometry.md; 0 without it). In [0, 16]; 0 = off.
   int weak_direction_rounds = 0;
+  // The mean score per matched point above which a scan's registration is
+  // LOW_QUALITY (QualityCheckOptions::max_mean_score, which it replaces):
+  // on here although the library leaves it off. The library judges the fit
+  // by the median distance, because two keyframes of a narrow sensor overlap
+  // little; a local map of several keyframes overlaps the scan widely, so
+  // the mean counts the scan's own points, and a poor one (a slide onto a
+  // shifted copy of the place) is a fallback instead of a kept
+  // NO_CONVERGENCE pose (docs/odometry.md). In (0, 1e6]; 1e6 = off.
+  double max_mean_score = 11.0;
   // A second registration from beyond the pose for CONVERGENCE with a large
   // correction or from a prediction at its largest uncertainty
   // (confirm_pose.h); a pose it does not return to is NO_CONVERGENCE (kept,

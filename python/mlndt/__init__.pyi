@@ -85,6 +85,7 @@ class BackendOptions(TypedDict, total=False):
 class QualityCheckOptions(TypedDict, total=False):
     enabled: bool
     inlier_gate: float
+    max_median_distance: float
     min_inlier_fraction: float
     max_mean_score: float
     min_constraint_ratio: float
@@ -462,6 +463,7 @@ class Odometry:
         max_consecutive_fallbacks: int = ...,
         max_flatness: float = ...,
         weak_direction_rounds: int = ...,
+        max_mean_score: float = ...,
         confirmation: ConfirmationOptions = ...,
         preset: Preset = "default",
         range_filter: RangeFilterOptions = ...,
@@ -494,6 +496,7 @@ def run_odometry(
     max_consecutive_fallbacks: int = ...,
     max_flatness: float = ...,
     weak_direction_rounds: int = ...,
+    max_mean_score: float = ...,
     confirmation: ConfirmationOptions = ...,
     preset: Preset = "default",
     range_filter: RangeFilterOptions = ...,

@@ -96,6 +96,7 @@ def test_stub_signatures_list_every_option():
         "max_consecutive_fallbacks",
         "max_flatness",
         "weak_direction_rounds",
+        "max_mean_score",
         "confirmation",
     }
     odometry = function(stub_classes()["Odometry"].body, "__init__")
