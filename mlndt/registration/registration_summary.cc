@@ -38,9 +38,10 @@ std::string RegistrationSummary::FullReport() const {
       << " sampled, " << matched_points << " matched, " << unmatched_points
       << " unmatched\n";
   if (quality.points > 0) {
-    out << std::setprecision(3) << "  fit:            inliers "
-        << quality.inlier_fraction << ", mean score " << quality.mean_score
-        << ", own cell " << quality.own_cell_fraction << ", constraint ratio "
+    out << std::setprecision(3) << "  fit:            median distance "
+        << quality.median_distance << ", inliers " << quality.inlier_fraction
+        << ", mean score " << quality.mean_score << ", own cell "
+        << quality.own_cell_fraction << ", constraint ratio "
         << constraints.constraint_ratio;
     if (constraints.flatness > 0.0) {
       out << ", flatness " << constraints.flatness;

@@ -73,13 +73,17 @@ TEST(VelodynePair, MatchesReferenceResultFromIdentity) {
       RotationErrorRad(expected, summary.reference_from_input) * kRadToDeg, 0.5)
       << summary.FullReport();
   // The report shows the verdict's evidence.
-  char fit[64];
+  char fit[96];
   std::snprintf(fit,
                 sizeof(fit),
-                "  fit:            inliers %.3f, mean score %.3f",
+                "  fit:            median distance %.3f, inliers %.3f, mean "
+                "score %.3f",
+                summary.quality.median_distance,
                 summary.quality.inlier_fraction,
                 summary.quality.mean_score);
   EXPECT_GT(summary.quality.inlier_fraction, 0.5);
+  EXPECT_LT(summary.quality.median_distance,
+            QualityCheckOptions().max_median_distance);
   EXPECT_NE(summary.FullReport().find(fit), std::string::npos)
       << summary.FullReport();
 }
