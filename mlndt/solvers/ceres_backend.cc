@@ -1,6 +1,7 @@
 #include "mlndt/solvers/ceres_backend.h"
 
 #include <ceres/iteration_callback.h>
+#include <ceres/problem.h>
 #include <ceres/solver.h>
 #include <glog/logging.h>
 
@@ -46,12 +47,50 @@ class CeresBackend::CostPool {
     return costs_[i].get();
   }
 
+  // The Problem of every `stride`-th point, built on first use and kept for
+  // the later stages with the same stride: its blocks read the layer through
+  // the binding, and its one parameter block is `xi()`. Stages with the same
+  // stride thus solve the same Problem (same blocks, same order) on another
+  // layer, as a freshly built one would.
+  ceres::Problem& ProblemForStride(size_t stride, const ObjectiveOptions& o) {
+    for (StrideProblem& p : problems_) {
+      if (p.stride == stride) return *p.problem;
+    }
+    ceres::Problem::Options problem_options;
+    // The residual blocks are built here, correctly by construction; the
+    // checks cost more than the blocks on small stages.
+    problem_options.disable_all_safety_checks = true;
+    problem_options.cost_function_ownership =
+        ceres::DO_NOT_TAKE_OWNERSHIP;  // The pool's.
+    auto problem = std::make_unique<ceres::Problem>(problem_options);
+    // One loss object for every block: the Problem frees it once (if used).
+    std::unique_ptr<ceres::LossFunction> loss(CreateLoss(o.loss, o.loss_scale));
+    for (size_t i = 0; i < size(); i += stride) {
+      problem->AddResidualBlock(Get(i), loss.get(), xi_);
+    }
+    if (problem->NumResidualBlocks() > 0) loss.release();
+    problems_.push_back({stride, std::move(problem)});
+    return *problems_.back().problem;
+  }
+
+  // The parameter block of every Problem (a stage copies its pose in and
+  // out).
+  double* xi() { return xi_; }
+
  private:
+  struct StrideProblem {
+    size_t stride;
+    std::unique_ptr<ceres::Problem> problem;
+  };
+
   const std::vector<Eigen::Vector3d>& points_;
   const UnmatchedPolicy policy_;
   const bool analytic_;
   std::unique_ptr<LayerBinding> binding_;
   std::vector<std::unique_ptr<ceres::CostFunction>> costs_;
+  double xi_[6] = {0, 0, 0, 0, 0, 0};
+  // Declared after costs_: destroyed first, before the cost functions.
+  std::vector<StrideProblem> problems_;
 };
 
 namespace {
@@ -145,25 +184,13 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   CHECK(pool_ != nullptr) << "CeresBackend: SetProblem first";
   CHECK_GE(control.point_stride, 1);
   pool_->Bind(layer);
+  ceres::Problem& problem = pool_->ProblemForStride(
+      static_cast<size_t>(control.point_stride), objective_);
+  double* xi = pool_->xi();
+  Eigen::Map<Vector6d> xi_map(xi);
+  xi_map = *reference_from_input_xi;
 
-  ceres::Problem::Options problem_options;
-  // The residual blocks are built here, correctly by construction; the
-  // checks cost more than the blocks on small stages.
-  problem_options.disable_all_safety_checks = true;
-  problem_options.cost_function_ownership =
-      ceres::DO_NOT_TAKE_OWNERSHIP;  // The pool's.
-  ceres::Problem problem(problem_options);
-  // One loss object for every block: the Problem frees it once (if used).
-  std::unique_ptr<ceres::LossFunction> loss(
-      CreateLoss(objective_.loss, objective_.loss_scale));
-  const size_t stride = static_cast<size_t>(control.point_stride);
-  for (size_t i = 0; i < pool_->size(); i += stride) {
-    problem.AddResidualBlock(
-        pool_->Get(i), loss.get(), reference_from_input_xi->data());
-  }
-  if (problem.NumResidualBlocks() > 0) loss.release();
-
-  TraceCallback callback(control, reference_from_input_xi->data(), summary);
+  TraceCallback callback(control, xi, summary);
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = options_.linear_solver_type;
   solver_options.trust_region_strategy_type =
@@ -184,6 +211,7 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
 
   ceres::Solver::Summary ceres_summary;
   ceres::Solve(solver_options, &problem, &ceres_summary);
+  *reference_from_input_xi = xi_map;
   summary->final_score = 2.0 * ceres_summary.final_cost;
   summary->message = ceres_summary.message;
   if (ceres_summary.termination_type == ceres::FAILURE) {

@@ -1,16 +1,18 @@
 #pragma once
 
-// The Ceres backend: each stage builds a fresh ceres::Problem with one
-// auto-diff residual block per sampled point (mlndt_point_cost.h) on the
-// stage's layer, and solves it for at most the stage's iterations. The final
-// stage stops on the update norm through an IterationCallback.
+// The Ceres backend: each stage solves a ceres::Problem with one auto-diff
+// residual block per sampled point (mlndt_point_cost.h; every stride-th point
+// on coarse stages) on the stage's layer, for at most the stage's iterations.
+// The final stage stops on the update norm through an IterationCallback.
 //
 // The cost functions outlive the stages: SetProblem makes a pool for the
 // registration's points, each cost function is built on first use and reads
-// the stage's layer through a LayerBinding (layer_binding.h), so a new stage
-// adds existing blocks to a new Problem instead of allocating a functor per
-// point (docs/performance.md). So an instance holds state: one per
-// registration, not shared between threads.
+// the stage's layer through a LayerBinding (layer_binding.h). The Problems
+// outlive them too: one per point stride, built at the first stage with that
+// stride and solved again, on another layer, by the later ones (the same
+// blocks in the same order, so the same results as a fresh Problem;
+// docs/performance.md). So an instance holds state: one per registration,
+// not shared between threads.
 
 #include <ceres/types.h>
 

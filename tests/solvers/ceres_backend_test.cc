@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mlndt/registration/registration.h"
@@ -86,6 +87,48 @@ TEST(CeresBackend, ReusedAcrossLayersLikeFreshBackends) {
     reused.SolveStage(pair.map.layer(layer), Stage(1), &xi, &summary);
     CeresBackend fresh{CeresBackendOptions()};
     EXPECT_EQ(xi, Solve(&fresh, layer, pair.samples, policy, Stage(1)));
+  }
+}
+
+// The backend keeps one Problem per point stride (ceres_backend.cc): a later
+// stage with a stride seen before solves that Problem again, on another layer
+// and from a pose held in another vector. Each stage, in an order that
+// returns to every stride, must give the pose, trace and final score that a
+// fresh backend gives from the same start.
+TEST(CeresBackend, ProblemsKeptPerStrideGiveWhatFreshProblemsGive) {
+  const testing::Koide3MapAndSamples& pair = Koide3Pair();
+  const UnmatchedPolicy policy = UnmatchedPolicy::NEAREST_CELL;
+  CeresBackend reused{CeresBackendOptions()};
+  reused.SetProblem(pair.samples, Objective(policy), 1);
+  const std::pair<int, int> stages[] = {
+      {1, 8}, {2, 8}, {3, 4}, {5, 8}, {4, 2}, {5, 1}, {5, 8}, {4, 1}};
+  Vector6d start = Vector6d::Zero();
+  for (const auto& [layer, stride] : stages) {
+    SCOPED_TRACE("layer " + std::to_string(layer) + " stride " +
+                 std::to_string(stride));
+    Vector6d xi = start;  // A new vector at every stage.
+    StageSummary summary;
+    reused.SolveStage(pair.map.layer(layer), Stage(stride), &xi, &summary);
+    CeresBackend fresh{CeresBackendOptions()};
+    fresh.SetProblem(pair.samples, Objective(policy), 1);
+    Vector6d fresh_xi = start;
+    StageSummary fresh_summary;
+    fresh.SolveStage(
+        pair.map.layer(layer), Stage(stride), &fresh_xi, &fresh_summary);
+    EXPECT_EQ(xi, fresh_xi);
+    EXPECT_EQ(summary.final_score, fresh_summary.final_score);
+    ASSERT_EQ(summary.trace.size(), fresh_summary.trace.size());
+    for (size_t i = 0; i < summary.trace.size(); ++i) {
+      EXPECT_EQ(summary.trace[i].score, fresh_summary.trace[i].score);
+      EXPECT_EQ(summary.trace[i].reference_from_input_xi,
+                fresh_summary.trace[i].reference_from_input_xi);
+    }
+    EXPECT_NE(xi, start);  // The stage moved the pose.
+    // The next stage starts 0.1 m and 0.2 deg away from where this one
+    // ended, so that a Problem holding on to its last pose would show.
+    start = xi;
+    start(0) += 0.1;
+    start(5) += 0.0035;
   }
 }
 
