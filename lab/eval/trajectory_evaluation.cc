@@ -4,6 +4,7 @@
 
 #include "lab/eval/scan_times.h"
 #include "lab/eval/trajectory_association.h"
+#include "lab/eval/trajectory_evaluation_option_table.h"
 #include "mlndt/cloud/pose_io.h"
 
 namespace mlndt {
@@ -196,11 +197,16 @@ bool CheckIndexPairing(const TrajectoryEvaluationOptions& options,
   return false;
 }
 
+bool TrajectoryEvaluationOptions::IsValid(std::string* error) const {
+  return TrajectoryEvaluationOptionsTable().Check(*this, error);
+}
+
 bool EvaluateTrajectory(const TrajectoryEvaluationOptions& options,
                         const EvaluationReference& reference,
                         const Trajectory& estimate,
                         TrajectoryEvaluation* result,
                         std::string* error) {
+  if (!options.IsValid(error)) return false;
   result->poses = estimate.size();
   bool by_time = false;
   if (!PairsByTime(options, reference, *result, &by_time, error)) return false;
