@@ -33,6 +33,7 @@
 #include "tools/common/map_build_flags.h"
 #include "tools/common/odometry_flags.h"
 #include "tools/common/option_flags.h"
+#include "tools/common/pose_graph_flags.h"
 #include "tools/common/sequence_flags.h"
 #include "tools/common/tool_table_flags.h"
 #include "tools/common/trajectory_evaluation_flags.h"
@@ -246,6 +247,45 @@ TEST(ToolOptionFlags, AnOlderNameSetsTheSameField) {
   // mlndt_odometry's 9 older names, mlndt_eval's 3, mlndt_sequence's 3,
   // mlndt_posegraph's 3, mlndt_bench's 9.
   EXPECT_GE(checked, 27);
+}
+
+// mlndt_posegraph's --joint_one_way: a bool of the opposite sense, whose
+// default is the field's negated; given, it sets the field to its negation;
+// given with --both_directions, it is refused.
+TEST(ToolOptionFlags, AnInvertedOlderNameSetsTheOppositeValue) {
+  const TableFlags& flags = tools::PoseGraphFlags();
+  ASSERT_EQ(flags.inverted_aliases(),
+            (TableFlags::Names{{"joint_one_way", "both_directions"}}));
+  gflags::CommandLineFlagInfo info;
+  ASSERT_TRUE(gflags::GetCommandLineFlagInfo("joint_one_way", &info));
+  EXPECT_EQ(info.type, "bool");
+  EXPECT_EQ(info.default_value,
+            PoseGraphOptions().both_directions ? "false" : "true");
+  EXPECT_EQ(info.filename, "tools/mlndt_posegraph.cc");
+  std::string error;
+  for (const bool one_way : {true, false}) {
+    gflags::FlagSaver saver;
+    gflags::SetCommandLineOption("joint_one_way", one_way ? "true" : "false");
+    PoseGraphOptions options;
+    options.both_directions = one_way;  // The opposite of what it sets.
+    ASSERT_TRUE(flags.Apply(&options, &error)) << error;
+    EXPECT_EQ(options.both_directions, !one_way);
+  }
+  {
+    gflags::FlagSaver saver;
+    gflags::SetCommandLineOption("joint_one_way", "true");
+    gflags::SetCommandLineOption("both_directions", "true");
+    PoseGraphOptions options;
+    EXPECT_FALSE(flags.Apply(&options, &error));
+    EXPECT_EQ(error, "give --both_directions or --joint_one_way, not both");
+  }
+  {
+    gflags::FlagSaver saver;
+    gflags::SetCommandLineOption("both_directions", "false");
+    PoseGraphOptions options;
+    ASSERT_TRUE(flags.Apply(&options, &error)) << error;
+    EXPECT_FALSE(options.both_directions);
+  }
 }
 
 TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {

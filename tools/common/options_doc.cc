@@ -64,6 +64,9 @@ std::string ToolFlagCell(const TableFlags& flags, const std::string& path) {
     for (const auto& [alias, name] : flags.aliases()) {
       if (name == flag) cell += " (older name `--" + alias + "`)";
     }
+    for (const auto& [alias, name] : flags.inverted_aliases()) {
+      if (name == flag) cell += " (older name `--" + alias + "`, inverted)";
+    }
     return cell;
   }
   for (const auto& [name, tool_flag] : flags.set_by_tool_flag()) {
