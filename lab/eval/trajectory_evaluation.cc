@@ -1,6 +1,10 @@
 #include "lab/eval/trajectory_evaluation.h"
 
 #include <algorithm>
+#include <cctype>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "lab/eval/scan_times.h"
 #include "lab/eval/trajectory_association.h"
@@ -108,13 +112,19 @@ bool ReadTrajectoryFiles(const TrajectoryEvaluationOptions& options,
 }
 
 const char* PoseAssociationToString(PoseAssociation association) {
-  switch (association) {
-    case PoseAssociation::AUTO:
-      return "auto";
-    case PoseAssociation::INDEX:
-      return "index";
-    case PoseAssociation::TIMESTAMP:
-      return "timestamp";
+  // PoseAssociationTable's names in lower case (the flag's and the JSON's
+  // spelling), made once.
+  static const std::vector<std::pair<int, std::string>> names = [] {
+    std::vector<std::pair<int, std::string>> lower;
+    for (const EnumTable::Name& name : PoseAssociationTable().names()) {
+      std::string text = name.name;
+      for (char& c : text) c = static_cast<char>(std::tolower(c));
+      lower.emplace_back(name.value, text);
+    }
+    return lower;
+  }();
+  for (const auto& [value, name] : names) {
+    if (value == static_cast<int>(association)) return name.c_str();
   }
   return "unknown";
 }
