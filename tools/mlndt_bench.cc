@@ -5,7 +5,7 @@
 //   mlndt_bench [--data_dir=FOLDER | --pairs=koide3,kitti]
 //               [--starts=identity,prior,offsets] [--backends=ceres,newton,lm]
 //               [--defaults=current,previous] [--repetitions=5]
-//               [--compare_pcl] [--compare_pcl_gicp]
+//               [--compare_pcl_ndt] [--compare_pcl_gicp]
 //               [--output_csv=FILE] [--output_plot=FILE.png]
 //
 // Pairs: lab/bench/bench_pairs.h. Methods: the grid of configurations of
@@ -32,6 +32,7 @@
 #include "lab/bench/bench_report.h"
 #include "lab/report/gnuplot.h"
 #include "mlndt/common/atomic_file.h"
+#include "tools/common/bench_flags.h"
 #include "tools/common/list_flags.h"
 #include "tools/common/output_files.h"
 #include "tools/common/tool_main.h"
@@ -47,7 +48,6 @@ DEFINE_string(starts, "identity", "Comma-separated starts: identity, prior, offs
 DEFINE_string(offsets, "x:0.5,2;yaw:10,30",
               "--starts=offsets: ';'-separated families AXES:values of the reference pushed "
               "off (x, y, z [m], roll, pitch, yaw [deg]; mlndt_suite's syntax)");
-DEFINE_int32(max_pairs, 0, "At most this many pairs per folder, smallest steps first; 0: all");
 DEFINE_string(minimizers, "trust_region",
               "Comma-separated Ceres minimizers (ceres backend only): trust_region, bfgs, lbfgs "
               "(line search)");
@@ -80,27 +80,7 @@ DEFINE_string(trust_regions, "levenberg_marquardt",
               "Comma-separated Ceres trust-region strategies (ceres backend only): "
               "levenberg_marquardt, dogleg");
 DEFINE_string(threads, "1", "Comma-separated thread counts (Ceres evaluator or OpenMP threads)");
-DEFINE_int32(repetitions, 5, "Repetition rounds; timings are the median over rounds");
-DEFINE_bool(warmup, true, "Run every configuration once on the first pair, untimed, first");
-DEFINE_bool(compare_pcl, false,
-            "Also run pcl::NormalDistributionsTransform (needs -DMLNDT_WITH_PCL=ON)");
-DEFINE_bool(compare_pcl_gicp, false,
-            "Also run pcl::GeneralizedIterativeClosestPoint (needs -DMLNDT_WITH_PCL=ON)");
-DEFINE_double(pcl_leaf_size, 0.1,
-              "--compare_pcl, --compare_pcl_gicp: VoxelGrid leaf size for both clouds [m]");
-DEFINE_double(pcl_resolution, 1.0, "--compare_pcl: NDT cell size [m]");
-DEFINE_double(pcl_step_size, 1.0,
-              "--compare_pcl: More-Thuente maximum step length (PCL's default: 0.1)");
-DEFINE_double(pcl_transformation_epsilon, 1e-4,
-              "--compare_pcl: PCL stops when the squared translation of a step is <= this [m^2]; "
-              "1e-4 is a 0.01 m step (lab/bench/pcl_methods.h)");
-DEFINE_int32(pcl_max_iterations, 35, "--compare_pcl: iteration cap");
-DEFINE_double(pcl_gicp_max_correspondence_distance, 5.0,
-              "--compare_pcl_gicp: correspondences farther than this are ignored [m]");
-DEFINE_int32(pcl_gicp_max_iterations, 200, "--compare_pcl_gicp: iteration cap");
 DEFINE_uint64(seed, 1, "Sampling seed (random sampling)");
-DEFINE_double(max_translation_error, 0.2, "Success threshold [m]");
-DEFINE_double(max_rotation_error, 1.0, "Success threshold [deg]");
 DEFINE_string(output_csv, "", "Write one row per set of pairs and configuration to this CSV file");
 // clang-format on
 
@@ -139,35 +119,22 @@ BenchGrid GridFromFlags() {
   return grid;
 }
 
-BenchOptions OptionsFromFlags() {
-  BenchOptions options;
-  options.grid = GridFromFlags();
-  options.pairs.data_dir = FLAGS_data_dir;
-  options.pairs.sets = List(FLAGS_pairs, Items);
-  options.pairs.kitti_gaps = List(FLAGS_kitti_gaps, Ints);
-  options.pairs.starts = List(FLAGS_starts, Items);
-  options.pairs.offsets = FLAGS_offsets;
-  options.pairs.max_pairs = FLAGS_max_pairs;
-  options.rounds.repetitions = FLAGS_repetitions;
-  options.rounds.warmup = FLAGS_warmup;
-  options.rounds.thresholds = {FLAGS_max_translation_error,
-                               FLAGS_max_rotation_error};
-  options.rounds.on_round = [](int round, double seconds) {
-    std::cerr << "mlndt_bench: round " << round << "/" << FLAGS_repetitions
+// The options from the flags; false with *error naming a flag out of range.
+bool OptionsFromFlags(BenchOptions* options, std::string* error) {
+  options->grid = GridFromFlags();
+  options->pairs.data_dir = FLAGS_data_dir;
+  options->pairs.sets = List(FLAGS_pairs, Items);
+  options->pairs.kitti_gaps = List(FLAGS_kitti_gaps, Ints);
+  options->pairs.starts = List(FLAGS_starts, Items);
+  options->pairs.offsets = FLAGS_offsets;
+  if (!tools::BenchFlags().Apply(options, error)) return false;
+  const int repetitions = options->rounds.repetitions;
+  options->rounds.on_round = [repetitions](int round, double seconds) {
+    std::cerr << "mlndt_bench: round " << round << "/" << repetitions
               << " done after " << BenchFormat("%.1f", seconds) << " s"
               << std::endl;
   };
-  options.compare_pcl_ndt = FLAGS_compare_pcl;
-  options.compare_pcl_gicp = FLAGS_compare_pcl_gicp;
-  options.pcl.leaf_size_m = FLAGS_pcl_leaf_size;
-  options.pcl.ndt_resolution_m = FLAGS_pcl_resolution;
-  options.pcl.ndt_step_size_m = FLAGS_pcl_step_size;
-  options.pcl.ndt_transformation_epsilon = FLAGS_pcl_transformation_epsilon;
-  options.pcl.ndt_max_iterations = FLAGS_pcl_max_iterations;
-  options.pcl.gicp_max_correspondence_distance_m =
-      FLAGS_pcl_gicp_max_correspondence_distance;
-  options.pcl.gicp_max_iterations = FLAGS_pcl_gicp_max_iterations;
-  return options;
+  return true;
 }
 
 // The output files can be written and gnuplot runs, before any work.
@@ -185,10 +152,11 @@ bool CheckOutputs(std::string* error) {
 }
 
 int Run() {
-  const BenchOptions options = OptionsFromFlags();
+  BenchOptions options;
   BenchResult result;
   std::string error;
-  if (!CheckOutputs(&error) || !RunBench(options, &result, &error)) {
+  if (!OptionsFromFlags(&options, &error) || !CheckOutputs(&error) ||
+      !RunBench(options, &result, &error)) {
     std::cerr << "mlndt_bench: " << error << std::endl;
     return tools::kExitUsage;
   }
@@ -214,7 +182,7 @@ int main(int argc, char** argv) {
           "Benchmarks registration configurations and PCL's NDT and GICP on "
           "real pairs with references.\n"
           "  mlndt_bench [--pairs=koide3,kitti | --data_dir=FOLDER] "
-          "[--backends=ceres,newton,lm] [--repetitions=5] [--compare_pcl] "
+          "[--backends=ceres,newton,lm] [--repetitions=5] [--compare_pcl_ndt] "
           "[--compare_pcl_gicp] [--output_csv=FILE]",
           true,
           &argc,

@@ -220,6 +220,9 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
+  // --max_flatness and --weak_direction_rounds show the odometry's defaults
+  // (OdometryOptions replaces the registration's per scan).
+  mlndt::tools::OdometryFlags().ShowFieldDefaultsOnSharedFlags();
   if (!mlndt::tools::StartTool(
           "Scan-to-local-map LiDAR odometry with ML-NDT over a folder or a "
           "ROS 1 bag.\n"

@@ -47,8 +47,6 @@
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (files with a cloud extension, sorted by name)");
 DEFINE_string(gt_poses, "", "Optional KITTI-format ground truth (world_from_scan, scan frame)");
-DEFINE_bool(joint_one_way, false,
-            "Only score scan j's points against scan i's map (= --both_directions=false)");
 DEFINE_string(pairs, "", "Extra pairs i:j,... (0-based, file-name order), e.g. loop closures");
 DEFINE_string(odometry_poses, "",
               "KITTI-format odometry (world_from_scan per scan): a factor between consecutive "
@@ -85,15 +83,7 @@ bool OptionsFromFlags(PoseGraphOptions* options, std::string* error) {
     *error = "--pairs: " + *error;
     return false;
   }
-  if (tools::FlagGiven("joint_one_way") &&
-      tools::FlagGiven("both_directions")) {
-    *error = "give --both_directions or --joint_one_way, not both";
-    return false;
-  }
   if (!tools::PoseGraphFlags().Apply(options, error)) return false;
-  if (tools::FlagGiven("joint_one_way")) {
-    options->both_directions = !FLAGS_joint_one_way;
-  }
   options->init_from_odometry = FLAGS_init == "odometry";
   return tools::CheckStartLayerBeforeMap(options->registration, error);
 }

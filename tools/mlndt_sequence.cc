@@ -68,6 +68,7 @@
 #include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
+#include "tools/common/sequence_flags.h"
 #include "tools/common/sequence_inputs.h"
 #include "tools/common/sequence_output.h"
 #include "tools/common/sequence_plot_list.h"
@@ -77,7 +78,6 @@
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");
 DEFINE_string(gt_poses, "", "Optional KITTI poses, one line per scan (world_from_scan)");
-DEFINE_int32(step, 1, "Register scan i + step onto scan i (>= 1)");
 DEFINE_string(init, "zero", "Initial guess: zero | gt_fraction:c | constant_velocity | poses:FILE");
 DEFINE_int32(max_scans, 0, "Use only the first N scans (0 = all)");
 DEFINE_string(output_dir, "", "Folder for pairs.csv, summary.json, trajectories and plots");
@@ -99,17 +99,13 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
         "--output_dir=OUT [--gt_poses=FILE] ...";
     return false;
   }
-  if (FLAGS_step < 1) {
-    *error = "--step must be >= 1";
-    return false;
-  }
   if (FLAGS_max_scans < 0) {
     *error = "--max_scans must be >= 0";
     return false;
   }
-  options->step = static_cast<size_t>(FLAGS_step);
   options->release_used_scans = true;
-  if (!tools::MatcherOptionsFromFlags(&options->registration, error) ||
+  if (!tools::SequenceFlags().Apply(options, error) ||
+      !tools::MatcherOptionsFromFlags(&options->registration, error) ||
       !ParseInitSpec(FLAGS_init, &options->init, error) ||
       !tools::AdaptiveOptionsFromFlags(&options->adaptive, error)) {
     return false;

@@ -43,6 +43,7 @@
 #include "tools/common/registration_flags.h"
 #include "tools/common/suite_inputs.h"
 #include "tools/common/suite_output.h"
+#include "tools/common/suite_plan_flags.h"
 #include "tools/common/tool_main.h"
 
 // clang-format off
@@ -54,8 +55,6 @@ DEFINE_string(data_dir, "", "Folder the relative --datasets folders are in");
 DEFINE_string(steps, "",
               "Comma-separated j - i of the pairs i_j kept (data sets with more than one "
               "pair); empty = all");
-DEFINE_int32(max_pairs_per_set, 0,
-             "At most this many pairs per data set, smallest steps first; 0 = all");
 DEFINE_string(starts, "identity,prior,offsets",
               "Comma-separated starts: identity | prior (the pair's prior_from_input) | "
               "offsets (offset ∘ reference, --offsets) | perturbed (reference pushed off "
@@ -67,8 +66,6 @@ DEFINE_string(offsets, "x:0.5,2,5,10;y:0.5,2,5,10;yaw:10,30,45;xyyaw:3,3,20",
               "(xyyaw:3,3,20 = one offset); applied in the reference frame");
 DEFINE_string(perturb, "0.5,5",
               "perturbed: bound of the random offsets translation_m,rotation_deg");
-DEFINE_int32(perturb_count, 1, "perturbed: random starts per pair, >= 1");
-DEFINE_uint64(perturb_seed, 1, "perturbed: seed of the random offsets");
 DEFINE_string(prior_uncertainty, "",
               "prior: translation_m,rotation_deg passed as the initial uncertainty; "
               "empty = unknown");
@@ -123,19 +120,14 @@ bool ParseNumbers(SuitePlanOptions* plan, std::string* error) {
     return false;
   }
   prior.given = !FLAGS_prior_uncertainty.empty();
-  plan->perturb_count = FLAGS_perturb_count;
-  plan->perturb_seed = FLAGS_perturb_seed;
   std::vector<int> steps;
   if (!FLAGS_steps.empty() && !tools::ParseIntList(FLAGS_steps, &steps)) {
     *error = "--steps=" + FLAGS_steps + ": expected comma-separated integers";
     return false;
   }
   plan->steps.assign(steps.begin(), steps.end());
-  if (!tools::CheckSuitePlanBounds(*plan, FLAGS_max_pairs_per_set, error)) {
-    return false;
-  }
-  plan->max_pairs_per_set = static_cast<size_t>(FLAGS_max_pairs_per_set);
-  return true;
+  return tools::CheckSuitePlanBounds(*plan, error) &&
+         tools::SuitePlanFlags().Apply(plan, error);
 }
 
 bool ParsePlan(SuitePlanOptions* plan, std::string* error) {

@@ -2,24 +2,23 @@
 
 #include <memory>
 
+#include "lab/bench/bench_option_tables.h"
 #include "lab/bench/pcl_methods.h"
 
 namespace mlndt {
 namespace {
 
 bool CheckOptions(const BenchOptions& options, std::string* error) {
-  if (options.rounds.repetitions < 1) {
-    *error = "--repetitions must be >= 1";
-    return false;
-  }
+  // The ranges of BenchOptionsTable (the PCL settings' among them).
+  if (!BenchOptionsTable().Check(options, error)) return false;
   if ((options.compare_pcl_ndt || options.compare_pcl_gicp) &&
       !PclAvailable()) {
-    *error = std::string(options.compare_pcl_ndt ? "--compare_pcl"
+    *error = std::string(options.compare_pcl_ndt ? "--compare_pcl_ndt"
                                                  : "--compare_pcl_gicp") +
              ": this build has no PCL; configure with -DMLNDT_WITH_PCL=ON";
     return false;
   }
-  return options.pcl.IsValid(error);
+  return true;
 }
 
 std::vector<std::unique_ptr<BenchMethod>> MakeMethods(

@@ -20,8 +20,9 @@ struct PclBenchOptions {
   double gicp_max_correspondence_distance_m = 5.0;
   int gicp_max_iterations = 200;
 
-  // Leaf, resolution, step size and distance > 0, epsilon >= 0, caps >= 1;
-  // else false with *error naming the flag.
+  // The ranges of PclBenchOptionsTable (bench_option_tables.h): leaf,
+  // resolution, step size and distance > 0, epsilon >= 0, caps >= 1; else
+  // false with *error naming the field.
   bool IsValid(std::string* error) const;
 };
 

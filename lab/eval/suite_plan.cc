@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "lab/eval/dataset.h"
+#include "lab/eval/suite_plan_option_table.h"
 #include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/common/pose.h"
 
@@ -391,15 +392,7 @@ bool SuitePlanOptions::IsValid(std::string* error) const {
     *error = "start kind offsets without offsets";
     return false;
   }
-  if (!(perturb_translation_m >= 0.0 && perturb_translation_m <= 1e4) ||
-      !(perturb_rotation_deg >= 0.0 && perturb_rotation_deg <= 180.0)) {
-    *error = "perturbation bound must be in [0, 1e4] m and [0, 180] deg";
-    return false;
-  }
-  if (perturb_count < 1) {
-    *error = "perturbation count must be >= 1";
-    return false;
-  }
+  if (!SuitePlanOptionsTable().Check(*this, error)) return false;
   if (prior_uncertainty.given && (!(prior_uncertainty.translation_m >= 0.0 &&
                                     prior_uncertainty.translation_m <= 1e4) ||
                                   !(prior_uncertainty.rotation_deg >= 0.0 &&

@@ -142,6 +142,9 @@ struct SuitePlanOptions {
   // first, then the smallest reference index.
   size_t max_pairs_per_set = 0;
 
+  // The ranges of SuitePlanOptionsTable, then the starts (none twice,
+  // offsets given for OFFSETS), the prior's uncertainty and the steps (not
+  // 0); false with *error.
   bool IsValid(std::string* error) const;
 };
 

@@ -1,9 +1,14 @@
 #include "lab/eval/trajectory_evaluation.h"
 
 #include <algorithm>
+#include <cctype>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "lab/eval/scan_times.h"
 #include "lab/eval/trajectory_association.h"
+#include "lab/eval/trajectory_evaluation_option_table.h"
 #include "mlndt/cloud/pose_io.h"
 
 namespace mlndt {
@@ -107,13 +112,19 @@ bool ReadTrajectoryFiles(const TrajectoryEvaluationOptions& options,
 }
 
 const char* PoseAssociationToString(PoseAssociation association) {
-  switch (association) {
-    case PoseAssociation::AUTO:
-      return "auto";
-    case PoseAssociation::INDEX:
-      return "index";
-    case PoseAssociation::TIMESTAMP:
-      return "timestamp";
+  // PoseAssociationTable's names in lower case (the flag's and the JSON's
+  // spelling), made once.
+  static const std::vector<std::pair<int, std::string>> names = [] {
+    std::vector<std::pair<int, std::string>> lower;
+    for (const EnumTable::Name& name : PoseAssociationTable().names()) {
+      std::string text = name.name;
+      for (char& c : text) c = static_cast<char>(std::tolower(c));
+      lower.emplace_back(name.value, text);
+    }
+    return lower;
+  }();
+  for (const auto& [value, name] : names) {
+    if (value == static_cast<int>(association)) return name.c_str();
   }
   return "unknown";
 }
@@ -196,11 +207,16 @@ bool CheckIndexPairing(const TrajectoryEvaluationOptions& options,
   return false;
 }
 
+bool TrajectoryEvaluationOptions::IsValid(std::string* error) const {
+  return TrajectoryEvaluationOptionsTable().Check(*this, error);
+}
+
 bool EvaluateTrajectory(const TrajectoryEvaluationOptions& options,
                         const EvaluationReference& reference,
                         const Trajectory& estimate,
                         TrajectoryEvaluation* result,
                         std::string* error) {
+  if (!options.IsValid(error)) return false;
   result->poses = estimate.size();
   bool by_time = false;
   if (!PairsByTime(options, reference, *result, &by_time, error)) return false;

@@ -33,6 +33,10 @@ struct TrajectoryEvaluationOptions {
   PoseAssociation association = PoseAssociation::AUTO;
   double max_time_difference_s = 0.02;  // TIMESTAMP: largest |dt|, > 0.
   KittiSegmentOptions segments;
+
+  // The ranges and enum values of TrajectoryEvaluationOptionsTable (the
+  // segments' too); false with *error naming the field.
+  bool IsValid(std::string* error) const;
 };
 
 // The reference every estimate is scored against.

@@ -70,6 +70,7 @@ const OptionTable& TrajectoryEvaluationOptionsTable() {
                   &S::segments,
                   KittiSegmentOptionsTable(),
                   "The KITTI devkit's segment errors.")
+          .Validator(&S::IsValid)
           .Build();
   return table;
 }

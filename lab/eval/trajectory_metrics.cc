@@ -3,8 +3,9 @@
 #include <glog/logging.h>
 
 #include <cmath>
+#include <utility>
 
-#include "mlndt/common/internal/enum_strings.h"
+#include "lab/eval/trajectory_evaluation_option_table.h"
 #include "mlndt/common/pose.h"
 
 namespace mlndt {
@@ -64,27 +65,12 @@ bool Align(TrajectoryAlignment alignment,
 }  // namespace
 
 const char* TrajectoryAlignmentToString(TrajectoryAlignment alignment) {
-  switch (alignment) {
-    case TrajectoryAlignment::NONE:
-      return "NONE";
-    case TrajectoryAlignment::FIRST_POSE:
-      return "FIRST_POSE";
-    case TrajectoryAlignment::SE3:
-      return "SE3";
-    case TrajectoryAlignment::SIM3:
-      return "SIM3";
-  }
-  return "UNKNOWN";
+  return EnumToString(TrajectoryAlignmentTable(), alignment);
 }
 
 bool StringToTrajectoryAlignment(std::string value,
                                  TrajectoryAlignment* result) {
-  UpperCase(&value);
-  MLNDT_STRING_TO_ENUM(NONE, TrajectoryAlignment);
-  MLNDT_STRING_TO_ENUM(FIRST_POSE, TrajectoryAlignment);
-  MLNDT_STRING_TO_ENUM(SE3, TrajectoryAlignment);
-  MLNDT_STRING_TO_ENUM(SIM3, TrajectoryAlignment);
-  return false;
+  return StringToEnum(TrajectoryAlignmentTable(), std::move(value), result);
 }
 
 bool ComputeAte(const AteOptions& options,

@@ -1,8 +1,21 @@
 #include "lab/runs/adaptive_start_layer.h"
 
+#include <algorithm>
+
+#include "lab/runs/adaptive_start_layer_option_table.h"
 #include "mlndt/common/pose.h"
 
 namespace mlndt {
+
+bool AdaptiveStartLayerOptions::IsValid(std::string* error) const {
+  if (!AdaptiveStartLayerOptionsTable().Check(*this, error)) return false;
+  if (!std::is_sorted(fail_rate_thresholds.begin(),
+                      fail_rate_thresholds.end())) {
+    *error = "invalid option: fail_rate_thresholds must be ascending";
+    return false;
+  }
+  return true;
+}
 
 GuessCheck CheckGuess(const AdaptiveStartLayerOptions& options,
                       bool usable,

@@ -21,6 +21,7 @@
 // failure: the rule assumes an odometry-like guess.
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "mlndt/common/types.h"
@@ -36,6 +37,10 @@ struct AdaptiveStartLayerOptions {
   // Ascending fail rates in [0, 1]: exceeding the k-th starts k layers
   // coarser than the last.
   std::vector<double> fail_rate_thresholds = {0.05, 0.20};
+
+  // The ranges of AdaptiveStartLayerOptionsTable and ascending thresholds;
+  // false with *error naming the field.
+  bool IsValid(std::string* error) const;
 };
 
 // How far a pair's estimate ended from its guess, and the rule's verdict.

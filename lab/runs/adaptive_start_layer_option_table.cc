@@ -32,6 +32,7 @@ const OptionTable& AdaptiveStartLayerOptionsTable() {
                       Closed(0.0, 1.0),
                       "Ascending running fail rates: above the k-th the "
                       "start is k layers coarser than the last.")
+          .Validator(&S::IsValid)
           .Build();
   return table;
 }

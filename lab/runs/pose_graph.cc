@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "lab/runs/pose_graph_option_table.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/grid/layered_grid.h"
@@ -223,12 +224,9 @@ bool PoseGraphOptions::IsValid(size_t num_scans, std::string* error) const {
     *error = message;
     return false;
   };
-  if (neighbors < 1) return fail("neighbors must be >= 1");
-  if (joint_layers < 1 || joint_layers > 2) return fail("joint_layers: 1 or 2");
-  if (max_iterations < 1) return fail("max_iterations must be >= 1");
-  if (!(information_scale > 0.0 && information_scale <= 1e3)) {
-    return fail("information_scale must be in (0, 1e3]");
-  }
+  // The ranges of PoseGraphOwnOptionsTable (the odometry noise's too), then
+  // what needs the number of scans.
+  if (!PoseGraphOwnOptionsTable().Check(*this, error)) return false;
   const int n = static_cast<int>(num_scans);
   for (const auto& [i, j] : extra_pairs) {
     if (i < 0 || j < 0 || i >= n || j >= n || i == j) {
@@ -240,9 +238,6 @@ bool PoseGraphOptions::IsValid(size_t num_scans, std::string* error) const {
   if (!odometry.empty() && odometry.size() < num_scans) {
     return fail("odometry has " + std::to_string(odometry.size()) +
                 " poses for " + std::to_string(num_scans) + " scans");
-  }
-  if (!(odometry_noise.sigma_m > 0.0 && odometry_noise.sigma_deg > 0.0)) {
-    return fail("odometry noise: both sigmas must be > 0");
   }
   if (init_from_odometry && odometry.empty()) {
     return fail("initialising from the odometry needs odometry poses");

@@ -53,7 +53,8 @@ struct PoseGraphOptions {
   // cost.
   std::function<void(const std::string&, int, double)> on_iteration;
 
-  // `num_scans` for the pair and odometry checks.
+  // The ranges of PoseGraphOwnOptionsTable, then (by `num_scans`) the
+  // extra pairs and the odometry poses, and the registration's IsValid.
   bool IsValid(size_t num_scans, std::string* error) const;
 };
 

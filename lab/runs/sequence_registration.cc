@@ -4,6 +4,8 @@
 
 #include <utility>
 
+#include "lab/runs/sequence_option_table.h"
+
 namespace mlndt {
 namespace {
 
@@ -12,10 +14,7 @@ bool CheckInputs(const SequenceOptions& options,
                  const std::vector<Isometry3d>* truth,
                  const std::vector<Isometry3d>* odometry,
                  std::string* error) {
-  if (options.step < 1) {
-    *error = "step must be >= 1";
-    return false;
-  }
+  if (!options.IsValid(error)) return false;
   if (truth != nullptr && truth->size() < n) {
     *error = "the ground truth has " + std::to_string(truth->size()) +
              " poses for " + std::to_string(n) + " scans";
@@ -61,6 +60,11 @@ void FillResult(const SequenceOptions& options,
 }
 
 }  // namespace
+
+bool SequenceOptions::IsValid(std::string* error) const {
+  return SequenceOwnOptionsTable().Check(*this, error) &&
+         adaptive.IsValid(error);
+}
 
 bool RunSequence(const SequenceOptions& options,
                  ScanStore* store,

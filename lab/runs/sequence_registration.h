@@ -26,6 +26,10 @@ struct SequenceOptions {
   AdaptiveStartLayerOptions adaptive;
   // Free clouds and maps of scans no later pair needs (long sequences).
   bool release_used_scans = false;
+
+  // step's range (SequenceOwnOptionsTable) and adaptive's IsValid; false
+  // with *error naming the field.
+  bool IsValid(std::string* error) const;
 };
 
 struct PairResult {

@@ -210,8 +210,11 @@ bool OptionField::CheckRange(const void* s,
     }
     return true;
   }
-  const double value = type == OptionType::INT ? *static_cast<const int*>(p)
-                                               : *static_cast<const double*>(p);
+  const double value =
+      type == OptionType::INT ? *static_cast<const int*>(p)
+      : type == OptionType::UINT64
+          ? static_cast<double>(*static_cast<const uint64_t*>(p))
+          : *static_cast<const double*>(p);
   if (range.Contains(value)) return true;
   *error = OutOfRange(prefix + name, Short(value), range.ToString());
   return false;

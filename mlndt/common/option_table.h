@@ -151,6 +151,12 @@ class OptionTableBuilder {
                              const char* help) {
     return Add(MakeField(name, OptionType::UINT64, "", help, m));
   }
+  OptionTableBuilder& Uint64(const char* name,
+                             uint64_t S::*m,
+                             OptionRange range,
+                             const char* help) {
+    return Add(Ranged(MakeField(name, OptionType::UINT64, "", help, m), range));
+  }
   OptionTableBuilder& Double(const char* name,
                              double S::*m,
                              const char* unit,

@@ -99,14 +99,18 @@ def test_docs_options_md_is_current():
 # reaches them: LocalizerOptions' fields are mlndt.Localizer keywords;
 # MapBuildOptions is mlndt_map's only (LayeredMap.build takes the grid
 # keywords and num_threads, not a voxel filter or a memory limit);
-# TrajectoryEvaluationOptions, AdaptiveStartLayerOptions and PoseGraphOptions
-# are the lab's (mlndt_eval, mlndt_sequence, mlndt_posegraph).
+# TrajectoryEvaluationOptions, AdaptiveStartLayerOptions, PoseGraphOptions,
+# SequenceOptions, SuitePlanOptions and BenchOptions are the lab's
+# (mlndt_eval, mlndt_sequence, mlndt_posegraph, mlndt_suite, mlndt_bench).
 PYTHON_TOOL_TABLES = {"LocalizerOptions": lambda: mlndt.Localizer}
 TOOL_ONLY_TABLES = {
     "MapBuildOptions",
     "TrajectoryEvaluationOptions",
     "AdaptiveStartLayerOptions",
     "PoseGraphOptions",
+    "SequenceOptions",
+    "SuitePlanOptions",
+    "BenchOptions",
 }
 # OdometryOptions' fields are mlndt.Odometry keywords, a nested struct's as a
 # dict (local_map={"max_keyframes": 3} for --local_map_max_keyframes=3).

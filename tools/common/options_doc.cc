@@ -42,6 +42,22 @@ std::string DefaultText(const OptionFlag& flag, bool ndt) {
   return field->Format(owner);
 }
 
+// " (mlndt_odometry: 0.8)" for a shared flag that sets a field of a tool's
+// table in its place, with that field's default (the value the tool uses
+// when the flag is not given; TableFlags::ShowFieldDefaultsOnSharedFlags).
+std::string ToolDefaultsNote(const std::string& flag) {
+  std::string note;
+  for (const TableFlags* flags : ToolTableFlags()) {
+    for (const auto& [path, tool_flag] : flags->set_by_tool_flag()) {
+      if (tool_flag != flag || !flags->Shared(flag)) continue;
+      const OptionField& field = *flags->table().FindPath(path);
+      note += " (" + flags->tool() + ": " +
+              field.Format(flags->Owner(path, flags->table().defaults())) + ")";
+    }
+  }
+  return note;
+}
+
 std::string RangeText(const OptionField& field) {
   if (field.type == OptionType::ENUM) return field.enum_table->ChoicesForHelp();
   if (!field.has_range) return "";
@@ -63,6 +79,9 @@ std::string ToolFlagCell(const TableFlags& flags, const std::string& path) {
     std::string cell = "`--" + flag + "`";
     for (const auto& [alias, name] : flags.aliases()) {
       if (name == flag) cell += " (older name `--" + alias + "`)";
+    }
+    for (const auto& [alias, name] : flags.inverted_aliases()) {
+      if (name == flag) cell += " (older name `--" + alias + "`, inverted)";
     }
     return cell;
   }
@@ -150,8 +169,9 @@ std::string OptionsMarkdown() {
     const OptionField& field = *flag.field;
     out << "| `--" << flag.name << "` | " << flag.mlndt_path << " | "
         << flag.ndt_path << " | " << TypeName(field.type) << " | "
-        << Cell(DefaultText(flag, flag.mlndt_path.empty())) << " | "
-        << field.unit << " | " << Cell(RangeText(field)) << " | "
+        << Cell(DefaultText(flag, flag.mlndt_path.empty()) +
+                ToolDefaultsNote(flag.name))
+        << " | " << field.unit << " | " << Cell(RangeText(field)) << " | "
         << Cell(field.help) << " |\n";
   }
   out << "\nDeprecated flag names (still accepted, with a notice): ";

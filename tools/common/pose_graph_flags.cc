@@ -15,7 +15,8 @@ const TableFlags kPoseGraphFlags(
     {{"joint_point_blocks", "point_blocks"},
      {"odometry_sigma_m", "odometry_noise_sigma_m"},
      {"odometry_sigma_deg", "odometry_noise_sigma_deg"}},
-    &IsSharedFlag);
+    &IsSharedFlag,
+    {{"joint_one_way", "both_directions"}});
 
 }  // namespace
 

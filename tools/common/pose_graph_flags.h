@@ -6,8 +6,9 @@
 // registration's older flag name), --both_directions, --point_blocks,
 // --information_scale, --odometry_noise_sigma_m, --odometry_noise_sigma_deg;
 // the older names --joint_point_blocks, --odometry_sigma_m and
-// --odometry_sigma_deg are aliases. both_directions is also set by the
-// tool's --joint_one_way (inverted), init_from_odometry by its --init.
+// --odometry_sigma_deg are aliases; the older --joint_one_way is an
+// inverted alias (--both_directions=false). init_from_odometry is set by
+// the tool's --init.
 // Linking this file gives a tool these flags.
 
 #include "tools/common/table_flags.h"

@@ -138,9 +138,7 @@ bool LoadSuiteDatasets(const std::vector<SuiteDataset>& datasets,
   return true;
 }
 
-bool CheckSuitePlanBounds(const SuitePlanOptions& plan,
-                          int max_pairs_per_set,
-                          std::string* error) {
+bool CheckSuitePlanBounds(const SuitePlanOptions& plan, std::string* error) {
   const StartUncertainty& prior = plan.prior_uncertainty;
   const std::vector<std::pair<const char*, bool>> checks = {
       {"--perturb: bounds must be in [0, 1e4] m and [0, 180] deg",
@@ -151,10 +149,8 @@ bool CheckSuitePlanBounds(const SuitePlanOptions& plan,
        !prior.given ||
            (prior.translation_m >= 0.0 && prior.rotation_deg >= 0.0 &&
             prior.translation_m <= 1e4 && prior.rotation_deg <= 180.0)},
-      {"--perturb_count must be >= 1", plan.perturb_count >= 1},
       {"--steps: a step must not be 0",
-       std::count(plan.steps.begin(), plan.steps.end(), 0) == 0},
-      {"--max_pairs_per_set must be >= 0", max_pairs_per_set >= 0}};
+       std::count(plan.steps.begin(), plan.steps.end(), 0) == 0}};
   for (const auto& [message, ok] : checks) {
     if (!ok) {
       *error = message;

@@ -48,12 +48,10 @@ bool LoadSuiteDatasets(const std::vector<SuiteDataset>& datasets,
                        std::vector<LoadedSuiteDataset>* loaded,
                        std::string* error);
 
-// The plan's numbers in range: the perturbed and prior bounds within
-// [0, 1e4] m and [0, 180] deg, perturb_count >= 1, no step 0, and
-// --max_pairs_per_set >= 0; *error names the flag.
-bool CheckSuitePlanBounds(const SuitePlanOptions& plan,
-                          int max_pairs_per_set,
-                          std::string* error);
+// The plan's numbers set by text flags in range: the perturbed and prior
+// bounds within [0, 1e4] m and [0, 180] deg, no step 0; *error names the
+// flag. (The table flags' ranges are checked as they are applied.)
+bool CheckSuitePlanBounds(const SuitePlanOptions& plan, std::string* error);
 
 // --reach_share in (0, 1]; --plot needs --output_dir and a gnuplot that
 // runs; --gnuplot needs --plot.

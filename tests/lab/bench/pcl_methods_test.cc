@@ -10,17 +10,21 @@
 namespace mlndt {
 namespace {
 
-TEST(PclBenchOptions, RefusesBadValuesNamingTheFlag) {
+TEST(PclBenchOptions, RefusesBadValuesNamingTheField) {
   std::string error;
   EXPECT_TRUE(PclBenchOptions().IsValid(&error)) << error;
   PclBenchOptions options;
   options.leaf_size_m = 0.0;
   EXPECT_FALSE(options.IsValid(&error));
-  EXPECT_EQ(error, "--pcl_leaf_size must be > 0");
+  EXPECT_EQ(error, "invalid option: leaf_size_m = 0; it must be in (0, 1e+09]");
   options = PclBenchOptions();
   options.gicp_max_iterations = 0;
   EXPECT_FALSE(options.IsValid(&error));
-  EXPECT_NE(error.find("--pcl_gicp_max_iterations"), std::string::npos);
+  EXPECT_NE(error.find("gicp_max_iterations = 0"), std::string::npos);
+  options = PclBenchOptions();
+  options.ndt_transformation_epsilon = -1e-9;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("ndt_transformation_epsilon"), std::string::npos);
 }
 
 #ifdef MLNDT_WITH_PCL

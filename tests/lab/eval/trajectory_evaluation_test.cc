@@ -158,6 +158,10 @@ TEST(PoseAssociation, StringsRoundTrip) {
     EXPECT_STREQ(PoseAssociationToString(association), name);
   }
   EXPECT_FALSE(StringToPoseAssociation("nearest", &association));
+  // Lower case only, as the hand-written functions (from the table now).
+  EXPECT_FALSE(StringToPoseAssociation("AUTO", &association));
+  EXPECT_STREQ(PoseAssociationToString(static_cast<PoseAssociation>(9)),
+               "unknown");
 }
 
 }  // namespace

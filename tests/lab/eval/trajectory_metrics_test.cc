@@ -161,6 +161,13 @@ TEST(TrajectoryAlignment, StringConversions) {
   ASSERT_TRUE(StringToTrajectoryAlignment("sim3", &parsed));
   EXPECT_EQ(parsed, TrajectoryAlignment::SIM3);
   EXPECT_FALSE(StringToTrajectoryAlignment("umeyama", &parsed));
+  // The names, as the hand-written function gave them (from the table now).
+  EXPECT_STREQ(TrajectoryAlignmentToString(TrajectoryAlignment::FIRST_POSE),
+               "FIRST_POSE");
+  EXPECT_STREQ(TrajectoryAlignmentToString(static_cast<TrajectoryAlignment>(9)),
+               "UNKNOWN");
+  ASSERT_TRUE(StringToTrajectoryAlignment("First_Pose", &parsed));
+  EXPECT_EQ(parsed, TrajectoryAlignment::FIRST_POSE);
 }
 
 // est_{k+1} = est_k (truth_k^-1 truth_{k+1}) D: every relative motion of the

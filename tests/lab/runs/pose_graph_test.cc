@@ -9,6 +9,11 @@
 #include <ceres/ceres.h>
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "lab/eval/reference_pairs.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
@@ -127,9 +132,42 @@ TEST(RunPoseGraph, ExtraPairsAddDirectedPairsAndBadOptionsAreRefused) {
   options.odometry = KittiPoses(3);
   options.odometry_noise.sigma_deg = 0.0;
   EXPECT_FALSE(RunPoseGraph(options, KittiScans(3), &summary, &error));
-  EXPECT_NE(error.find("sigmas must be > 0"), std::string::npos) << error;
+  EXPECT_EQ(error,
+            "invalid option: odometry_noise.sigma_deg = 0; it must be > 0");
   EXPECT_FALSE(RunPoseGraph(options, {KittiScans(1)}, &summary, &error));
   EXPECT_EQ(error, "fewer than 2 scans");
+}
+
+// The ranges come from PoseGraphOwnOptionsTable; the checks that need the
+// number of scans stay.
+TEST(PoseGraphOptions, IsValidTakesTheRangesFromTheTable) {
+  std::string error;
+  ASSERT_TRUE(PoseGraphOptions().IsValid(3, &error)) << error;
+  const std::vector<
+      std::pair<std::function<void(PoseGraphOptions*)>, std::string>>
+      cases = {
+          {[](PoseGraphOptions* o) { o->neighbors = 0; },
+           "invalid option: neighbors = 0; it must be >= 1"},
+          {[](PoseGraphOptions* o) { o->joint_layers = 3; },
+           "invalid option: joint_layers = 3; it must be in [1, 2]"},
+          {[](PoseGraphOptions* o) { o->max_iterations = 0; },
+           "invalid option: max_iterations = 0; it must be >= 1"},
+          {[](PoseGraphOptions* o) { o->information_scale = 2e3; },
+           "invalid option: information_scale = 2000; it must be in (0, "
+           "1000]"},
+          {[](PoseGraphOptions* o) { o->odometry_noise.sigma_m = -1.0; },
+           "invalid option: odometry_noise.sigma_m = -1; it must be > 0"},
+          {[](PoseGraphOptions* o) {
+             o->extra_pairs = {{1, 1}};
+           },
+           "pair 1:1: scans are 0..2 and a pair needs two of them"},
+      };
+  for (const auto& [spoil, message] : cases) {
+    PoseGraphOptions options;
+    spoil(&options);
+    EXPECT_FALSE(options.IsValid(3, &error)) << message;
+    EXPECT_EQ(error, message);
+  }
 }
 
 }  // namespace
