@@ -4,7 +4,8 @@
 // number of iterations on each layer (three in the paper, Section 4), switch
 // to the next finer layer, and run the last layer until the update norm
 // falls below a tolerance or an iteration cap is reached. Each stage hands the
-// backend the stage's layer; the Ceres backend builds a fresh Problem for it.
+// backend the stage's layer; the Ceres backend keeps one Problem per point
+// stride and solves it on that layer.
 // The scheduler owns the iteration trace: it numbers the backends' records
 // over the whole registration and stamps their layer and time.
 
