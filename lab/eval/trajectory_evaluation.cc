@@ -131,9 +131,8 @@ const char* PoseAssociationToString(PoseAssociation association) {
 
 bool StringToPoseAssociation(const std::string& value,
                              PoseAssociation* association) {
-  for (PoseAssociation a : {PoseAssociation::AUTO,
-                            PoseAssociation::INDEX,
-                            PoseAssociation::TIMESTAMP}) {
+  for (const EnumTable::Name& name : PoseAssociationTable().names()) {
+    const auto a = static_cast<PoseAssociation>(name.value);
     if (value == PoseAssociationToString(a)) {
       *association = a;
       return true;
