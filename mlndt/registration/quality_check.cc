@@ -88,26 +88,28 @@ bool QualityCheckOptions::IsValid(std::string* error) const {
 namespace {
 
 // The sum of the rows [v; (R p) x v / L] over the thin directions v of the
-// matched points' cells (quality_check.h).
+// matched points' cells (quality_check.h): planar cells only, or line
+// cells (thin in two directions) too when `count_lines`.
 Matrix6d ThinDirectionInformation(
     const std::vector<Eigen::Vector3d>& input_points,
     const std::vector<PointMatch>& matches,
     const Matrix3d& rotation,
-    double rms_range_m) {
+    double rms_range_m,
+    bool count_lines) {
   const double inverse_lever = 1.0 / std::max(rms_range_m, 1e-3);
   Matrix6d information = Matrix6d::Zero();
   for (size_t k = 0; k < input_points.size(); ++k) {
     const NdtCell* cell = matches[k].cell;
     if (cell == nullptr) continue;
+    // Row i of W is v_i^T / sqrt(lambda_i) (ndt_cell.h).
+    const Eigen::Vector3d variances =
+        cell->whitening.rowwise().squaredNorm().cwiseInverse();
+    const auto thin =
+        variances.array() < kThinCellDirection * variances.maxCoeff();
+    if (thin.count() == 2 && !count_lines) continue;
     const Eigen::Vector3d turned = rotation * input_points[k];  // R p.
-    // Row k of W is v_k^T / sqrt(lambda_k) (ndt_cell.h).
-    const Eigen::Vector3d inverse_variances =
-        cell->whitening.rowwise().squaredNorm();
-    const double largest_variance = 1.0 / inverse_variances.minCoeff();
     for (int i = 0; i < 3; ++i) {
-      if (1.0 / inverse_variances(i) >= kThinCellDirection * largest_variance) {
-        continue;
-      }
+      if (!thin(i)) continue;
       const Eigen::Vector3d v = cell->whitening.row(i).transpose().normalized();
       Vector6d row;
       row << v, turned.cross(v) * inverse_lever;
@@ -179,19 +181,26 @@ ConstraintAnalysis AnalyseMatched(
     const QualityCheckOptions& options) {
   ConstraintAnalysis analysis;
   const Isometry3d pose = PoseVectorToIsometry(reference_from_input_xi);
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(ThinDirectionInformation(
-      input_points, matches, pose.linear(), rms_range_m));
-  const Vector6d lambda = solver.eigenvalues();  // Ascending.
-  const double largest = lambda(5);
+  // Whether the surfaces leave a direction free: planar cells only (a line
+  // cell's second thin direction is mostly the gap between scan rings).
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> surfaces(
+      ThinDirectionInformation(
+          input_points, matches, pose.linear(), rms_range_m, false));
+  const Vector6d mu = surfaces.eigenvalues();  // Ascending.
   for (int i = 0; i < 6; ++i) {
-    if (!(lambda(i) >= options.min_constraint_ratio * largest) ||
-        !(largest > 0.0)) {
-      analysis.degenerate_directions.push_back(solver.eigenvectors().col(i));
+    if (!(mu(i) >= options.min_constraint_ratio * mu(5)) || !(mu(5) > 0.0)) {
+      analysis.degenerate_directions.push_back(surfaces.eigenvectors().col(i));
     }
   }
-  if (!(largest > 0.0)) return analysis;
-  analysis.constraint_ratio = std::max(0.0, lambda(0)) / largest;
+  if (!(mu(5) > 0.0)) return analysis;
+  analysis.constraint_ratio = std::max(0.0, mu(0)) / mu(5);
   if (options.max_flatness >= 1.0) return analysis;  // The probe is off.
+  // The probe's candidates: the weakest directions with line cells counted,
+  // since it measures what moving along them costs every inlier.
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(ThinDirectionInformation(
+      input_points, matches, pose.linear(), rms_range_m, true));
+  const Vector6d lambda = solver.eigenvalues();  // Ascending.
+  const double largest = lambda(5);
   const std::vector<bool> inlier = InlierFlags(matches, options.inlier_gate);
   const size_t by_ratio = analysis.degenerate_directions.size();
   for (int i = 0; i < 3 && lambda(i) < kProbedConstraintRatio * largest; ++i) {

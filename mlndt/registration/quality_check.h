@@ -15,16 +15,22 @@
 //    [v; (R p) x v / L] (point-to-plane, with rotations scaled to metres at
 //    the points' RMS range L); the Hessian itself does not tell, since the
 //    covariance regularisation gives every cell some in-plane information.
+//    Whether a direction is free is decided on planar cells alone: where a
+//    spinning LiDAR's rings are farther apart than a cell, one ring crosses
+//    it, and the gap between rings looks like a surface although it is the
+//    sensor's pattern, which pulls two scans to where their rings coincide
+//    (no motion); a line cell's two thin directions cannot be told apart.
 //    A plane leaves its in-plane translations and the turn about its normal
 //    free, a corridor its length. The eigenvalue ratio alone depends on the
 //    point count (sparse cells have spurious thin directions), so the weak
-//    directions are also probed: the pose is moved by one cell edge along
-//    each, both ways; when almost all inliers stay inliers (a share, not a
-//    count, so that the answer does not depend on the density) and the few
-//    lost are not clearly more than those gained, the data cannot tell the
-//    poses apart (a flat direction). A weak but real constraint (a street's
-//    cross walls) loses the points on the surfaces across it: 7-17 % of the
-//    inliers (ProbeDirection in quality_check.cc).
+//    directions (of all the rows, line cells included) are also probed: the
+//    pose is moved by one cell edge along each, both ways; when almost all
+//    inliers stay inliers (a share, not a count, so that the answer does not
+//    depend on the density) and the few lost are not clearly more than those
+//    gained, the data cannot tell the poses apart (a flat direction). A weak
+//    but real constraint (a street's cross walls) loses the points on the
+//    surfaces across it: 7-17 % of the inliers (ProbeDirection in
+//    quality_check.cc).
 
 #include <string>
 #include <vector>
@@ -87,8 +93,9 @@ const OptionTable& QualityCheckOptionsTable();
 
 // How well the pose is constrained at a solution.
 struct ConstraintAnalysis {
-  // lambda_min / lambda_max of the sum of the rows above: 1 when every
-  // direction is constrained alike, 0 for a direction with no information.
+  // lambda_min / lambda_max of the sum of the planar cells' rows above: 1
+  // when every direction is constrained alike, 0 for a direction with no
+  // information.
   double constraint_ratio = 0.0;
   // Unit directions (translation [m]; rotation vector scaled by L) whose
   // eigenvalue is below min_constraint_ratio times the largest.
