@@ -3,6 +3,7 @@
 #include <ceres/loss_function.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -170,6 +171,44 @@ TEST(EvaluateScore, RobustHessianIsWeightedByLossDerivative) {
       testing::Objective(UnmatchedPolicy::ZERO_RESIDUAL, LossType::HUBER, 1.0));
   EXPECT_NEAR(evaluation.score, score, 1e-10 * score);
   EXPECT_TRUE(EigenNear(evaluation.hessian, hessian, 1e-9 * hessian.norm()));
+}
+
+// The Cauchy score is summed as b log(prod (1 + s_k / b)), renormalised as
+// it grows (score.cc): it must equal the sum of each point's loss, here over
+// 1400 points whose product passes 2^500 several times.
+TEST(EvaluateScore, CauchyScoreIsTheSumOfEachPointsLoss) {
+  const NdtLayer layer = MakeLayer();
+  std::vector<Vector3d> targets;
+  for (int copy = 0; copy < 200; ++copy) {
+    for (const Vector3d& target : WellInsideTargets())
+      targets.push_back(target);
+  }
+  const std::vector<Vector3d> points = InputPointsFor(targets);
+  const Vector6d xi = TestPose();
+  const ceres::CauchyLoss cauchy(1.5);
+  double score = 0.0;
+  int matched = 0;
+  for (const Vector3d& p : points) {
+    std::unique_ptr<ceres::CostFunction> cost(
+        MlNdtPointCost::Create(layer, p, UnmatchedPolicy::NEAREST_CELL));
+    Vector3d residual;
+    const double* parameters[] = {xi.data()};
+    ASSERT_TRUE(cost->Evaluate(parameters, residual.data(), nullptr));
+    if (residual.squaredNorm() == 0.0) continue;
+    double rho[3];
+    cauchy.Evaluate(residual.squaredNorm(), rho);
+    score += rho[0];
+    ++matched;
+  }
+  // sum log2(1 + s / b) = score / (b ln 2): the product passed 2^500.
+  ASSERT_GT(score / (1.5 * 1.5 * M_LN2), 1500.0);
+  const ScoreEvaluation evaluation = EvaluateScore(
+      layer,
+      points,
+      xi,
+      testing::Objective(UnmatchedPolicy::NEAREST_CELL, LossType::CAUCHY, 1.5));
+  EXPECT_EQ(evaluation.matched, static_cast<size_t>(matched));
+  EXPECT_NEAR(evaluation.score, score, 1e-12 * score);
 }
 
 TEST(EvaluateScore, FullHessianEqualsFiniteDifferencesOfGradient) {
