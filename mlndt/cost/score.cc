@@ -11,8 +11,8 @@ namespace mlndt {
 namespace {
 
 // The Cauchy loss summed over a slice as b log(prod_k (1 + s_k / b)): one
-// log per slice instead of a log1p per point (log1p was 17 % of the
-// Levenberg-Marquardt backend's samples on KITTI). The product is kept as
+// log per slice instead of a log1p per point, a large share of the
+// hand-written backends' profile (docs/performance.md). The product is kept as
 // mantissa and binary exponent, renormalised once it reaches 2^500, so it
 // cannot overflow while a factor is below 2^523 (a matched point's s is
 // bounded by its cell's neighbourhood and the covariance floor: far less).

@@ -202,6 +202,8 @@ ConstraintAnalysis AnalyseMatched(
   const Vector6d lambda = solver.eigenvalues();  // Ascending.
   const double largest = lambda(5);
   const std::vector<bool> inlier = InlierFlags(matches, options.inlier_gate);
+  // The ratio has already named this many free directions: the probe names
+  // only weaker-ranked ones beyond them.
   const size_t by_ratio = analysis.degenerate_directions.size();
   for (int i = 0; i < 3 && lambda(i) < kProbedConstraintRatio * largest; ++i) {
     const Vector6d d = solver.eigenvectors().col(i);
