@@ -58,6 +58,16 @@ std::vector<Vector3d> WellInsideTargets() {
           Vector3d(4.2, 2.9, 0.8)};
 }
 
+// `copies` times WellInsideTargets(), for scores over many points.
+std::vector<Vector3d> RepeatedTargets(int copies) {
+  std::vector<Vector3d> targets;
+  for (int copy = 0; copy < copies; ++copy) {
+    for (const Vector3d& target : WellInsideTargets())
+      targets.push_back(target);
+  }
+  return targets;
+}
+
 double Score(const NdtLayer& layer,
              const std::vector<Vector3d>& points,
              const Vector6d& xi,
@@ -178,12 +188,7 @@ TEST(EvaluateScore, RobustHessianIsWeightedByLossDerivative) {
 // 1400 points whose product passes 2^500 several times.
 TEST(EvaluateScore, CauchyScoreIsTheSumOfEachPointsLoss) {
   const NdtLayer layer = MakeLayer();
-  std::vector<Vector3d> targets;
-  for (int copy = 0; copy < 200; ++copy) {
-    for (const Vector3d& target : WellInsideTargets())
-      targets.push_back(target);
-  }
-  const std::vector<Vector3d> points = InputPointsFor(targets);
+  const std::vector<Vector3d> points = InputPointsFor(RepeatedTargets(200));
   const Vector6d xi = TestPose();
   const ceres::CauchyLoss cauchy(1.5);
   double score = 0.0;
@@ -268,11 +273,7 @@ TEST(EvaluateScore, HessianNoneSkipsDerivatives) {
 
 TEST(EvaluateScore, ThreadCountDoesNotChangeTheResult) {
   const NdtLayer layer = MakeLayer();
-  std::vector<Vector3d> targets;
-  for (int copy = 0; copy < 20; ++copy) {
-    for (const Vector3d& target : WellInsideTargets())
-      targets.push_back(target);
-  }
+  std::vector<Vector3d> targets = RepeatedTargets(20);
   targets.push_back(Vector3d(-50.0, 3.0, 1.0));
   const std::vector<Vector3d> points = InputPointsFor(targets);
   const ObjectiveOptions options =
