@@ -60,4 +60,18 @@ void EvaluateLoss(
   }
 }
 
+LossSum::LossSum(LossType type, double scale)
+    : type_(type), scale_(scale), b_(scale * scale) {}
+
+void LossSum::Renormalise() {
+  int exponent = 0;
+  product_ = std::frexp(product_, &exponent);
+  exponent_ += exponent;
+}
+
+double LossSum::Total() const {
+  if (type_ != LossType::CAUCHY) return sum_;
+  return b_ * (std::log(product_) + static_cast<double>(exponent_) * M_LN2);
+}
+
 }  // namespace mlndt

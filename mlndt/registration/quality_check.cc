@@ -87,17 +87,20 @@ bool QualityCheckOptions::IsValid(std::string* error) const {
 
 namespace {
 
-// The sum of the rows [v; (R p) x v / L] over the thin directions v of the
-// matched points' cells (quality_check.h): planar cells only, or line
-// cells (thin in two directions) too when `count_lines`.
-Matrix6d ThinDirectionInformation(
+// The sums of the rows [v; (R p) x v / L] over the thin directions v of the
+// matched points' cells (quality_check.h), planar and line cells apart.
+struct ThinDirectionSums {
+  Matrix6d planar = Matrix6d::Zero();  // Cells thin in one direction.
+  Matrix6d lines = Matrix6d::Zero();   // Cells thin in two.
+};
+
+ThinDirectionSums ThinDirectionInformation(
     const std::vector<Eigen::Vector3d>& input_points,
     const std::vector<PointMatch>& matches,
     const Matrix3d& rotation,
-    double rms_range_m,
-    bool count_lines) {
+    double rms_range_m) {
   const double inverse_lever = 1.0 / std::max(rms_range_m, 1e-3);
-  Matrix6d information = Matrix6d::Zero();
+  ThinDirectionSums sums;
   for (size_t k = 0; k < input_points.size(); ++k) {
     const NdtCell* cell = matches[k].cell;
     if (cell == nullptr) continue;
@@ -106,17 +109,19 @@ Matrix6d ThinDirectionInformation(
         cell->whitening.rowwise().squaredNorm().cwiseInverse();
     const auto thin =
         variances.array() < kThinCellDirection * variances.maxCoeff();
-    if (thin.count() == 2 && !count_lines) continue;
+    Matrix6d& sum = thin.count() == 2 ? sums.lines : sums.planar;
     const Eigen::Vector3d turned = rotation * input_points[k];  // R p.
     for (int i = 0; i < 3; ++i) {
       if (!thin(i)) continue;
       const Eigen::Vector3d v = cell->whitening.row(i).transpose().normalized();
       Vector6d row;
       row << v, turned.cross(v) * inverse_lever;
-      information.selfadjointView<Eigen::Lower>().rankUpdate(row);
+      sum.selfadjointView<Eigen::Lower>().rankUpdate(row);
     }
   }
-  return information.selfadjointView<Eigen::Lower>();
+  sums.planar = sums.planar.selfadjointView<Eigen::Lower>();
+  sums.lines = sums.lines.selfadjointView<Eigen::Lower>();
+  return sums;
 }
 
 // Whether each matched point is an inlier (Mahalanobis distance below
@@ -181,11 +186,11 @@ ConstraintAnalysis AnalyseMatched(
     const QualityCheckOptions& options) {
   ConstraintAnalysis analysis;
   const Isometry3d pose = PoseVectorToIsometry(reference_from_input_xi);
+  const ThinDirectionSums sums = ThinDirectionInformation(
+      input_points, matches, pose.linear(), rms_range_m);
   // Whether the surfaces leave a direction free: planar cells only (a line
   // cell's second thin direction is mostly the gap between scan rings).
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> surfaces(
-      ThinDirectionInformation(
-          input_points, matches, pose.linear(), rms_range_m, false));
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> surfaces(sums.planar);
   const Vector6d mu = surfaces.eigenvalues();  // Ascending.
   for (int i = 0; i < 6; ++i) {
     if (!(mu(i) >= options.min_constraint_ratio * mu(5)) || !(mu(5) > 0.0)) {
@@ -197,8 +202,8 @@ ConstraintAnalysis AnalyseMatched(
   if (options.max_flatness >= 1.0) return analysis;  // The probe is off.
   // The probe's candidates: the weakest directions with line cells counted,
   // since it measures what moving along them costs every inlier.
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(ThinDirectionInformation(
-      input_points, matches, pose.linear(), rms_range_m, true));
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(sums.planar +
+                                                       sums.lines);
   const Vector6d lambda = solver.eigenvalues();  // Ascending.
   const double largest = lambda(5);
   const std::vector<bool> inlier = InlierFlags(matches, options.inlier_gate);

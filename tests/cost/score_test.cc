@@ -3,7 +3,6 @@
 #include <ceres/loss_function.h>
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <limits>
 #include <memory>
 #include <vector>
