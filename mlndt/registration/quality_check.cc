@@ -85,6 +85,28 @@ bool QualityCheckOptions::IsValid(std::string* error) const {
   return QualityCheckOptionsTable().Check(*this, error);
 }
 
+Eigen::Array<bool, 3, 1> ThinCellDirections(const NdtCell& cell) {
+  // Row i of W is v_i^T / sqrt(lambda_i) (ndt_cell.h).
+  const Eigen::Vector3d variances =
+      cell.whitening.rowwise().squaredNorm().cwiseInverse();
+  return variances.array() < kThinCellDirection * variances.maxCoeff();
+}
+
+NdtLayer WithoutLineCells(const NdtLayer& layer) {
+  std::vector<NdtCell> cells;
+  std::vector<int64_t> keys;
+  for (size_t i = 0; i < layer.cells().size(); ++i) {
+    if (ThinCellDirections(layer.cells()[i]).count() == 2) continue;
+    cells.push_back(layer.cells()[i]);
+    keys.push_back(layer.keys()[i]);
+  }
+  return NdtLayer(layer.origin(),
+                  layer.cell_size(),
+                  layer.dims(),
+                  std::move(cells),
+                  std::move(keys));
+}
+
 namespace {
 
 // The sums of the rows [v; (R p) x v / L] over the thin directions v of the
@@ -104,11 +126,7 @@ ThinDirectionSums ThinDirectionInformation(
   for (size_t k = 0; k < input_points.size(); ++k) {
     const NdtCell* cell = matches[k].cell;
     if (cell == nullptr) continue;
-    // Row i of W is v_i^T / sqrt(lambda_i) (ndt_cell.h).
-    const Eigen::Vector3d variances =
-        cell->whitening.rowwise().squaredNorm().cwiseInverse();
-    const auto thin =
-        variances.array() < kThinCellDirection * variances.maxCoeff();
+    const Eigen::Array<bool, 3, 1> thin = ThinCellDirections(*cell);
     Matrix6d& sum = thin.count() == 2 ? sums.lines : sums.planar;
     const Eigen::Vector3d turned = rotation * input_points[k];  // R p.
     for (int i = 0; i < 3; ++i) {

@@ -131,6 +131,14 @@ Isometry3d MovedAlong(const Isometry3d& pose,
 // of the cell's largest.
 constexpr double kThinCellDirection = 0.1;
 
+// Which of the cell's directions (the rows of its W) are thin: one for a
+// planar cell, two for a line cell.
+Eigen::Array<bool, 3, 1> ThinCellDirections(const NdtCell& cell);
+
+// `layer` without its line cells: the surfaces a scan saw, without the
+// single rings crossing a cell that a spinning LiDAR's pattern leaves.
+NdtLayer WithoutLineCells(const NdtLayer& layer);
+
 // Analyses the fit of `input_points` moved by xi onto `layer` (cells as the
 // objective's policy matches them); rotations about the input points' own
 // origin, scaled by `rms_range_m` (> 0). Directions are degenerate by

@@ -141,7 +141,7 @@ void RegisterOnMap(const RegistrationOptions& options,
       CentredPoints(sampled, &centre, &rms_range_m);
   const internal::InputAnchor anchor(centre);
   const Problem problem{
-      reference_map, points, anchor, backend.get(), rms_range_m};
+      reference_map, points, anchor, backend.get(), rms_range_m, {}};
   const Vector6d initial_xi =
       IsometryToPoseVector(initial_reference_from_input);
   const Vector6d initial_local = anchor.ToLocal(initial_xi);

@@ -57,6 +57,14 @@ const OptionTable& RetryOptionsTable() {
                   "The search along the flattest weak direction runs only "
                   "when the probe kept at least this share of the inliers one "
                   "cell edge along it (the result's flatness).")
+          .Double("scan_pattern_reach_cells",
+                  &S::scan_pattern_reach_cells,
+                  "",
+                  Closed(0.0, 4.0),
+                  "A converged result whose translation is within this many "
+                  "last-layer cell edges of zero (the sensors coincide, and "
+                  "so do a spinning LiDAR's rings) is checked against the "
+                  "last layer without its line cells; 0 = off.")
           .Validator(&S::IsValid)
           .Build();
   return table;
@@ -147,6 +155,7 @@ RegistrationOptions PaperRegistrationOptions() {
   options.backend.type = BackendType::NEWTON;
   options.retry.yaw_seeds_deg.clear();
   options.retry.weak_direction_rounds = 0;
+  options.retry.scan_pattern_reach_cells = 0.0;
   return options;
 }
 

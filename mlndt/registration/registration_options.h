@@ -62,6 +62,13 @@ struct RetryOptions {
   // quality_check.h): a direction where a cell away fits nearly as well
   // may hold another minimum. In [0, 1].
   double weak_direction_min_flatness = 0.6;
+  // The scan-pattern check (attempts.h, step 4) runs on a converged result
+  // whose translation is within this many last-layer cell edges of zero:
+  // where the two scans' sensors coincide, a spinning LiDAR's rings fall
+  // into the cells of the reference's own rings and fit them whatever the
+  // motion. Beyond half a cell they fall into other cells. In [0, 4];
+  // 0 = off.
+  double scan_pattern_reach_cells = 0.5;
 
   bool IsValid(std::string* error) const;
 };

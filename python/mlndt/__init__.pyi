@@ -102,6 +102,7 @@ class RetryOptions(TypedDict, total=False):
     yaw_seeds_deg: Sequence[float]
     weak_direction_rounds: int
     weak_direction_min_flatness: float
+    scan_pattern_reach_cells: float
 
 class RegistrationOptions(TypedDict, total=False):
     range_filter: RangeFilterOptions

@@ -1,13 +1,23 @@
 #include "mlndt/registration/internal/attempts.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/point_matches.h"
 #include "mlndt/cost/score.h"
+#include "mlndt/registration/quality_check.h"
 
 namespace mlndt {
 namespace internal {
+
+const NdtLayer& Problem::planar_last() const {
+  if (planar_last_ == nullptr) {
+    planar_last_ = std::make_unique<NdtLayer>(WithoutLineCells(last()));
+  }
+  return *planar_last_;
+}
+
 namespace {
 
 // The fit, constraints and verdict of the attempt's solution.
@@ -156,21 +166,29 @@ bool AnotherBasin(const Problem& problem,
   return apart_m > 0.1 * problem.map.layer_info().back().cell_size_m;
 }
 
-// Where the last layer alone leads from the guess over every s-th sample,
-// s = schedule.max_coarse_point_stride: the guess check's first look, at
-// the cost of a coarse stage. False when the stage failed.
-bool ExploreFromGuess(const RegistrationOptions& options,
-                      const Problem& problem,
-                      Vector6d* xi_local,
-                      AttemptsCost* cost) {
-  const int n = problem.map.num_layers();
-  StageControl control = StageControlFor(options.schedule, n, n);
-  control.point_stride = options.schedule.max_coarse_point_stride;
+// Where a stage on `layer` (the last layer, or step 4's planar one) leads
+// from *xi_local. False when the stage failed.
+bool ExploreFrom(const Problem& problem,
+                 const NdtLayer& layer,
+                 const StageControl& control,
+                 Vector6d* xi_local,
+                 AttemptsCost* cost) {
   StageSummary stage;
-  problem.backend->SolveStage(problem.last(), control, xi_local, &stage);
+  problem.backend->SolveStage(layer, control, xi_local, &stage);
   cost->point_iterations +=
       stage.iterations() * PointsPerIteration(problem, control.point_stride);
   return stage.termination_type != TerminationType::FAILURE;
+}
+
+// The last layer's stage over every s-th sample, s =
+// schedule.max_coarse_point_stride: a first look at the cost of a coarse
+// stage.
+StageControl SubsetControl(const RegistrationOptions& options,
+                           const Problem& problem) {
+  const int n = problem.map.num_layers();
+  StageControl control = StageControlFor(options.schedule, n, n);
+  control.point_stride = options.schedule.max_coarse_point_stride;
+  return control;
 }
 
 // The last layer alone from `start`, first over every s-th sample (s =
@@ -185,7 +203,11 @@ bool LastLayerInAnotherBasin(const RegistrationOptions& options,
                              const Attempt& best,
                              Attempt* candidate) {
   if (options.schedule.max_coarse_point_stride > 1 &&
-      (!ExploreFromGuess(options, problem, &start, cost) ||
+      (!ExploreFrom(problem,
+                    problem.last(),
+                    SubsetControl(options, problem),
+                    &start,
+                    cost) ||
        !AnotherBasin(problem, start, best.xi_local))) {
     return false;
   }
@@ -230,11 +252,12 @@ void CheckTheGuess(const RegistrationOptions& options,
 // margin swaps a right result for another one nearby (docs/trust.md).
 constexpr double kMinInlierGainEvidence = 1.0;
 
-// How clearly `to` fits better than `from`: the points that are inliers at
-// `to` and not at `from`, net of the reverse, over the square root of all
-// that changed (a z-score, as the probe's evidence).
+// How clearly `to` fits `layer` better than `from`: the points that are
+// inliers at `to` and not at `from`, net of the reverse, over the square
+// root of all that changed (a z-score, as the probe's evidence).
 double InlierGainEvidence(const RegistrationOptions& options,
                           const Problem& problem,
+                          const NdtLayer& layer,
                           const Vector6d& from,
                           const Vector6d& to) {
   const Isometry3d a = PoseVectorToIsometry(from);
@@ -243,8 +266,8 @@ double InlierGainEvidence(const RegistrationOptions& options,
   const UnmatchedPolicy policy = options.objective.unmatched_policy;
   double gained = 0.0, lost = 0.0;
   for (const Eigen::Vector3d& p : problem.points) {
-    const bool at_a = MatchPoint(problem.last(), a * p, policy).IsInlier(gate);
-    const bool at_b = MatchPoint(problem.last(), b * p, policy).IsInlier(gate);
+    const bool at_a = MatchPoint(layer, a * p, policy).IsInlier(gate);
+    const bool at_b = MatchPoint(layer, b * p, policy).IsInlier(gate);
     gained += at_b && !at_a;
     lost += at_a && !at_b;
   }
@@ -282,8 +305,8 @@ bool ExploreWeakDirection(const RegistrationOptions& options,
       continue;
     }
     Assess(options, problem, &moved);
-    const double z =
-        InlierGainEvidence(options, problem, best->xi_local, moved.xi_local);
+    const double z = InlierGainEvidence(
+        options, problem, problem.last(), best->xi_local, moved.xi_local);
     if (z >= kMinInlierGainEvidence && KeepBetter(std::move(moved), best)) {
       return true;
     }
@@ -306,6 +329,73 @@ void SearchWeakDirection(const RegistrationOptions& options,
       return;
     }
   }
+}
+
+// True when step 4 applies to `attempt`: converged, its translation within
+// retry.scan_pattern_reach_cells last-layer cell edges of zero.
+bool NearTheSensorsCoinciding(const RegistrationOptions& options,
+                              const Problem& problem,
+                              const Attempt& attempt) {
+  const double reach_m =
+      options.retry.scan_pattern_reach_cells * problem.last().cell_size();
+  return attempt.verdict == TerminationType::CONVERGENCE &&
+         problem.anchor.ToGlobal(attempt.xi_local).head<3>().norm() <= reach_m;
+}
+
+// Step 4 above. The planar cells alone lead from the solution to `led`;
+// a solution in another basin from there that clearly fits better replaces
+// *attempt. *attempt stands when the last layer returns to it and the
+// planar cells' inliers do not prefer `led`.
+void CheckTheScanPattern(const RegistrationOptions& options,
+                         const Problem& problem,
+                         const Vector6d& initial_local,
+                         double start_time_s,
+                         AttemptsCost* cost,
+                         Attempt* attempt) {
+  if (!NearTheSensorsCoinciding(options, problem, *attempt)) return;
+  ++cost->attempts;
+  const NdtLayer& planar = problem.planar_last();
+  // A stage as the layer before the last runs it: every 2nd sample (a
+  // sparser subset moves on its own sampling noise, and flagged right Livox
+  // results), schedule.iterations_per_layer.
+  const int n = problem.map.num_layers();
+  StageControl control = StageControlFor(options.schedule, n, n);
+  control.point_stride = std::min(2, options.schedule.max_coarse_point_stride);
+  control.max_iterations = options.schedule.iterations_per_layer;
+  Vector6d led = attempt->xi_local;
+  if (!ExploreFrom(problem, planar, control, &led, cost)) return;
+  // The pattern holds the sensor's position: only a translation by more
+  // than AnotherBasin's tenth of a cell counts (without the ground's rings
+  // the planar cells may tilt the pose a little, as on koide3).
+  const double led_m = (problem.anchor.ToGlobal(led).head<3>() -
+                        problem.anchor.ToGlobal(attempt->xi_local).head<3>())
+                           .norm();
+  if (led_m <= 0.1 * problem.last().cell_size()) return;
+  Attempt other;
+  if (LastLayerInAnotherBasin(
+          options, problem, led, start_time_s, cost, *attempt, &other)) {
+    Assess(options, problem, &other);
+    const bool allowed =
+        !options.initial_uncertainty.given ||
+        !LeftTheGuess(options, problem, initial_local, other.xi_local);
+    if (allowed && other.verdict == TerminationType::CONVERGENCE &&
+        InlierGainEvidence(options,
+                           problem,
+                           problem.last(),
+                           attempt->xi_local,
+                           other.xi_local) >= kMinInlierGainEvidence) {
+      *attempt = std::move(other);
+      return;
+    }
+  } else if (InlierGainEvidence(
+                 options, problem, planar, attempt->xi_local, led) < 0.0) {
+    return;
+  }
+  attempt->verdict = TerminationType::LOW_QUALITY;
+  attempt->verdict_message =
+      "the fit may rest on the scan pattern: the pose is where the two "
+      "sensors nearly coincide (and so do a spinning LiDAR's rings), and "
+      "the map's planar cells alone lead elsewhere";
 }
 
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
@@ -337,17 +427,21 @@ Attempt SolveAttempts(const RegistrationOptions& options,
   }
   SearchWeakDirection(
       options, problem, initial_local, start_time_s, cost, &best);
+  CheckTheScanPattern(
+      options, problem, initial_local, start_time_s, cost, &best);
   for (const double yaw_deg : options.retry.yaw_seeds_deg) {
     if (best.verdict == TerminationType::CONVERGENCE) break;
     if (u.given && std::abs(yaw_deg) > u.rotation_deg) continue;
     ++cost->attempts;
-    KeepBetter(Solve(options,
-                     problem,
-                     start,
-                     TurnedGuess(initial_local, yaw_deg),
-                     start_time_s,
-                     cost),
-               &best);
+    Attempt turned = Solve(options,
+                           problem,
+                           start,
+                           TurnedGuess(initial_local, yaw_deg),
+                           start_time_s,
+                           cost);
+    CheckTheScanPattern(
+        options, problem, initial_local, start_time_s, cost, &turned);
+    KeepBetter(std::move(turned), &best);
   }
   return best;
 }

@@ -22,12 +22,28 @@
 //     rounds: a weakly constrained direction (a road seen within a few
 //     metres, a sparse hand-held scan) holds several minima, and the one
 //     the schedule found need not be the best;
-//  4. until a result converges and passes the quality check: the schedule
-//     again from the guess turned about the input's centroid by each yaw
-//     seed (retry); the best verdict wins, then the most inliers (every
-//     attempt scores the same points on the same last layer).
+//  4. the scan-pattern check, when the result converged within
+//     retry.scan_pattern_reach_cells last-layer cell edges of a zero
+//     translation. Where the two sensors coincide, a spinning LiDAR's rings
+//     fall into the cells of the reference's own rings and fit them
+//     whatever the motion: a minimum of the pattern, not of the scene (a
+//     KITTI input cropped to the ground stayed at the identity, 0.7 m
+//     behind). The last layer without its line cells (the single rings
+//     crossing a cell; quality_check.h) runs from the result, as the layer
+//     before the last runs (every 2nd sample, iterations_per_layer). When
+//     it leads into another basin, the last layer runs from there as in 2:
+//     a converged minimum with clearly more inliers replaces the result.
+//     The result stands when the last layer returns to it and the planar
+//     cells' inliers do not prefer where they led; otherwise it is
+//     LOW_QUALITY;
+//  5. until a result converges and passes the checks: the schedule again
+//     from the guess turned about the input's centroid by each yaw seed
+//     (retry), each result checked as in 4; the best verdict wins, then the
+//     most inliers (every attempt scores the same points on the same last
+//     layer).
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "mlndt/cost/score.h"
@@ -49,6 +65,9 @@ struct Problem {
   Backend* backend;
   double rms_range_m;  // Of the points about the anchor.
   const NdtLayer& last() const { return map.layer(map.num_layers()); }
+  // The last layer without its line cells, built on first use (step 4).
+  const NdtLayer& planar_last() const;
+  mutable std::unique_ptr<NdtLayer> planar_last_;
 };
 
 // One run of the schedule, in the anchor's frame, with its assessment.
