@@ -64,33 +64,42 @@ namespace {
 struct LmSystem {
   double score = 0.0;
   size_t matched = 0;
+  bool has_normal_equations = false;  // jtj and jtr are set.
   Matrix6d jtj = Matrix6d::Zero();
   Vector6d jtr = Vector6d::Zero();
 };
 
 // The whitened form: the Gauss-Newton Hessian is 2 J^T J and the gradient
 // 2 J^T r of the 3-vector residuals W e_k, so (H / 2 + lambda I) delta =
-// -g / 2 is the paper's (J^T J + lambda I) delta = -J^T r.
+// -g / 2 is the paper's (J^T J + lambda I) delta = -J^T r. Without
+// `normal_equations` the score alone (the same value): a trial point's
+// normal equations are needed only once it is accepted.
 bool EvaluateWhitened(const Objective& objective,
                       const Vector6d& xi,
+                      bool normal_equations,
                       LmSystem* system) {
-  const ScoreEvaluation e = objective.Evaluate(xi, HessianType::GAUSS_NEWTON);
+  const ScoreEvaluation e = objective.Evaluate(
+      xi, normal_equations ? HessianType::GAUSS_NEWTON : HessianType::NONE);
   system->score = e.score;
   system->matched = e.matched;
+  system->has_normal_equations = normal_equations;
   system->jtj = e.hessian / 2.0;
   system->jtr = e.gradient / 2.0;
   return true;
 }
 
 // The paper's literal form (Eqs. 18-20): the scalar residuals r_k =
-// rho(s_k); a step is kept when it lowers the score sum_k rho(s_k).
+// rho(s_k); a step is kept when it lowers the score sum_k rho(s_k). Always
+// with the normal equations (its score comes with them).
 bool EvaluateScalar(const Objective& objective,
                     const Vector6d& xi,
+                    bool /*normal_equations*/,
                     LmSystem* system) {
   ScalarResidualSystem s;
   if (!objective.EvaluateScalarResiduals(xi, &s)) return false;
   system->score = s.score;
   system->matched = s.matched;
+  system->has_normal_equations = true;
   system->jtj = s.jtj;
   system->jtr = s.jtr;
   return true;
@@ -108,7 +117,7 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
                             : EvaluateWhitened;
   internal::StageMonitor trace(control, summary);
   LmSystem current;
-  if (!evaluate(objective, *xi, &current)) {
+  if (!evaluate(objective, *xi, /*normal_equations=*/true, &current)) {
     trace.Fail("the objective has no scalar residuals");
     return;
   }
@@ -116,15 +125,23 @@ void MinimizeLevenbergMarquardt(const Objective& objective,
   if (trace.FailIfUnmatched(current.matched)) return;
   double lambda =
       lm_options.initial_lambda_factor * current.jtj.diagonal().mean();
+  bool last_step_taken = true;
   for (int iteration = 0; iteration < control.max_iterations; ++iteration) {
+    if (!current.has_normal_equations) {
+      evaluate(objective, *xi, /*normal_equations=*/true, &current);
+    }
     const Matrix6d damped = current.jtj + lambda * Matrix6d::Identity();
     const Vector6d step = -damped.ldlt().solve(current.jtr);
     if (trace.FailIfNotFinite(step, "Levenberg-Marquardt")) return;
     const Vector6d candidate_xi = *xi + step;
+    // The candidate's normal equations with its score when the last step
+    // was taken (the next one likely is too), else only once it is taken:
+    // a rejected candidate's are never used. The same steps either way.
     LmSystem candidate;
-    evaluate(objective, candidate_xi, &candidate);
+    evaluate(objective, candidate_xi, last_step_taken, &candidate);
     const bool successful =
         candidate.matched > 0 && candidate.score < current.score;
+    last_step_taken = successful;
     if (successful) {
       *xi = candidate_xi;
       current = candidate;

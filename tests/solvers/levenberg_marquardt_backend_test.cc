@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -127,7 +128,7 @@ StageControl Control(int max_iterations, double step_tolerance = 0.0) {
 
 // Catches: a wrong step (a sign, a damping that never decreases, so that it
 // crawls), no convergence test, evaluations with another Hessian than
-// Gauss-Newton.
+// Gauss-Newton (or none, for a candidate's score).
 TEST(MinimizeLevenbergMarquardt, ConvergesToTheMinimum) {
   for (const Residual residual : {Residual::LINEAR, Residual::QUADRATIC}) {
     SCOPED_TRACE(static_cast<int>(residual));
@@ -147,9 +148,20 @@ TEST(MinimizeLevenbergMarquardt, ConvergesToTheMinimum) {
     // Quadratic convergence from a small initial damping: a few steps.
     EXPECT_LE(summary.iterations(), residual == Residual::LINEAR ? 5 : 8);
     for (const Evaluation& evaluation : objective.log()) {
-      EXPECT_EQ(evaluation.hessian, HessianType::GAUSS_NEWTON);
+      EXPECT_NE(evaluation.hessian, HessianType::FULL);
     }
   }
+}
+
+// The poses LM evaluated, in order, without the second evaluation of an
+// accepted candidate whose normal equations were formed once needed.
+std::vector<Evaluation> Candidates(const std::vector<Evaluation>& log) {
+  std::vector<Evaluation> candidates;
+  for (const Evaluation& evaluation : log) {
+    if (!candidates.empty() && candidates.back().xi == evaluation.xi) continue;
+    candidates.push_back(evaluation);
+  }
+  return candidates;
 }
 
 // lambda of every step, read back from the damped system the step solved:
@@ -160,7 +172,7 @@ std::vector<double> RecoverLambdas(const LeastSquaresObjective& objective,
                                    const Vector6d& x0,
                                    const StageSummary& summary) {
   const LeastSquaresObjective probe = objective;  // Keeps the log intact.
-  const std::vector<Evaluation> log = objective.log();
+  const std::vector<Evaluation> log = Candidates(objective.log());
   EXPECT_EQ(log.size(), summary.trace.size() + 1);  // Start + one per step.
   std::vector<double> lambdas;
   Vector6d current = x0;
@@ -227,6 +239,50 @@ TEST(MinimizeLevenbergMarquardt, DampingFollowsThePaperSchedule) {
     EXPECT_GT(accepted, 2);
     EXPECT_GT(rejected, 2);
   }
+}
+
+// Catches: normal equations formed for every candidate (a rejected one's are
+// never used), or a step solved without the normal equations of the pose it
+// starts from. A candidate after a taken step gets them with its score (the
+// next step is likely taken too); after a rejected one, only once taken.
+TEST(MinimizeLevenbergMarquardt, FormsNormalEquationsOnlyWhereTheyAreUsed) {
+  const LeastSquaresObjective objective(Residual::ATAN, Origin());
+  const Vector6d x0 = objective.FromZ(StartZ());
+  Vector6d xi = x0;
+  StageSummary summary;
+  MinimizeLevenbergMarquardt(objective,
+                             LevenbergMarquardtOptions(),
+                             Control(60, 1e-12),
+                             &xi,
+                             &summary);
+  const std::vector<Evaluation>& log = objective.log();
+  ASSERT_FALSE(log.empty());
+  EXPECT_EQ(log[0].hessian, HessianType::GAUSS_NEWTON);
+  std::vector<Vector6d> formed = {x0};  // Poses with normal equations.
+  Vector6d current = x0;
+  bool last_taken = true;
+  int scores_only = 0;
+  size_t i = 1;
+  for (const IterationRecord& record : summary.trace) {
+    if (i < log.size() && log[i].xi == current) {  // Formed once needed.
+      EXPECT_EQ(log[i].hessian, HessianType::GAUSS_NEWTON);
+      formed.push_back(log[i++].xi);
+    }
+    EXPECT_NE(std::find(formed.begin(), formed.end(), current), formed.end());
+    ASSERT_LT(i, log.size());
+    const Evaluation& candidate = log[i++];
+    EXPECT_EQ(candidate.hessian,
+              last_taken ? HessianType::GAUSS_NEWTON : HessianType::NONE);
+    if (candidate.hessian == HessianType::GAUSS_NEWTON) {
+      formed.push_back(candidate.xi);
+    } else {
+      ++scores_only;
+    }
+    last_taken = record.step_is_successful;
+    if (last_taken) current = candidate.xi;
+  }
+  EXPECT_EQ(i, log.size());
+  EXPECT_GT(scores_only, 2);
 }
 
 // Catches: a rejected step that moves the pose or changes the score, an
