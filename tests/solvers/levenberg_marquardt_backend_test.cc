@@ -241,6 +241,14 @@ TEST(MinimizeLevenbergMarquardt, DampingFollowsThePaperSchedule) {
   }
 }
 
+// LM with the default options from *xi, to convergence or 60 iterations.
+StageSummary MinimizeFromStart(const Objective& objective, Vector6d* xi) {
+  StageSummary summary;
+  MinimizeLevenbergMarquardt(
+      objective, LevenbergMarquardtOptions(), Control(60, 1e-12), xi, &summary);
+  return summary;
+}
+
 // Catches: normal equations formed for every candidate (a rejected one's are
 // never used), or a step solved without the normal equations of the pose it
 // starts from. A candidate after a taken step gets them with its score (the
@@ -249,12 +257,7 @@ TEST(MinimizeLevenbergMarquardt, FormsNormalEquationsOnlyWhereTheyAreUsed) {
   const LeastSquaresObjective objective(Residual::ATAN, Origin());
   const Vector6d x0 = objective.FromZ(StartZ());
   Vector6d xi = x0;
-  StageSummary summary;
-  MinimizeLevenbergMarquardt(objective,
-                             LevenbergMarquardtOptions(),
-                             Control(60, 1e-12),
-                             &xi,
-                             &summary);
+  const StageSummary summary = MinimizeFromStart(objective, &xi);
   const std::vector<Evaluation>& log = objective.log();
   ASSERT_FALSE(log.empty());
   EXPECT_EQ(log[0].hessian, HessianType::GAUSS_NEWTON);
@@ -291,12 +294,7 @@ TEST(MinimizeLevenbergMarquardt, RejectedStepsLeaveThePoseUnchanged) {
   const LeastSquaresObjective objective(Residual::ATAN, Origin());
   const Vector6d x0 = objective.FromZ(StartZ());
   Vector6d xi = x0;
-  StageSummary summary;
-  MinimizeLevenbergMarquardt(objective,
-                             LevenbergMarquardtOptions(),
-                             Control(60, 1e-12),
-                             &xi,
-                             &summary);
+  const StageSummary summary = MinimizeFromStart(objective, &xi);
   Vector6d previous_xi = x0;
   double previous_score = objective.Evaluate(x0, HessianType::NONE).score;
   int rejected = 0;

@@ -67,7 +67,7 @@ struct Problem {
   const NdtLayer& last() const { return map.layer(map.num_layers()); }
   // The last layer without its line cells, built on first use (step 4).
   const NdtLayer& planar_last() const;
-  mutable std::unique_ptr<NdtLayer> planar_last_;
+  mutable std::unique_ptr<NdtLayer> planar_last_;  // planar_last()'s cache.
 };
 
 // One run of the schedule, in the anchor's frame, with its assessment.
