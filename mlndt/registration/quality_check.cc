@@ -95,6 +95,8 @@ Eigen::Array<bool, 3, 1> ThinCellDirections(const NdtCell& cell) {
 NdtLayer WithoutLineCells(const NdtLayer& layer) {
   std::vector<NdtCell> cells;
   std::vector<int64_t> keys;
+  cells.reserve(layer.cells().size());
+  keys.reserve(layer.cells().size());
   for (size_t i = 0; i < layer.cells().size(); ++i) {
     if (ThinCellDirections(layer.cells()[i]).count() == 2) continue;
     cells.push_back(layer.cells()[i]);

@@ -146,14 +146,16 @@ PointCloud RingScannedGround(uint32_t seed) {
   return cloud;
 }
 
-// The rings are where the sensor was, not where the ground is: two scans
-// of a flat ground from poses 0.8 m apart fit best where their rings
-// coincide, at no motion. A ring crossing a cell makes it thin across the
-// ring too, but that direction is the scan pattern's, not the surface's:
-// such line cells do not count as a constraint (quality_check.h), and the
-// ground leaves x, y and the turn about z free, as it does when sampled
-// uniformly (APlaneIsDegenerateAlongItself). Counting them, only the turn
-// about z was free and the result at no motion could pass.
+// The rings are where the sensor was, not where the ground is: in its own
+// frame a flat ground looks the same from anywhere at the same height, so
+// the two scans here (noise seeds 1 and 2) are also two scans from poses
+// 0.8 m apart, and they fit best where their rings coincide, at no motion.
+// A ring crossing a cell makes it thin across the ring too, but that direction
+// is the scan pattern's, not the surface's: such line cells do not count as a
+// constraint (quality_check.h), and the ground leaves x, y and the turn about z
+// free, as it does when sampled uniformly (APlaneIsDegenerateAlongItself).
+// Counting them, only the turn about z was free and the result at no motion
+// could pass.
 TEST(QualityCheck, AGroundScannedInRingsIsDegenerateAlongItself) {
   RegistrationSummary s;
   Register(RegistrationOptions(),

@@ -331,6 +331,13 @@ void SearchWeakDirection(const RegistrationOptions& options,
   }
 }
 
+// The translation of reference_from_input at `xi_local`: where the input's
+// sensor lies in the reference's frame.
+Eigen::Vector3d SensorPosition(const Problem& problem,
+                               const Vector6d& xi_local) {
+  return problem.anchor.ToGlobal(xi_local).head<3>();
+}
+
 // True when step 4 applies to `attempt`: converged, its translation within
 // retry.scan_pattern_reach_cells last-layer cell edges of zero.
 bool NearTheSensorsCoinciding(const RegistrationOptions& options,
@@ -339,7 +346,7 @@ bool NearTheSensorsCoinciding(const RegistrationOptions& options,
   const double reach_m =
       options.retry.scan_pattern_reach_cells * problem.last().cell_size();
   return attempt.verdict == TerminationType::CONVERGENCE &&
-         problem.anchor.ToGlobal(attempt.xi_local).head<3>().norm() <= reach_m;
+         SensorPosition(problem, attempt.xi_local).norm() <= reach_m;
 }
 
 // Step 4 above. The planar cells alone lead from the solution to `led`;
@@ -355,20 +362,22 @@ void CheckTheScanPattern(const RegistrationOptions& options,
   if (!NearTheSensorsCoinciding(options, problem, *attempt)) return;
   ++cost->attempts;
   const NdtLayer& planar = problem.planar_last();
-  // A stage as the layer before the last runs it: every 2nd sample (a
-  // sparser subset moves on its own sampling noise, and flagged right Livox
-  // results), schedule.iterations_per_layer.
+  // The last layer's stage over the samples and iterations of the layer
+  // before it (every 2nd sample: a sparser subset moves on its own sampling
+  // noise, and flagged right Livox results); a one-layer map's own.
   const int n = problem.map.num_layers();
+  const StageControl before_last =
+      StageControlFor(options.schedule, std::max(1, n - 1), n);
   StageControl control = StageControlFor(options.schedule, n, n);
-  control.point_stride = std::min(2, options.schedule.max_coarse_point_stride);
-  control.max_iterations = options.schedule.iterations_per_layer;
+  control.point_stride = before_last.point_stride;
+  control.max_iterations = before_last.max_iterations;
   Vector6d led = attempt->xi_local;
   if (!ExploreFrom(problem, planar, control, &led, cost)) return;
   // The pattern holds the sensor's position: only a translation by more
   // than AnotherBasin's tenth of a cell counts (without the ground's rings
   // the planar cells may tilt the pose a little, as on koide3).
-  const double led_m = (problem.anchor.ToGlobal(led).head<3>() -
-                        problem.anchor.ToGlobal(attempt->xi_local).head<3>())
+  const double led_m = (SensorPosition(problem, led) -
+                        SensorPosition(problem, attempt->xi_local))
                            .norm();
   if (led_m <= 0.1 * problem.last().cell_size()) return;
   Attempt other;
