@@ -218,6 +218,9 @@ ConstraintAnalysis AnalyseMatched(
     }
   }
   if (!(mu(5) > 0.0)) return analysis;
+  analysis.weakest_translations =
+      Eigen::SelfAdjointEigenSolver<Matrix3d>(sums.planar.topLeftCorner<3, 3>())
+          .eigenvectors();
   analysis.constraint_ratio = std::max(0.0, mu(0)) / mu(5);
   if (options.max_flatness >= 1.0) return analysis;  // The probe is off.
   // The probe's candidates: the weakest directions with line cells counted,

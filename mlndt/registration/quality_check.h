@@ -113,6 +113,10 @@ struct ConstraintAnalysis {
   Vector6d flattest_direction = Vector6d::Zero();
   // How many of degenerate_directions were found flat by the probe.
   int flat_directions = 0;
+  // The translations the planar cells constrain least with the rotation
+  // held: the eigenvectors of the translation block of their rows' sum,
+  // weakest first (columns; zero when no cell matched).
+  Matrix3d weakest_translations = Matrix3d::Zero();
 };
 
 // Directions whose eigenvalue is below this fraction of the largest are

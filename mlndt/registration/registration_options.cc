@@ -64,7 +64,9 @@ const OptionTable& RetryOptionsTable() {
                   "A converged result whose translation is within this many "
                   "last-layer cell edges of zero (the sensors coincide, and "
                   "so do a spinning LiDAR's rings) is checked against the "
-                  "last layer without its line cells; 0 = off.")
+                  "last layer without its line cells, and the last layer "
+                  "runs again from 1 + this many cell edges along its "
+                  "weakest translation; 0 = off.")
           .Validator(&S::IsValid)
           .Build();
   return table;

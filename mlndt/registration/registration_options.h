@@ -66,8 +66,9 @@ struct RetryOptions {
   // whose translation is within this many last-layer cell edges of zero:
   // where the two scans' sensors coincide, a spinning LiDAR's rings fall
   // into the cells of the reference's own rings and fit them whatever the
-  // motion. Beyond half a cell they fall into other cells. In [0, 4];
-  // 0 = off.
+  // motion. Beyond half a cell they fall into other cells. The check also
+  // looks for the scene's own minimum from (1 + this) cell edges along the
+  // weakest translation. In [0, 4]; 0 = off.
   double scan_pattern_reach_cells = 0.5;
 
   bool IsValid(std::string* error) const;

@@ -72,6 +72,10 @@ TEST(QualityCheck, APlaneIsDegenerateAlongItself) {
   EXPECT_TRUE(std::isinf(s.covariance(1, 1)));
   EXPECT_TRUE(std::isinf(s.covariance(5, 5)));
   EXPECT_TRUE(std::isfinite(s.covariance(2, 2)));  // Height is constrained.
+  // The translation the plane constrains most is its normal; the weakest
+  // lies in it.
+  EXPECT_GT(std::abs(s.constraints.weakest_translations(2, 2)), 0.99);
+  EXPECT_LT(std::abs(s.constraints.weakest_translations(2, 0)), 0.01);
   EXPECT_NE(s.message.find("degenerate"), std::string::npos) << s.message;
   EXPECT_NE(s.FullReport().find("inf"), std::string::npos) << s.FullReport();
 }
@@ -94,6 +98,8 @@ TEST(QualityCheck, ACorridorIsDegenerateAlongItsLength) {
       << s.message;
   EXPECT_TRUE(std::isinf(s.covariance(0, 0)));
   EXPECT_TRUE(std::isfinite(s.covariance(1, 1)));
+  // With the rotation held, the weakest translation is the axis as well.
+  EXPECT_GT(std::abs(s.constraints.weakest_translations(0, 0)), 0.99);
 }
 
 // Issue 22's corridor: two walls and a floor, a 100 m reference and 40 m of

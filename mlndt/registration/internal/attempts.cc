@@ -274,6 +274,28 @@ double InlierGainEvidence(const RegistrationOptions& options,
   return (gained - lost) / std::sqrt(std::max(gained + lost, 1.0));
 }
 
+// True when `other`, a solution in another basin than `current`'s
+// (LastLayerInAnotherBasin), may replace it: assessed here, converged,
+// within the guess's uncertainty when one is given, and with clearly more
+// inliers (InlierGainEvidence, returned in *evidence when given).
+bool ClearlyBetter(const RegistrationOptions& options,
+                   const Problem& problem,
+                   const Vector6d& initial_local,
+                   const Attempt& current,
+                   Attempt* other,
+                   double* evidence = nullptr) {
+  if (options.initial_uncertainty.given &&
+      LeftTheGuess(options, problem, initial_local, other->xi_local)) {
+    return false;
+  }
+  Assess(options, problem, other);
+  if (other->verdict != TerminationType::CONVERGENCE) return false;
+  const double z = InlierGainEvidence(
+      options, problem, problem.last(), current.xi_local, other->xi_local);
+  if (evidence != nullptr) *evidence = z;
+  return z >= kMinInlierGainEvidence;
+}
+
 // One round of the search along best's flattest weak direction: the last
 // layer from best moved one cell edge along it, each way (over a subset of
 // the samples first, as the guess check); true when a solution in another
@@ -298,16 +320,10 @@ bool ExploreWeakDirection(const RegistrationOptions& options,
                                         cell_m,
                                         problem.rms_range_m));
     Attempt moved;
-    if (!LastLayerInAnotherBasin(
-            options, problem, start, start_time_s, cost, *best, &moved) ||
-        (options.initial_uncertainty.given &&
-         LeftTheGuess(options, problem, initial_local, moved.xi_local))) {
-      continue;
-    }
-    Assess(options, problem, &moved);
-    const double z = InlierGainEvidence(
-        options, problem, problem.last(), best->xi_local, moved.xi_local);
-    if (z >= kMinInlierGainEvidence && KeepBetter(std::move(moved), best)) {
+    if (LastLayerInAnotherBasin(
+            options, problem, start, start_time_s, cost, *best, &moved) &&
+        ClearlyBetter(options, problem, initial_local, *best, &moved) &&
+        KeepBetter(std::move(moved), best)) {
       return true;
     }
   }
@@ -349,18 +365,15 @@ bool NearTheSensorsCoinciding(const RegistrationOptions& options,
          SensorPosition(problem, attempt.xi_local).norm() <= reach_m;
 }
 
-// Step 4 above. The planar cells alone lead from the solution to `led`;
-// a solution in another basin from there that clearly fits better replaces
-// *attempt. *attempt stands when the last layer returns to it and the
-// planar cells' inliers do not prefer `led`.
-void CheckTheScanPattern(const RegistrationOptions& options,
-                         const Problem& problem,
-                         const Vector6d& initial_local,
-                         double start_time_s,
-                         AttemptsCost* cost,
-                         Attempt* attempt) {
-  if (!NearTheSensorsCoinciding(options, problem, *attempt)) return;
-  ++cost->attempts;
+// Step 4's first part: where the planar cells alone lead from *attempt.
+// True when *attempt stands; false when a clearly better solution replaced
+// it or it was flagged LOW_QUALITY.
+bool StandsOnThePlanarCells(const RegistrationOptions& options,
+                            const Problem& problem,
+                            const Vector6d& initial_local,
+                            double start_time_s,
+                            AttemptsCost* cost,
+                            Attempt* attempt) {
   const NdtLayer& planar = problem.planar_last();
   // The last layer's stage over the samples and iterations of the layer
   // before it (every 2nd sample: a sparser subset moves on its own sampling
@@ -372,39 +385,90 @@ void CheckTheScanPattern(const RegistrationOptions& options,
   control.point_stride = before_last.point_stride;
   control.max_iterations = before_last.max_iterations;
   Vector6d led = attempt->xi_local;
-  if (!ExploreFrom(problem, planar, control, &led, cost)) return;
+  if (!ExploreFrom(problem, planar, control, &led, cost)) return true;
   // The pattern holds the sensor's position: only a translation by more
   // than AnotherBasin's tenth of a cell counts (without the ground's rings
   // the planar cells may tilt the pose a little, as on koide3).
   const double led_m = (SensorPosition(problem, led) -
                         SensorPosition(problem, attempt->xi_local))
                            .norm();
-  if (led_m <= 0.1 * problem.last().cell_size()) return;
+  if (led_m <= 0.1 * problem.last().cell_size()) return true;
   Attempt other;
   if (LastLayerInAnotherBasin(
           options, problem, led, start_time_s, cost, *attempt, &other)) {
-    Assess(options, problem, &other);
-    const bool allowed =
-        !options.initial_uncertainty.given ||
-        !LeftTheGuess(options, problem, initial_local, other.xi_local);
-    if (allowed && other.verdict == TerminationType::CONVERGENCE &&
-        InlierGainEvidence(options,
-                           problem,
-                           problem.last(),
-                           attempt->xi_local,
-                           other.xi_local) >= kMinInlierGainEvidence) {
+    if (ClearlyBetter(options, problem, initial_local, *attempt, &other)) {
       *attempt = std::move(other);
-      return;
+      return false;
     }
   } else if (InlierGainEvidence(
                  options, problem, planar, attempt->xi_local, led) < 0.0) {
-    return;
+    return true;
   }
   attempt->verdict = TerminationType::LOW_QUALITY;
   attempt->verdict_message =
       "the fit may rest on the scan pattern: the pose is where the two "
       "sensors nearly coincide (and so do a spinning LiDAR's rings), and "
       "the map's planar cells alone lead elsewhere";
+  return false;
+}
+
+// Step 4's second part: the scene's own minimum may lie beyond the
+// pattern's, along the translation the planar cells constrain least (a
+// road seen within 8 m: 0.7-1.5 m ahead). The last layer runs from the
+// result moved that way and back by (1 + reach) cell edges: out of the
+// pattern's reach and of its neighbouring cells' pull. The converged
+// minimum in another basin with the clearest gain of inliers replaces the
+// result.
+void LookBeyondThePattern(const RegistrationOptions& options,
+                          const Problem& problem,
+                          const Vector6d& initial_local,
+                          double start_time_s,
+                          AttemptsCost* cost,
+                          Attempt* attempt) {
+  Vector6d d = Vector6d::Zero();
+  d.head<3>() = attempt->constraints.weakest_translations.col(0);
+  if (d.isZero()) return;
+  const double step_m = (1.0 + options.retry.scan_pattern_reach_cells) *
+                        problem.last().cell_size();
+  Attempt found;
+  double found_evidence = kMinInlierGainEvidence;
+  for (const double sign : {1.0, -1.0}) {
+    ++cost->attempts;
+    const Vector6d start =
+        IsometryToPoseVector(MovedAlong(PoseVectorToIsometry(attempt->xi_local),
+                                        sign * d,
+                                        step_m,
+                                        problem.rms_range_m));
+    Attempt other;
+    double evidence = 0.0;
+    if (LastLayerInAnotherBasin(
+            options, problem, start, start_time_s, cost, *attempt, &other) &&
+        ClearlyBetter(
+            options, problem, initial_local, *attempt, &other, &evidence) &&
+        evidence >= found_evidence) {
+      found_evidence = evidence;
+      found = std::move(other);
+    }
+  }
+  if (found.verdict == TerminationType::CONVERGENCE) {
+    *attempt = std::move(found);
+  }
+}
+
+// Step 4 above, on a converged *attempt where the sensors nearly coincide.
+void CheckTheScanPattern(const RegistrationOptions& options,
+                         const Problem& problem,
+                         const Vector6d& initial_local,
+                         double start_time_s,
+                         AttemptsCost* cost,
+                         Attempt* attempt) {
+  if (!NearTheSensorsCoinciding(options, problem, *attempt)) return;
+  ++cost->attempts;
+  if (StandsOnThePlanarCells(
+          options, problem, initial_local, start_time_s, cost, attempt)) {
+    LookBeyondThePattern(
+        options, problem, initial_local, start_time_s, cost, attempt);
+  }
 }
 
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
