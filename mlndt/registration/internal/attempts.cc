@@ -412,19 +412,25 @@ bool StandsOnThePlanarCells(const RegistrationOptions& options,
   return false;
 }
 
-// Step 4's second part: the scene's own minimum may lie beyond the
-// pattern's, along the translation the planar cells constrain least (a
-// road seen within 8 m: 0.7-1.5 m ahead). The last layer runs from the
-// result moved that way and back by (1 + reach) cell edges: out of the
-// pattern's reach and of its neighbouring cells' pull. The converged
-// minimum in another basin with the clearest gain of inliers replaces the
-// result.
+// Step 4's second part, on a result at least as flat as the search needs:
+// the scene's own minimum may lie beyond the pattern's, along the
+// translation the planar cells constrain least (a road seen within 8 m:
+// 0.7-1.5 m ahead). The last layer runs from the result moved that way and
+// back by (1 + reach) cell edges: out of the pattern's reach and of its
+// neighbouring cells' pull. The converged minimum in another basin with the
+// clearest gain of inliers replaces the result.
 void LookBeyondThePattern(const RegistrationOptions& options,
                           const Problem& problem,
                           const Vector6d& initial_local,
                           double start_time_s,
                           AttemptsCost* cost,
                           Attempt* attempt) {
+  // As the search (step 3): only where a cell edge away fits nearly as
+  // well can another minimum lie near.
+  if (attempt->constraints.flatness <
+      options.retry.weak_direction_min_flatness) {
+    return;
+  }
   Vector6d d = Vector6d::Zero();
   d.head<3>() = attempt->constraints.weakest_translations.col(0);
   if (d.isZero()) return;
