@@ -276,14 +276,16 @@ double InlierGainEvidence(const RegistrationOptions& options,
 
 // True when `other`, a solution in another basin than `current`'s
 // (LastLayerInAnotherBasin), may replace it: assessed here, converged,
-// within the guess's uncertainty when one is given, and with clearly more
-// inliers (InlierGainEvidence, returned in *evidence when given).
-bool ClearlyBetter(const RegistrationOptions& options,
-                   const Problem& problem,
-                   const Vector6d& initial_local,
-                   const Attempt& current,
-                   Attempt* other,
-                   double* evidence = nullptr) {
+// within the guess's uncertainty when one is given, and with more inliers
+// by at least `min_evidence` (InlierGainEvidence, returned in *evidence
+// when given).
+bool FitsBetter(const RegistrationOptions& options,
+                const Problem& problem,
+                const Vector6d& initial_local,
+                const Attempt& current,
+                double min_evidence,
+                Attempt* other,
+                double* evidence = nullptr) {
   if (options.initial_uncertainty.given &&
       LeftTheGuess(options, problem, initial_local, other->xi_local)) {
     return false;
@@ -293,7 +295,7 @@ bool ClearlyBetter(const RegistrationOptions& options,
   const double z = InlierGainEvidence(
       options, problem, problem.last(), current.xi_local, other->xi_local);
   if (evidence != nullptr) *evidence = z;
-  return z >= kMinInlierGainEvidence;
+  return z >= min_evidence;
 }
 
 // One round of the search along best's flattest weak direction: the last
@@ -322,7 +324,12 @@ bool ExploreWeakDirection(const RegistrationOptions& options,
     Attempt moved;
     if (LastLayerInAnotherBasin(
             options, problem, start, start_time_s, cost, *best, &moved) &&
-        ClearlyBetter(options, problem, initial_local, *best, &moved) &&
+        FitsBetter(options,
+                   problem,
+                   initial_local,
+                   *best,
+                   kMinInlierGainEvidence,
+                   &moved) &&
         KeepBetter(std::move(moved), best)) {
       return true;
     }
@@ -396,7 +403,12 @@ bool StandsOnThePlanarCells(const RegistrationOptions& options,
   Attempt other;
   if (LastLayerInAnotherBasin(
           options, problem, led, start_time_s, cost, *attempt, &other)) {
-    if (ClearlyBetter(options, problem, initial_local, *attempt, &other)) {
+    if (FitsBetter(options,
+                   problem,
+                   initial_local,
+                   *attempt,
+                   kMinInlierGainEvidence,
+                   &other)) {
       *attempt = std::move(other);
       return false;
     }
@@ -417,8 +429,9 @@ bool StandsOnThePlanarCells(const RegistrationOptions& options,
 // translation the planar cells constrain least (a road seen within 8 m:
 // 0.7-1.5 m ahead). The last layer runs from the result moved that way and
 // back by (1 + reach) cell edges: out of the pattern's reach and of its
-// neighbouring cells' pull. The converged minimum in another basin with the
-// clearest gain of inliers replaces the result.
+// neighbouring cells' pull. Where the sensors coincide the pattern adds
+// inliers to the result, so a converged minimum in another basin with more
+// inliers at all replaces it (the one with the clearer gain of the two).
 void LookBeyondThePattern(const RegistrationOptions& options,
                           const Problem& problem,
                           const Vector6d& initial_local,
@@ -437,7 +450,7 @@ void LookBeyondThePattern(const RegistrationOptions& options,
   const double step_m = (1.0 + options.retry.scan_pattern_reach_cells) *
                         problem.last().cell_size();
   Attempt found;
-  double found_evidence = kMinInlierGainEvidence;
+  double found_evidence = 0.0;  // More inliers at all, the best of the two.
   for (const double sign : {1.0, -1.0}) {
     ++cost->attempts;
     const Vector6d start =
@@ -449,9 +462,14 @@ void LookBeyondThePattern(const RegistrationOptions& options,
     double evidence = 0.0;
     if (LastLayerInAnotherBasin(
             options, problem, start, start_time_s, cost, *attempt, &other) &&
-        ClearlyBetter(
-            options, problem, initial_local, *attempt, &other, &evidence) &&
-        evidence >= found_evidence) {
+        FitsBetter(options,
+                   problem,
+                   initial_local,
+                   *attempt,
+                   0.0,
+                   &other,
+                   &evidence) &&
+        evidence > found_evidence) {
       found_evidence = evidence;
       found = std::move(other);
     }

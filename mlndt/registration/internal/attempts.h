@@ -40,7 +40,8 @@
 //     planar cells constrain least, each way, and the last layer runs from
 //     there as in 2: the scene's own minimum can lie beyond the pattern's
 //     (a road seen within 8 m, 0.7-1.5 m ahead), and a converged one with
-//     clearly more inliers replaces the result;
+//     more inliers replaces the result (there the pattern adds inliers to
+//     the result: no margin is asked);
 //  5. until a result converges and passes the checks: the schedule again
 //     from the guess turned about the input's centroid by each yaw seed
 //     (retry), each result checked as in 4; the best verdict wins, then the
