@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/point_matches.h"
@@ -252,6 +253,10 @@ void CheckTheGuess(const RegistrationOptions& options,
 // margin swaps a right result for another one nearby (docs/trust.md).
 constexpr double kMinInlierGainEvidence = 1.0;
 
+// More inliers at all (InlierGainEvidence > 0): what a minimum beyond the
+// scan pattern needs (step 4).
+constexpr double kAnyInlierGain = std::numeric_limits<double>::min();
+
 // How clearly `to` fits `layer` better than `from`: the points that are
 // inliers at `to` and not at `from`, net of the reverse, over the square
 // root of all that changed (a z-score, as the probe's evidence).
@@ -277,31 +282,59 @@ double InlierGainEvidence(const RegistrationOptions& options,
 // True when `other`, a solution in another basin than `current`'s
 // (LastLayerInAnotherBasin), may replace it: assessed here, converged,
 // within the guess's uncertainty when one is given, and with more inliers
-// by at least `min_evidence` (InlierGainEvidence, returned in *evidence
-// when given).
+// by at least `min_evidence` (InlierGainEvidence).
 bool FitsBetter(const RegistrationOptions& options,
                 const Problem& problem,
                 const Vector6d& initial_local,
                 const Attempt& current,
                 double min_evidence,
-                Attempt* other,
-                double* evidence = nullptr) {
+                Attempt* other) {
   if (options.initial_uncertainty.given &&
       LeftTheGuess(options, problem, initial_local, other->xi_local)) {
     return false;
   }
   Assess(options, problem, other);
-  if (other->verdict != TerminationType::CONVERGENCE) return false;
-  const double z = InlierGainEvidence(
-      options, problem, problem.last(), current.xi_local, other->xi_local);
-  if (evidence != nullptr) *evidence = z;
-  return z >= min_evidence;
+  return other->verdict == TerminationType::CONVERGENCE &&
+         InlierGainEvidence(options,
+                            problem,
+                            problem.last(),
+                            current.xi_local,
+                            other->xi_local) >= min_evidence;
 }
 
-// One round of the search along best's flattest weak direction: the last
-// layer from best moved one cell edge along it, each way (over a subset of
-// the samples first, as the guess check); true when a solution in another
-// basin replaced best.
+// The last layer from `current` moved `step_m` along d, then along -d (over
+// a subset of the samples first, as the guess check): true, with it in
+// *found, at the first solution in another basin that FitsBetter by
+// `min_evidence`.
+bool BetterMinimumAlong(const RegistrationOptions& options,
+                        const Problem& problem,
+                        const Vector6d& initial_local,
+                        double start_time_s,
+                        AttemptsCost* cost,
+                        const Attempt& current,
+                        const Vector6d& d,
+                        double step_m,
+                        double min_evidence,
+                        Attempt* found) {
+  for (const double sign : {1.0, -1.0}) {
+    ++cost->attempts;
+    const Vector6d start =
+        IsometryToPoseVector(MovedAlong(PoseVectorToIsometry(current.xi_local),
+                                        sign * d,
+                                        step_m,
+                                        problem.rms_range_m));
+    if (LastLayerInAnotherBasin(
+            options, problem, start, start_time_s, cost, current, found) &&
+        FitsBetter(
+            options, problem, initial_local, current, min_evidence, found)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// One round of the search along best's flattest weak direction, one cell
+// edge each way; true when a solution in another basin replaced best.
 bool ExploreWeakDirection(const RegistrationOptions& options,
                           const Problem& problem,
                           const Vector6d& initial_local,
@@ -313,28 +346,18 @@ bool ExploreWeakDirection(const RegistrationOptions& options,
       best->constraints.flatness < options.retry.weak_direction_min_flatness) {
     return false;
   }
-  const double cell_m = problem.last().cell_size();
-  for (const double sign : {1.0, -1.0}) {
-    ++cost->attempts;
-    const Vector6d start =
-        IsometryToPoseVector(MovedAlong(PoseVectorToIsometry(best->xi_local),
-                                        sign * d,
-                                        cell_m,
-                                        problem.rms_range_m));
-    Attempt moved;
-    if (LastLayerInAnotherBasin(
-            options, problem, start, start_time_s, cost, *best, &moved) &&
-        FitsBetter(options,
-                   problem,
-                   initial_local,
-                   *best,
-                   kMinInlierGainEvidence,
-                   &moved) &&
-        KeepBetter(std::move(moved), best)) {
-      return true;
-    }
-  }
-  return false;
+  Attempt moved;
+  return BetterMinimumAlong(options,
+                            problem,
+                            initial_local,
+                            start_time_s,
+                            cost,
+                            *best,
+                            d,
+                            problem.last().cell_size(),
+                            kMinInlierGainEvidence,
+                            &moved) &&
+         KeepBetter(std::move(moved), best);
 }
 
 // Step 3 above: rounds of ExploreWeakDirection while the result converged
@@ -431,7 +454,7 @@ bool StandsOnThePlanarCells(const RegistrationOptions& options,
 // back by (1 + reach) cell edges: out of the pattern's reach and of its
 // neighbouring cells' pull. Where the sensors coincide the pattern adds
 // inliers to the result, so a converged minimum in another basin with more
-// inliers at all replaces it (the one with the clearer gain of the two).
+// inliers at all (kAnyInlierGain) replaces it.
 void LookBeyondThePattern(const RegistrationOptions& options,
                           const Problem& problem,
                           const Vector6d& initial_local,
@@ -447,34 +470,18 @@ void LookBeyondThePattern(const RegistrationOptions& options,
   Vector6d d = Vector6d::Zero();
   d.head<3>() = attempt->constraints.weakest_translations.col(0);
   if (d.isZero()) return;
-  const double step_m = (1.0 + options.retry.scan_pattern_reach_cells) *
-                        problem.last().cell_size();
   Attempt found;
-  double found_evidence = 0.0;  // More inliers at all, the best of the two.
-  for (const double sign : {1.0, -1.0}) {
-    ++cost->attempts;
-    const Vector6d start =
-        IsometryToPoseVector(MovedAlong(PoseVectorToIsometry(attempt->xi_local),
-                                        sign * d,
-                                        step_m,
-                                        problem.rms_range_m));
-    Attempt other;
-    double evidence = 0.0;
-    if (LastLayerInAnotherBasin(
-            options, problem, start, start_time_s, cost, *attempt, &other) &&
-        FitsBetter(options,
-                   problem,
-                   initial_local,
-                   *attempt,
-                   0.0,
-                   &other,
-                   &evidence) &&
-        evidence > found_evidence) {
-      found_evidence = evidence;
-      found = std::move(other);
-    }
-  }
-  if (found.verdict == TerminationType::CONVERGENCE) {
+  if (BetterMinimumAlong(options,
+                         problem,
+                         initial_local,
+                         start_time_s,
+                         cost,
+                         *attempt,
+                         d,
+                         (1.0 + options.retry.scan_pattern_reach_cells) *
+                             problem.last().cell_size(),
+                         kAnyInlierGain,
+                         &found)) {
     *attempt = std::move(found);
   }
 }
