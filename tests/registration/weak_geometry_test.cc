@@ -51,6 +51,11 @@ struct Tally {
   std::string report;
 };
 
+// The near crop: the input's points within 8 m of its sensor.
+bool WithinEightMetres(int, const Eigen::Vector3d& p) {
+  return p.norm() <= 8.0;
+}
+
 using FramePairs = std::vector<std::pair<int, int>>;
 
 const FramePairs kConsecutive = {
@@ -92,12 +97,9 @@ Tally RegisterCrops(
 }
 
 TEST(WeakGeometry, InputWithinEightMetresIsNeverWronglyConvergedWithTheProbe) {
-  const auto near = [](int, const Eigen::Vector3d& p) {
-    return p.norm() <= 8.0;
-  };
   RegistrationOptions probed;
   probed.quality_check.max_flatness = 0.8;
-  const Tally tally = RegisterCrops(near, probed);
+  const Tally tally = RegisterCrops(WithinEightMetres, probed);
   EXPECT_EQ(tally.converged_wrong, 0) << tally.report;
   // Without the search along the weak direction (and the scan-pattern
   // check, which finds the same minima), the default probe (0.95) lets the
@@ -106,21 +108,18 @@ TEST(WeakGeometry, InputWithinEightMetresIsNeverWronglyConvergedWithTheProbe) {
   RegistrationOptions no_search;
   no_search.retry.weak_direction_rounds = 0;
   no_search.retry.scan_pattern_reach_cells = 0.0;
-  EXPECT_GE(RegisterCrops(near, no_search).converged_wrong, 5);
+  EXPECT_GE(RegisterCrops(WithinEightMetres, no_search).converged_wrong, 5);
 }
 
 TEST(WeakGeometry, TheSearchAlongTheRoadLeavesTheIdentityForTheBetterMinimum) {
-  const auto near = [](int, const Eigen::Vector3d& p) {
-    return p.norm() <= 8.0;
-  };
   RegistrationOptions no_search;  // Nor the scan-pattern check.
   no_search.retry.weak_direction_rounds = 0;
   no_search.retry.scan_pattern_reach_cells = 0.0;
-  const Tally before = RegisterCrops(near, no_search);
+  const Tally before = RegisterCrops(WithinEightMetres, no_search);
   EXPECT_EQ(before.converged_right, 0) << before.report;
   // The default searches one cell edge along the flattest weak direction
   // (the road) both ways and keeps a minimum that has clearly more inliers.
-  const Tally after = RegisterCrops(near);
+  const Tally after = RegisterCrops(WithinEightMetres);
   EXPECT_GE(after.converged_right, 4) << after.report;
   EXPECT_LT(after.converged_wrong, before.converged_wrong) << after.report;
 }
@@ -191,15 +190,13 @@ TEST(WeakGeometry, AGroundOnlyInputIsNotHeldWhereTheSensorsCoincide) {
 // constrain least, both ways, and the scene's own minimum ahead has
 // more inliers (0->1: z = 0.77, short of the search's margin of 1).
 TEST(WeakGeometry, TheNearCropsMinimumBeyondTheRingsIsFound) {
-  const auto near = [](int, const Eigen::Vector3d& p) {
-    return p.norm() <= 8.0;
-  };
   const FramePairs ahead = {{0, 1}, {1, 3}, {2, 4}, {3, 5}, {5, 7}, {6, 7}};
   RegistrationOptions unchecked;
   unchecked.retry.scan_pattern_reach_cells = 0.0;
-  const Tally before = RegisterCrops(near, unchecked, ahead);
+  const Tally before = RegisterCrops(WithinEightMetres, unchecked, ahead);
   EXPECT_EQ(before.converged_wrong, 6) << before.report;
-  const Tally after = RegisterCrops(near, RegistrationOptions(), ahead);
+  const Tally after =
+      RegisterCrops(WithinEightMetres, RegistrationOptions(), ahead);
   EXPECT_EQ(after.converged_right, 6) << after.report;
 }
 

@@ -101,7 +101,7 @@ struct AttemptsCost {
   int64_t point_iterations = 0;
 };
 
-// Runs 1-4 above.
+// Runs 1-5 above.
 Attempt SolveAttempts(const RegistrationOptions& options,
                       const Problem& problem,
                       const Vector6d& initial_local,
