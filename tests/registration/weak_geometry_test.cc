@@ -48,6 +48,7 @@ PointCloud Crop(const PointCloud& cloud,
 struct Tally {
   int converged_right = 0;
   int converged_wrong = 0;
+  int right = 0;  // Whatever the verdict.
   std::string report;
 };
 
@@ -58,16 +59,21 @@ bool WithinEightMetres(int, const Eigen::Vector3d& p) {
 
 using FramePairs = std::vector<std::pair<int, int>>;
 
+// Where each registration starts: the identity (0.7 m behind), or the
+// data set's prior (odometry, 8-18 cm off).
+enum class Start { kIdentity, kPrior };
+
 const FramePairs kConsecutive = {
     {0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}};
 
 // Registers the cropped input of each pair (reference frame, input frame;
-// consecutive by default) from the identity and tallies CONVERGENCE
-// against the bundled consensus references.
+// consecutive by default) from `start` and tallies the results against the
+// bundled consensus references.
 Tally RegisterCrops(
     const std::function<bool(int, const Eigen::Vector3d&)>& keep,
     const RegistrationOptions& options = RegistrationOptions(),
-    const FramePairs& frame_pairs = kConsecutive) {
+    const FramePairs& frame_pairs = kConsecutive,
+    Start start = Start::kIdentity) {
   std::map<std::string, ReferencePair> pairs;
   std::string error;
   EXPECT_TRUE(ReadReferencePairs(
@@ -75,18 +81,20 @@ Tally RegisterCrops(
       << error;
   Tally tally;
   for (const auto& [i, j] : frame_pairs) {
-    const Isometry3d truth =
-        pairs.at(ReferencePairKey(i, j)).reference_from_input;
+    const ReferencePair& pair = pairs.at(ReferencePairKey(i, j));
+    const Isometry3d& truth = pair.reference_from_input;
     RegistrationSummary s;
     Register(options,
              testing::BundledKittiScan(i),
              Crop(testing::BundledKittiScan(j), keep),
-             Isometry3d::Identity(),
+             start == Start::kPrior ? pair.prior_from_input.value()
+                                    : Isometry3d::Identity(),
              &s);
     const double error_m = TranslationErrorM(truth, s.reference_from_input);
     const bool right =
         error_m < 0.2 &&
         RotationErrorRad(truth, s.reference_from_input) < 1.0 * kDegToRad;
+    tally.right += right;
     if (s.termination_type == TerminationType::CONVERGENCE) {
       (right ? tally.converged_right : tally.converged_wrong)++;
     }
@@ -165,8 +173,11 @@ TEST(WeakGeometry, LivoxPairsFromTheIdentityEndInTheBetterMinimum) {
 // identity the input's rings fall into the cells of the reference's own
 // rings: without the scan-pattern check (RetryOptions::
 // scan_pattern_reach_cells) three results stayed there, 0.7 m behind, and
-// were reported CONVERGENCE. With it one still is (1->2: the planar cells
-// alone lead only 9 cm from it, less than the check's tenth of a cell).
+// were reported CONVERGENCE. 1->2 stayed there with the check too, from the
+// identity and from the prior (16 cm off): the planar cells alone lead only
+// 9 cm from it, and the minimum beyond it, 0.7 m ahead, has fewer inliers
+// on the last layer (z = -3.8) but clearly more on the planar cells
+// (z = 12.5): the rings and the scene disagree, and the result is flagged.
 TEST(WeakGeometry, AGroundOnlyInputIsNotHeldWhereTheSensorsCoincide) {
   const auto ground = [](int, const Eigen::Vector3d& p) {
     return p.z() < -1.4;
@@ -176,8 +187,33 @@ TEST(WeakGeometry, AGroundOnlyInputIsNotHeldWhereTheSensorsCoincide) {
   const Tally before = RegisterCrops(ground, unchecked);
   EXPECT_GE(before.converged_wrong, 3) << before.report;
   const Tally after = RegisterCrops(ground);
-  EXPECT_LE(after.converged_wrong, 1) << after.report;
+  EXPECT_EQ(after.converged_wrong, 0) << after.report;
   EXPECT_GE(after.converged_right, before.converged_right) << after.report;
+  const Tally from_prior =
+      RegisterCrops(ground, RegistrationOptions(), {{1, 2}}, Start::kPrior);
+  EXPECT_EQ(from_prior.converged_wrong, 0) << from_prior.report;
+}
+
+// The input cropped to a +-15 deg wedge ahead: the road and what lies
+// beyond it. Where the sensors coincide the rings fit the last layer better
+// than the right pose, 0.7-0.8 m ahead (6->7: 37 % of the points inliers
+// against 31 %), and the coarse layers carry the prior (9 cm off) there too;
+// the planar cells hold clearly more inliers at the right pose (z = 3-6).
+// Without that comparison 6->7 was reported CONVERGENCE there from both
+// starts; with it, it ends at the right pose and says that the fit is poor
+// (LOW_QUALITY). (3->4 still is, from the identity: its flatness, 0.54, is
+// below what the look beyond the pattern needs; docs/trust.md.)
+TEST(WeakGeometry, AWedgeAheadIsNotHeldWhereTheSensorsCoincide) {
+  const auto wedge = [](int, const Eigen::Vector3d& p) {
+    return std::abs(std::atan2(p.y(), p.x())) <= 15.0 * kDegToRad;
+  };
+  const Tally identity = RegisterCrops(wedge, RegistrationOptions(), {{6, 7}});
+  EXPECT_EQ(identity.converged_wrong, 0) << identity.report;
+  EXPECT_EQ(identity.right, 1) << identity.report;
+  const Tally prior =
+      RegisterCrops(wedge, RegistrationOptions(), {{6, 7}}, Start::kPrior);
+  EXPECT_EQ(prior.converged_wrong, 0) << prior.report;
+  EXPECT_EQ(prior.right, 1) << prior.report;
 }
 
 // The input cropped to 8 m, one and two frames from the reference

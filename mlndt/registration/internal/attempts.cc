@@ -223,29 +223,6 @@ bool LastLayerInAnotherBasin(const RegistrationOptions& options,
          AnotherBasin(problem, candidate->xi_local, best.xi_local);
 }
 
-// Step 2 above. The last layer alone runs from the guess; when it stays in
-// best's basin, the guess leads there too and the check ends. Otherwise
-// that solution, assessed, replaces best if it fits better.
-void CheckTheGuess(const RegistrationOptions& options,
-                   const Problem& problem,
-                   const Vector6d& initial_local,
-                   double start_time_s,
-                   AttemptsCost* cost,
-                   Attempt* best) {
-  ++cost->attempts;
-  Attempt from_guess;
-  if (LastLayerInAnotherBasin(options,
-                              problem,
-                              initial_local,
-                              start_time_s,
-                              cost,
-                              *best,
-                              &from_guess)) {
-    Assess(options, problem, &from_guess);
-    KeepBetter(std::move(from_guess), best);
-  }
-}
-
 // A solution found by the search replaces best only when it has more
 // inliers by at least this many standard deviations of the points that
 // changed (InlierGainEvidence): among the minima of a wide, flat basin
@@ -279,33 +256,150 @@ double InlierGainEvidence(const RegistrationOptions& options,
   return (gained - lost) / std::sqrt(std::max(gained + lost, 1.0));
 }
 
-// True when `other`, a solution in another basin than `current`'s
-// (LastLayerInAnotherBasin), may replace it: assessed here, converged,
-// within the guess's uncertainty when one is given, and with more inliers
-// by at least `min_evidence` (InlierGainEvidence).
+// The translation of reference_from_input at `xi_local`: where the input's
+// sensor lies in the reference's frame.
+Eigen::Vector3d SensorPosition(const Problem& problem,
+                               const Vector6d& xi_local) {
+  return problem.anchor.ToGlobal(xi_local).head<3>();
+}
+
+// True when step 4 applies to `attempt`: converged, its translation within
+// retry.scan_pattern_reach_cells last-layer cell edges of zero.
+bool NearTheSensorsCoinciding(const RegistrationOptions& options,
+                              const Problem& problem,
+                              const Attempt& attempt) {
+  const double reach_m =
+      options.retry.scan_pattern_reach_cells * problem.last().cell_size();
+  return attempt.verdict == TerminationType::CONVERGENCE &&
+         SensorPosition(problem, attempt.xi_local).norm() <= reach_m;
+}
+
+// True when the planar cells (Problem::planar_last) hold clearly more
+// inliers (kMinInlierGainEvidence) at `other` than at `current`: the
+// evidence that counts where the sensors coincide (step 4), for there the
+// rings fit `current` whatever the motion.
+bool PlanarCellsPrefer(const RegistrationOptions& options,
+                       const Problem& problem,
+                       const Attempt& current,
+                       const Attempt& other) {
+  return InlierGainEvidence(options,
+                            problem,
+                            problem.planar_last(),
+                            current.xi_local,
+                            other.xi_local) >= kMinInlierGainEvidence;
+}
+
+// `other` (assessed) replaces *current, a result where the sensors
+// coincide. Its verdict stands unless it converged with no more inliers on
+// the whole last layer (only the planar cells prefer it): then the rings and
+// the planes disagree, and it is LOW_QUALITY.
+void ReplaceAtTheCoincidence(const RegistrationOptions& options,
+                             const Problem& problem,
+                             Attempt other,
+                             Attempt* current) {
+  if (other.verdict == TerminationType::CONVERGENCE &&
+      InlierGainEvidence(options,
+                         problem,
+                         problem.last(),
+                         current->xi_local,
+                         other.xi_local) <= 0.0) {
+    other.verdict = TerminationType::LOW_QUALITY;
+    other.verdict_message =
+        "the scan pattern and the scene disagree: where the two sensors "
+        "nearly coincide a spinning LiDAR's rings fit better, but the map's "
+        "planar cells prefer this pose";
+  }
+  *current = std::move(other);
+}
+
+// Step 2 above. The last layer alone runs from the guess; when it stays in
+// best's basin, the guess leads there too and the check ends. Otherwise
+// that solution, assessed, replaces best if it fits better: on the planar
+// cells when best converged where the sensors coincide (the coarse layers
+// can carry a guess into the pattern's minimum), else by KeepBetter.
+void CheckTheGuess(const RegistrationOptions& options,
+                   const Problem& problem,
+                   const Vector6d& initial_local,
+                   double start_time_s,
+                   AttemptsCost* cost,
+                   Attempt* best) {
+  ++cost->attempts;
+  Attempt from_guess;
+  if (LastLayerInAnotherBasin(options,
+                              problem,
+                              initial_local,
+                              start_time_s,
+                              cost,
+                              *best,
+                              &from_guess)) {
+    Assess(options, problem, &from_guess);
+    if (NearTheSensorsCoinciding(options, problem, *best) &&
+        PlanarCellsPrefer(options, problem, *best, from_guess)) {
+      ReplaceAtTheCoincidence(options, problem, std::move(from_guess), best);
+    } else {
+      KeepBetter(std::move(from_guess), best);
+    }
+  }
+}
+
+// Whether `other`, an assessed solution in another basin than `current`'s
+// (LastLayerInAnotherBasin), fits better than `current`.
+using Preference = bool (*)(const RegistrationOptions& options,
+                            const Problem& problem,
+                            const Attempt& current,
+                            const Attempt& other);
+
+// Steps 3 and 4's first part: converged, with clearly more inliers on the
+// last layer (kMinInlierGainEvidence).
+bool ClearlyMoreInliers(const RegistrationOptions& options,
+                        const Problem& problem,
+                        const Attempt& current,
+                        const Attempt& other) {
+  return other.verdict == TerminationType::CONVERGENCE &&
+         InlierGainEvidence(options,
+                            problem,
+                            problem.last(),
+                            current.xi_local,
+                            other.xi_local) >= kMinInlierGainEvidence;
+}
+
+// Step 4's second part, beyond the pattern: where the sensors coincide the
+// pattern adds inliers to `current`, so a converged `other` with more
+// inliers at all (kAnyInlierGain) fits better, and so does one the planar
+// cells prefer.
+bool BetterBeyondThePattern(const RegistrationOptions& options,
+                            const Problem& problem,
+                            const Attempt& current,
+                            const Attempt& other) {
+  return (other.verdict == TerminationType::CONVERGENCE &&
+          InlierGainEvidence(options,
+                             problem,
+                             problem.last(),
+                             current.xi_local,
+                             other.xi_local) >= kAnyInlierGain) ||
+         PlanarCellsPrefer(options, problem, current, other);
+}
+
+// True when `other`, a solution in another basin than `current`'s, may
+// replace it: assessed here, within the guess's uncertainty when one is
+// given, and `prefer`red.
 bool FitsBetter(const RegistrationOptions& options,
                 const Problem& problem,
                 const Vector6d& initial_local,
                 const Attempt& current,
-                double min_evidence,
+                Preference prefer,
                 Attempt* other) {
   if (options.initial_uncertainty.given &&
       LeftTheGuess(options, problem, initial_local, other->xi_local)) {
     return false;
   }
   Assess(options, problem, other);
-  return other->verdict == TerminationType::CONVERGENCE &&
-         InlierGainEvidence(options,
-                            problem,
-                            problem.last(),
-                            current.xi_local,
-                            other->xi_local) >= min_evidence;
+  return prefer(options, problem, current, *other);
 }
 
 // The last layer from `current` moved `step_m` along d, then along -d (over
 // a subset of the samples first, as the guess check): true, with it in
-// *found, at the first solution in another basin that FitsBetter by
-// `min_evidence`.
+// *found, at the first solution in another basin that FitsBetter.
 bool BetterMinimumAlong(const RegistrationOptions& options,
                         const Problem& problem,
                         const Vector6d& initial_local,
@@ -314,7 +408,7 @@ bool BetterMinimumAlong(const RegistrationOptions& options,
                         const Attempt& current,
                         const Vector6d& d,
                         double step_m,
-                        double min_evidence,
+                        Preference prefer,
                         Attempt* found) {
   for (const double sign : {1.0, -1.0}) {
     ++cost->attempts;
@@ -325,8 +419,7 @@ bool BetterMinimumAlong(const RegistrationOptions& options,
                                         problem.rms_range_m));
     if (LastLayerInAnotherBasin(
             options, problem, start, start_time_s, cost, current, found) &&
-        FitsBetter(
-            options, problem, initial_local, current, min_evidence, found)) {
+        FitsBetter(options, problem, initial_local, current, prefer, found)) {
       return true;
     }
   }
@@ -355,7 +448,7 @@ bool ExploreWeakDirection(const RegistrationOptions& options,
                             *best,
                             d,
                             problem.last().cell_size(),
-                            kMinInlierGainEvidence,
+                            ClearlyMoreInliers,
                             &moved) &&
          KeepBetter(std::move(moved), best);
 }
@@ -375,24 +468,6 @@ void SearchWeakDirection(const RegistrationOptions& options,
       return;
     }
   }
-}
-
-// The translation of reference_from_input at `xi_local`: where the input's
-// sensor lies in the reference's frame.
-Eigen::Vector3d SensorPosition(const Problem& problem,
-                               const Vector6d& xi_local) {
-  return problem.anchor.ToGlobal(xi_local).head<3>();
-}
-
-// True when step 4 applies to `attempt`: converged, its translation within
-// retry.scan_pattern_reach_cells last-layer cell edges of zero.
-bool NearTheSensorsCoinciding(const RegistrationOptions& options,
-                              const Problem& problem,
-                              const Attempt& attempt) {
-  const double reach_m =
-      options.retry.scan_pattern_reach_cells * problem.last().cell_size();
-  return attempt.verdict == TerminationType::CONVERGENCE &&
-         SensorPosition(problem, attempt.xi_local).norm() <= reach_m;
 }
 
 // Step 4's first part: where the planar cells alone lead from *attempt.
@@ -430,7 +505,7 @@ bool StandsOnThePlanarCells(const RegistrationOptions& options,
                    problem,
                    initial_local,
                    *attempt,
-                   kMinInlierGainEvidence,
+                   ClearlyMoreInliers,
                    &other)) {
       *attempt = std::move(other);
       return false;
@@ -449,12 +524,12 @@ bool StandsOnThePlanarCells(const RegistrationOptions& options,
 
 // Step 4's second part, on a result at least as flat as the search needs:
 // the scene's own minimum may lie beyond the pattern's, along the
-// translation the planar cells constrain least (a road seen within 8 m:
-// 0.7-1.5 m ahead). The last layer runs from the result moved that way and
-// back by (1 + reach) cell edges: out of the pattern's reach and of its
-// neighbouring cells' pull. Where the sensors coincide the pattern adds
-// inliers to the result, so a converged minimum in another basin with more
-// inliers at all (kAnyInlierGain) replaces it.
+// translation the planar cells constrain least (a road seen within 8 m, or
+// ahead in a 30 deg wedge: 0.7-1.5 m ahead). The last layer runs from the
+// result moved that way and back by (1 + reach) cell edges: out of the
+// pattern's reach and of its neighbouring cells' pull. A minimum in another
+// basin that fits BetterBeyondThePattern replaces the result
+// (ReplaceAtTheCoincidence).
 void LookBeyondThePattern(const RegistrationOptions& options,
                           const Problem& problem,
                           const Vector6d& initial_local,
@@ -480,9 +555,9 @@ void LookBeyondThePattern(const RegistrationOptions& options,
                          d,
                          (1.0 + options.retry.scan_pattern_reach_cells) *
                              problem.last().cell_size(),
-                         kAnyInlierGain,
+                         BetterBeyondThePattern,
                          &found)) {
-    *attempt = std::move(found);
+    ReplaceAtTheCoincidence(options, problem, std::move(found), attempt);
   }
 }
 

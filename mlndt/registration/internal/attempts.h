@@ -10,7 +10,8 @@
 //     schedule.max_coarse_point_stride) and, only when that leads to another
 //     basin, over all of them; the better fit wins, so a good guess is never
 //     made worse by the coarse layers (they can pull a sparse scan into
-//     another basin);
+//     another basin). Against a result where the sensors coincide (4) the
+//     planar cells judge, as in 4;
 //  3. when the result converged and the probe of weak directions kept at
 //     least retry.weak_direction_min_flatness of its inliers one cell edge
 //     along the flattest one (quality_check.h): the last layer from the
@@ -39,9 +40,12 @@
 //     needs is moved (1 + reach) cell edges along the translation the
 //     planar cells constrain least, each way, and the last layer runs from
 //     there as in 2: the scene's own minimum can lie beyond the pattern's
-//     (a road seen within 8 m, 0.7-1.5 m ahead), and a converged one with
-//     more inliers replaces the result (there the pattern adds inliers to
-//     the result: no margin is asked);
+//     (a road seen within 8 m, or in a 30 deg wedge ahead, 0.7-1.5 m
+//     ahead). A converged one with more inliers replaces the result (there
+//     the pattern adds inliers to the result: no margin is asked), and so
+//     does one where the planar cells hold clearly more inliers (1 standard
+//     deviation), LOW_QUALITY when the whole last layer prefers the result:
+//     the rings and the scene disagree;
 //  5. until a result converges and passes the checks: the schedule again
 //     from the guess turned about the input's centroid by each yaw seed
 //     (retry), each result checked as in 4; the best verdict wins, then the
