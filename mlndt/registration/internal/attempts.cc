@@ -21,19 +21,30 @@ const NdtLayer& Problem::planar_last() const {
 
 namespace {
 
+// What every step of one registration's runs shares (SolveAttempts'
+// arguments): the options, the problem, the initial guess in the anchor's
+// frame, the start time and the cost tally.
+struct Context {
+  const RegistrationOptions& options;
+  const Problem& problem;
+  const Vector6d& initial_local;
+  double start_time_s;
+  AttemptsCost* cost;
+};
+
 // The fit, constraints and verdict of the attempt's solution.
-void Assess(const RegistrationOptions& options,
-            const Problem& problem,
-            Attempt* attempt) {
-  attempt->evaluation = EvaluateScore(
-      problem.last(), problem.points, attempt->xi_local, options.objective);
-  Judgement judgement = JudgeSolution(options.quality_check,
-                                      attempt->schedule.termination_type,
-                                      problem.last(),
-                                      problem.points,
+void Assess(const Context& c, Attempt* attempt) {
+  attempt->evaluation = EvaluateScore(c.problem.last(),
+                                      c.problem.points,
                                       attempt->xi_local,
-                                      options.objective,
-                                      problem.rms_range_m);
+                                      c.options.objective);
+  Judgement judgement = JudgeSolution(c.options.quality_check,
+                                      attempt->schedule.termination_type,
+                                      c.problem.last(),
+                                      c.problem.points,
+                                      attempt->xi_local,
+                                      c.options.objective,
+                                      c.problem.rms_range_m);
   attempt->fit = judgement.fit;
   attempt->constraints = std::move(judgement.constraints);
   attempt->verdict = judgement.verdict;
@@ -41,62 +52,58 @@ void Assess(const RegistrationOptions& options,
 }
 
 // The samples a stage over every stride-th of them evaluates per iteration.
-int64_t PointsPerIteration(const Problem& problem, int stride) {
-  const int64_t n = static_cast<int64_t>(problem.points.size());
+int64_t PointsPerIteration(const Context& c, int stride) {
+  const int64_t n = static_cast<int64_t>(c.problem.points.size());
   return (n + stride - 1) / stride;
 }
 
 // Adds the point iterations of a schedule run to *cost.
-void Count(const RegistrationOptions& options,
-           const Problem& problem,
-           const ScheduleSummary& schedule,
-           AttemptsCost* cost) {
-  const int n = problem.map.num_layers();
+void Count(const Context& c, const ScheduleSummary& schedule) {
+  const int n = c.problem.map.num_layers();
   for (int layer = 1; layer <= n; ++layer) {
-    const int stride = StageControlFor(options.schedule, layer, n).point_stride;
-    cost->point_iterations +=
+    const int stride =
+        StageControlFor(c.options.schedule, layer, n).point_stride;
+    c.cost->point_iterations +=
         schedule.iterations_per_layer[static_cast<size_t>(layer - 1)] *
-        PointsPerIteration(problem, stride);
+        PointsPerIteration(c, stride);
   }
 }
 
 // Runs the schedule from `start_layer`, adding its point iterations to
 // *cost; assesses the solution unless told not to (the guess check assesses
 // only a solution in another basin).
-Attempt Solve(const RegistrationOptions& options,
-              const Problem& problem,
+Attempt Solve(const Context& c,
               int start_layer,
-              const Vector6d& initial_local,
-              double start_time_s,
-              AttemptsCost* cost,
+              const Vector6d& start,
               bool assess = true) {
   Attempt attempt;
   attempt.start_layer = start_layer;
-  attempt.xi_local = initial_local;
-  RunLayerSchedule(options.schedule,
+  attempt.xi_local = start;
+  RunLayerSchedule(c.options.schedule,
                    start_layer,
-                   problem.map,
-                   start_time_s,
-                   problem.backend,
+                   c.problem.map,
+                   c.start_time_s,
+                   c.problem.backend,
                    &attempt.xi_local,
                    &attempt.schedule);
-  Count(options, problem, attempt.schedule, cost);
+  Count(c, attempt.schedule);
   if (assess && attempt.schedule.termination_type != TerminationType::FAILURE) {
-    Assess(options, problem, &attempt);
+    Assess(c, &attempt);
   }
   return attempt;
 }
 
 // The start layer: from the guess's uncertainty when it is given (the
 // displacement it allows at the points' RMS range), else schedule's.
-int StartLayer(const RegistrationOptions& options, const Problem& problem) {
-  const InitialGuessUncertainty& u = options.initial_uncertainty;
+int StartLayer(const Context& c) {
+  const InitialGuessUncertainty& u = c.options.initial_uncertainty;
   if (!u.given) {
-    return ResolveStartLayer(options.schedule, problem.map.num_layers());
+    return ResolveStartLayer(c.options.schedule, c.problem.map.num_layers());
   }
   const double displacement =
-      u.translation_m + u.rotation_deg * kDegToRad * problem.rms_range_m;
-  return StartLayerForUncertainty(options.schedule, problem.map, displacement);
+      u.translation_m + u.rotation_deg * kDegToRad * c.problem.rms_range_m;
+  return StartLayerForUncertainty(
+      c.options.schedule, c.problem.map, displacement);
 }
 
 // True when the coarse layers took `xi_local` farther from the guess than
@@ -104,23 +111,20 @@ int StartLayer(const RegistrationOptions& options, const Problem& problem) {
 // given, else beyond a quarter of a last-layer cell (at the points' RMS range
 // for the rotation). A guess within that distance is where the last layer's own
 // basin would have led.
-bool LeftTheGuess(const RegistrationOptions& options,
-                  const Problem& problem,
-                  const Vector6d& initial_local,
-                  const Vector6d& xi_local) {
-  const InitialGuessUncertainty& u = options.initial_uncertainty;
+bool LeftTheGuess(const Context& c, const Vector6d& xi_local) {
+  const InitialGuessUncertainty& u = c.options.initial_uncertainty;
   const Isometry3d guess =
-      PoseVectorToIsometry(problem.anchor.ToGlobal(initial_local));
+      PoseVectorToIsometry(c.problem.anchor.ToGlobal(c.initial_local));
   const Isometry3d result =
-      PoseVectorToIsometry(problem.anchor.ToGlobal(xi_local));
+      PoseVectorToIsometry(c.problem.anchor.ToGlobal(xi_local));
   const double moved_m = TranslationErrorM(guess, result);
   const double turned_rad = RotationErrorRad(guess, result);
   if (u.given) {
     return moved_m > u.translation_m || turned_rad > u.rotation_deg * kDegToRad;
   }
   const double quarter_cell_m =
-      0.25 * problem.map.layer_info().back().cell_size_m;
-  return moved_m + turned_rad * problem.rms_range_m > quarter_cell_m;
+      0.25 * c.problem.map.layer_info().back().cell_size_m;
+  return moved_m + turned_rad * c.problem.rms_range_m > quarter_cell_m;
 }
 
 // Verdicts from worst to best: a converged, checked pose is what a retry
@@ -157,38 +161,36 @@ bool KeepBetter(Attempt candidate, Attempt* best) {
 // better fit is kept. Closer, they are one minimum where each run stopped,
 // and the first is kept, so that the result does not flip between the two
 // on round-off.
-bool AnotherBasin(const Problem& problem,
+bool AnotherBasin(const Context& c,
                   const Vector6d& xi_local,
                   const Vector6d& best_xi_local) {
   const Isometry3d a = PoseVectorToIsometry(xi_local);
   const Isometry3d b = PoseVectorToIsometry(best_xi_local);
   const double apart_m =
-      TranslationErrorM(a, b) + RotationErrorRad(a, b) * problem.rms_range_m;
-  return apart_m > 0.1 * problem.map.layer_info().back().cell_size_m;
+      TranslationErrorM(a, b) + RotationErrorRad(a, b) * c.problem.rms_range_m;
+  return apart_m > 0.1 * c.problem.map.layer_info().back().cell_size_m;
 }
 
 // Where a stage on `layer` (the last layer, or step 4's planar one) leads
 // from *xi_local. False when the stage failed.
-bool ExploreFrom(const Problem& problem,
+bool ExploreFrom(const Context& c,
                  const NdtLayer& layer,
                  const StageControl& control,
-                 Vector6d* xi_local,
-                 AttemptsCost* cost) {
+                 Vector6d* xi_local) {
   StageSummary stage;
-  problem.backend->SolveStage(layer, control, xi_local, &stage);
-  cost->point_iterations +=
-      stage.iterations() * PointsPerIteration(problem, control.point_stride);
+  c.problem.backend->SolveStage(layer, control, xi_local, &stage);
+  c.cost->point_iterations +=
+      stage.iterations() * PointsPerIteration(c, control.point_stride);
   return stage.termination_type != TerminationType::FAILURE;
 }
 
 // The last layer's stage over every s-th sample, s =
 // schedule.max_coarse_point_stride: a first look at the cost of a coarse
 // stage.
-StageControl SubsetControl(const RegistrationOptions& options,
-                           const Problem& problem) {
-  const int n = problem.map.num_layers();
-  StageControl control = StageControlFor(options.schedule, n, n);
-  control.point_stride = options.schedule.max_coarse_point_stride;
+StageControl SubsetControl(const Context& c) {
+  const int n = c.problem.map.num_layers();
+  StageControl control = StageControlFor(c.options.schedule, n, n);
+  control.point_stride = c.options.schedule.max_coarse_point_stride;
   return control;
 }
 
@@ -196,31 +198,18 @@ StageControl SubsetControl(const RegistrationOptions& options,
 // schedule.max_coarse_point_stride) and over all of them only when that
 // leads out of best's basin: true, with the (unassessed) solution in
 // *candidate, when it converged in another basin than best's.
-bool LastLayerInAnotherBasin(const RegistrationOptions& options,
-                             const Problem& problem,
+bool LastLayerInAnotherBasin(const Context& c,
                              Vector6d start,
-                             double start_time_s,
-                             AttemptsCost* cost,
                              const Attempt& best,
                              Attempt* candidate) {
-  if (options.schedule.max_coarse_point_stride > 1 &&
-      (!ExploreFrom(problem,
-                    problem.last(),
-                    SubsetControl(options, problem),
-                    &start,
-                    cost) ||
-       !AnotherBasin(problem, start, best.xi_local))) {
+  if (c.options.schedule.max_coarse_point_stride > 1 &&
+      (!ExploreFrom(c, c.problem.last(), SubsetControl(c), &start) ||
+       !AnotherBasin(c, start, best.xi_local))) {
     return false;
   }
-  *candidate = Solve(options,
-                     problem,
-                     problem.map.num_layers(),
-                     start,
-                     start_time_s,
-                     cost,
-                     /*assess=*/false);
+  *candidate = Solve(c, c.problem.map.num_layers(), start, /*assess=*/false);
   return candidate->schedule.termination_type != TerminationType::FAILURE &&
-         AnotherBasin(problem, candidate->xi_local, best.xi_local);
+         AnotherBasin(c, candidate->xi_local, best.xi_local);
 }
 
 // A solution found by the search replaces best only when it has more
@@ -237,17 +226,16 @@ constexpr double kAnyInlierGain = std::numeric_limits<double>::min();
 // How clearly `to` fits `layer` better than `from`: the points that are
 // inliers at `to` and not at `from`, net of the reverse, over the square
 // root of all that changed (a z-score, as the probe's evidence).
-double InlierGainEvidence(const RegistrationOptions& options,
-                          const Problem& problem,
+double InlierGainEvidence(const Context& c,
                           const NdtLayer& layer,
                           const Vector6d& from,
                           const Vector6d& to) {
   const Isometry3d a = PoseVectorToIsometry(from);
   const Isometry3d b = PoseVectorToIsometry(to);
-  const double gate = options.quality_check.inlier_gate;
-  const UnmatchedPolicy policy = options.objective.unmatched_policy;
+  const double gate = c.options.quality_check.inlier_gate;
+  const UnmatchedPolicy policy = c.options.objective.unmatched_policy;
   double gained = 0.0, lost = 0.0;
-  for (const Eigen::Vector3d& p : problem.points) {
+  for (const Eigen::Vector3d& p : c.problem.points) {
     const bool at_a = MatchPoint(layer, a * p, policy).IsInlier(gate);
     const bool at_b = MatchPoint(layer, b * p, policy).IsInlier(gate);
     gained += at_b && !at_a;
@@ -258,51 +246,51 @@ double InlierGainEvidence(const RegistrationOptions& options,
 
 // The translation of reference_from_input at `xi_local`: where the input's
 // sensor lies in the reference's frame.
-Eigen::Vector3d SensorPosition(const Problem& problem,
-                               const Vector6d& xi_local) {
-  return problem.anchor.ToGlobal(xi_local).head<3>();
+Eigen::Vector3d SensorPosition(const Context& c, const Vector6d& xi_local) {
+  return c.problem.anchor.ToGlobal(xi_local).head<3>();
 }
 
 // True when step 4 applies to `attempt`: converged, its translation within
 // retry.scan_pattern_reach_cells last-layer cell edges of zero.
-bool NearTheSensorsCoinciding(const RegistrationOptions& options,
-                              const Problem& problem,
-                              const Attempt& attempt) {
+bool NearTheSensorsCoinciding(const Context& c, const Attempt& attempt) {
   const double reach_m =
-      options.retry.scan_pattern_reach_cells * problem.last().cell_size();
+      c.options.retry.scan_pattern_reach_cells * c.problem.last().cell_size();
   return attempt.verdict == TerminationType::CONVERGENCE &&
-         SensorPosition(problem, attempt.xi_local).norm() <= reach_m;
+         SensorPosition(c, attempt.xi_local).norm() <= reach_m;
 }
 
 // True when the planar cells (Problem::planar_last) hold clearly more
 // inliers (kMinInlierGainEvidence) at `other` than at `current`: the
 // evidence that counts where the sensors coincide (step 4), for there the
 // rings fit `current` whatever the motion.
-bool PlanarCellsPrefer(const RegistrationOptions& options,
-                       const Problem& problem,
+bool PlanarCellsPrefer(const Context& c,
                        const Attempt& current,
                        const Attempt& other) {
-  return InlierGainEvidence(options,
-                            problem,
-                            problem.planar_last(),
-                            current.xi_local,
-                            other.xi_local) >= kMinInlierGainEvidence;
+  return InlierGainEvidence(
+             c, c.problem.planar_last(), current.xi_local, other.xi_local) >=
+         kMinInlierGainEvidence;
+}
+
+// True when `other` (assessed) converged with more inliers on the last layer
+// than `current` by at least `min_gain` (InlierGainEvidence).
+bool ConvergedWithMoreInliers(const Context& c,
+                              const Attempt& current,
+                              const Attempt& other,
+                              double min_gain) {
+  return other.verdict == TerminationType::CONVERGENCE &&
+         InlierGainEvidence(
+             c, c.problem.last(), current.xi_local, other.xi_local) >= min_gain;
 }
 
 // `other` (assessed) replaces *current, a result where the sensors
 // coincide. Its verdict stands unless it converged with no more inliers on
 // the whole last layer (only the planar cells prefer it): then the rings and
 // the planes disagree, and it is LOW_QUALITY.
-void ReplaceAtTheCoincidence(const RegistrationOptions& options,
-                             const Problem& problem,
+void ReplaceAtTheCoincidence(const Context& c,
                              Attempt other,
                              Attempt* current) {
   if (other.verdict == TerminationType::CONVERGENCE &&
-      InlierGainEvidence(options,
-                         problem,
-                         problem.last(),
-                         current->xi_local,
-                         other.xi_local) <= 0.0) {
+      !ConvergedWithMoreInliers(c, *current, other, kAnyInlierGain)) {
     other.verdict = TerminationType::LOW_QUALITY;
     other.verdict_message =
         "the scan pattern and the scene disagree: where the two sensors "
@@ -317,25 +305,14 @@ void ReplaceAtTheCoincidence(const RegistrationOptions& options,
 // that solution, assessed, replaces best if it fits better: on the planar
 // cells when best converged where the sensors coincide (the coarse layers
 // can carry a guess into the pattern's minimum), else by KeepBetter.
-void CheckTheGuess(const RegistrationOptions& options,
-                   const Problem& problem,
-                   const Vector6d& initial_local,
-                   double start_time_s,
-                   AttemptsCost* cost,
-                   Attempt* best) {
-  ++cost->attempts;
+void CheckTheGuess(const Context& c, Attempt* best) {
+  ++c.cost->attempts;
   Attempt from_guess;
-  if (LastLayerInAnotherBasin(options,
-                              problem,
-                              initial_local,
-                              start_time_s,
-                              cost,
-                              *best,
-                              &from_guess)) {
-    Assess(options, problem, &from_guess);
-    if (NearTheSensorsCoinciding(options, problem, *best) &&
-        PlanarCellsPrefer(options, problem, *best, from_guess)) {
-      ReplaceAtTheCoincidence(options, problem, std::move(from_guess), best);
+  if (LastLayerInAnotherBasin(c, c.initial_local, *best, &from_guess)) {
+    Assess(c, &from_guess);
+    if (NearTheSensorsCoinciding(c, *best) &&
+        PlanarCellsPrefer(c, *best, from_guess)) {
+      ReplaceAtTheCoincidence(c, std::move(from_guess), best);
     } else {
       KeepBetter(std::move(from_guess), best);
     }
@@ -344,82 +321,61 @@ void CheckTheGuess(const RegistrationOptions& options,
 
 // Whether `other`, an assessed solution in another basin than `current`'s
 // (LastLayerInAnotherBasin), fits better than `current`.
-using Preference = bool (*)(const RegistrationOptions& options,
-                            const Problem& problem,
+using Preference = bool (*)(const Context& c,
                             const Attempt& current,
                             const Attempt& other);
 
 // Steps 3 and 4's first part: converged, with clearly more inliers on the
 // last layer (kMinInlierGainEvidence).
-bool ClearlyMoreInliers(const RegistrationOptions& options,
-                        const Problem& problem,
+bool ClearlyMoreInliers(const Context& c,
                         const Attempt& current,
                         const Attempt& other) {
-  return other.verdict == TerminationType::CONVERGENCE &&
-         InlierGainEvidence(options,
-                            problem,
-                            problem.last(),
-                            current.xi_local,
-                            other.xi_local) >= kMinInlierGainEvidence;
+  return ConvergedWithMoreInliers(c, current, other, kMinInlierGainEvidence);
 }
 
 // Step 4's second part, beyond the pattern: where the sensors coincide the
 // pattern adds inliers to `current`, so a converged `other` with more
 // inliers at all (kAnyInlierGain) fits better, and so does one the planar
 // cells prefer.
-bool BetterBeyondThePattern(const RegistrationOptions& options,
-                            const Problem& problem,
+bool BetterBeyondThePattern(const Context& c,
                             const Attempt& current,
                             const Attempt& other) {
-  return (other.verdict == TerminationType::CONVERGENCE &&
-          InlierGainEvidence(options,
-                             problem,
-                             problem.last(),
-                             current.xi_local,
-                             other.xi_local) >= kAnyInlierGain) ||
-         PlanarCellsPrefer(options, problem, current, other);
+  return ConvergedWithMoreInliers(c, current, other, kAnyInlierGain) ||
+         PlanarCellsPrefer(c, current, other);
 }
 
 // True when `other`, a solution in another basin than `current`'s, may
 // replace it: assessed here, within the guess's uncertainty when one is
 // given, and `prefer`red.
-bool FitsBetter(const RegistrationOptions& options,
-                const Problem& problem,
-                const Vector6d& initial_local,
+bool FitsBetter(const Context& c,
                 const Attempt& current,
                 Preference prefer,
                 Attempt* other) {
-  if (options.initial_uncertainty.given &&
-      LeftTheGuess(options, problem, initial_local, other->xi_local)) {
+  if (c.options.initial_uncertainty.given && LeftTheGuess(c, other->xi_local)) {
     return false;
   }
-  Assess(options, problem, other);
-  return prefer(options, problem, current, *other);
+  Assess(c, other);
+  return prefer(c, current, *other);
 }
 
 // The last layer from `current` moved `step_m` along d, then along -d (over
 // a subset of the samples first, as the guess check): true, with it in
 // *found, at the first solution in another basin that FitsBetter.
-bool BetterMinimumAlong(const RegistrationOptions& options,
-                        const Problem& problem,
-                        const Vector6d& initial_local,
-                        double start_time_s,
-                        AttemptsCost* cost,
+bool BetterMinimumAlong(const Context& c,
                         const Attempt& current,
                         const Vector6d& d,
                         double step_m,
                         Preference prefer,
                         Attempt* found) {
   for (const double sign : {1.0, -1.0}) {
-    ++cost->attempts;
+    ++c.cost->attempts;
     const Vector6d start =
         IsometryToPoseVector(MovedAlong(PoseVectorToIsometry(current.xi_local),
                                         sign * d,
                                         step_m,
-                                        problem.rms_range_m));
-    if (LastLayerInAnotherBasin(
-            options, problem, start, start_time_s, cost, current, found) &&
-        FitsBetter(options, problem, initial_local, current, prefer, found)) {
+                                        c.problem.rms_range_m));
+    if (LastLayerInAnotherBasin(c, start, current, found) &&
+        FitsBetter(c, current, prefer, found)) {
       return true;
     }
   }
@@ -428,26 +384,17 @@ bool BetterMinimumAlong(const RegistrationOptions& options,
 
 // One round of the search along best's flattest weak direction, one cell
 // edge each way; true when a solution in another basin replaced best.
-bool ExploreWeakDirection(const RegistrationOptions& options,
-                          const Problem& problem,
-                          const Vector6d& initial_local,
-                          double start_time_s,
-                          AttemptsCost* cost,
-                          Attempt* best) {
+bool ExploreWeakDirection(const Context& c, Attempt* best) {
   const Vector6d d = best->constraints.flattest_direction;
-  if (d.isZero() ||
-      best->constraints.flatness < options.retry.weak_direction_min_flatness) {
+  if (d.isZero() || best->constraints.flatness <
+                        c.options.retry.weak_direction_min_flatness) {
     return false;
   }
   Attempt moved;
-  return BetterMinimumAlong(options,
-                            problem,
-                            initial_local,
-                            start_time_s,
-                            cost,
+  return BetterMinimumAlong(c,
                             *best,
                             d,
-                            problem.last().cell_size(),
+                            c.problem.last().cell_size(),
                             ClearlyMoreInliers,
                             &moved) &&
          KeepBetter(std::move(moved), best);
@@ -455,16 +402,10 @@ bool ExploreWeakDirection(const RegistrationOptions& options,
 
 // Step 3 above: rounds of ExploreWeakDirection while the result converged
 // and the last round found a better minimum.
-void SearchWeakDirection(const RegistrationOptions& options,
-                         const Problem& problem,
-                         const Vector6d& initial_local,
-                         double start_time_s,
-                         AttemptsCost* cost,
-                         Attempt* best) {
-  for (int round = 0; round < options.retry.weak_direction_rounds; ++round) {
+void SearchWeakDirection(const Context& c, Attempt* best) {
+  for (int round = 0; round < c.options.retry.weak_direction_rounds; ++round) {
     if (best->verdict != TerminationType::CONVERGENCE ||
-        !ExploreWeakDirection(
-            options, problem, initial_local, start_time_s, cost, best)) {
+        !ExploreWeakDirection(c, best)) {
       return;
     }
   }
@@ -473,45 +414,32 @@ void SearchWeakDirection(const RegistrationOptions& options,
 // Step 4's first part: where the planar cells alone lead from *attempt.
 // True when *attempt stands; false when a clearly better solution replaced
 // it or it was flagged LOW_QUALITY.
-bool StandsOnThePlanarCells(const RegistrationOptions& options,
-                            const Problem& problem,
-                            const Vector6d& initial_local,
-                            double start_time_s,
-                            AttemptsCost* cost,
-                            Attempt* attempt) {
-  const NdtLayer& planar = problem.planar_last();
+bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
+  const NdtLayer& planar = c.problem.planar_last();
   // The last layer's stage over the samples and iterations of the layer
   // before it (every 2nd sample: a sparser subset moves on its own sampling
   // noise, and flagged right Livox results); a one-layer map's own.
-  const int n = problem.map.num_layers();
+  const int n = c.problem.map.num_layers();
   const StageControl before_last =
-      StageControlFor(options.schedule, std::max(1, n - 1), n);
-  StageControl control = StageControlFor(options.schedule, n, n);
+      StageControlFor(c.options.schedule, std::max(1, n - 1), n);
+  StageControl control = StageControlFor(c.options.schedule, n, n);
   control.point_stride = before_last.point_stride;
   control.max_iterations = before_last.max_iterations;
   Vector6d led = attempt->xi_local;
-  if (!ExploreFrom(problem, planar, control, &led, cost)) return true;
+  if (!ExploreFrom(c, planar, control, &led)) return true;
   // The pattern holds the sensor's position: only a translation by more
   // than AnotherBasin's tenth of a cell counts (without the ground's rings
   // the planar cells may tilt the pose a little, as on koide3).
-  const double led_m = (SensorPosition(problem, led) -
-                        SensorPosition(problem, attempt->xi_local))
-                           .norm();
-  if (led_m <= 0.1 * problem.last().cell_size()) return true;
+  const double led_m =
+      (SensorPosition(c, led) - SensorPosition(c, attempt->xi_local)).norm();
+  if (led_m <= 0.1 * c.problem.last().cell_size()) return true;
   Attempt other;
-  if (LastLayerInAnotherBasin(
-          options, problem, led, start_time_s, cost, *attempt, &other)) {
-    if (FitsBetter(options,
-                   problem,
-                   initial_local,
-                   *attempt,
-                   ClearlyMoreInliers,
-                   &other)) {
+  if (LastLayerInAnotherBasin(c, led, *attempt, &other)) {
+    if (FitsBetter(c, *attempt, ClearlyMoreInliers, &other)) {
       *attempt = std::move(other);
       return false;
     }
-  } else if (InlierGainEvidence(
-                 options, problem, planar, attempt->xi_local, led) < 0.0) {
+  } else if (InlierGainEvidence(c, planar, attempt->xi_local, led) < 0.0) {
     return true;
   }
   attempt->verdict = TerminationType::LOW_QUALITY;
@@ -530,56 +458,40 @@ bool StandsOnThePlanarCells(const RegistrationOptions& options,
 // pattern's reach and of its neighbouring cells' pull. A minimum in another
 // basin that fits BetterBeyondThePattern replaces the result
 // (ReplaceAtTheCoincidence).
-void LookBeyondThePattern(const RegistrationOptions& options,
-                          const Problem& problem,
-                          const Vector6d& initial_local,
-                          double start_time_s,
-                          AttemptsCost* cost,
-                          Attempt* attempt) {
+void LookBeyondThePattern(const Context& c, Attempt* attempt) {
   // As the search (step 3): only where a cell edge away fits nearly as
   // well can another minimum lie near.
   if (attempt->constraints.flatness <
-      options.retry.weak_direction_min_flatness) {
+      c.options.retry.weak_direction_min_flatness) {
     return;
   }
   Vector6d d = Vector6d::Zero();
   d.head<3>() = attempt->constraints.weakest_translations.col(0);
   if (d.isZero()) return;
   Attempt found;
-  if (BetterMinimumAlong(options,
-                         problem,
-                         initial_local,
-                         start_time_s,
-                         cost,
+  if (BetterMinimumAlong(c,
                          *attempt,
                          d,
-                         (1.0 + options.retry.scan_pattern_reach_cells) *
-                             problem.last().cell_size(),
+                         (1.0 + c.options.retry.scan_pattern_reach_cells) *
+                             c.problem.last().cell_size(),
                          BetterBeyondThePattern,
                          &found)) {
-    ReplaceAtTheCoincidence(options, problem, std::move(found), attempt);
+    ReplaceAtTheCoincidence(c, std::move(found), attempt);
   }
 }
 
 // Step 4 above, on a converged *attempt where the sensors nearly coincide.
-void CheckTheScanPattern(const RegistrationOptions& options,
-                         const Problem& problem,
-                         const Vector6d& initial_local,
-                         double start_time_s,
-                         AttemptsCost* cost,
-                         Attempt* attempt) {
-  if (!NearTheSensorsCoinciding(options, problem, *attempt)) return;
-  ++cost->attempts;
-  if (StandsOnThePlanarCells(
-          options, problem, initial_local, start_time_s, cost, attempt)) {
-    LookBeyondThePattern(
-        options, problem, initial_local, start_time_s, cost, attempt);
+void CheckTheScanPattern(const Context& c, Attempt* attempt) {
+  if (!NearTheSensorsCoinciding(c, *attempt)) return;
+  ++c.cost->attempts;
+  if (StandsOnThePlanarCells(c, attempt)) {
+    LookBeyondThePattern(c, attempt);
   }
 }
 
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
-Vector6d TurnedGuess(const Vector6d& initial_local, double yaw_deg) {
-  Isometry3d turned = PoseVectorToIsometry(initial_local);
+Vector6d TurnedGuess(const Vector6d& guess, double yaw_deg) {
+  Isometry3d turned = PoseVectorToIsometry(guess);
   turned.linear() =
       Eigen::AngleAxisd(yaw_deg * kDegToRad, Eigen::Vector3d::UnitZ()) *
       turned.linear();
@@ -593,33 +505,22 @@ Attempt SolveAttempts(const RegistrationOptions& options,
                       const Vector6d& initial_local,
                       double start_time_s,
                       AttemptsCost* cost) {
+  const Context c{options, problem, initial_local, start_time_s, cost};
   const int n = problem.map.num_layers();
-  const int start = StartLayer(options, problem);
-  Attempt best =
-      Solve(options, problem, start, initial_local, start_time_s, cost);
+  const int start = StartLayer(c);
+  Attempt best = Solve(c, start, initial_local);
   cost->attempts = 1;
   if (best.schedule.termination_type == TerminationType::FAILURE) return best;
   const InitialGuessUncertainty& u = options.initial_uncertainty;
-  if (start < n &&
-      LeftTheGuess(options, problem, initial_local, best.xi_local)) {
-    CheckTheGuess(options, problem, initial_local, start_time_s, cost, &best);
-  }
-  SearchWeakDirection(
-      options, problem, initial_local, start_time_s, cost, &best);
-  CheckTheScanPattern(
-      options, problem, initial_local, start_time_s, cost, &best);
+  if (start < n && LeftTheGuess(c, best.xi_local)) CheckTheGuess(c, &best);
+  SearchWeakDirection(c, &best);
+  CheckTheScanPattern(c, &best);
   for (const double yaw_deg : options.retry.yaw_seeds_deg) {
     if (best.verdict == TerminationType::CONVERGENCE) break;
     if (u.given && std::abs(yaw_deg) > u.rotation_deg) continue;
     ++cost->attempts;
-    Attempt turned = Solve(options,
-                           problem,
-                           start,
-                           TurnedGuess(initial_local, yaw_deg),
-                           start_time_s,
-                           cost);
-    CheckTheScanPattern(
-        options, problem, initial_local, start_time_s, cost, &turned);
+    Attempt turned = Solve(c, start, TurnedGuess(initial_local, yaw_deg));
+    CheckTheScanPattern(c, &turned);
     KeepBetter(std::move(turned), &best);
   }
   return best;
