@@ -56,7 +56,10 @@ const OptionTable& RetryOptionsTable() {
                   Closed(0.0, 1.0),
                   "The search along the flattest weak direction runs only "
                   "when the probe kept at least this share of the inliers one "
-                  "cell edge along it (the result's flatness).")
+                  "cell edge along it (the result's flatness); the scan-"
+                  "pattern check looks beyond the pattern only when the "
+                  "planar cells keep this share one cell edge along the "
+                  "weakest translation.")
           .Double("scan_pattern_reach_cells",
                   &S::scan_pattern_reach_cells,
                   "",
@@ -64,9 +67,10 @@ const OptionTable& RetryOptionsTable() {
                   "A converged result whose translation is within this many "
                   "last-layer cell edges of zero (the sensors coincide, and "
                   "so do a spinning LiDAR's rings) is checked against the "
-                  "last layer without its line cells, and the last layer "
-                  "runs again from 1 + this many cell edges along its "
-                  "weakest translation; 0 = off.")
+                  "last layer without its line cells, and (where that "
+                  "translation is flat) the last layer runs again from 1 + "
+                  "this many cell edges along its weakest translation; 0 = "
+                  "off.")
           .Validator(&S::IsValid)
           .Build();
   return table;

@@ -60,7 +60,8 @@ struct RetryOptions {
   // The search runs only when the probe kept at least this share of the
   // inliers one cell edge along the flattest direction (flatness,
   // quality_check.h): a direction where a cell away fits nearly as well
-  // may hold another minimum. In [0, 1].
+  // may hold another minimum. The scan-pattern check asks the same share of
+  // the planar cells along the weakest translation. In [0, 1].
   double weak_direction_min_flatness = 0.6;
   // The scan-pattern check (attempts.h, step 4) runs on a converged result
   // whose translation is within this many last-layer cell edges of zero:
@@ -68,7 +69,9 @@ struct RetryOptions {
   // into the cells of the reference's own rings and fit them whatever the
   // motion. Beyond half a cell they fall into other cells. The check also
   // looks for the scene's own minimum from (1 + this) cell edges along the
-  // weakest translation. In [0, 4]; 0 = off.
+  // weakest translation, where the planar cells keep at least
+  // weak_direction_min_flatness of their inliers one cell edge along it.
+  // In [0, 4]; 0 = off.
   double scan_pattern_reach_cells = 0.5;
 
   bool IsValid(std::string* error) const;

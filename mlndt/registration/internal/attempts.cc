@@ -223,25 +223,45 @@ constexpr double kMinInlierGainEvidence = 1.0;
 // scan pattern needs (step 4).
 constexpr double kAnyInlierGain = std::numeric_limits<double>::min();
 
-// How clearly `to` fits `layer` better than `from`: the points that are
-// inliers at `to` and not at `from`, net of the reverse, over the square
-// root of all that changed (a z-score, as the probe's evidence).
-double InlierGainEvidence(const Context& c,
-                          const NdtLayer& layer,
-                          const Vector6d& from,
-                          const Vector6d& to) {
+// How the inliers of `layer` change from pose `from` to pose `to`.
+struct InlierChange {
+  double before = 0.0;  // Inliers at `from`.
+  double gained = 0.0;  // Inliers at `to` and not at `from`.
+  double lost = 0.0;    // Inliers at `from` and not at `to`.
+  // How clearly `to` fits better: the gain net of the loss over the square
+  // root of all that changed (a z-score, as the probe's evidence).
+  double evidence() const {
+    return (gained - lost) / std::sqrt(std::max(gained + lost, 1.0));
+  }
+  // The share of the inliers at `from` that `to` keeps, net (the probe's).
+  double kept() const { return 1.0 - (lost - gained) / std::max(before, 1.0); }
+};
+
+InlierChange ChangeOfInliers(const Context& c,
+                             const NdtLayer& layer,
+                             const Vector6d& from,
+                             const Vector6d& to) {
   const Isometry3d a = PoseVectorToIsometry(from);
   const Isometry3d b = PoseVectorToIsometry(to);
   const double gate = c.options.quality_check.inlier_gate;
   const UnmatchedPolicy policy = c.options.objective.unmatched_policy;
-  double gained = 0.0, lost = 0.0;
+  InlierChange change;
   for (const Eigen::Vector3d& p : c.problem.points) {
     const bool at_a = MatchPoint(layer, a * p, policy).IsInlier(gate);
     const bool at_b = MatchPoint(layer, b * p, policy).IsInlier(gate);
-    gained += at_b && !at_a;
-    lost += at_a && !at_b;
+    change.before += at_a;
+    change.gained += at_b && !at_a;
+    change.lost += at_a && !at_b;
   }
-  return (gained - lost) / std::sqrt(std::max(gained + lost, 1.0));
+  return change;
+}
+
+// ChangeOfInliers' evidence.
+double InlierGainEvidence(const Context& c,
+                          const NdtLayer& layer,
+                          const Vector6d& from,
+                          const Vector6d& to) {
+  return ChangeOfInliers(c, layer, from, to).evidence();
 }
 
 // The translation of reference_from_input at `xi_local`: where the input's
@@ -450,24 +470,43 @@ bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
   return false;
 }
 
-// Step 4's second part, on a result at least as flat as the search needs:
-// the scene's own minimum may lie beyond the pattern's, along the
-// translation the planar cells constrain least (a road seen within 8 m, or
-// ahead in a 30 deg wedge: 0.7-1.5 m ahead). The last layer runs from the
-// result moved that way and back by (1 + reach) cell edges: out of the
+// True when `attempt` keeps at least `min_share` of its planar cells'
+// inliers one cell edge along d, each way (the probe's flatness,
+// quality_check.h, on the planar cells along one translation).
+bool KeepsPlanarInliersAlong(const Context& c,
+                             const Attempt& attempt,
+                             const Vector6d& d,
+                             double min_share) {
+  const Isometry3d pose = PoseVectorToIsometry(attempt.xi_local);
+  for (const double sign : {1.0, -1.0}) {
+    const Vector6d moved = IsometryToPoseVector(MovedAlong(
+        pose, sign * d, c.problem.last().cell_size(), c.problem.rms_range_m));
+    if (ChangeOfInliers(c, c.problem.planar_last(), attempt.xi_local, moved)
+            .kept() < min_share) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Step 4's second part: the scene's own minimum may lie beyond the
+// pattern's, along d, the translation the planar cells constrain least (a
+// road seen within 8 m, or ahead in a 30 deg wedge: 0.7-1.5 m ahead). Only
+// where they keep as many of their inliers one cell edge along d as the
+// search (step 3) needs of the flattest direction can such a minimum lie
+// near (koide3's d, constrained, keeps 20 %). The last layer runs from the
+// result moved along d and back by (1 + reach) cell edges: out of the
 // pattern's reach and of its neighbouring cells' pull. A minimum in another
 // basin that fits BetterBeyondThePattern replaces the result
 // (ReplaceAtTheCoincidence).
 void LookBeyondThePattern(const Context& c, Attempt* attempt) {
-  // As the search (step 3): only where a cell edge away fits nearly as
-  // well can another minimum lie near.
-  if (attempt->constraints.flatness <
-      c.options.retry.weak_direction_min_flatness) {
-    return;
-  }
   Vector6d d = Vector6d::Zero();
   d.head<3>() = attempt->constraints.weakest_translations.col(0);
-  if (d.isZero()) return;
+  if (d.isZero() ||
+      !KeepsPlanarInliersAlong(
+          c, *attempt, d, c.options.retry.weak_direction_min_flatness)) {
+    return;
+  }
   Attempt found;
   if (BetterMinimumAlong(c,
                          *attempt,

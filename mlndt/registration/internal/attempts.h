@@ -36,16 +36,16 @@
 //     a converged minimum with clearly more inliers replaces the result.
 //     The result stands when the last layer returns to it and the planar
 //     cells' inliers do not prefer where they led; otherwise it is
-//     LOW_QUALITY. A result that stands and is as flat as the search in 3
-//     needs is moved (1 + reach) cell edges along the translation the
-//     planar cells constrain least, each way, and the last layer runs from
-//     there as in 2: the scene's own minimum can lie beyond the pattern's
-//     (a road seen within 8 m, or in a 30 deg wedge ahead, 0.7-1.5 m
-//     ahead). A converged one with more inliers replaces the result (there
-//     the pattern adds inliers to the result: no margin is asked), and so
-//     does one where the planar cells hold clearly more inliers (1 standard
-//     deviation), LOW_QUALITY when the whole last layer prefers the result:
-//     the rings and the scene disagree;
+//     LOW_QUALITY. A result that stands, and whose planar cells keep as
+//     many of their inliers one cell edge along the translation they
+//     constrain least as the search in 3 needs, is moved (1 + reach) cell
+//     edges along it, each way, and the last layer runs from there as in 2: the
+//     scene's own minimum can lie beyond the pattern's (a road seen within 8 m,
+//     or in a 30 deg wedge ahead, 0.7-1.5 m ahead). A converged one with more
+//     inliers replaces the result (there the pattern adds inliers to the
+//     result: no margin is asked), and so does one where the planar cells hold
+//     clearly more inliers (1 standard deviation), LOW_QUALITY when the whole
+//     last layer prefers the result: the rings and the scene disagree;
 //  5. until a result converges and passes the checks: the schedule again
 //     from the guess turned about the input's centroid by each yaw seed
 //     (retry), each result checked as in 4; the best verdict wins, then the
