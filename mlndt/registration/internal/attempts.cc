@@ -237,6 +237,7 @@ struct InlierChange {
   double kept() const { return 1.0 - (lost - gained) / std::max(before, 1.0); }
 };
 
+// The inliers of `layer` at `from` and `to`, one lookup each per point.
 InlierChange ChangeOfInliers(const Context& c,
                              const NdtLayer& layer,
                              const Vector6d& from,
