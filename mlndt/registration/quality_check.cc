@@ -155,14 +155,6 @@ std::vector<bool> InlierFlags(const std::vector<PointMatch>& matches,
   return inlier;
 }
 
-// How much worse the fit is one cell edge away along d, the weaker of the
-// two ways: `kept`, the share of the inliers left; `evidence`, the inliers
-// lost net of those gained over the square root of all that changed.
-struct Probe {
-  double kept = 1.0;
-  double evidence = std::numeric_limits<double>::infinity();
-};
-
 Probe ProbeDirection(const NdtLayer& layer,
                      const std::vector<Eigen::Vector3d>& input_points,
                      const Isometry3d& pose,
@@ -289,6 +281,26 @@ Isometry3d MovedAlong(const Isometry3d& pose,
   }
   moved.translation() += step_m * d.head<3>();
   return moved;
+}
+
+Probe ProbeAlong(const NdtLayer& layer,
+                 const std::vector<Eigen::Vector3d>& input_points,
+                 const Vector6d& reference_from_input_xi,
+                 const ObjectiveOptions& objective,
+                 double rms_range_m,
+                 double gate,
+                 const Vector6d& d) {
+  const std::vector<bool> inlier = InlierFlags(
+      MatchAtSolution(layer, input_points, reference_from_input_xi, objective),
+      gate);
+  return ProbeDirection(layer,
+                        input_points,
+                        PoseVectorToIsometry(reference_from_input_xi),
+                        objective,
+                        rms_range_m,
+                        gate,
+                        inlier,
+                        d);
 }
 
 ConstraintAnalysis AnalyseConstraints(

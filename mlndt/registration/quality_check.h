@@ -32,6 +32,7 @@
 //    surfaces across it: 7-17 % of the inliers (ProbeDirection in
 //    quality_check.cc).
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,25 @@ Isometry3d MovedAlong(const Isometry3d& pose,
                       const Vector6d& d,
                       double step_m,
                       double rms_range_m);
+
+// How much worse the fit is one cell edge away along d, the weaker of the
+// two ways: `kept`, the share of the inliers left; `evidence`, the inliers
+// lost net of those gained over the square root of all that changed.
+struct Probe {
+  double kept = 1.0;
+  double evidence = std::numeric_limits<double>::infinity();
+};
+
+// The probe of AnalyseConstraints along the scaled direction d (as
+// MovedAlong moves the pose), one cell edge of `layer`, for the points moved
+// by xi; `gate` as QualityCheckOptions::inlier_gate.
+Probe ProbeAlong(const NdtLayer& layer,
+                 const std::vector<Eigen::Vector3d>& input_points,
+                 const Vector6d& reference_from_input_xi,
+                 const ObjectiveOptions& objective,
+                 double rms_range_m,
+                 double gate,
+                 const Vector6d& d);
 
 // A cell direction counts as thin when its variance is below this fraction
 // of the cell's largest.

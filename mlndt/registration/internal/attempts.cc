@@ -223,46 +223,25 @@ constexpr double kMinInlierGainEvidence = 1.0;
 // scan pattern needs (step 4).
 constexpr double kAnyInlierGain = std::numeric_limits<double>::min();
 
-// How the inliers of `layer` change from pose `from` to pose `to`.
-struct InlierChange {
-  double before = 0.0;  // Inliers at `from`.
-  double gained = 0.0;  // Inliers at `to` and not at `from`.
-  double lost = 0.0;    // Inliers at `from` and not at `to`.
-  // How clearly `to` fits better: the gain net of the loss over the square
-  // root of all that changed (a z-score, as the probe's evidence).
-  double evidence() const {
-    return (gained - lost) / std::sqrt(std::max(gained + lost, 1.0));
-  }
-  // The share of the inliers at `from` that `to` keeps, net (the probe's).
-  double kept() const { return 1.0 - (lost - gained) / std::max(before, 1.0); }
-};
-
-// The inliers of `layer` at `from` and `to`, one lookup each per point.
-InlierChange ChangeOfInliers(const Context& c,
-                             const NdtLayer& layer,
-                             const Vector6d& from,
-                             const Vector6d& to) {
-  const Isometry3d a = PoseVectorToIsometry(from);
-  const Isometry3d b = PoseVectorToIsometry(to);
-  const double gate = c.options.quality_check.inlier_gate;
-  const UnmatchedPolicy policy = c.options.objective.unmatched_policy;
-  InlierChange change;
-  for (const Eigen::Vector3d& p : c.problem.points) {
-    const bool at_a = MatchPoint(layer, a * p, policy).IsInlier(gate);
-    const bool at_b = MatchPoint(layer, b * p, policy).IsInlier(gate);
-    change.before += at_a;
-    change.gained += at_b && !at_a;
-    change.lost += at_a && !at_b;
-  }
-  return change;
-}
-
-// ChangeOfInliers' evidence.
+// How clearly `to` fits `layer` better than `from`: the points that are
+// inliers at `to` and not at `from`, net of the reverse, over the square
+// root of all that changed (a z-score, as the probe's evidence).
 double InlierGainEvidence(const Context& c,
                           const NdtLayer& layer,
                           const Vector6d& from,
                           const Vector6d& to) {
-  return ChangeOfInliers(c, layer, from, to).evidence();
+  const Isometry3d a = PoseVectorToIsometry(from);
+  const Isometry3d b = PoseVectorToIsometry(to);
+  const double gate = c.options.quality_check.inlier_gate;
+  const UnmatchedPolicy policy = c.options.objective.unmatched_policy;
+  double gained = 0.0, lost = 0.0;
+  for (const Eigen::Vector3d& p : c.problem.points) {
+    const bool at_a = MatchPoint(layer, a * p, policy).IsInlier(gate);
+    const bool at_b = MatchPoint(layer, b * p, policy).IsInlier(gate);
+    gained += at_b && !at_a;
+    lost += at_a && !at_b;
+  }
+  return (gained - lost) / std::sqrt(std::max(gained + lost, 1.0));
 }
 
 // The translation of reference_from_input at `xi_local`: where the input's
@@ -471,31 +450,13 @@ bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
   return false;
 }
 
-// True when `attempt` keeps at least `min_share` of its planar cells'
-// inliers one cell edge along d, each way (the probe's flatness,
-// quality_check.h, on the planar cells along one translation).
-bool KeepsPlanarInliersAlong(const Context& c,
-                             const Attempt& attempt,
-                             const Vector6d& d,
-                             double min_share) {
-  const Isometry3d pose = PoseVectorToIsometry(attempt.xi_local);
-  for (const double sign : {1.0, -1.0}) {
-    const Vector6d moved = IsometryToPoseVector(MovedAlong(
-        pose, sign * d, c.problem.last().cell_size(), c.problem.rms_range_m));
-    if (ChangeOfInliers(c, c.problem.planar_last(), attempt.xi_local, moved)
-            .kept() < min_share) {
-      return false;
-    }
-  }
-  return true;
-}
-
 // Step 4's second part: the scene's own minimum may lie beyond the
 // pattern's, along d, the translation the planar cells constrain least (a
 // road seen within 8 m, or ahead in a 30 deg wedge: 0.7-1.5 m ahead). Only
-// where they keep as many of their inliers one cell edge along d as the
-// search (step 3) needs of the flattest direction can such a minimum lie
-// near (koide3's d, constrained, keeps 20 %). The last layer runs from the
+// where they keep as many of their inliers one cell edge along d (their
+// ProbeAlong, quality_check.h) as the search (step 3) needs of the flattest
+// direction can such a minimum lie near (koide3's d, constrained, keeps
+// 20 %). The last layer runs from the
 // result moved along d and back by (1 + reach) cell edges: out of the
 // pattern's reach and of its neighbouring cells' pull. A minimum in another
 // basin that fits BetterBeyondThePattern replaces the result
@@ -504,8 +465,14 @@ void LookBeyondThePattern(const Context& c, Attempt* attempt) {
   Vector6d d = Vector6d::Zero();
   d.head<3>() = attempt->constraints.weakest_translations.col(0);
   if (d.isZero() ||
-      !KeepsPlanarInliersAlong(
-          c, *attempt, d, c.options.retry.weak_direction_min_flatness)) {
+      ProbeAlong(c.problem.planar_last(),
+                 c.problem.points,
+                 attempt->xi_local,
+                 c.options.objective,
+                 c.problem.rms_range_m,
+                 c.options.quality_check.inlier_gate,
+                 d)
+              .kept < c.options.retry.weak_direction_min_flatness) {
     return;
   }
   Attempt found;
