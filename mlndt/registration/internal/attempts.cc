@@ -194,6 +194,31 @@ StageControl SubsetControl(const Context& c) {
   return control;
 }
 
+// The last layer alone from `start`, unassessed. A run the iteration cap
+// stopped goes on once from where it stopped: a candidate of the search
+// starts a cell edge or more from its minimum and can still be sliding along
+// a weak direction when the cap ends it (a road seen within 8 m), and an
+// unconverged solution cannot compete with a converged one.
+Attempt SolveLastLayer(const Context& c, const Vector6d& start) {
+  const int n = c.problem.map.num_layers();
+  Attempt attempt = Solve(c, n, start, /*assess=*/false);
+  if (attempt.schedule.termination_type != TerminationType::NO_CONVERGENCE) {
+    return attempt;
+  }
+  Attempt resumed = Solve(c, n, attempt.xi_local, /*assess=*/false);
+  ScheduleSummary& s = resumed.schedule;
+  s.trace.insert(s.trace.begin(),
+                 attempt.schedule.trace.begin(),
+                 attempt.schedule.trace.end());
+  for (size_t i = 0; i < s.trace.size(); ++i) {
+    s.trace[i].iteration = static_cast<int>(i) + 1;
+  }
+  for (size_t i = 0; i < s.iterations_per_layer.size(); ++i) {
+    s.iterations_per_layer[i] += attempt.schedule.iterations_per_layer[i];
+  }
+  return resumed;
+}
+
 // The last layer alone from `start`, first over every s-th sample (s =
 // schedule.max_coarse_point_stride) and over all of them only when that
 // leads out of best's basin: true, with the (unassessed) solution in
@@ -207,7 +232,7 @@ bool LastLayerInAnotherBasin(const Context& c,
        !AnotherBasin(c, start, best.xi_local))) {
     return false;
   }
-  *candidate = Solve(c, c.problem.map.num_layers(), start, /*assess=*/false);
+  *candidate = SolveLastLayer(c, start);
   return candidate->schedule.termination_type != TerminationType::FAILURE &&
          AnotherBasin(c, candidate->xi_local, best.xi_local);
 }
