@@ -51,7 +51,11 @@
 //     from the guess turned about the input's centroid by each yaw seed
 //     (retry), each result checked as in 4; the best verdict wins, then the
 //     most inliers (every attempt scores the same points on the same last
-//     layer).
+//     layer);
+//  6. a converged result is DEGENERATE when a solution that any of these
+//     runs converged to lies more than half a last-layer cell edge away and
+//     has not clearly fewer inliers (InlierGainEvidence > -1): the data do
+//     not decide between the two, and the direction to it is unbounded.
 
 #include <cstdint>
 #include <memory>
@@ -106,7 +110,7 @@ struct AttemptsCost {
   int64_t point_iterations = 0;
 };
 
-// Runs 1-5 above.
+// Runs 1-6 above.
 Attempt SolveAttempts(const RegistrationOptions& options,
                       const Problem& problem,
                       const Vector6d& initial_local,
