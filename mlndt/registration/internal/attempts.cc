@@ -551,7 +551,7 @@ Vector6d ScaledDifference(const Isometry3d& a,
 // Step 6 above: a converged result is DEGENERATE when a distinct minimum
 // that a run converged to fits as well: the data do not decide between the
 // two (the KITTI input cropped to 8 m, 1->2: where the sensors coincide and
-// 0.64 m ahead, 91 % and 90 % of the points are inliers). The direction
+// 0.63 m ahead, 91 % and 90 % of the points are inliers). The direction
 // from the result to it is named, and unbounded in the covariance.
 void FlagAnotherMinimumAsGood(const Context& c, Attempt* best) {
   if (best->verdict != TerminationType::CONVERGENCE) return;
