@@ -22,8 +22,9 @@
 //     (Eq. 10) replaces it, and the search goes on from there for up to
 //     retry.weak_direction_rounds rounds: a weakly constrained direction (a
 //     road seen within a few metres, a sparse hand-held scan) holds several
-//     minima, and the one the schedule found need not be the best. A last-layer run of steps
-//     2-4 that the iteration cap stops goes on once from where it stopped;
+//     minima, and the one the schedule found need not be the best. A
+//     last-layer run of steps 2-4 that the iteration cap stops goes on once
+//     from where it stopped;
 //  4. the scan-pattern check, when the result converged within
 //     retry.scan_pattern_reach_cells last-layer cell edges of a zero
 //     translation. Where the two sensors coincide, a spinning LiDAR's rings
