@@ -228,8 +228,9 @@ TEST(WeakGeometry, AWedgeAheadIsNotHeldWhereTheSensorsCoincide) {
 // search's minima ahead fit about as well. The scan-pattern check also runs
 // the last layer from the result moved 1.5 cell edges along the translation
 // the planar cells constrain least, both ways, and the scene's own minimum
-// ahead has more inliers. For 0->1 it has only a few more (z = 0.77), so
-// the right pose it reaches stays DEGENERATE.
+// ahead has more inliers. For 0->1 it has only a few more (z = 0.77): the
+// minimum where the sensors coincide fits about as well, and the right pose
+// it reaches is DEGENERATE.
 TEST(WeakGeometry, TheNearCropsMinimumBeyondTheRingsIsFound) {
   const FramePairs ahead = {{0, 1}, {1, 3}, {2, 4}, {3, 5}, {5, 7}, {6, 7}};
   RegistrationOptions unchecked;
