@@ -162,19 +162,24 @@ bool KeepBetter(Attempt candidate, Attempt* best) {
   return false;
 }
 
-// True when the two poses lie farther apart than a tenth of a last-layer
-// cell (rotation at the points' RMS range): different basins, of which the
-// better fit is kept. Closer, they are one minimum where each run stopped,
-// and the first is kept, so that the result does not flip between the two
-// on round-off.
+// How far apart two poses lie, in last-layer cell edges: the translation
+// plus the rotation at the points' RMS range.
+double CellsApart(const Context& c, const Vector6d& a, const Vector6d& b) {
+  const Isometry3d pose_a = PoseVectorToIsometry(a);
+  const Isometry3d pose_b = PoseVectorToIsometry(b);
+  return (TranslationErrorM(pose_a, pose_b) +
+          RotationErrorRad(pose_a, pose_b) * c.problem.rms_range_m) /
+         c.problem.last().cell_size();
+}
+
+// True when the two poses lie more than a tenth of a last-layer cell apart
+// (CellsApart): different basins, of which the better fit is kept. Closer,
+// they are one minimum where each run stopped, and the first is kept, so
+// that the result does not flip between the two on round-off.
 bool AnotherBasin(const Context& c,
                   const Vector6d& xi_local,
                   const Vector6d& best_xi_local) {
-  const Isometry3d a = PoseVectorToIsometry(xi_local);
-  const Isometry3d b = PoseVectorToIsometry(best_xi_local);
-  const double apart_m =
-      TranslationErrorM(a, b) + RotationErrorRad(a, b) * c.problem.rms_range_m;
-  return apart_m > 0.1 * c.problem.map.layer_info().back().cell_size_m;
+  return CellsApart(c, xi_local, best_xi_local) > 0.1;
 }
 
 // Where a stage on `layer` (the last layer, or step 4's planar one) leads
@@ -534,10 +539,10 @@ void CheckTheScanPattern(const Context& c, Attempt* attempt) {
   }
 }
 
-// Two minima farther apart than this many last-layer cell edges (rotation
-// at the points' RMS range) are distinct: within half a cell most points
-// keep their cells, and the hand-held Livox pairs' wide basins hold minima
-// up to 0.4 cell edges apart that fit as well (docs/trust.md).
+// Two minima more than this many last-layer cell edges apart (CellsApart)
+// are distinct: within half a cell most points keep their cells, and the
+// hand-held Livox pairs' wide basins hold minima up to 0.4 cell edges apart
+// that fit as well (docs/trust.md).
 constexpr double kDistinctMinimaCells = 0.5;
 
 // A distinct minimum fits as well as the result unless it holds clearly
@@ -562,21 +567,21 @@ Vector6d ScaledDifference(const Isometry3d& a,
 // from the result to it is named, and unbounded in the covariance.
 void FlagAnotherMinimumAsGood(const Context& c, Attempt* best) {
   if (best->verdict != TerminationType::CONVERGENCE) return;
-  const Isometry3d result = PoseVectorToIsometry(best->xi_local);
   for (const Vector6d& minimum : *c.minima) {
-    const Vector6d d = ScaledDifference(
-        result, PoseVectorToIsometry(minimum), c.problem.rms_range_m);
-    if (d.norm() <= kDistinctMinimaCells * c.problem.last().cell_size() ||
+    if (CellsApart(c, best->xi_local, minimum) <= kDistinctMinimaCells ||
         InlierGainEvidence(c, c.problem.last(), best->xi_local, minimum) <
             -kAsGoodInlierEvidence) {
       continue;
     }
+    const Isometry3d result = PoseVectorToIsometry(best->xi_local);
+    const Isometry3d other = PoseVectorToIsometry(minimum);
+    const Vector6d d = ScaledDifference(result, other, c.problem.rms_range_m);
     char apart[64];
     std::snprintf(apart,
                   sizeof(apart),
                   "%.2f m and %.2f deg",
-                  d.head<3>().norm(),
-                  d.tail<3>().norm() / c.problem.rms_range_m / kDegToRad);
+                  TranslationErrorM(result, other),
+                  RotationErrorRad(result, other) * kRadToDeg);
     best->constraints.degenerate_directions.push_back(d.normalized());
     best->verdict = TerminationType::DEGENERATE;
     best->verdict_message =
