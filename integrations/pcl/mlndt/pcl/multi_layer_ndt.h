@@ -11,11 +11,15 @@
 //   if (ndt.hasConverged()) use(ndt.getFinalTransformation());
 //
 // What each PCL call means here:
-//  * setInputTarget: the target becomes the ML-NDT reference map, built at
-//    the next align() and kept for every align() after it until the target
-//    or an option the map depends on (range_filter, grid) changes. PCL's
-//    k-d tree of the target (for getFitnessScore) is built by
-//    pcl::Registration at the first align(), as for PCL's own NDT.
+//  * setInputTarget: the target becomes the ML-NDT reference map, built
+//    there and then (as PCL's NDT and ndt_omp build their grids) and kept
+//    for every align() until the target changes. Changing an option the
+//    map depends on (range_filter, grid: setResolution,
+//    setMinPointPerVoxel, setOptions) rebuilds it at the next align(). A
+//    map that cannot be built is reported there and then (PCL's console)
+//    and by every align() (FAILURE). PCL's k-d tree of the target (for
+//    getFitnessScore) is built by pcl::Registration at the first align(),
+//    as for PCL's own NDT.
 //  * setInputSource / setIndices: the points registered; align()'s output is
 //    them moved by getFinalTransformation().
 //  * align(output, guess): mlndt::Register(options, map, source, guess). The
@@ -140,8 +144,7 @@ class MultiLayerNdt
   // R = Rx(alpha) Ry(beta) Rz(gamma) (ML-NDT Eqs. 7 and 11), at the
   // solution; infinite along degenerate directions, zero when unknown.
   const Matrix6d& getCovariance() const { return summary_.covariance; }
-  // The reference map of the current target (empty before the first
-  // align() after setInputTarget).
+  // The reference map of the current target (empty when there is none).
   const LayeredGrid& getTargetMap() const { return map_; }
   // Non-finite points dropped from the last align()'s source and from the
   // current target.
@@ -188,8 +191,9 @@ class MultiLayerNdt
   double outlier_ratio_ = 0.55;  // PCL NDT's default; no effect.
 
   LayeredGrid map_;
-  bool map_stale_ = true;  // The target changed since map_ was built.
-  std::string map_error_;  // Why the last build failed ("" when it did not).
+  bool map_stale_ = true;    // The target changed since map_ was built.
+  std::string map_error_;    // Why the last build failed ("" when it did not).
+  double map_time_s_ = 0.0;  // The last build's wall time [s].
   RangeFilterOptions map_range_filter_;  // map_'s options.
   LayeredGridOptions map_grid_;
 

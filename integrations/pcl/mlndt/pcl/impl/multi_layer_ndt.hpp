@@ -93,6 +93,16 @@ void MultiLayerNdt<PointSource, PointTarget>::setInputTarget(
     return;
   }
   Base::setInputTarget(cloud);
+  // Options that are not valid yet are reported by align().
+  const RegistrationOptions options = getOptions();
+  std::string error;
+  bool built = false;
+  if (options.IsValid(&error) && !UpdateMap(options, &built, &error)) {
+    ::pcl::console::print(::pcl::console::L_ERROR,
+                          "[mlndt::pcl::%s::setInputTarget] %s\n",
+                          this->getClassName().c_str(),
+                          error.c_str());
+  }
 }
 
 template <typename PointSource, typename PointTarget>
@@ -172,10 +182,12 @@ bool MultiLayerNdt<PointSource, PointTarget>::UpdateMap(
     map_range_filter_ = options.range_filter;
     map_ = LayeredGrid();
     map_error_.clear();
+    const double start_s = NowSeconds();
     const PointCloud target = ToPointCloud(*target_, &target_dropped_);
     if (!internal::BuildTargetMap(options, target, &map_, &map_error_)) {
       map_ = LayeredGrid();
     }
+    map_time_s_ = NowSeconds() - start_s;
   }
   if (map_error_.empty()) return true;
   *error = "target map: " + map_error_;
@@ -214,7 +226,6 @@ void MultiLayerNdt<PointSource, PointTarget>::computeTransformation(
   nr_iterations_ = 0;
   previous_transformation_ = guess;
   summary_ = RegistrationSummary();
-  const double start_s = NowSeconds();
   const RegistrationOptions options = getOptions();
   std::string error;
   if (!CheckPclSettings(&error) || !options.IsValid(&error)) {
@@ -222,7 +233,7 @@ void MultiLayerNdt<PointSource, PointTarget>::computeTransformation(
   }
   bool built = false;
   if (!UpdateMap(options, &built, &error)) return Fail(error, guess, &output);
-  const double map_time_s = built ? NowSeconds() - start_s : 0.0;
+  const double map_time_s = built ? map_time_s_ : 0.0;
   Isometry3d initial;
   if (!ToIsometry(guess, &initial, &error)) {
     return Fail("the guess: " + error, guess, &output);
