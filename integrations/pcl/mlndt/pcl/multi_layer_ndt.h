@@ -69,6 +69,12 @@
 // accepts (PCL_ADD_POINT4D). getFitnessScore needs PointSource ==
 // PointTarget (pcl::Registration searches the target's k-d tree with source
 // points).
+//
+// The target goes through options.range_filter as mlndt's reference does
+// (points near the origin, a saturated largest range): for a map in a world
+// frame set range_filter.min_range_m and saturated_range_fraction to 0.
+// Inside namespace mlndt, `pcl::` names this namespace: write `::pcl::`
+// there (PCL's PCL_ERROR-style macros do not compile there).
 
 #include <pcl/point_cloud.h>
 #include <pcl/registration/registration.h>

@@ -69,7 +69,7 @@ void MultiLayerNdt<PointSource, PointTarget>::setInputSource(
         this->getClassName().c_str(),
         cloud ? "empty" : "null");
     input_.reset();
-    ClearResult("setInputSource: the source cloud was refused (empty)");
+    ClearResult("setInputSource: the source cloud was refused (empty or null)");
     return;
   }
   Base::setInputSource(cloud);
@@ -89,7 +89,7 @@ void MultiLayerNdt<PointSource, PointTarget>::setInputTarget(
         this->getClassName().c_str(),
         cloud ? "empty" : "null");
     target_.reset();
-    ClearResult("setInputTarget: the target cloud was refused (empty)");
+    ClearResult("setInputTarget: the target cloud was refused (empty or null)");
     return;
   }
   Base::setInputTarget(cloud);
