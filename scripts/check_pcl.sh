@@ -3,10 +3,11 @@
 #  1. configures build-pcl/ with -DMLNDT_WITH_PCL=ON (tools, benchmarks and
 #     Python off) and builds the library and the adapter's tests only;
 #  2. runs the tests (ctest -R '^pcl/');
-#  3. installs to a temporary prefix and builds examples/pcl_ndt as an
-#     outside project with find_package(mlndt COMPONENTS pcl): PCL's NDT
-#     tutorial with pcl::NormalDistributionsTransform and with only the type
-#     changed to mlndt::pcl::MultiLayerNdt;
+#  3. installs to a fresh prefix (build-pcl/check_pcl/install) and builds
+#     examples/pcl_ndt against it as an outside project with
+#     find_package(mlndt COMPONENTS pcl): PCL's NDT tutorial with
+#     pcl::NormalDistributionsTransform and with only the type changed to
+#     mlndt::pcl::MultiLayerNdt;
 #  4. runs both on data/room; the mlndt one must report convergence and land
 #     within 5 cm of the pair's reference pose.
 # Needs libpcl-dev (scripts/install_deps.sh --with-pcl). Uses ccache when it
@@ -20,11 +21,13 @@ if command -v ccache > /dev/null; then
   export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
-prefix="$(mktemp -d)"
-trap 'rm -rf "$prefix"' EXIT
+# The install prefix and the outside build, under build-pcl/ (fresh each run;
+# a fixed path inside the tree lets ccache reuse the examples' objects).
+prefix="$root/build-pcl/check_pcl"
+rm -rf "$prefix"
+mkdir -p "$prefix"
 step() { echo "check_pcl: $*"; }
 run() { "$@" >> "$log" 2>&1 || { tail -40 "$log"; echo "check_pcl: failed: $*" >&2; exit 1; }; }
-mkdir -p build-pcl
 : > "$log"
 
 step "configure and build build-pcl/ (mlndt, mlndt_pcl_test)"
@@ -38,7 +41,7 @@ ctest --test-dir build-pcl -R '^pcl/' --output-on-failure -j"$(nproc)" \
   --timeout 120 >> "$log" 2>&1 || { grep -E "tests passed|Failed|\*\*\*" "$log" | tail -30; exit 1; }
 grep -E "tests passed" "$log" | tail -1
 
-step "install to a temporary prefix; build examples/pcl_ndt against it"
+step "install to build-pcl/check_pcl/install; build examples/pcl_ndt against it"
 run cmake --install build-pcl --prefix "$prefix/install"
 run cmake -S examples/pcl_ndt -B "$prefix/example" -DCMAKE_BUILD_TYPE=Release \
   "${launcher[@]}" -DCMAKE_PREFIX_PATH="$prefix/install"
