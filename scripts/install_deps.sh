@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages mlndt needs, only those that are missing.
-#   scripts/install_deps.sh [--with-pcl]
+#   scripts/install_deps.sh [--with-pcl] [--with-ros]
 # --with-pcl also installs libpcl-dev (large), for -DMLNDT_WITH_PCL=ON.
+# --with-ros also installs Debian's ROS 1 (roscore, roslaunch, rosbag, roscpp,
+# tf2_ros, the messages, rospy's message modules for the tests, RViz, Xvfb
+# and xwd), for -DMLNDT_WITH_ROS=ON (integrations/ros, scripts/check_ros.sh).
 # clang, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) and
 # libomp-dev (OpenMP for clang) are for .ci/fuzz; g++'s own ASan, UBSan and
 # TSan runtimes (.ci/sanitize) come with g++.
@@ -26,8 +29,14 @@ packages=(
 for arg in "$@"; do
   case "$arg" in
     --with-pcl) packages+=(libpcl-dev) ;;
+    --with-ros)
+      packages+=(ros-core-dev libroscpp-dev libtf2-ros-dev libnav-msgs-dev
+        libdiagnostic-msgs-dev python3-rosbag python3-roslaunch rosbash catkin
+        python3-nav-msgs python3-diagnostic-msgs python3-tf2-msgs python3-std-srvs
+        rviz xvfb x11-apps)
+      ;;
     *)
-      echo "install_deps: unknown argument '$arg' (usage: $0 [--with-pcl])" >&2
+      echo "install_deps: unknown argument '$arg' (usage: $0 [--with-pcl] [--with-ros])" >&2
       exit 1
       ;;
   esac

@@ -6,32 +6,22 @@
 // Debian packages (librosbag-storage-dev, libsensor-msgs-dev) when CMake
 // finds them (MLNDT_WITH_ROSBAG); without them Open says so.
 //
-// Per-point time fields, by name: "time" (float32/64 s, Velodyne drivers),
-// "t" (uint32 ns, Ouster), "offset_time" (uint32 ns, Livox), "timestamp"
-// (float64 s, Hesai; absolute when larger than 1e6 s, then made relative to
-// the header stamp). Non-finite points are dropped with their times, as the
-// file readers drop them (mlndt/cloud/io.h).
+// The messages are decoded by DecodePointCloud2 (point_cloud2.h, which
+// names the per-point time fields it reads), the decoder the ROS nodes use.
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "mlndt/cloud/point_cloud.h"
+#include "lab/io/point_cloud2.h"
 
 namespace mlndt {
 
 // Whether this build reads ROS 1 bags.
 bool RosBagSupported();
 
-struct BagScan {
-  double stamp_s = 0.0;  // header.stamp [s].
-  std::string frame_id;
-  PointCloud cloud;  // Sensor frame, finite points.
-  // One per point of `cloud`, relative to stamp_s [s]; empty without a time
-  // field.
-  std::vector<double> point_times_s;
-  std::string time_field;  // The field the times came from, or "".
-};
+// One message of the topic (point_cloud2.h).
+using BagScan = PointCloud2Scan;
 
 class RosBagScans {
  public:
