@@ -27,6 +27,10 @@ forbid lab 'tools/' "the tools (mlndt <- lab <- tools)"
 forbid lab 'gflags/' "gflags (flags belong to tools/)"
 forbid python 'lab/|tools/' "the lab or the tools (python/ is the product: mlndt binds the library only)"
 forbid lab/python 'tools/' "the tools (mlndt_lab binds the lab)"
+forbid mlndt 'integrations/' "an integration (integrations/ builds on the library)"
+forbid lab 'integrations/' "an integration (integrations/ builds on the library)"
+forbid tools 'integrations/' "an integration (integrations/ builds on the library)"
+forbid integrations/ros/core '(ros|rclcpp|tf2_ros|tf2|sensor_msgs|nav_msgs|geometry_msgs|diagnostic_msgs)/' "a middleware header (the node core is middleware-free)"
 # Python: an import statement or importlib.import_module naming the lab's
 # module (mlndt_lab, its extension _lab, the old submodule mlndt.lab) or a
 # path into lab/ (sys.path, spec_from_file_location).

@@ -30,6 +30,8 @@ exists() {
   # made only of path characters (checked by the caller's regex).
   for expanded in $(eval "echo $pattern"); do
     compgen -G "$expanded" > /dev/null && return 0
+    # An integration's header, named as it is included (mlndt/pcl/...).
+    compgen -G "integrations/*/$expanded" > /dev/null && return 0
   done
   return 1
 }

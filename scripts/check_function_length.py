@@ -20,7 +20,7 @@ import re
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DEFAULT_DIRS = ["mlndt", "lab", "tools", "python/src"]
+DEFAULT_DIRS = ["mlndt", "lab", "tools", "python/src", "integrations"]
 CONTAINER = re.compile(r"\b(namespace|class|struct|union|enum)\b|extern\s*\"C\"")
 # A function head: `...)` then qualifiers or a trailing return type.
 FUNCTION_HEAD = re.compile(
