@@ -24,6 +24,8 @@ packages=(
   # ROS 1 bags in the tools (lab/io, MLNDT_WITH_ROSBAG) and the bag written
   # by the tests (python3-rosbag, python3-sensor-msgs).
   librosbag-storage-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs
+  # The lab's LiDAR simulator (lab/sim, MLNDT_WITH_EMBREE): Embree 3.
+  libembree-dev
 )
 
 for arg in "$@"; do

@@ -16,6 +16,8 @@ using Json = nlohmann::json;
 // How far R^T R may be from the identity (and det R from 1); the files
 // print 6-9 significant digits. As ReadKittiPoses (pose_io.h).
 constexpr double kRotationTolerance = 1e-3;
+// How far a free direction's length may be from 1.
+constexpr double kUnitTolerance = 1e-6;
 
 bool ParseIndex(const std::string& text, int64_t* value) {
   if (text.empty() || text.front() == '-' || text.front() == '+') return false;
@@ -77,6 +79,40 @@ bool ReadSpread(const Json& value, double* spread, std::string* problem) {
   return true;
 }
 
+// "free_directions": an array of unit 6-vectors. False with *problem.
+bool ReadFreeDirections(const Json& value,
+                        std::vector<Vector6d>* directions,
+                        std::string* problem) {
+  if (!value.is_array()) {
+    *problem = "expected an array of 6-number arrays";
+    return false;
+  }
+  for (size_t d = 0; d < value.size(); ++d) {
+    const Json& direction = value[d];
+    const std::string which = "direction " + std::to_string(d) + ": ";
+    if (!direction.is_array() || direction.size() != 6) {
+      *problem = which + "expected an array of 6 numbers";
+      return false;
+    }
+    Vector6d v;
+    for (int k = 0; k < 6; ++k) {
+      const Json& number = direction[static_cast<size_t>(k)];
+      if (!number.is_number() || !std::isfinite(number.get<double>())) {
+        *problem =
+            which + "element " + std::to_string(k) + " is not a finite number";
+        return false;
+      }
+      v(k) = number.get<double>();
+    }
+    if (std::abs(v.norm() - 1.0) > kUnitTolerance) {
+      *problem = which + "not of unit length";
+      return false;
+    }
+    directions->push_back(v);
+  }
+  return true;
+}
+
 // One entry; false with *problem "<member>: <what>" (no path, no key).
 bool ReadEntry(const Json& entry, ReferencePair* pair, std::string* problem) {
   if (!entry.is_object()) {
@@ -122,6 +158,12 @@ bool ReadEntry(const Json& entry, ReferencePair* pair, std::string* problem) {
       return false;
     }
     pair->prior_from_input = prior;
+  }
+  if (entry.contains("free_directions") &&
+      !ReadFreeDirections(
+          entry.at("free_directions"), &pair->free_directions, &what)) {
+    *problem = "free_directions: " + what;
+    return false;
   }
   return true;
 }

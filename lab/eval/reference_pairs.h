@@ -6,11 +6,14 @@
 // holds the consensus of five third-party registrations of scan j onto scan
 // i and how far the five spread around it, or, where the five disagreed
 // (the Livox folders), the data set's prior, marked by a "source" member.
+// Simulated sets (lab/sim) hold the exact pose ("source": "exact: ...",
+// spreads 0) and the directions the scene leaves free.
 
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "mlndt/common/types.h"
 
@@ -33,6 +36,12 @@ struct ReferencePair {
   // "prior_from_input", when present: the data set's own prior pose (the
   // registrations' start; KITTI: its official ground truth).
   std::optional<Isometry3d> prior_from_input;
+  // "free_directions", when present: unit directions of the pose vector
+  // (tx, ty, tz [m], alpha, beta, gamma [rad]; pose.h) of
+  // reference_from_input, in the reference frame, along which the scene
+  // does not constrain the pose (a corridor along x: [1,0,0,0,0,0]). Empty:
+  // the scene constrains every direction (or the file does not say).
+  std::vector<Vector6d> free_directions;
 };
 
 // "i_j".
@@ -45,7 +54,9 @@ std::string ReferencePairKey(int64_t reference_index, int64_t input_index);
 // and member, on malformed JSON, a key that is not "i_j" with non-negative
 // integers, a missing member (the spreads may be missing only in an entry
 // with a "source" string), an array that does not hold 12 finite numbers,
-// or a spread that is not a finite number >= 0.
+// a spread that is not a finite number >= 0, or "free_directions" that is
+// not an array of arrays of 6 finite numbers, each of length 1 within
+// 1e-6.
 bool ReadReferencePairs(const std::string& path,
                         std::map<std::string, ReferencePair>* pairs,
                         std::string* error);

@@ -424,6 +424,7 @@ std::vector<SuiteRun> PlanDatasetRuns(
     base.input_index = pair->input_index;
     base.pair_key = ReferencePairKey(pair->reference_index, pair->input_index);
     base.reference_from_input = pair->reference_from_input;
+    base.free_directions = pair->free_directions;
     for (const StartKind kind : options.starts) {
       base.kind = kind;
       base.start = StartKindToString(kind);

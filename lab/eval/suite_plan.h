@@ -162,6 +162,10 @@ struct SuiteRun {
   Isometry3d reference_from_input = Isometry3d::Identity();  // The truth.
   Isometry3d initial_reference_from_input = Isometry3d::Identity();
   StartUncertainty uncertainty;
+  // The pair's free directions (ReferencePair::free_directions): the
+  // scene leaves the pose free along them (suite_score.h scores such a
+  // run by its verdict).
+  std::vector<Vector6d> free_directions;
 };
 
 // Per start kind, the pairs it did not apply to (no prior, no previous

@@ -35,7 +35,9 @@ SuiteAccuracyRow Accuracy(size_t dataset,
   row.kind = kind;
   std::vector<double> translations, along, rotations, times;
   for (const SuiteOutcome& o : outcomes) {
-    if (o.dataset != dataset || o.kind != kind || !o.right) continue;
+    if (o.dataset != dataset || o.kind != kind || !o.right || o.free) {
+      continue;
+    }
     translations.push_back(o.error.translation_m);
     rotations.push_back(o.error.rotation_deg());
     times.push_back(o.time_ms);
@@ -133,7 +135,9 @@ SuiteOutcome ScoreSuiteRun(const SuiteRun& run,
   outcome.termination = termination;
   outcome.error = ComputePoseError(run.reference_from_input, estimate);
   outcome.along_track_m = AlongTrackErrorM(run.reference_from_input, estimate);
-  outcome.right = criterion.IsWithin(outcome.error);
+  outcome.free = !run.free_directions.empty();
+  outcome.right = outcome.free ? termination == TerminationType::DEGENERATE
+                               : criterion.IsWithin(outcome.error);
   outcome.time_ms = time_ms;
   return outcome;
 }

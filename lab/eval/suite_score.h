@@ -24,7 +24,14 @@ struct SuiteOutcome {
   PoseError error;  // Of the estimate against the reference.
   // AlongTrackErrorM; NaN when the reference does not move.
   double along_track_m = std::numeric_limits<double>::quiet_NaN();
-  bool right = false;    // Within the data set's SuccessCriterion.
+  // Within the data set's SuccessCriterion; on a pair the scene leaves
+  // free (free below), reported DEGENERATE.
+  bool right = false;
+  // The pair has free directions (SuiteRun::free_directions): no pose is
+  // right or wrong along them, the verdict DEGENERATE is the right answer
+  // and every other verdict a wrong one (CONVERGENCE there is a wrong
+  // CONVERGENCE).
+  bool free = false;
   double time_ms = 0.0;  // The registration's time (map build excluded).
 };
 
@@ -35,7 +42,9 @@ struct SuiteOutcome {
 double AlongTrackErrorM(const Isometry3d& reference,
                         const Isometry3d& estimate);
 
-// Scores the estimate of `run` (its reference is run.reference_from_input).
+// Scores the estimate of `run` (its reference is run.reference_from_input):
+// right when within `criterion` of the reference, or, when the run's pair
+// has free directions, right exactly when `termination` is DEGENERATE.
 SuiteOutcome ScoreSuiteRun(const SuiteRun& run,
                            const SuccessCriterion& criterion,
                            TerminationType termination,
@@ -82,7 +91,8 @@ struct SuiteStartRow {
   size_t skipped_pairs = 0;      // Pairs the start did not apply to.
 };
 
-// Accuracy of the right runs of one data set × start kind.
+// Accuracy of the right runs of one data set × start kind (runs on free
+// pairs left out: their pose is not determined along the free directions).
 struct SuiteAccuracyRow {
   size_t dataset = 0;
   StartKind kind = StartKind::IDENTITY;

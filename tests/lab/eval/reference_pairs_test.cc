@@ -139,6 +139,31 @@ TEST(ReadReferencePairs, SpreadsMayBeMissingOnlyWithASource) {
   EXPECT_EQ(pairs.at("3_5").source, "prior: odometry");
 }
 
+// A simulated set's entry (lab/sim): the exact pose, spreads 0, a source,
+// and the directions the scene leaves free.
+TEST(ReadReferencePairs, ReadsSimulatedEntriesWithFreeDirections) {
+  const std::string path = WriteFile(
+      "simulated.json",
+      std::string("{\"0_1\": {\"reference_from_input\": ") + kIdentity +
+          ", \"prior_from_input\": " + kIdentity +
+          ", \"spread_m\": 0.0, \"spread_deg\": 0.0, \"source\": \"exact: "
+          "simulated\", \"free_directions\": [[0.6, 0.8, 0, 0, 0, 0]]}, "
+          "\"0_2\": {\"reference_from_input\": " +
+          kIdentity +
+          ", \"source\": \"exact: simulated\", \"free_directions\": []}}");
+  std::map<std::string, ReferencePair> pairs;
+  std::string error;
+  ASSERT_TRUE(ReadReferencePairs(path, &pairs, &error)) << error;
+  const ReferencePair& free = pairs.at("0_1");
+  EXPECT_EQ(free.source, "exact: simulated");
+  EXPECT_EQ(free.spread_m, 0.0);
+  ASSERT_EQ(free.free_directions.size(), 1u);
+  Vector6d expected;
+  expected << 0.6, 0.8, 0, 0, 0, 0;
+  EXPECT_EQ(free.free_directions[0], expected);
+  EXPECT_TRUE(pairs.at("0_2").free_directions.empty());
+}
+
 struct BadCase {
   const char* name;
   std::string json;
@@ -200,6 +225,23 @@ TEST(ReadReferencePairs, BadFilesNameTheFileAndTheKey) {
       {"source_not_string",
        "{\"0_1\": {\"reference_from_input\": " + matrix + ", \"source\": 3}}",
        "\"0_1\": source: expected a string"},
+      {"free_not_array",
+       "{\"0_1\": {\"reference_from_input\": " + matrix + spreads +
+           ", \"free_directions\": 1}}",
+       "\"0_1\": free_directions: expected an array"},
+      {"free_short",
+       "{\"0_1\": {\"reference_from_input\": " + matrix + spreads +
+           ", \"free_directions\": [[1, 0, 0, 0, 0]]}}",
+       "\"0_1\": free_directions: direction 0: expected an array of 6"},
+      {"free_not_unit",
+       "{\"0_1\": {\"reference_from_input\": " + matrix + spreads +
+           ", \"free_directions\": [[1, 0, 0, 0, 0, 0], [0.5, 0, 0, 0, 0, "
+           "0]]}}",
+       "\"0_1\": free_directions: direction 1: not of unit length"},
+      {"free_string",
+       "{\"0_1\": {\"reference_from_input\": " + matrix + spreads +
+           ", \"free_directions\": [[1, 0, \"y\", 0, 0, 0]]}}",
+       "direction 0: element 2 is not a finite number"},
   };
   for (const BadCase& c : cases) {
     const std::string path = WriteFile(std::string(c.name) + ".json", c.json);

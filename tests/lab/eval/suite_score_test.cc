@@ -66,6 +66,50 @@ TEST(ScoreSuiteRun, RightIsStrictlyWithinBothTolerances) {
   EXPECT_FALSE(o.right);  // 1.5° > 1°.
 }
 
+// On a pair the scene leaves free (a corridor along x), DEGENERATE is the
+// right answer wherever the pose ends, and CONVERGENCE is wrong even at
+// the truth.
+TEST(ScoreSuiteRun, AFreePairIsRightOnlyWhenDegenerate) {
+  SuiteRun run;
+  run.reference_from_input = Pose(2, 0, 0, 0);
+  Vector6d along_x = Vector6d::Zero();
+  along_x(0) = 1.0;
+  run.free_directions = {along_x};
+  const SuccessCriterion criterion{0.1, 1.0};
+  SuiteOutcome o = ScoreSuiteRun(
+      run, criterion, TerminationType::DEGENERATE, Pose(5, 0, 0, 0), 1);
+  EXPECT_TRUE(o.free);
+  EXPECT_TRUE(o.right);
+  o = ScoreSuiteRun(
+      run, criterion, TerminationType::CONVERGENCE, Pose(2, 0, 0, 0), 1);
+  EXPECT_FALSE(o.right);
+  for (const TerminationType type : {TerminationType::NO_CONVERGENCE,
+                                     TerminationType::LOW_QUALITY,
+                                     TerminationType::FAILURE}) {
+    EXPECT_FALSE(
+        ScoreSuiteRun(run, criterion, type, Pose(2, 0, 0, 0), 1).right);
+  }
+  // A wrong CONVERGENCE in the confusion table; no accuracy from free runs.
+  const std::vector<SuiteOutcome> outcomes = {
+      o,
+      ScoreSuiteRun(
+          run, criterion, TerminationType::DEGENERATE, Pose(5, 0, 0, 0), 1)};
+  const ConfusionTable table = CountConfusion(outcomes);
+  EXPECT_EQ(table.Count(false, TerminationType::CONVERGENCE), 1u);
+  EXPECT_EQ(table.Count(true, TerminationType::DEGENERATE), 1u);
+  EXPECT_EQ(table.Precision(), 0.0);
+  const SuiteScore score = ScoreSuite(
+      {"corridor"}, {StartKind::IDENTITY}, {}, {SuiteSkips()}, outcomes, 0.9);
+  ASSERT_EQ(score.accuracy.size(), 1u);
+  EXPECT_EQ(score.accuracy[0].right, 0u);
+  // Without free directions the same run is scored by its pose.
+  run.free_directions.clear();
+  EXPECT_TRUE(
+      ScoreSuiteRun(
+          run, criterion, TerminationType::CONVERGENCE, Pose(2, 0, 0, 0), 1)
+          .right);
+}
+
 TEST(AllTerminationTypes, ListsEveryValueInOrder) {
   const std::vector<TerminationType> types = AllTerminationTypes();
   ASSERT_GE(types.size(), 5u);
