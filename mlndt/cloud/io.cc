@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "mlndt/common/atomic_file.h"
-#include "mlndt/internal/cloud_readers.h"
+#include "mlndt/cloud/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace internal {

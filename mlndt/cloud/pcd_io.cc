@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "mlndt/common/internal/enum_strings.h"
-#include "mlndt/internal/cloud_readers.h"
+#include "mlndt/cloud/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace internal {

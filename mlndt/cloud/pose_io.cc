@@ -10,7 +10,7 @@
 
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/rigid_transform.h"
-#include "mlndt/internal/cloud_readers.h"
+#include "mlndt/cloud/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace {
