@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "mlndt/common/atomic_file.h"
 #include "mlndt/cloud/internal/cloud_readers.h"
+#include "mlndt/common/atomic_file.h"
 
 namespace mlndt {
 namespace internal {

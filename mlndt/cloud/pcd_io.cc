@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/cloud/internal/cloud_readers.h"
+#include "mlndt/common/internal/enum_strings.h"
 
 namespace mlndt {
 namespace internal {
