@@ -166,9 +166,6 @@ void RegisterOnMap(const RegistrationOptions& options,
   summary->trace = GlobalTrace(attempt, anchor);
   summary->iterations_per_layer = attempt.schedule.iterations_per_layer;
   summary->num_iterations = static_cast<int>(attempt.schedule.trace.size());
-  for (const IterationRecord& r : summary->trace) {
-    summary->rejected_steps += r.step_is_successful ? 0 : 1;
-  }
   if (attempt.schedule.termination_type == TerminationType::FAILURE) {
     return Fail(attempt.schedule.message, summary);
   }

@@ -32,7 +32,6 @@ struct RegistrationSummary {
   std::vector<IterationRecord> trace;
   std::vector<int> iterations_per_layer;  // Index i - 1 for layer i.
   int num_iterations = 0;  // Of the reported solution (trace.size()).
-  int rejected_steps = 0;  // Of those, iterations whose step was rejected.
   // Schedule runs: 2 when the result was checked against the last layer
   // alone from the guess, more with yaw retries (attempts.h).
   int attempts = 0;

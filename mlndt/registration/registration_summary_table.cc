@@ -54,10 +54,6 @@ void AddIterations(Builder* b) {
                &S::num_iterations,
                "",
                "Iterations of the reported solution, all layers together.")
-      .Integer("rejected_steps",
-               &S::rejected_steps,
-               "",
-               "Iterations of the reported solution whose step was rejected.")
       .Integer("attempts",
                &S::attempts,
                "",

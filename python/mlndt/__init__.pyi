@@ -192,9 +192,6 @@ class RegistrationResult:
     def num_iterations(self) -> int:
         """Iterations of the reported solution, all layers together."""
     @property
-    def rejected_steps(self) -> int:
-        """Iterations of the reported solution whose step was rejected."""
-    @property
     def attempts(self) -> int:
         """Schedule runs (guess comparisons and yaw retries included)."""
     @property
