@@ -40,7 +40,7 @@ input = mlndt.read_cloud(sys.argv[2])
 start = time.perf_counter()
 result = mlndt.register(reference, input)
 wall = time.perf_counter() - start
-print(json.dumps({"wall_s": wall, "library_s": result.total_time_s, "termination": result.termination}))
+print(json.dumps({"wall_s": wall, "library_s": result.total_time_s, "termination": result.termination_type}))
 """
 
 
@@ -49,7 +49,7 @@ def run_tool(tool, reference, input, flags, output):
     completed = subprocess.run(command, capture_output=True, text=True)
     if not Path(output).exists():
         raise SystemExit(f"python_overhead.py: {tool} failed: {completed.stderr}")
-    return json.loads(Path(output).read_text())["registration"]["time_ms"]["total"] / 1e3
+    return json.loads(Path(output).read_text())["registration"]["total_time_s"]
 
 
 def run_cold(reference, input):

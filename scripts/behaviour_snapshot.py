@@ -38,19 +38,18 @@ def align(build, flags):
         # docs/json_schema.md: the registration's result is one object.
         d = json.load(open(out))["registration"]
     pose = [v for row in d["reference_from_input"][:3] for v in row]
-    # The covariance's angles are in degrees there; the snapshot keeps rad.
-    deg = 180.0 / math.pi
-    cov = d["covariance_m_deg"]["matrix"]
+    # The covariance of xi in m and rad (RegistrationSummary's units).
+    cov = d["covariance"]
     # JSON null: not finite (an unconstrained direction, docs/json_schema.md).
-    cov_diag = [math.inf if cov[i][i] is None else cov[i][i] / (deg * deg if i >= 3 else 1.0) for i in range(6)]
+    cov_diag = [math.inf if cov[i][i] is None else cov[i][i] for i in range(6)]
     fields = [
-        d["termination"],
-        "iters=%d" % d["iterations"],
+        d["termination_type"],
+        "iters=%d" % d["num_iterations"],
         "per_layer=" + ",".join(str(i) for i in d.get("iterations_per_layer", [])),
         "start=%s" % d.get("start_layer"),
         "layers=%s" % d.get("num_layers"),
-        "score=" + g(d["score"]["initial"]) + "->" + g(d["score"]["final"]),
-        "sampled=%d matched=%d" % (d["points"]["sampled"], d["points"]["matched"]),
+        "score=" + g(d["initial_score"]) + "->" + g(d["final_score"]),
+        "sampled=%d matched=%d" % (d["sampled_points"], d["matched_points"]),
         "pose=" + " ".join(g(v) for v in pose),
         "cov_diag=" + " ".join(g(v) for v in cov_diag),
         "trace_scores=" + " ".join(g(r["score"]) for r in d["trace"]),

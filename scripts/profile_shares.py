@@ -77,15 +77,16 @@ def stage_times(command, workdir):
     registration = json.load(open(out))["registration"]
     # Trace times count from the registration's start: the solve starts
     # after the map and the sampling.
-    times = registration["time_ms"]
-    per_stage, previous = {}, times["map"] + times["sampling"]
+    # (RegistrationSummary's fields, in seconds; reported in ms.)
+    ms = {k: registration[k + "_time_s"] * 1e3 for k in ("map", "sampling", "solve", "total")}
+    per_stage, previous = {}, ms["map"] + ms["sampling"]
     for record in registration["trace"]:
         layer = f"layer {record['layer']}"
-        per_stage[layer] = per_stage.get(layer, 0.0) + record["time_ms"] - previous
-        previous = record["time_ms"]
+        per_stage[layer] = per_stage.get(layer, 0.0) + record["time_s"] * 1e3 - previous
+        previous = record["time_s"] * 1e3
     per_stage["after the reported attempt (guess check, retries, verdict)"] = (
-        times["total"] - previous)
-    return times["solve"], per_stage
+        ms["total"] - previous)
+    return ms["solve"], per_stage
 
 
 def main():

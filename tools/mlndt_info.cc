@@ -10,7 +10,7 @@
 // registration flags are refused.
 //
 // For every file:
-//   {"schema_version": 1, "tool": "mlndt_info", "version": ..., "command": ...,
+//   {"schema_version": 2, "tool": "mlndt_info", "version": ..., "command": ...,
 //    "file": ..., "format": "PCD", "points": N, "dropped_non_finite": N,
 //    "min_m": [x, y, z], "max_m": [x, y, z]}
 // (docs/json_schema.md). "points" counts the points kept (finite ones);

@@ -4,17 +4,27 @@
 // options (mlndt_map's, mlndt_localize's).
 //   mlndt_options                 # Markdown (docs/options.md)
 //   mlndt_options --format=json   # the same as JSON
+//   mlndt_options --format=results_markdown  # docs/json_schema.md's
+//                                            # registration section
+//   mlndt_options --format=results_pyi       # the stub's RegistrationResult
 
 #include <gflags/gflags.h>
 
 #include <iostream>
 
+#include "mlndt/common/result_table.h"
+#include "mlndt/registration/registration_summary.h"
 #include "tools/common/option_flags.h"
 #include "tools/common/options_doc.h"
+#include "tools/common/results_doc.h"
 #include "tools/common/tool_main.h"
 #include "tools/common/tool_table_flags.h"
 
-DEFINE_string(format, "markdown", "markdown | json");
+DEFINE_string(format,
+              "markdown",
+              "markdown | json | results_markdown (docs/json_schema.md's "
+              "registration section) | results_pyi (the stub's "
+              "RegistrationResult)");
 
 int main(int argc, char** argv) {
   std::vector<std::string> option_flags;
@@ -48,9 +58,18 @@ int main(int argc, char** argv) {
     std::cout << mlndt::tools::OptionsMarkdown();
   } else if (FLAGS_format == "json") {
     std::cout << mlndt::tools::OptionsJson().dump(2) << "\n";
+  } else if (FLAGS_format == "results_markdown") {
+    std::cout << mlndt::tools::ResultsMarkdown(
+        mlndt::RegistrationSummaryTable());
+  } else if (FLAGS_format == "results_pyi") {
+    std::cout << mlndt::tools::ResultsStub(
+        mlndt::RegistrationSummaryTable(),
+        "RegistrationResult",
+        "What a registration reports (mlndt::RegistrationSummary).");
   } else {
     std::cerr << "mlndt_options: --format=" << FLAGS_format
-              << ": expected markdown or json\n";
+              << ": expected markdown, json, results_markdown or "
+                 "results_pyi\n";
     return mlndt::tools::kExitUsage;
   }
   return mlndt::tools::kExitOk;

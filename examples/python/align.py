@@ -53,7 +53,7 @@ def main():
 
     result = mlndt.register(reference, input, initial=initial, initial_uncertainty=uncertainty, **options)
     print(result.report(), file=sys.stderr, end="")
-    print(f"{result.termination}: {result.message}")
+    print(f"{result.termination_type}: {result.message}")
     np.savetxt(sys.stdout, result.reference_from_input, fmt="%12.8f")
     return 0 if result.usable else 1
 

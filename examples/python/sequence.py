@@ -56,11 +56,11 @@ def main():
         if result.usable:
             previous_from_current = result.reference_from_input
         else:
-            print(f"sequence.py: {paths[k].name}: {result.termination}: {result.message}; keeping the guess", file=sys.stderr)
+            print(f"sequence.py: {paths[k].name}: {result.termination_type}: {result.message}; keeping the guess", file=sys.stderr)
         world_from_scan.append(world_from_scan[-1] @ previous_from_current)
         t = previous_from_current[:3, 3]
         print(
-            f"{paths[k - 1].name} <- {paths[k].name}: {result.termination:14s} {result.iterations:3d} iterations "
+            f"{paths[k - 1].name} <- {paths[k].name}: {result.termination_type:14s} {result.num_iterations:3d} iterations "
             f"{elapsed_ms:6.1f} ms  t = ({t[0]:.3f}, {t[1]:.3f}, {t[2]:.3f}) m"
         )
         reference_map = mlndt.LayeredMap.build(mlndt.filter_range(scan))

@@ -23,6 +23,8 @@
 
 namespace mlndt {
 
+class ResultTable;
+
 struct FitQuality {
   size_t points = 0;
   double own_cell_fraction = 0.0;
@@ -30,6 +32,9 @@ struct FitQuality {
   double mean_score = 0.0;
   double median_distance = 0.0;
 };
+
+// FitQuality's fields: name, unit, help (result_table.h).
+const ResultTable& FitQualityTable();
 
 // `gate`: the Mahalanobis distance below which a point is an inlier (> 0).
 // The objective gives the unmatched-point policy (which cell a point is

@@ -44,6 +44,7 @@
 namespace mlndt {
 
 class OptionTable;
+class ResultTable;
 
 struct QualityCheckOptions {
   // Off: the solver's termination is reported as it is.
@@ -119,6 +120,9 @@ struct ConstraintAnalysis {
   // weakest first (columns; zero when no cell matched).
   Matrix3d weakest_translations = Matrix3d::Zero();
 };
+
+// ConstraintAnalysis's fields: name, unit, help (result_table.h).
+const ResultTable& ConstraintAnalysisTable();
 
 // Directions whose eigenvalue is below this fraction of the largest are
 // probed (at most the three weakest).

@@ -16,6 +16,8 @@
 
 namespace mlndt {
 
+class ResultTable;
+
 struct RegistrationSummary {
   TerminationType termination_type = TerminationType::FAILURE;
   std::string message;
@@ -82,5 +84,10 @@ struct RegistrationSummary {
     return IsUsableTermination(termination_type);
   }
 };
+
+// RegistrationSummary's fields: name, unit, help (result_table.h), the
+// nested FitQuality, ConstraintAnalysis and IterationRecord tables included.
+// The JSON, Python and docs forms of a registration's result come from it.
+const ResultTable& RegistrationSummaryTable();
 
 }  // namespace mlndt

@@ -19,6 +19,7 @@
 namespace mlndt {
 
 class EnumTable;
+class ResultTable;
 
 enum class BackendType {
   CERES,                // Auto-diff residuals in a ceres::Problem per stage.
@@ -44,6 +45,9 @@ struct IterationRecord {
   Vector6d reference_from_input_xi = Vector6d::Zero();
   double time_s = 0.0;  // Wall time [s]; see above.
 };
+
+// IterationRecord's fields: name, unit, help (result_table.h).
+const ResultTable& IterationRecordTable();
 
 // Why a stage ended before its iteration cap.
 enum class StageEnd {

@@ -13,7 +13,7 @@ mlndt_eval, mlndt_sequence and the tools' --bag do them); pip install does not.
     reference = mlndt.read_cloud("data/koide3/251370668.pcd")
     input = mlndt.read_cloud("data/koide3/251371071.pcd")
     result = mlndt.register(reference, input)
-    print(result.termination, result.reference_from_input)
+    print(result.termination_type, result.reference_from_input)
 
 help(mlndt.register) lists every option with its default.
 """

@@ -123,10 +123,10 @@ def _register_pair(task, options):
         reference,
         input,
         result.reference_from_input,
-        result.termination,
+        result.termination_type,
         result.usable,
-        result.score,
-        result.iterations,
+        result.final_score,
+        result.num_iterations,
         _worker_address(),
     )
 
@@ -137,10 +137,10 @@ def _localize_scan(task, map_path, options):
     return ScanLocalization(
         index,
         result.reference_from_input,
-        result.termination,
+        result.termination_type,
         result.usable,
-        result.score,
-        result.iterations,
+        result.final_score,
+        result.num_iterations,
         _worker_address(),
     )
 

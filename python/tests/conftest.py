@@ -68,10 +68,10 @@ def same_result(a, b):
     """Bit-identical pose, score, covariance and trace (timings aside)."""
     return (
         np.array_equal(a.reference_from_input, b.reference_from_input)
-        and a.score == b.score
+        and a.final_score == b.final_score
         and a.initial_score == b.initial_score
-        and a.termination == b.termination
-        and a.iterations == b.iterations
+        and a.termination_type == b.termination_type
+        and a.num_iterations == b.num_iterations
         and np.array_equal(a.covariance, b.covariance)
         and [r["score"] for r in a.trace] == [r["score"] for r in b.trace]
     )

@@ -20,7 +20,7 @@ reference = mlndt.read_cloud({str(KOIDE3_REFERENCE)!r})
 input = mlndt.read_cloud({str(KOIDE3_INPUT)!r})
 result = mlndt.register(reference, input)
 print(json.dumps({{"file": mlndt.__file__, "version": mlndt.__version__,
-                  "pose": result.reference_from_input.tolist(), "termination": result.termination}}))
+                  "pose": result.reference_from_input.tolist(), "termination": result.termination_type}}))
 """
 
 

@@ -21,7 +21,7 @@ def register_pair(folder, key):
 
 def test_pair_0_1_within_2cm_and_0_1_deg(shared_data_dir):
     result, expected, entry = register_pair(shared_data_dir / KITTI, "0_1")
-    assert result.termination == "CONVERGENCE", result.message
+    assert result.termination_type == "CONVERGENCE", result.message
     assert translation_error_m(expected, result.reference_from_input) < 0.02
     assert rotation_error_deg(expected, result.reference_from_input) < 0.1
 

@@ -131,7 +131,7 @@ def test_save_and_load(tmp_path, koide3, reference_map):
         np.testing.assert_array_equal(loaded.cells(layer)["counts"], reference_map.cells(layer)["counts"])
     on_loaded = loaded.register(koide3[1])
     on_built = reference_map.register(koide3[1])
-    assert on_loaded.termination == on_built.termination
+    assert on_loaded.termination_type == on_built.termination_type
     np.testing.assert_allclose(on_loaded.reference_from_input, on_built.reference_from_input, atol=1e-9)
 
 

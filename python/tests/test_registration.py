@@ -20,7 +20,7 @@ REFERENCE_PAIRS = BUNDLED_DATA_DIR / "koide3" / "reference_pairs.json"
 def test_koide3_translation_within_2cm_and_rotation_within_reference_spread(koide3_result):
     expected, entry = reference_transform(REFERENCE_PAIRS, KOIDE3_KEY)
     result = koide3_result
-    assert result.termination == "CONVERGENCE", result.message
+    assert result.termination_type == "CONVERGENCE", result.message
     assert translation_error_m(expected, result.reference_from_input) < 0.02
     # The five peers behind the reference spread 0.48 deg in rotation.
     assert rotation_error_deg(expected, result.reference_from_input) < entry["spread_deg"]
@@ -40,11 +40,11 @@ def test_result_fields_are_consistent(koide3, koide3_result):
     np.testing.assert_array_equal(pose[3], [0, 0, 0, 1])
     np.testing.assert_allclose(pose[:3, :3].T @ pose[:3, :3], np.eye(3), atol=1e-12)
     np.testing.assert_allclose(mlndt.pose_from_xi(result.reference_from_input_xi), pose, atol=1e-12)
-    assert result.converged == (result.termination == "CONVERGENCE")
+    assert result.converged == (result.termination_type == "CONVERGENCE")
     assert result.usable
     assert result.message
-    assert result.score < result.initial_score
-    assert result.iterations == len(result.trace) == sum(result.iterations_per_layer)
+    assert result.final_score < result.initial_score
+    assert result.num_iterations == len(result.trace) == sum(result.iterations_per_layer)
     assert result.attempts >= 1
     assert 1 <= result.start_layer <= result.num_layers == len(result.iterations_per_layer)
     assert result.input_points == len(input)
@@ -56,13 +56,20 @@ def test_result_fields_are_consistent(koide3, koide3_result):
         "inlier_fraction",
         "mean_score",
         "median_distance",
+    }
+    assert set(result.constraints) == {
         "constraint_ratio",
+        "degenerate_directions",
         "flatness",
         "probe_evidence",
+        "flattest_direction",
+        "flat_directions",
+        "weakest_translations",
     }
     assert result.quality["points"] == result.sampled_points
     assert 0 < result.quality["inlier_fraction"] <= 1
-    assert result.degenerate_directions.shape == (0, 6)
+    assert result.constraints["degenerate_directions"].shape == (0, 6)
+    assert result.constraints["weakest_translations"].shape == (3, 3)
     covariance = result.covariance
     assert covariance.shape == (6, 6)
     np.testing.assert_allclose(covariance, covariance.T, rtol=1e-9, atol=1e-18)
@@ -81,7 +88,7 @@ def test_result_fields_are_consistent(koide3, koide3_result):
         "reference_from_input_xi",
         "time_s",
     }
-    assert record["iteration"] == result.iterations and record["layer"] == result.num_layers
+    assert record["iteration"] == result.num_iterations and record["layer"] == result.num_layers
     assert record["reference_from_input_xi"].shape == (6,)
     assert result.total_time_s >= result.map_time_s + result.sampling_time_s > 0
     assert result.map_bytes > 0 and result.map_occupied_cells > 0
@@ -159,7 +166,7 @@ def test_read_only_arrays_are_accepted(small_pair):
     reference, input = (a.copy() for a in small_pair)
     reference.flags.writeable = False
     input.flags.writeable = False
-    assert mlndt.register(reference, input).termination != "FAILURE"
+    assert mlndt.register(reference, input).termination_type != "FAILURE"
 
 
 @pytest.mark.parametrize(
@@ -221,7 +228,7 @@ def test_a_registration_that_fails_is_a_result_not_an_exception(small_pair):
     # Every input point at one spot: the range filter drops them all (a
     # saturated maximum range).
     result = mlndt.register(reference, np.tile([1.0, 2.0, 3.0], (50, 1)))
-    assert result.termination == "FAILURE"
+    assert result.termination_type == "FAILURE"
     assert not result.usable and not result.converged
     assert "range filter" in result.message
 

@@ -5,6 +5,7 @@ option struct and bound in python/src/options.cc must be added to the stub)."""
 import ast
 import importlib.util
 import pydoc
+import subprocess
 import types
 
 import pytest
@@ -167,3 +168,12 @@ def test_the_package_holds_no_lab():
     package = BUILD_DIR / "python" / "mlndt"
     assert not [p.name for p in package.iterdir() if p.name.startswith(("lab.", "_lab."))]
     assert importlib.util.find_spec("mlndt.lab") is None
+
+
+def test_generated_docs_and_stub_are_current():
+    """docs/options.md, docs/json_schema.md's result tables and this stub's
+    RegistrationResult are what mlndt_options generates from the tables."""
+    completed = subprocess.run(
+        [str(SOURCE_DIR / "scripts" / "check_generated.sh"), str(BUILD_DIR)], capture_output=True, text=True
+    )
+    assert completed.returncode == 0, completed.stderr

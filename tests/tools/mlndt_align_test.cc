@@ -58,26 +58,29 @@ TEST(MlndtAlign, BundledPairMatchesTheReferenceResultAndReportsTimeAndMemory) {
 
   const nlohmann::json json = ReadJson(json_path);
   ASSERT_TRUE(json.is_object()) << testing::ReadWholeFile(json_path);
-  EXPECT_EQ(json["schema_version"], 1);
+  EXPECT_EQ(json["schema_version"], 2);
   EXPECT_EQ(json["tool"], "mlndt_align");
   EXPECT_EQ(json["accepted"], true);
   const nlohmann::json& registration = json["registration"];
-  EXPECT_EQ(registration["termination"], "CONVERGENCE");
+  EXPECT_EQ(registration["termination_type"], "CONVERGENCE");
   // fast_gicp's tolerance on this pair (PEERS.md 1a); we measured 1.55 cm.
   EXPECT_LT(json["expected"]["translation_error_m"].get<double>(), 0.05);
   EXPECT_LT(json["expected"]["rotation_error_deg"].get<double>(), 1.0);
 
-  const nlohmann::json& time = registration["time_ms"];
-  EXPECT_GT(time["map"].get<double>(), 0.0);
-  EXPECT_GT(time["sampling"].get<double>(), 0.0);
-  EXPECT_GT(time["solve"].get<double>(), 0.0);
-  EXPECT_GE(time["total"].get<double>(),
-            time["map"].get<double>() + time["sampling"].get<double>() +
-                time["solve"].get<double>());
+  // Seconds, under the RegistrationSummary's field names.
+  const double map_s = registration["map_time_s"].get<double>();
+  const double sampling_s = registration["sampling_time_s"].get<double>();
+  const double solve_s = registration["solve_time_s"].get<double>();
+  EXPECT_GT(map_s, 0.0);
+  EXPECT_GT(sampling_s, 0.0);
+  EXPECT_GT(solve_s, 0.0);
+  EXPECT_LT(solve_s, 60.0);  // Seconds, not milliseconds.
+  EXPECT_GE(registration["total_time_s"].get<double>(),
+            map_s + sampling_s + solve_s);
 
   // Every occupied cell holds at least its NdtCell-sized record.
-  const double cells = registration["map"]["occupied_cells"].get<double>();
-  const double bytes = registration["map"]["memory_bytes"].get<double>();
+  const double cells = registration["map_occupied_cells"].get<double>();
+  const double bytes = registration["map_bytes"].get<double>();
   EXPECT_GT(cells, 100.0);
   EXPECT_GE(bytes, cells * 200.0);
   EXPECT_LT(bytes, cells * 2000.0);

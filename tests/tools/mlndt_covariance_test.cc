@@ -33,7 +33,7 @@ TEST(MlndtCovariance, Koide3StartsShowProgressAndWriteJsonAndCsv) {
   const nlohmann::json json = nlohmann::json::parse(
       testing::ReadWholeFile(dir + "/covariance.json"), nullptr, false);
   ASSERT_TRUE(json.is_object());
-  EXPECT_EQ(json["schema_version"], 1);
+  EXPECT_EQ(json["schema_version"], 2);
   EXPECT_EQ(json["tool"], "mlndt_covariance");
   EXPECT_EQ(json["koide3"]["consistency"]["runs"], 3);
   EXPECT_EQ(json["koide3"]["failures"], 0);

@@ -216,7 +216,7 @@ TEST(MlndtEval, ReproducesAteAndRpeOfASequenceTrajectory) {
                 std::string::npos)
           << run.out;
       const Json json = ReadJson(json_path);
-      EXPECT_EQ(json["schema_version"], 1);
+      EXPECT_EQ(json["schema_version"], 2);
       EXPECT_EQ(json["tool"], "mlndt_eval");
       const Json& e = json["estimates"][0];
       EXPECT_EQ(e["pairs"].get<int>(), 8);

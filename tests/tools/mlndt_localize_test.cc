@@ -171,7 +171,7 @@ TEST(MlndtLocalize, KittiScansFromTenMetresAndFortyFiveDegreesOff) {
   EXPECT_EQ(summary["scans"].get<int>(), 8);
   EXPECT_EQ(summary["terminations"]["CONVERGENCE"].get<int>(), 8);
   EXPECT_EQ(summary["motion_model"].get<std::string>(), "CONSTANT_VELOCITY");
-  EXPECT_EQ(summary["schema_version"], 1);
+  EXPECT_EQ(summary["schema_version"], 2);
   EXPECT_EQ(summary["tool"], "mlndt_localize");
   EXPECT_EQ(summary["first_guess"]["rotation_deg"][2].get<double>(), 45.0);
   EXPECT_GT(summary["time_ms_stats"]["registration"]["mean"].get<double>(),

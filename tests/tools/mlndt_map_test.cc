@@ -155,7 +155,7 @@ TEST(MlndtMap, BuildsTheKittiMapFromChainedPoses) {
   const PointCloud merged = MergeHere(poses, 3.0, 80.0, &read, &cropped);
   const PointCloud filtered = VoxelDownsample(merged, 0.2);
   const Json json = ReadJson(dir + "/map.json");
-  EXPECT_EQ(json["schema_version"], 1);
+  EXPECT_EQ(json["schema_version"], 2);
   EXPECT_EQ(json["tool"], "mlndt_map");
   EXPECT_GT(json["time_ms"]["total"].get<double>(),
             json["time_ms"]["build"].get<double>());

@@ -85,7 +85,7 @@ TEST(MlndtPosegraph, JointIsNotWorseThanChainedOnKittiFrames0To7) {
   // The same JSON on stdout and in the file, with the four metrics.
   const std::string json = ReadFile(json_path);
   EXPECT_EQ(json, run.out);
-  EXPECT_EQ(NumberAfter(json, "schema_version"), 1.0) << json;
+  EXPECT_EQ(NumberAfter(json, "schema_version"), 2.0) << json;
   EXPECT_GT(NumberAfter(json, "total"), NumberAfter(json, "joint")) << json;
   for (const std::string key :
        {"ate_chained_m", "ate_joint_m", "rpe_chained", "rpe_joint"}) {

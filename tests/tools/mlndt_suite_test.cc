@@ -113,7 +113,7 @@ TEST(MlndtSuite, BundledKittiTablesAgreeWithRunsCsv) {
   ASSERT_EQ(wrong_row.size(), header.size());
   const Json summary =
       Json::parse(testing::ReadWholeFile(dir + "/summary.json"));
-  EXPECT_EQ(summary["schema_version"], 1);
+  EXPECT_EQ(summary["schema_version"], 2);
   EXPECT_EQ(summary["tool"], "mlndt_suite");
   EXPECT_GT(summary["time_ms"]["total"].get<double>(), 0.0);
   for (size_t c = 1; c + 1 < header.size(); ++c) {

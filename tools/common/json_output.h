@@ -5,8 +5,9 @@
 // RegistrationSummary. Conventions (docs/json_schema.md):
 //  - every file holds "schema_version": kJsonSchemaVersion, "tool" and
 //    "version" (ToolJson);
-//  - units are in the key names (_m, _deg, _ms, _bytes); every angle is in
-//    degrees (poses wrapped to (-180, 180]), no file mixes in radians;
+//  - units are in the key names (_m, _deg, _ms, _bytes); angles are in
+//    degrees (poses wrapped to (-180, 180]), except in the objects made
+//    from a result table (result_json.h), which keep the struct's units;
 //  - timings are one object "time_ms": {"total": ..., <stage>: ...}; a
 //    distribution of times over many runs is "time_ms_stats";
 //  - numbers are written with 17 significant digits (they round-trip);
@@ -26,7 +27,9 @@ namespace tools {
 // Keys keep the order they are added in.
 using Json = nlohmann::ordered_json;
 
-constexpr int kJsonSchemaVersion = 1;
+// 2: the registration object is made from RegistrationSummaryTable()
+// (keys renamed to the C++ fields; docs/json_schema.md).
+constexpr int kJsonSchemaVersion = 2;
 
 // {"schema_version": 1, "tool": tool, "version": "<PROJECT_VERSION>",
 //  "command": the command line}.
@@ -51,14 +54,10 @@ Json PoseJson(const Isometry3d& transform);
 // {"count", "mean", "median", "min", "max", "std", "p95"}.
 Json StatsJson(const Stats& stats);
 
-// {"total": ..., "map": ..., "sampling": ..., "solve": ...} [ms].
-Json RegistrationTimeJson(const RegistrationSummary& summary);
-
 // The one JSON form of a registration's result (docs/json_schema.md,
-// "registration"): termination, message, pose, iterations, attempts,
-// layers, scores, point counts, fit quality with the constraint ratio,
-// map size, times and the covariance; the per-iteration trace with
-// `with_trace`.
+// "registration"): ResultJson of RegistrationSummaryTable(), every field of
+// the summary under its C++ name and in its unit (s, m, rad); the
+// per-iteration trace only `with_trace`.
 Json RegistrationSummaryJson(const RegistrationSummary& summary,
                              bool with_trace);
 
