@@ -122,7 +122,8 @@ bool ReadInputs(tools::ScanInput* input,
                                      {FLAGS_gt_poses, FLAGS_calib, FLAGS_times},
                                      static_cast<size_t>(FLAGS_max_scans),
                                      input,
-                                     error)) {
+                                     error) ||
+      !input->ReadBagStamps(error)) {
     return false;
   }
   if (input->size() < 2) {

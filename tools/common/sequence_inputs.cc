@@ -88,7 +88,8 @@ bool ReadSequenceInputs(const SequenceOptions& options,
           {gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
           static_cast<size_t>(max_scans),
           input,
-          error)) {
+          error) ||
+      !input->ReadBagStamps(error)) {
     return false;
   }
   return ReadSequenceRunPoses(options,

@@ -21,7 +21,8 @@ bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
                               std::string* error);
 
 // The scans of --scans=`scans_dir` (or --bag; at most `max_scans`, the
-// pose, calib and times files left out) and ReadSequenceRunPoses.
+// pose, calib and times files left out; a bag's stamps checked by
+// ScanInput::ReadBagStamps) and ReadSequenceRunPoses.
 bool ReadSequenceInputs(const SequenceOptions& options,
                         const std::string& scans_dir,
                         const std::string& gt_poses,

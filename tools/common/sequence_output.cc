@@ -284,7 +284,10 @@ bool WriteTumTrajectory(const std::string& path,
                         std::string* error) {
   Trajectory trajectory;
   for (size_t k = 0; k < poses.size(); ++k) {
-    trajectory.Add(input.StampOf(k * step), poses[k]);
+    if (!trajectory.TryAdd(input.StampOf(k * step), poses[k], error)) {
+      *error = path + ": scan " + input.name(k * step) + ": " + *error;
+      return false;
+    }
   }
   return WriteTrajectory(
       path, TrajectoryFormat::TUM, trajectory, input.TumComment(), error);
