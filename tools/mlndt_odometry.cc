@@ -136,13 +136,11 @@ bool ReadInputs(tools::ScanInput* input,
     *error = "--gt_poses: " + *error;
     return false;
   }
-  if (reference->size() < input->size()) {
-    *error = "--gt_poses=" + FLAGS_gt_poses + " has " +
-             std::to_string(reference->size()) + " poses for " +
-             std::to_string(input->size()) + " scans";
-    return false;
-  }
-  return true;
+  return tools::CheckPoseCount("--gt_poses=" + FLAGS_gt_poses,
+                               reference->size(),
+                               input->size(),
+                               FLAGS_max_scans,
+                               error);
 }
 
 // trajectory_xy.png; exit code 1 when gnuplot is missing or fails.

@@ -90,11 +90,12 @@ int Run() {
   if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &poses, &error)) {
     return tools::Refuse(kTool, "--gt_poses: " + error);
   }
-  if (poses.size() < paths.size()) {
-    return tools::Refuse(kTool,
-                         FLAGS_gt_poses + " has " +
-                             std::to_string(poses.size()) + " poses for " +
-                             std::to_string(paths.size()) + " scans");
+  if (!tools::CheckPoseCount("--gt_poses=" + FLAGS_gt_poses,
+                             poses.size(),
+                             paths.size(),
+                             -1,
+                             &error)) {
+    return tools::Refuse(kTool, error);
   }
   // A gap of 0 would register every scan onto itself, one of the scans or
   // more leaves no pair.

@@ -88,7 +88,7 @@ bool OptionsFromFlags(PoseGraphOptions* options, std::string* error) {
   return tools::CheckStartLayerBeforeMap(options->registration, error);
 }
 
-// A KITTI pose file with at least one pose per scan (cut to that many).
+// A KITTI pose file with one pose per scan (CheckPoseCount).
 bool ReadScanPoses(const std::string& flag,
                    const std::string& path,
                    size_t num_scans,
@@ -99,13 +99,8 @@ bool ReadScanPoses(const std::string& flag,
     *error = flag + "=" + path + ": " + *error;
     return false;
   }
-  if (poses->size() < num_scans) {
-    *error = flag + "=" + path + " has " + std::to_string(poses->size()) +
-             " poses for " + std::to_string(num_scans) + " scans";
-    return false;
-  }
-  poses->resize(num_scans);
-  return true;
+  return tools::CheckPoseCount(
+      flag + "=" + path, poses->size(), num_scans, -1, error);
 }
 
 // Every check before any work: flags, outputs, scans and pose files.
