@@ -171,9 +171,14 @@ int Run() {
   std::vector<Isometry3d> reference;
   if (!ReadInputs(&input, &reference, &error))
     return tools::Refuse(kTool, error);
+  // Every file the run writes (a pose or times file there is refused).
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
-                               {"scans.csv", "summary.json"},
+                               {"scans.csv",
+                                "summary.json",
+                                "trajectory_kitti.txt",
+                                "trajectory_tum.txt",
+                                "trajectory_xy.png"},
                                &error)) {
     return tools::Refuse(kTool, error);
   }

@@ -128,6 +128,25 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   return true;
 }
 
+// Every file the run writes into --output_dir, checked before the run (a
+// pose or times file there is refused, not overwritten).
+std::vector<std::string> OutputFiles(bool has_truth) {
+  std::vector<std::string> outputs = {"pairs.csv",
+                                      "summary.json",
+                                      "trace.csv",
+                                      "trajectory.txt",
+                                      "trajectory_tum.txt"};
+  if (has_truth) outputs.push_back("gt_trajectory.txt");
+  if (FLAGS_plots) {
+    outputs.insert(outputs.end(),
+                   {"errors_translation.png",
+                    "errors_rotation.png",
+                    "trajectory_xy.png",
+                    "score_vs_iteration.png"});
+  }
+  return outputs;
+}
+
 int Run() {
   SequenceOptions options;
   std::string error;
@@ -151,7 +170,7 @@ int Run() {
   }
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
-                               {"pairs.csv", "summary.json"},
+                               OutputFiles(!truth.empty()),
                                &error)) {
     return tools::Refuse(kTool, error);
   }
