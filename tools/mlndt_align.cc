@@ -246,6 +246,10 @@ int main(int argc, char** argv) {
           "  mlndt_align   (the bundled koide3 pair, compared with its "
           "reference result)\n\n") +
       mlndt::tools::kExitCodesHelp;
+  mlndt::tools::RefuseUnreadFlags(
+      {"bag", "topic", "times", "calib", "poses_are_camera"},
+      "does not apply to mlndt_align (it registers two clouds: give them as "
+      "REF IN)");
   if (!mlndt::tools::StartTool(usage.c_str(), false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

@@ -224,6 +224,11 @@ int main(int argc, char** argv) {
       "  mlndt_eval --reference=FILE --estimate=FILE[,FILE...] "
       "[--alignment=se3]\n"
       "  mlndt_eval chain reference_pairs.json poses.txt";
+  mlndt::tools::RefuseUnreadFlags(
+      {"bag", "topic", "times", "calib", "poses_are_camera"},
+      "does not apply to mlndt_eval (it reads trajectory files: stamp a KITTI "
+      "--reference with --reference_times, convert camera poses with "
+      "--reference_calib)");
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }
