@@ -59,8 +59,7 @@ TEST(UnreadFlags, AlignRefusesScanAndPoseFlags) {
 TEST(UnreadFlags, EvalRefusesScanAndPoseFlags) {
   const std::string poses =
       Quote(testing::BundledDataPath("kitti/poses_velo.txt"));
-  ExpectRefused("mlndt_eval",
-                "--reference=" + poses + " --estimate=" + poses);
+  ExpectRefused("mlndt_eval", "--reference=" + poses + " --estimate=" + poses);
 }
 
 TEST(UnreadFlags, MapHelpDoesNotListTimes) {
@@ -70,8 +69,8 @@ TEST(UnreadFlags, MapHelpDoesNotListTimes) {
   EXPECT_NE(help.out.find("  --bag="), std::string::npos) << help.out;
   const ToolRun run = RunTool(
       "mlndt_map",
-      "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
-          " --poses=" + Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
+      "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) + " --poses=" +
+          Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
           " --times=times.txt --output=/nonexistent/m.mlndtmap");
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("--times"), std::string::npos) << run.err;
@@ -80,10 +79,10 @@ TEST(UnreadFlags, MapHelpDoesNotListTimes) {
 TEST(UnreadFlags, UnwritableCloudFormatIsTheSameRefusalEverywhere) {
   const std::string dir = testing::FreshTestDir("unread_flags");
   const std::string pcd = dir + "/in.pcd";
-  const ToolRun make = RunTool(
-      "mlndt_convert",
-      Quote(testing::BundledDataPath("koide3/251370668.pcd")) + " " +
-          Quote(pcd));
+  const ToolRun make =
+      RunTool("mlndt_convert",
+              Quote(testing::BundledDataPath("koide3/251370668.pcd")) + " " +
+                  Quote(pcd));
   ASSERT_EQ(make.exit_code, 0) << make.err;
   const ToolRun convert =
       RunTool("mlndt_convert", Quote(pcd) + " " + Quote(dir + "/out.bin"));
