@@ -186,6 +186,12 @@ int Run() {
                 "previous relative pose): the trajectories are not to be "
                 "used");
   }
+  if (summary.check.verdict != "CONVERGENCE") {
+    return Fail("the joint result is " + summary.check.verdict + ": " +
+                summary.check.message +
+                "; the joint trajectory is not to "
+                "be used");
+  }
   return tools::kExitOk;
 }
 
@@ -199,7 +205,10 @@ int main(int argc, char** argv) {
           "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
           "[--odometry_poses=FILE] [--pairs=i:j,...] [--output_dir=DIR]\n"
           "Exit 1 when a chained registration was not usable (LOW_QUALITY, "
-          "DEGENERATE or FAILURE), after writing every file.",
+          "DEGENERATE or FAILURE), or when the joint result's verdict is not "
+          "CONVERGENCE (a pair or odometry factor that does not fit the "
+          "joint poses: \"verdict\" in the JSON), after writing every "
+          "file.",
           false,
           &argc,
           &argv)) {
