@@ -295,7 +295,6 @@ bool WriteTumTrajectory(const std::string& path,
 
 bool WriteSequenceFiles(const std::string& dir,
                         const SequenceOptions& options,
-                        const Json& header,
                         const ScanInput& input,
                         const ScanStore& store,
                         const std::vector<PairResult>& results,
@@ -304,10 +303,6 @@ bool WriteSequenceFiles(const std::string& dir,
   const std::string out = dir + "/";
   if (!WritePairsCsv(out + "pairs.csv", store, results, error) ||
       !WriteTraceCsv(out + "trace.csv", results, error)) {
-    return false;
-  }
-  if (!WriteJsonFile(
-          out + "summary.json", SummaryJson(header, results), error)) {
     return false;
   }
   const std::vector<Isometry3d> chained =
