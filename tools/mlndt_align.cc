@@ -10,9 +10,11 @@
 // stdout ends with the result's reference_from_input as a 4x4 matrix (4
 // lines of 4 numbers). --output_json (docs/json_schema.md) is written for
 // every registration that ran, trusted or not; --output_cloud only for an
-// accepted result. Exit codes (tool_main.h): 0 the result is accepted
-// (verdict_flags.h), 1 FAILURE or a result not to be trusted, 2 a flag or an
-// input refused before any work.
+// accepted result. A FAILURE prints no matrix (its pose is no estimate),
+// and a cloud with fewer points than one NDT cell needs is refused. Exit
+// codes (tool_main.h): 0 the result is accepted (verdict_flags.h), 1
+// FAILURE or a result not to be trusted, 2 a flag or an input refused
+// before any work.
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -20,6 +22,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "lab/runs/matcher.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "tools/common/align_output.h"
@@ -134,6 +137,28 @@ bool CheckFlags(MatcherOptions* options,
          tools::ReadMatrixFile(in.expected, expected, error);
 }
 
+// A cloud with fewer points than one NDT cell needs (a pose or matrix file
+// given as a cloud) can give no map or no fit: refused before any work.
+bool CheckCloudSizes(const MatcherOptions& options,
+                     const Inputs& in,
+                     const PointCloud& reference,
+                     const PointCloud& input,
+                     std::string* error) {
+  LayeredGridOptions grid;
+  if (!MatcherGridOptions(options, reference, &grid, error)) return false;
+  const size_t needed = static_cast<size_t>(grid.min_points_per_cell);
+  for (const auto& [path, cloud] : {std::make_pair(in.reference, &reference),
+                                    std::make_pair(in.input, &input)}) {
+    if (cloud->size() < needed) {
+      *error = path + ": " + std::to_string(cloud->size()) +
+               " points, fewer than one NDT cell needs (min_points_per_cell " +
+               std::to_string(needed) + "); is it a point cloud?";
+      return false;
+    }
+  }
+  return true;
+}
+
 int Run(int argc, char** argv) {
   Inputs in;
   MatcherOptions options;
@@ -150,8 +175,9 @@ int Run(int argc, char** argv) {
       !ReadPointCloud(in.input, &input, nullptr, &error)) {
     return tools::Refuse(kTool, error);
   }
-  if (options.method == Method::MLNDT &&
-      !tools::CheckStartLayerForReference(options.mlndt, reference, &error)) {
+  if (!CheckCloudSizes(options, in, reference, input, &error) ||
+      (options.method == Method::MLNDT &&
+       !tools::CheckStartLayerForReference(options.mlndt, reference, &error))) {
     return tools::Refuse(kTool, error);
   }
 
@@ -220,6 +246,10 @@ int main(int argc, char** argv) {
           "  mlndt_align   (the bundled koide3 pair, compared with its "
           "reference result)\n\n") +
       mlndt::tools::kExitCodesHelp;
+  mlndt::tools::RefuseUnreadFlags(
+      {"bag", "topic", "times", "calib", "poses_are_camera"},
+      "does not apply to mlndt_align (it registers two clouds: give them as "
+      "REF IN)");
   if (!mlndt::tools::StartTool(usage.c_str(), false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

@@ -54,7 +54,8 @@ DEFINE_string(minimizers, "trust_region",
 DEFINE_string(jacobians, "autodiff",
               "Comma-separated Ceres Jacobians (ceres backend only): autodiff, analytic");
 DEFINE_string(losses, "cauchy", "Comma-separated robust losses: none, huber, cauchy");
-DEFINE_string(loss_scales, "1.5", "Comma-separated loss scales (Mahalanobis distance)");
+DEFINE_string(loss_scales, "", "Comma-separated loss scales (Mahalanobis distance); empty: each "
+              "--defaults' own (current 1.5, previous 3)");
 DEFINE_string(output_plot, "",
               "Write a PNG of time against error per configuration (Pareto front marked), with "
               "FILE.dat and FILE.gp beside it");
@@ -113,7 +114,6 @@ BenchGrid GridFromFlags() {
   grid.minimizers = List(FLAGS_minimizers, Items);
   grid.jacobians = List(FLAGS_jacobians, Items);
   grid.losses = List(FLAGS_losses, Items);
-  grid.loss_scales = List(FLAGS_loss_scales, Numbers);
   grid.threads = List(FLAGS_threads, Ints);
   grid.seed = FLAGS_seed;
   return grid;
@@ -122,6 +122,12 @@ BenchGrid GridFromFlags() {
 // The options from the flags; false with *error naming a flag out of range.
 bool OptionsFromFlags(BenchOptions* options, std::string* error) {
   options->grid = GridFromFlags();
+  if (!Numbers(FLAGS_loss_scales, &options->grid.loss_scales)) {
+    *error = "--loss_scales=" + FLAGS_loss_scales +
+             ": expected comma-separated numbers (or none: each --defaults' "
+             "own scale)";
+    return false;
+  }
   options->pairs.data_dir = FLAGS_data_dir;
   options->pairs.sets = List(FLAGS_pairs, Items);
   options->pairs.kitti_gaps = List(FLAGS_kitti_gaps, Ints);

@@ -60,6 +60,12 @@ int main(int argc, char** argv) {
     std::cerr << "mlndt_convert: " << error << "\n";
     return mlndt::tools::kExitUsage;
   }
+  // An output format mlndt cannot write is refused before the input is
+  // read, as mlndt_align --output_cloud is (exit 2, not 1 after the work).
+  if (!mlndt::CanWritePointCloud(output, &error)) {
+    std::cerr << "mlndt_convert: " << error << "\n";
+    return mlndt::tools::kExitUsage;
+  }
   if (!(FLAGS_voxel_size >= 0.0)) {
     std::cerr << "mlndt_convert: --voxel_size must be >= 0\n";
     return mlndt::tools::kExitUsage;

@@ -44,6 +44,7 @@
 
 #include <gflags/gflags.h>
 
+#include <filesystem>
 #include <iostream>
 #include <map>
 
@@ -51,6 +52,7 @@
 #include "lab/eval/reference_pairs.h"
 #include "lab/eval/trajectory_evaluation.h"
 #include "mlndt/cloud/pose_io.h"
+#include "mlndt/common/atomic_file.h"
 #include "tools/common/eval_flags.h"
 #include "tools/common/eval_output.h"
 #include "tools/common/flag_utils.h"
@@ -97,6 +99,18 @@ int Chain(const std::string& pairs_path, const std::string& output) {
   if (!tools::RefuseGivenFlags(
           kEvalFlags, "does not apply to 'mlndt_eval chain'", &error)) {
     return tools::Refuse(kTool, error);
+  }
+  // OUT never replaces the pairs file (a link to it included).
+  std::error_code ec;
+  if (std::filesystem::equivalent(pairs_path, output, ec)) {
+    return tools::Refuse(kTool,
+                         "chain: OUT=" + output + " is the pairs file " +
+                             pairs_path +
+                             " (an output never replaces an "
+                             "input)");
+  }
+  if (!CheckWritableFilePath(output, &error)) {
+    return tools::Refuse(kTool, "chain: OUT=" + output + ": " + error);
   }
   std::map<std::string, ReferencePair> pairs;
   if (!ReadReferencePairs(pairs_path, &pairs, &error)) {
@@ -210,6 +224,11 @@ int main(int argc, char** argv) {
       "  mlndt_eval --reference=FILE --estimate=FILE[,FILE...] "
       "[--alignment=se3]\n"
       "  mlndt_eval chain reference_pairs.json poses.txt";
+  mlndt::tools::RefuseUnreadFlags(
+      {"bag", "topic", "times", "calib", "poses_are_camera"},
+      "does not apply to mlndt_eval (it reads trajectory files: stamp a KITTI "
+      "--reference with --reference_times, convert camera poses with "
+      "--reference_calib)");
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

@@ -117,12 +117,13 @@ bool CheckFlags(LocalizerOptions* options,
   }
   if (!options->IsValid(error)) return false;
   return tools::ScanInputFromScanListFlags(
-      FLAGS_scans,
-      FLAGS_scan_list,
-      {FLAGS_map, FLAGS_initial_poses, FLAGS_calib, FLAGS_times},
-      static_cast<size_t>(FLAGS_max_scans),
-      input,
-      error);
+             FLAGS_scans,
+             FLAGS_scan_list,
+             {FLAGS_map, FLAGS_initial_poses, FLAGS_calib, FLAGS_times},
+             static_cast<size_t>(FLAGS_max_scans),
+             input,
+             error) &&
+         input->ReadBagStamps(error);
 }
 
 // --map, with a start layer within its layers (the library would clamp a

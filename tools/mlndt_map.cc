@@ -207,6 +207,8 @@ int main(int argc, char** argv) {
       "  mlndt_map --cloud=FILE --output=MAP\n"
       "  mlndt_map info MAP";
   mlndt::tools::HideFlagsFromHelp(mlndt::tools::MapBuildRefusedFlags());
+  // map_inputs.cc refuses --times (a map has no time).
+  mlndt::tools::HideFlagsFromHelp({"times"});
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

@@ -43,6 +43,7 @@
 #include "tools/common/odometry_flags.h"
 #include "tools/common/odometry_output.h"
 #include "tools/common/output_files.h"
+#include "tools/common/output_set.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
@@ -122,7 +123,8 @@ bool ReadInputs(tools::ScanInput* input,
                                      {FLAGS_gt_poses, FLAGS_calib, FLAGS_times},
                                      static_cast<size_t>(FLAGS_max_scans),
                                      input,
-                                     error)) {
+                                     error) ||
+      !input->ReadBagStamps(error)) {
     return false;
   }
   if (input->size() < 2) {
@@ -135,13 +137,11 @@ bool ReadInputs(tools::ScanInput* input,
     *error = "--gt_poses: " + *error;
     return false;
   }
-  if (reference->size() < input->size()) {
-    *error = "--gt_poses=" + FLAGS_gt_poses + " has " +
-             std::to_string(reference->size()) + " poses for " +
-             std::to_string(input->size()) + " scans";
-    return false;
-  }
-  return true;
+  return tools::CheckPoseCount("--gt_poses=" + FLAGS_gt_poses,
+                               reference->size(),
+                               input->size(),
+                               FLAGS_max_scans,
+                               error);
 }
 
 // trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
@@ -172,10 +172,16 @@ int Run() {
   std::vector<Isometry3d> reference;
   if (!ReadInputs(&input, &reference, &error))
     return tools::Refuse(kTool, error);
+  // Every file the run writes (a pose or times file there is refused).
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
-                               {"scans.csv", "summary.json"},
-                               &error)) {
+                               {"scans.csv",
+                                "summary.json",
+                                "trajectory_kitti.txt",
+                                "trajectory_tum.txt",
+                                "trajectory_xy.png"},
+                               &error) ||
+      !tools::StartOutputSet(FLAGS_output_dir, &error)) {
     return tools::Refuse(kTool, error);
   }
   const bool gnuplot_ok = !FLAGS_plots || GnuplotAvailable(FLAGS_gnuplot);
@@ -194,18 +200,23 @@ int Run() {
     return tools::Fail(kTool, "metrics: " + error);
   }
   const OdometryMetrics* m = has_metrics ? &metrics : nullptr;
-  if (!tools::WriteOdometryFiles(FLAGS_output_dir, input, results, &error) ||
-      !tools::WriteJsonFile(FLAGS_output_dir + "/summary.json",
-                            tools::OdometrySummaryJson(summary, results, m),
-                            &error)) {
+  if (!tools::WriteOdometryFiles(FLAGS_output_dir, input, results, &error)) {
     return tools::Fail(kTool, error);
   }
   tools::PrintOdometrySummary(summary, results, m);
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
-  if (FLAGS_plots) {
-    const int plot = WritePlot(gnuplot_ok, results, reference);
-    if (plot != 0) return plot;
+  const int plot = FLAGS_plots ? WritePlot(gnuplot_ok, results, reference) : 0;
+  // summary.json last, naming the files written (output_set.h).
+  std::vector<std::string> files = {
+      "scans.csv", "trajectory_kitti.txt", "trajectory_tum.txt"};
+  if (FLAGS_plots && plot == 0) files.push_back("trajectory_xy.png");
+  if (!tools::FinishOutputSet(FLAGS_output_dir,
+                              files,
+                              tools::OdometrySummaryJson(summary, results, m),
+                              &error)) {
+    return tools::Fail(kTool, error);
   }
+  if (plot != 0) return plot;
   if (!summary.AllUsable()) {
     return tools::Fail(
         kTool,

@@ -90,26 +90,30 @@ int Run() {
   if (!ReadSequencePoses(FLAGS_gt_poses, FLAGS_calib, &poses, &error)) {
     return tools::Refuse(kTool, "--gt_poses: " + error);
   }
-  if (poses.size() < paths.size()) {
-    return tools::Refuse(kTool,
-                         FLAGS_gt_poses + " has " +
-                             std::to_string(poses.size()) + " poses for " +
-                             std::to_string(paths.size()) + " scans");
+  if (!tools::CheckPoseCount("--gt_poses=" + FLAGS_gt_poses,
+                             poses.size(),
+                             paths.size(),
+                             -1,
+                             &error)) {
+    return tools::Refuse(kTool, error);
   }
-  std::vector<double> gaps;
-  if (!tools::ParseNumberList(FLAGS_gaps, &gaps) || gaps.empty()) {
+  // A gap of 0 would register every scan onto itself, one of the scans or
+  // more leaves no pair.
+  std::vector<std::string> items;
+  std::vector<size_t> gaps;
+  if (!tools::SplitList(FLAGS_gaps, &items)) {
     return tools::Refuse(
         kTool,
         "--gaps=" + FLAGS_gaps +
             ": expected comma-separated frame gaps (e.g. 1,2,5)");
   }
-  for (const double gap : gaps) {
-    // A gap of 0 would register every scan onto itself.
-    if (!(gap >= 1.0) || gap != std::floor(gap)) {
-      return tools::Refuse(
-          kTool,
-          "--gaps=" + FLAGS_gaps + ": a gap is a whole number of frames >= 1");
-    }
+  if (!tools::ParseCountList(
+          FLAGS_gaps, 1, paths.empty() ? 0 : paths.size() - 1, &gaps, &error)) {
+    return tools::Refuse(kTool,
+                         "--gaps=" + FLAGS_gaps +
+                             ": a gap is a whole number of frames >= 1, "
+                             "below the number of scans (" +
+                             std::to_string(paths.size()) + "): " + error);
   }
   std::vector<Vector6d> perturbations;
   if (!ParsePerturbations(FLAGS_perturbations, &perturbations, &error)) {
@@ -127,7 +131,7 @@ int Run() {
   if (!FLAGS_output_csv.empty()) csv << tools::PairsCsvHeader();
   tools::PrintPairsHeader();
   GapPairsOptions pairs;
-  pairs.gaps.assign(gaps.begin(), gaps.end());
+  pairs.gaps = gaps;
   pairs.perturbations = perturbations;
   pairs.max_translation_error_m = FLAGS_max_translation_error;
   pairs.max_rotation_error_deg = FLAGS_max_rotation_error;

@@ -88,7 +88,7 @@ bool OptionsFromFlags(PoseGraphOptions* options, std::string* error) {
   return tools::CheckStartLayerBeforeMap(options->registration, error);
 }
 
-// A KITTI pose file with at least one pose per scan (cut to that many).
+// A KITTI pose file with one pose per scan (CheckPoseCount).
 bool ReadScanPoses(const std::string& flag,
                    const std::string& path,
                    size_t num_scans,
@@ -99,13 +99,8 @@ bool ReadScanPoses(const std::string& flag,
     *error = flag + "=" + path + ": " + *error;
     return false;
   }
-  if (poses->size() < num_scans) {
-    *error = flag + "=" + path + " has " + std::to_string(poses->size()) +
-             " poses for " + std::to_string(num_scans) + " scans";
-    return false;
-  }
-  poses->resize(num_scans);
-  return true;
+  return tools::CheckPoseCount(
+      flag + "=" + path, poses->size(), num_scans, -1, error);
 }
 
 // Every check before any work: flags, outputs, scans and pose files.
@@ -191,6 +186,12 @@ int Run() {
                 "previous relative pose): the trajectories are not to be "
                 "used");
   }
+  if (summary.check.verdict != "CONVERGENCE") {
+    return Fail("the joint result is " + summary.check.verdict + ": " +
+                summary.check.message +
+                "; the joint trajectory is not to "
+                "be used");
+  }
   return tools::kExitOk;
 }
 
@@ -204,7 +205,10 @@ int main(int argc, char** argv) {
           "  mlndt_posegraph --scans=DIR [--gt_poses=FILE] [--neighbors=2] "
           "[--odometry_poses=FILE] [--pairs=i:j,...] [--output_dir=DIR]\n"
           "Exit 1 when a chained registration was not usable (LOW_QUALITY, "
-          "DEGENERATE or FAILURE), after writing every file.",
+          "DEGENERATE or FAILURE), or when the joint result's verdict is not "
+          "CONVERGENCE (a pair or odometry factor that does not fit the "
+          "joint poses: \"verdict\" in the JSON), after writing every "
+          "file.",
           false,
           &argc,
           &argv)) {

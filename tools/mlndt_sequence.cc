@@ -65,6 +65,7 @@
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
 #include "tools/common/output_files.h"
+#include "tools/common/output_set.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
@@ -128,6 +129,74 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   return true;
 }
 
+// Every file the run writes into --output_dir, checked before the run (a
+// pose or times file there is refused, not overwritten).
+std::vector<std::string> OutputFiles(bool has_truth) {
+  std::vector<std::string> outputs = {"pairs.csv",
+                                      "summary.json",
+                                      "trace.csv",
+                                      "trajectory.txt",
+                                      "trajectory_tum.txt"};
+  if (has_truth) outputs.push_back("gt_trajectory.txt");
+  if (FLAGS_plots) {
+    outputs.insert(outputs.end(),
+                   {"errors_translation.png",
+                    "errors_rotation.png",
+                    "trajectory_xy.png",
+                    "score_vs_iteration.png"});
+  }
+  return outputs;
+}
+
+// The files, the totals on stdout, the plots, and summary.json last
+// (output_set.h): 0, or the exit code of a failed write or plot.
+int WriteOutputs(const SequenceOptions& options,
+                 const tools::ScanInput& input,
+                 const ScanStore& store,
+                 const std::vector<PairResult>& results,
+                 const std::vector<Isometry3d>& truth,
+                 bool gnuplot_ok) {
+  std::string error;
+  const tools::SequenceSource source = {
+      FLAGS_scans, FLAGS_bag, FLAGS_topic, tools::IntFlag("start_layer")};
+  const tools::Json header =
+      tools::SequenceSummaryHeader(options, source, store.size());
+  if (!tools::WriteSequenceFiles(FLAGS_output_dir,
+                                 options,
+                                 input,
+                                 store,
+                                 results,
+                                 !truth.empty(),
+                                 &error)) {
+    return tools::Fail(kTool, error);
+  }
+  tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
+  std::string plot_error;
+  bool plotted = false;
+  if (FLAGS_plots && !gnuplot_ok) {
+    plot_error = PlotSkippedMessage(FLAGS_gnuplot, "plots");
+  } else if (FLAGS_plots) {
+    plotted = tools::WriteSequencePlotsAndList(FLAGS_gnuplot,
+                                               FLAGS_output_dir,
+                                               results,
+                                               options.step,
+                                               FLAGS_trace_plot_pairs,
+                                               &plot_error);
+  }
+  std::vector<std::string> files;
+  for (const std::string& file : OutputFiles(!truth.empty())) {
+    const bool png = file.size() > 4 && file.substr(file.size() - 4) == ".png";
+    if (file != "summary.json" && (!png || plotted)) files.push_back(file);
+  }
+  if (!tools::FinishOutputSet(FLAGS_output_dir,
+                              files,
+                              tools::SummaryJson(header, results),
+                              &error)) {
+    return tools::Fail(kTool, error);
+  }
+  return FLAGS_plots && !plotted ? tools::Fail(kTool, plot_error) : 0;
+}
+
 int Run() {
   SequenceOptions options;
   std::string error;
@@ -151,8 +220,9 @@ int Run() {
   }
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
-                               {"pairs.csv", "summary.json"},
-                               &error)) {
+                               OutputFiles(!truth.empty()),
+                               &error) ||
+      !tools::StartOutputSet(FLAGS_output_dir, &error)) {
     return tools::Refuse(kTool, error);
   }
   const bool gnuplot_ok =
@@ -169,31 +239,9 @@ int Run() {
   const bool ok = tools::RunSequenceWithProgress(
       options, &store, truth, odometry, &results, &error);
   if (!ok) return tools::Fail(kTool, error);
-  const tools::SequenceSource source = {
-      FLAGS_scans, FLAGS_bag, FLAGS_topic, tools::IntFlag("start_layer")};
-  if (!tools::WriteSequenceFiles(
-          FLAGS_output_dir,
-          options,
-          tools::SequenceSummaryHeader(options, source, store.size()),
-          input,
-          store,
-          results,
-          !truth.empty(),
-          &error)) {
-    return tools::Fail(kTool, error);
-  }
-  tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
-  if (FLAGS_plots && !gnuplot_ok) {
-    return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot, "plots"));
-  }
-  if (FLAGS_plots && !tools::WriteSequencePlotsAndList(FLAGS_gnuplot,
-                                                       FLAGS_output_dir,
-                                                       results,
-                                                       options.step,
-                                                       FLAGS_trace_plot_pairs,
-                                                       &error)) {
-    return tools::Fail(kTool, error);
-  }
+  const int written =
+      WriteOutputs(options, input, store, results, truth, gnuplot_ok);
+  if (written != 0) return written;
   // A pair without a usable result (LOW_QUALITY, DEGENERATE, FAILURE) has
   // its --init guess in trajectory.txt, flagged in pairs.csv and
   // summary.json.

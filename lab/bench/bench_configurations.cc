@@ -22,7 +22,7 @@ struct GridAxes {
       minimizers;
   std::vector<bool> analytic_jacobians;
   std::vector<LossType> losses;
-  std::vector<double> loss_scales;
+  std::vector<std::optional<double>> loss_scales;
   std::vector<ceres::LinearSolverType> linear_solvers;
   std::vector<ceres::TrustRegionStrategyType> trust_regions;
 };
@@ -180,11 +180,9 @@ bool ParseObjectiveAxes(const BenchGrid& grid,
     }
     axes->losses.push_back(loss);
   }
-  axes->loss_scales = grid.loss_scales;
-  if (axes->loss_scales.empty()) {
-    *error = "--loss_scales: expected comma-separated numbers";
-    return false;
-  }
+  // No scale given: each defaults' own (an empty optional).
+  axes->loss_scales.assign(grid.loss_scales.begin(), grid.loss_scales.end());
+  if (axes->loss_scales.empty()) axes->loss_scales.emplace_back();
   return true;
 }
 
@@ -279,7 +277,7 @@ RegistrationOptions BenchConfiguration::Options(uint64_t seed) const {
   options.backend.ceres.line_search_direction_type = line_search_direction;
   options.backend.ceres.analytic_jacobians = analytic_jacobians;
   options.objective.loss = loss;
-  options.objective.loss_scale = loss_scale;
+  if (loss_scale.has_value()) options.objective.loss_scale = *loss_scale;
   options.num_threads = threads;
   return options;
 }
@@ -305,9 +303,8 @@ bool ParseBenchConfigurations(const BenchGrid& grid_axes,
                 c.gbs_cell_size_m = gbs_cell_size;
                 c.start_layer = start_layer;
                 c.loss = loss;
-                c.loss_scale = loss == LossType::NONE
-                                   ? ObjectiveOptions().loss_scale
-                                   : axes.loss_scales[k];
+                c.loss_scale =
+                    loss == LossType::NONE ? std::nullopt : axes.loss_scales[k];
                 c.threads = thread_count;
                 if (!c.Options(grid_axes.seed).IsValid(error)) {
                   *error = std::string("invalid configuration (backend ") +

@@ -65,7 +65,7 @@ BenchMethodLabels ConfigurationLabels(const BenchConfiguration& c) {
   }
   labels.loss = LowerCase(LossTypeToString(c.loss));
   if (c.loss != LossType::NONE)
-    labels.loss += "@" + BenchFormat("%g", c.loss_scale);
+    labels.loss += "@" + BenchFormat("%g", c.Options(0).objective.loss_scale);
   return labels;
 }
 

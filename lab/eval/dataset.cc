@@ -3,13 +3,78 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <system_error>
 
 #include "mlndt/cloud/cloud_format.h"
 #include "mlndt/cloud/pose_io.h"
 
 namespace mlndt {
+namespace {
+
+std::string LowerExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(),
+                 extension.end(),
+                 extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+bool IsTextFile(const std::string& path) {
+  return LowerExtension(path) == ".txt";
+}
+
+bool IsTextCloud(const std::string& path) {
+  return IsTextFile(path) || LowerExtension(path) == ".xyz";
+}
+
+// Whether the first line of `path` that is not blank or a '#' comment holds
+// at least three numbers (an xyz text cloud's "x y z ..."); a stamps file
+// (one number a line) or KITTI's calib.txt ("P0: ...") does not.
+bool FirstLineIsPoint(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  for (int k = 0; k < 100 && std::getline(in, line); ++k) {
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream tokens(line);
+    std::string token;
+    if (!(tokens >> token) || token[0] == '#') continue;
+    int numbers = 0;
+    do {
+      char* end = nullptr;
+      std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0') break;
+      ++numbers;
+    } while (numbers < 3 && tokens >> token);
+    return numbers >= 3;
+  }
+  return false;
+}
+
+// .txt files beside binary scans (.pcd, .ply, .bin, .3d) are stamps, poses,
+// calibration or trajectories, not scans: .txt files are scans only in a
+// folder of text clouds (.txt, .xyz), and there only those whose first line
+// is a point.
+void DropTextFilesThatAreNotScans(std::vector<std::string>* paths) {
+  const bool all_text =
+      std::all_of(paths->begin(), paths->end(), [](const std::string& p) {
+        return IsTextCloud(p);
+      });
+  paths->erase(std::remove_if(paths->begin(),
+                              paths->end(),
+                              [&](const std::string& p) {
+                                return IsTextFile(p) &&
+                                       (!all_text || !FirstLineIsPoint(p));
+                              }),
+               paths->end());
+}
+
+}  // namespace
 
 bool ListScanFiles(const std::string& dir,
                    const std::vector<std::string>& exclude,
@@ -42,6 +107,7 @@ bool ListScanFiles(const std::string& dir,
     *error = dir + ": " + ec.message();
     return false;
   }
+  DropTextFilesThatAreNotScans(paths);
   std::sort(paths->begin(),
             paths->end(),
             [](const std::string& a, const std::string& b) {

@@ -14,7 +14,10 @@ namespace mlndt {
 // Lists the regular files directly in `dir` whose extension is a cloud
 // format (cloud_format.h), sorted by file name. Files that are the same as a
 // path in `exclude` (pose or calibration files kept beside the scans; .txt
-// is also a cloud extension) are left out; empty entries are ignored. False
+// is also a cloud extension) are left out; empty entries are ignored. A
+// .txt file is a scan only in a folder with no other cloud file, and only
+// when its first line holds a point ("x y z"): stamps.txt, calib.txt,
+// poses and trajectories beside .pcd or .bin scans are left out. False
 // with *error when the folder cannot be read or holds no scans.
 bool ListScanFiles(const std::string& dir,
                    const std::vector<std::string>& exclude,

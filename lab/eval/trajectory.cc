@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace mlndt {
 
@@ -15,12 +16,26 @@ Trajectory::Trajectory(const std::vector<Isometry3d>& world_from_sensor) {
 }
 
 void Trajectory::Add(double timestamp_s, const Isometry3d& world_from_sensor) {
-  CHECK(std::isfinite(timestamp_s)) << "timestamp " << timestamp_s;
-  CHECK(timestamps_s_.empty() || timestamp_s > timestamps_s_.back())
-      << "timestamp " << timestamp_s << " after " << timestamps_s_.back()
-      << ": timestamps must increase strictly";
+  std::string error;
+  CHECK(TryAdd(timestamp_s, world_from_sensor, &error)) << error;
+}
+
+bool Trajectory::TryAdd(double timestamp_s,
+                        const Isometry3d& world_from_sensor,
+                        std::string* error) {
+  if (!std::isfinite(timestamp_s) ||
+      (!timestamps_s_.empty() && !(timestamp_s > timestamps_s_.back()))) {
+    std::ostringstream message;
+    message.precision(17);
+    message << "timestamp " << timestamp_s;
+    if (!timestamps_s_.empty()) message << " after " << timestamps_s_.back();
+    message << ": timestamps must be finite and increase strictly";
+    *error = message.str();
+    return false;
+  }
   timestamps_s_.push_back(timestamp_s);
   poses_.push_back(world_from_sensor);
+  return true;
 }
 
 std::vector<double> PathDistancesM(const std::vector<Isometry3d>& poses) {

@@ -4,6 +4,7 @@
 // KITTI or TUM files (trajectory_io.h) or built from registration results.
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "mlndt/common/types.h"
@@ -21,8 +22,14 @@ class Trajectory {
   explicit Trajectory(const std::vector<Isometry3d>& world_from_sensor);
 
   // Appends a pose. CHECK-fails unless timestamp_s is finite and greater
-  // than the last timestamp (readers check files before they add).
+  // than the last timestamp (for stamps already checked; TryAdd for
+  // stamps from user data).
   void Add(double timestamp_s, const Isometry3d& world_from_sensor);
+  // Appends a pose; false with *error naming both stamps, and nothing
+  // added, unless timestamp_s is finite and greater than the last.
+  bool TryAdd(double timestamp_s,
+              const Isometry3d& world_from_sensor,
+              std::string* error);
 
   size_t size() const { return poses_.size(); }
   bool empty() const { return poses_.empty(); }

@@ -14,14 +14,19 @@
 namespace mlndt {
 namespace {
 
+// Whether an estimate read from `path` in `format` has time stamps: TUM,
+// and its header does not say they are scan indices.
+bool EstimateTimed(TrajectoryFormat format, const std::string& path) {
+  return format == TrajectoryFormat::TUM && !TumStampsAreScanIndices(path);
+}
+
 // Pairs by time stamp (else by index) under options.association.
 bool PairsByTime(const TrajectoryEvaluationOptions& options,
                  const EvaluationReference& reference,
                  const TrajectoryEvaluation& result,
                  bool* by_time,
                  std::string* error) {
-  const bool estimate_timed = result.format == TrajectoryFormat::TUM &&
-                              !TumStampsAreScanIndices(result.path);
+  const bool estimate_timed = EstimateTimed(result.format, result.path);
   *by_time = false;
   switch (options.association) {
     case PoseAssociation::AUTO:
@@ -188,21 +193,31 @@ bool CheckIndexPairing(const TrajectoryEvaluationOptions& options,
                        TrajectoryFormat format,
                        const Trajectory& estimate,
                        std::string* error) {
+  // As PairsByTime decides: AUTO pairs by time only when both are timed.
+  const bool timed = EstimateTimed(format, path);
   const bool by_time = options.association == PoseAssociation::TIMESTAMP ||
-                       (options.association == PoseAssociation::AUTO &&
-                        format == TrajectoryFormat::TUM &&
-                        reference.format == TrajectoryFormat::TUM);
+                       (options.association == PoseAssociation::AUTO && timed &&
+                        reference.timed);
   const size_t n = reference.trajectory.size();
   if (by_time || options.association != PoseAssociation::AUTO ||
       estimate.size() == n) {
     return true;
   }
+  // One side timed, the other stamped with scan indices (or KITTI).
+  const std::string mixed =
+      timed == reference.timed
+          ? ""
+          : "; " + (timed ? path : reference.path) + " has time stamps, " +
+                (timed ? reference.path : path) +
+                " none (KITTI, or TUM stamped with scan indices), so they "
+                "cannot pair by time";
   *error = path + " has " + std::to_string(estimate.size()) +
            " poses, --reference " + std::to_string(n) +
            ": poses are paired by index, so the lengths must match "
            "(--association=index evaluates the first " +
            std::to_string(std::min(estimate.size(), n)) +
-           " explicitly; TUM files pair by timestamp)";
+           " explicitly; two files with time stamps pair by timestamp" + mixed +
+           ")";
   return false;
 }
 

@@ -100,8 +100,9 @@ bool StampTrajectory(const std::string& times_path,
                      std::string* error);
 
 // False with *error (naming the estimate's file) when AUTO would pair by
-// index two trajectories of different lengths: INDEX evaluates the common
-// prefix only when asked for.
+// index two trajectories of different lengths (also when one is timed and
+// the other stamped with scan indices, a TUM file too): INDEX evaluates
+// the common prefix only when asked for.
 bool CheckIndexPairing(const TrajectoryEvaluationOptions& options,
                        const EvaluationReference& reference,
                        const std::string& path,

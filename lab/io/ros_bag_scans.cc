@@ -10,6 +10,41 @@
 namespace mlndt {
 namespace {
 
+// The first fields of a message that starts with a std_msgs/Header, as
+// sensor_msgs/PointCloud2 does: read without the rest of the message.
+struct HeaderStamp {
+  uint32_t seq = 0;
+  ros::Time stamp;
+};
+
+}  // namespace
+}  // namespace mlndt
+
+namespace ros {
+namespace message_traits {
+// "*" matches every message type, as topic_tools::ShapeShifter's does;
+// Open checked that the topic's type is PointCloud2.
+template <>
+struct MD5Sum<mlndt::HeaderStamp> {
+  static const char* value() { return "*"; }
+  static const char* value(const mlndt::HeaderStamp&) { return value(); }
+};
+}  // namespace message_traits
+namespace serialization {
+template <>
+struct Serializer<mlndt::HeaderStamp> {
+  template <typename Stream>
+  static void read(Stream& stream, mlndt::HeaderStamp& header) {
+    stream.next(header.seq);
+    stream.next(header.stamp);
+  }
+};
+}  // namespace serialization
+}  // namespace ros
+
+namespace mlndt {
+namespace {
+
 constexpr char kPointCloud2[] = "sensor_msgs/PointCloud2";
 
 // "topic (type)" of every connection, for messages.
@@ -100,6 +135,31 @@ bool RosBagScans::Read(size_t i, BagScan* scan, std::string* error) const {
       *error = where + ": " + *error;
       return false;
     }
+  } catch (const std::exception& e) {
+    *error = where + ": " + e.what();
+    return false;
+  }
+  return true;
+}
+
+bool RosBagScans::ReadStamp(size_t i,
+                            double* stamp_s,
+                            std::string* error) const {
+  const std::string where =
+      path_ + ": " + topic_ + " message " + std::to_string(i);
+  if (i >= impl_->messages.size()) {
+    *error = where + ": the topic has " +
+             std::to_string(impl_->messages.size()) + " messages";
+    return false;
+  }
+  try {
+    const boost::shared_ptr<HeaderStamp> header =
+        impl_->messages[i].instantiate<HeaderStamp>();
+    if (header == nullptr) {
+      *error = where + ": no header";
+      return false;
+    }
+    *stamp_s = header->stamp.toSec();
   } catch (const std::exception& e) {
     *error = where + ": " + e.what();
     return false;

@@ -38,6 +38,9 @@ class RosBagScans {
   // Reads message i (0-based). False with *error on a malformed message
   // (no x/y/z float field, data shorter than its layout, ...).
   bool Read(size_t i, BagScan* scan, std::string* error) const;
+  // The header stamp of message i [s], read without decoding the points.
+  // False with *error as Read.
+  bool ReadStamp(size_t i, double* stamp_s, std::string* error) const;
 
   const std::string& path() const { return path_; }
   const std::string& topic() const { return topic_; }

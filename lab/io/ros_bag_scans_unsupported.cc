@@ -35,4 +35,9 @@ bool RosBagScans::Read(size_t, BagScan*, std::string* error) const {
   return false;
 }
 
+bool RosBagScans::ReadStamp(size_t, double*, std::string* error) const {
+  *error = path_ + ": this build reads no ROS bags";
+  return false;
+}
+
 }  // namespace mlndt

@@ -1,9 +1,12 @@
 #include "lab/report/gnuplot.h"
 
+#include <signal.h>
 #include <stdlib.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -44,13 +47,49 @@ std::string InFolder(const std::string& working_dir, const std::string& path) {
   return working_dir + "/" + path;
 }
 
-// A new folder ".mlndt_plot.XXXXXX" (mode 0700) next to `near`, absolute.
+// Whether the render folder `name` (".mlndt_plot.<pid>.XXXXXX") was left by
+// a process that no longer runs; one of an older version
+// (".mlndt_plot.XXXXXX", no pid) when it is over an hour old.
+bool IsStaleRenderDir(const fs::path& path) {
+  const std::string name = path.filename().string();
+  const std::string prefix = ".mlndt_plot.";
+  if (name.rfind(prefix, 0) != 0) return false;
+  const std::string rest = name.substr(prefix.size());
+  const size_t dot = rest.find('.');
+  if (dot != std::string::npos && dot > 0 &&
+      rest.find_first_not_of("0123456789") == dot) {
+    const long pid = std::strtol(rest.substr(0, dot).c_str(), nullptr, 10);
+    return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+  }
+  std::error_code ec;
+  const auto written = fs::last_write_time(path, ec);
+  return !ec &&
+         fs::file_time_type::clock::now() - written > std::chrono::hours(1);
+}
+
+// Removes the render folders in `folder` that a killed run left behind.
+void RemoveStaleRenderDirs(const fs::path& folder) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    std::error_code dir_ec;
+    if (entry.is_directory(dir_ec) && !entry.is_symlink(dir_ec) &&
+        IsStaleRenderDir(entry.path())) {
+      fs::remove_all(entry.path(), dir_ec);
+    }
+  }
+}
+
+// A new folder ".mlndt_plot.<pid>.XXXXXX" (mode 0700) next to `near`,
+// absolute, after removing the stale ones there (IsStaleRenderDir).
 bool MakeRenderDir(const std::string& near,
                    std::string* render_dir,
                    std::string* error) {
   fs::path folder = fs::path(near).parent_path();
   if (folder.empty()) folder = ".";
-  std::string pattern = (folder / ".mlndt_plot.XXXXXX").string();
+  RemoveStaleRenderDirs(folder);
+  std::string pattern =
+      (folder / (".mlndt_plot." + std::to_string(::getpid()) + ".XXXXXX"))
+          .string();
   if (::mkdtemp(pattern.data()) == nullptr) {
     *error = "cannot create a folder to draw the figures in " +
              folder.string() + ": " + std::strerror(errno);

@@ -267,13 +267,21 @@ bool RunPoseGraph(const PoseGraphOptions& options,
                                               scans,
                                               &summary->chained_failures);
   const double chained_done = NowSeconds();
-  std::vector<PointCloud>().swap(scans);  // The joint solve needs none.
   std::vector<PoseBlocks> blocks;
   for (const Isometry3d& pose : summary->initial) {
     blocks.push_back(PoseBlocks::From(pose));
   }
   SolveJointly(options, in, &blocks, summary);
   for (const PoseBlocks& b : blocks) summary->joint.push_back(b.ToIsometry());
+  summary->check = CheckJointPoses(options.registration,
+                                   options.information_scale,
+                                   in.maps,
+                                   scans,
+                                   options.extra_pairs,
+                                   options.odometry,
+                                   options.odometry_noise,
+                                   summary->joint,
+                                   summary->final_cost);
   const double done = NowSeconds();
   summary->maps_s = maps_done - start;
   summary->chained_s = chained_done - maps_done;

@@ -17,12 +17,15 @@
 //     unit-information one. With odometry, one factor per consecutive pair
 //     (pose_graph_factors.h). Solved on the finest layer of each map
 //     (joint_layers 2: the last two, coarse to fine).
+// (c) Verdict: the joint poses against each pair's own optimum and
+//     information and against the odometry factors (pose_graph_check.h).
 
 #include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "lab/runs/pose_graph_check.h"
 #include "lab/runs/pose_graph_factors.h"
 #include "mlndt/common/types.h"
 #include "mlndt/cost/add_pair_residuals.h"
@@ -70,8 +73,10 @@ struct PoseGraphSummary {
   double initial_cost = 0.0;     // First stage, at the initial poses.
   double cost_at_initial = 0.0;  // Last stage's objective there.
   double final_cost = 0.0;
-  std::string termination;
+  std::string termination;  // Ceres' (always CONVERGENCE or NO_CONVERGENCE).
   std::string linear_solver;
+  // The verdict on the joint poses (pose_graph_check.h).
+  PoseGraphCheck check;
   double maps_s = 0.0, chained_s = 0.0, joint_s = 0.0, total_s = 0.0;
 };
 

@@ -21,7 +21,8 @@ struct PoseBlocks {
 };
 
 // The stated noise of a measured relative motion: one standard deviation
-// per translation axis [m] and per rotation axis [deg]. Both > 0.
+// per translation axis [m] and per rotation axis [deg], each at least 1e-4
+// (OdometryNoiseTable, pose_graph_option_table.h).
 struct OdometryNoise {
   double sigma_m = 0.05;
   double sigma_deg = 0.5;

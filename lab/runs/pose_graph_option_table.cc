@@ -1,14 +1,16 @@
 #include "lab/runs/pose_graph_option_table.h"
 
-#include <limits>
-
 #include "lab/runs/pose_graph.h"
 #include "lab/runs/pose_graph_factors.h"
 
 namespace mlndt {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+// Below these, 1 / sigma^2 makes the odometry factors' cost overflow or
+// swamp every pair (--odometry_noise_sigma_m=1e-300 gave a cost of inf and
+// 0 iterations "CONVERGENCE").
+constexpr double kMinOdometrySigmaM = 1e-4;
+constexpr double kMinOdometrySigmaDeg = 1e-4;
 
 }  // namespace
 
@@ -19,13 +21,16 @@ const OptionTable& OdometryNoiseTable() {
           .Double("sigma_m",
                   &S::sigma_m,
                   "m",
-                  LeftOpen(0.0, kInf),
-                  "Stated noise of each odometry step, per translation axis.")
+                  Closed(kMinOdometrySigmaM, 1e3),
+                  "Stated noise of each odometry step, per translation axis "
+                  "(at least 0.1 mm: below it the factors' weights overflow "
+                  "the solve).")
           .Double("sigma_deg",
                   &S::sigma_deg,
                   "deg",
-                  LeftOpen(0.0, kInf),
-                  "Stated noise of each odometry step, per rotation axis.")
+                  Closed(kMinOdometrySigmaDeg, 180.0),
+                  "Stated noise of each odometry step, per rotation axis (at "
+                  "least 0.0001 deg).")
           .Build();
   return table;
 }

@@ -11,7 +11,9 @@ one saved map, on the workers of a Dask cluster.
 
 One task per pair (or scan). A worker process reads each scan file and
 builds each reference map (or loads the saved map) once: a per-process cache
-keyed by path (and, for built maps, the options) serves its later tasks.
+keyed by the file (its path, size and modification time, so a file rewritten
+at the same path is read again; and, for built maps, the options) serves its
+later tasks.
 Workers read the files themselves, so on a cluster the paths must be visible
 to every worker (a shared file system). With client=None the same task
 function runs here, in order: the sequential run, whose results the
@@ -24,6 +26,7 @@ worker that ran the task, "local" without a client).
 
 import functools
 import json
+import os
 import threading
 from collections import Counter, OrderedDict
 from dataclasses import dataclass
@@ -82,19 +85,35 @@ def _worker_address():
         return "local"
 
 
+def _file_key(path):
+    """A cache key of the file at `path`: the path, its size and its
+    modification time [ns], so a file rewritten at the same path is read
+    again."""
+    path = os.fspath(path)
+    try:
+        status = os.stat(path)
+    except OSError:
+        return (path, None, None)  # The reader names the problem.
+    return (path, status.st_size, status.st_mtime_ns)
+
+
 @functools.lru_cache(maxsize=_CLOUD_CACHE_SIZE)
+def _cloud_of(key):
+    return _mlndt.read_cloud(key[0])
+
+
 def _cloud(path):
-    return _mlndt.read_cloud(path)
+    return _cloud_of(_file_key(path))
 
 
-_reference_maps = OrderedDict()  # (path, options key) -> LayeredMap, oldest first.
+_reference_maps = OrderedDict()  # (file key, options key) -> LayeredMap, oldest first.
 _reference_maps_lock = threading.Lock()  # Workers may run several threads.
 
 
 def _reference_map(path, options):
     """The map mlndt.register builds of the reference (its range-filtered
     points on the options' grid), built once per process and options."""
-    key = (path, json.dumps(options, sort_keys=True, default=repr))
+    key = (_file_key(path), json.dumps(options, sort_keys=True, default=repr))
     with _reference_maps_lock:
         if key in _reference_maps:
             _reference_maps.move_to_end(key)
@@ -110,8 +129,12 @@ def _reference_map(path, options):
 
 
 @functools.lru_cache(maxsize=2)
+def _saved_map_of(key):
+    return _mlndt.LayeredMap.load(key[0])
+
+
 def _saved_map(path):
-    return _mlndt.LayeredMap.load(path)
+    return _saved_map_of(_file_key(path))
 
 
 def _register_pair(task, options):

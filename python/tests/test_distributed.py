@@ -75,3 +75,41 @@ def test_bad_options_raise_before_any_task(client):
         md.register_pairs(KITTI_SCANS, [(0, 9)], client=client)
     with pytest.raises(ValueError, match=r"initial: expected \(2, 4, 4\)"):
         md.localize_scans("map.mlndt", KITTI_SCANS[:2], np.eye(4), client=client)
+
+
+def test_a_file_rewritten_at_the_same_path_is_read_again(client, tmp_path):
+    """The per-process caches are keyed by path, size and modification time:
+    after a scan or a map file is rewritten, the new file's answer comes back,
+    here and on the workers (the pair repeated so both workers have cached
+    the old file)."""
+    import shutil
+
+    scan = tmp_path / "reference.pcd"
+    pairs = [(0, 1)] * 4
+
+    def pose_onto(frame, client=None):
+        shutil.copyfile(KITTI_SCANS[frame], scan)
+        results = md.register_pairs([scan, KITTI_SCANS[1]], pairs, client=client)
+        return [r.reference_from_input for r in results]
+
+    fresh = md.register_pairs([KITTI_SCANS[3], KITTI_SCANS[1]], [(0, 1)])[0].reference_from_input
+    for c in (None, client):
+        assert not np.array_equal(pose_onto(0, c)[0], fresh)
+        again = pose_onto(3, c)
+        assert all(np.array_equal(p, fresh) for p in again), c
+
+    map_path = tmp_path / "map.mlndt"
+    scans = [KITTI_SCANS[2]] * 4
+
+    def localize_on(frame, client=None):
+        mlndt.LayeredMap.build(mlndt.filter_range(mlndt.read_cloud(KITTI_SCANS[frame]))).save(map_path)
+        return [r.map_from_scan for r in md.localize_scans(map_path, scans, client=client)]
+
+    fresh_map = tmp_path / "fresh.mlndt"
+    mlndt.LayeredMap.build(mlndt.filter_range(mlndt.read_cloud(KITTI_SCANS[3]))).save(fresh_map)
+    expected = md.localize_scans(fresh_map, scans[:1])[0].map_from_scan
+    for c in (None, client):
+        old = localize_on(0, c)
+        new = localize_on(3, c)
+        assert not np.array_equal(old[0], expected)
+        assert all(np.array_equal(p, expected) for p in new), c

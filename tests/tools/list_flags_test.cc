@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <limits>
 
 #include "mlndt/common/pose.h"
 #include "tests/testing/scratch_dir.h"
@@ -49,6 +50,36 @@ TEST(ParseIntList, IntegersOnly) {
   EXPECT_FALSE(ParseIntList("1.5", &v));
   EXPECT_FALSE(ParseIntList("", &v));
   EXPECT_FALSE(ParseIntList("1,", &v));
+}
+
+TEST(ParseCountList, WholeNumbersInRangeOnly) {
+  std::vector<size_t> v;
+  std::string error;
+  EXPECT_TRUE(tools::ParseCountList("1, 2,7", 1, 7, &v, &error)) << error;
+  EXPECT_EQ(v, (std::vector<size_t>{1, 2, 7}));
+  for (const char* bad : {"0",
+                          "8",
+                          "1e300",
+                          "1e0",
+                          "1.0",
+                          "-1",
+                          "+1",
+                          "0x2",
+                          "18446744073709551615",
+                          "18446744073709551616",
+                          "99999999999999999999999"}) {
+    EXPECT_FALSE(tools::ParseCountList(bad, 1, 7, &v, &error)) << bad;
+    EXPECT_NE(error.find(std::string("'") + bad +
+                         "' is not a whole number in [1, 7]"),
+              std::string::npos)
+        << error;
+  }
+  EXPECT_FALSE(tools::ParseCountList("1,,2", 1, 7, &v, &error));
+  EXPECT_FALSE(tools::ParseCountList("", 1, 7, &v, &error));
+  const size_t max = std::numeric_limits<size_t>::max();
+  EXPECT_TRUE(
+      tools::ParseCountList("18446744073709551615", 0, max, &v, &error));
+  EXPECT_EQ(v, (std::vector<size_t>{max}));
 }
 
 TEST(RowMajorToRigidTransform, ReadsRowsAndChecksTheRotation) {

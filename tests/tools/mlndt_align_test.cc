@@ -176,6 +176,38 @@ TEST(MlndtAlign, FailedRegistrationWritesNoOutputCloud) {
   EXPECT_FALSE(std::filesystem::exists(cloud));
 }
 
+// Issue 41 item 9: a FAILURE prints no pose matrix (its pose is the start,
+// not an estimate), and a pose file given as a cloud (4 "points") is
+// refused before any work.
+TEST(MlndtAlign, FailurePrintsNoMatrixAndAPoseFileIsNoCloud) {
+  const ToolRun failed = RunAlign("--max_range=0.5");
+  EXPECT_EQ(failed.exit_code, 1) << failed.err;
+  EXPECT_NE(failed.out.find("FAILURE"), std::string::npos) << failed.out;
+  EXPECT_EQ(failed.out.find("reference_from_input (4x4"), std::string::npos)
+      << failed.out;
+  EXPECT_NE(failed.out.find("reference_from_input: none (FAILURE)"),
+            std::string::npos)
+      << failed.out;
+
+  const std::string scan = testing::BundledDataPath("koide3/251370668.pcd");
+  const std::string pose =
+      testing::BundledDataPath("koide3/T_target_source.txt");
+  for (const std::string& args :
+       {Quote(scan) + " " + Quote(pose),
+        Quote(pose) + " " + Quote(scan),
+        Quote(scan) + " " + Quote(pose) + " --method=ndt"}) {
+    const ToolRun run = RunAlign(args);
+    EXPECT_EQ(run.exit_code, 2) << args << "\nstderr: " << run.err;
+    EXPECT_NE(run.err.find(pose + ": 4 points, fewer than one NDT cell needs "
+                                  "(min_points_per_cell 5)"),
+              std::string::npos)
+        << run.err;
+    EXPECT_EQ(run.out.find("reference_from_input"), std::string::npos)
+        << args << ": the registration ran\n"
+        << run.out;
+  }
+}
+
 TEST(MlndtAlign, BadInputFailsWithAMessage) {
   const std::string dir = TestDir();
   {

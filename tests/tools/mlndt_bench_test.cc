@@ -117,8 +117,8 @@ TEST(MlndtBench, NewtonAndLmOnTheKoide3Pair) {
   }
 }
 
-// The previous defaults (2 m finest cells) build another map: another final
-// score, both near the reference.
+// The previous defaults (2 m finest cells, Cauchy scale 3) build another
+// map: another final score, both near the reference.
 TEST(MlndtBench, CurrentAndPreviousDefaultsOnTheKoide3Pair) {
   const std::string csv_path = TempPath("defaults.csv");
   const ToolRun run = RunBench(
@@ -139,6 +139,9 @@ TEST(MlndtBench, CurrentAndPreviousDefaultsOnTheKoide3Pair) {
   }
   ASSERT_EQ(rows.count("current"), 1u);
   ASSERT_EQ(rows.count("previous"), 1u);
+  // Each with its own Cauchy scale (issue 41 item 5).
+  EXPECT_EQ(rows["current"]["loss"], "cauchy@1.5");
+  EXPECT_EQ(rows["previous"]["loss"], "cauchy@3");
   EXPECT_NE(rows["current"]["mean_final_score"],
             rows["previous"]["mean_final_score"]);
   for (auto& [name, row] : rows) {

@@ -436,5 +436,47 @@ TEST(MlndtEval, DifferentLengthsAreRefusedUnlessIndexPairingIsAskedFor) {
   EXPECT_EQ(json["estimates"][0]["association"].get<std::string>(), "index");
 }
 
+// Issue 41 item 4: a TUM file stamped with scan indices cannot pair by time
+// with a timed one; of different lengths, the pair is refused (exit 2,
+// naming which has stamps), not scored on the common prefix by index.
+TEST(MlndtEval, IndexStampedTumAgainstTimedTumOfOtherLengthIsRefused) {
+  const std::string dir = TestDir();
+  const std::vector<Isometry3d> poses = ReadPoses(KittiGt());
+  std::string error;
+  // All 8 poses at 100 + 0.1 k s, and poses 2-7 stamped 0..5 as indices.
+  Trajectory timed, indexed;
+  for (size_t k = 0; k < poses.size(); ++k) {
+    timed.Add(100.0 + 0.1 * static_cast<double>(k), poses[k]);
+    if (k >= 2) indexed.Add(static_cast<double>(k - 2), poses[k]);
+  }
+  const std::string timed_path = dir + "/timed.txt";
+  const std::string indexed_path = dir + "/indexed.txt";
+  ASSERT_TRUE(
+      WriteTrajectory(timed_path, TrajectoryFormat::TUM, timed, &error));
+  ASSERT_TRUE(WriteTrajectory(indexed_path,
+                              TrajectoryFormat::TUM,
+                              indexed,
+                              kTumIndexStampsComment,
+                              &error));
+  for (const auto& [reference, estimate] :
+       {std::make_pair(timed_path, indexed_path),
+        std::make_pair(indexed_path, timed_path)}) {
+    const ToolRun run = testing::RunTool(
+        "mlndt_eval",
+        "--reference=" + Quote(reference) + " --estimate=" + Quote(estimate) +
+            " --output_json=" + Quote(dir + "/eval.json"));
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_NE(run.err.find("poses are paired by index, so the lengths must "
+                           "match"),
+              std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find(timed_path + " has time stamps, " + indexed_path +
+                           " none"),
+              std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(dir + "/eval.json"));
+  }
+}
+
 }  // namespace
 }  // namespace mlndt

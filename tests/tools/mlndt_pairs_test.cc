@@ -14,7 +14,7 @@ namespace {
 using testing::ToolRun;
 const auto& Quote = testing::ShellQuote;
 
-TEST(MlndtPairs, RefusesGapsThatAreNotWholeFramesOfAtLeastOne) {
+TEST(MlndtPairs, RefusesGapsThatAreNotWholeFramesInRange) {
   const std::string base =
       "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
       " --gt_poses=" + Quote(testing::BundledDataPath("kitti/poses_velo.txt"));
@@ -27,6 +27,15 @@ TEST(MlndtPairs, RefusesGapsThatAreNotWholeFramesOfAtLeastOne) {
       {"-1", "--gaps=-1: a gap is a whole number of frames >= 1"},
       {"1.5", "--gaps=1.5: a gap is a whole number of frames >= 1"},
       {"1,,2", "--gaps=1,,2: expected comma-separated frame gaps"},
+      // Out of range: refused, not wrapped or rounded to 0 (every scan
+      // onto itself) or left without a pair (8 scans).
+      {"1e300", "--gaps=1e300: a gap is a whole number of frames >= 1"},
+      {"18446744073709551615",
+       "'18446744073709551615' is not a whole number in [1, 7]"},
+      {"18446744073709551616",
+       "'18446744073709551616' is not a whole number in [1, 7]"},
+      {"8", "below the number of scans (8): '8' is not"},
+      {"+1", "'+1' is not"},
   };
   for (const Case& c : cases) {
     const ToolRun run =

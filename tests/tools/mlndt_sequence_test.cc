@@ -411,7 +411,8 @@ TEST(MlndtSequence, KittiGroundTruthInitStaysAtTheDataOptimum) {
 
 TEST(MlndtSequence, CameraPosesWithCalibMatchVelodynePoses) {
   // Scans, camera poses and calib.txt in one folder: the two text files
-  // are not scans; the converted poses equal poses_velo.txt.
+  // are not scans; the converted poses equal poses_velo.txt. The 3 scans
+  // are the first of the 8-pose run: --max_scans says so (CheckPoseCount).
   const std::string data = TestDir("_data");
   for (int k = 0; k < 3; ++k) {
     const std::string name = "00000" + std::to_string(k) + ".pcd";
@@ -423,11 +424,12 @@ TEST(MlndtSequence, CameraPosesWithCalibMatchVelodynePoses) {
   fs::copy_file(testing::BundledDataPath("kitti/calib.txt"),
                 data + "/calib.txt");
   const std::string dir = TestDir();
-  const ToolRun run = RunSequence(
-      "--scans=" + Quote(data) +
-      " --gt_poses=" + Quote(data + "/poses_cam0.txt") +
-      " --poses_are_camera --calib=" + Quote(data + "/calib.txt") +
-      " --output_dir=" + Quote(dir) + " --backend=lm --plots=false");
+  const ToolRun run =
+      RunSequence("--scans=" + Quote(data) +
+                  " --gt_poses=" + Quote(data + "/poses_cam0.txt") +
+                  " --poses_are_camera --calib=" + Quote(data + "/calib.txt") +
+                  " --output_dir=" + Quote(dir) +
+                  " --backend=lm --plots=false" + " --max_scans=3");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const FlatJson summary(ReadFile(dir + "/summary.json"));
   EXPECT_EQ(summary.Number("scans"), 3.0);

@@ -82,7 +82,12 @@ void PrintAlignResult(const std::string& reference_path,
                 *rotation_error_deg,
                 expected_path.c_str());
   }
-  PrintPoseMatrix(summary);
+  // A FAILURE's pose is its start, not an estimate.
+  if (summary.termination_type == TerminationType::FAILURE) {
+    std::printf("reference_from_input: none (FAILURE)\n");
+  } else {
+    PrintPoseMatrix(summary);
+  }
 }
 
 std::string UnacceptedResultMessage(const RegistrationSummary& summary,

@@ -32,7 +32,7 @@ Json AlignResultJson(const std::string& reference,
 // The clouds, the summary's report, the peak memory, with `trace` the
 // per-iteration table, with an `expected_path` the error against
 // `expected` (*translation_error_m, *rotation_error_deg; left as they are
-// without), and the 4x4 pose.
+// without), and the 4x4 pose (for a FAILURE a line saying there is none).
 void PrintAlignResult(const std::string& reference_path,
                       size_t reference_points,
                       const std::string& input_path,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 
 #include "mlndt/cloud/cloud_format.h"
 
@@ -62,6 +63,25 @@ bool IsInput(const std::string& candidate,
          CloudFormatFromPath(output, &format, &ignored);
 }
 
+// "the argument A" or "--name=value" for the first recorded argument or
+// string flag other than the outputs (one of its Candidates) that
+// `is_input` accepts; "" when none.
+std::string FindInput(const std::function<bool(const std::string&)>& is_input) {
+  for (const std::string& argument : ToolArguments()) {
+    if (is_input(argument)) return "the argument " + argument;
+  }
+  std::vector<gflags::CommandLineFlagInfo> flags;
+  gflags::GetAllFlags(&flags);
+  for (const gflags::CommandLineFlagInfo& info : flags) {
+    if (info.type != "string" || IsOutputFlag(info.name)) continue;
+    for (const std::string& candidate : Candidates(info.current_value)) {
+      if (is_input(candidate))
+        return "--" + info.name + "=" + info.current_value;
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 void SetToolArguments(const std::vector<std::string>& arguments) {
@@ -76,26 +96,33 @@ bool CheckNotAnInput(const std::string& flag,
       !S_ISREG(output_status.st_mode)) {
     return true;  // Nothing there (or not a file): nothing to overwrite.
   }
-  const std::string refused = "--" + flag + "=" + path +
-                              ": refusing to overwrite an input of this run (";
-  for (const std::string& argument : ToolArguments()) {
-    if (IsInput(argument, path, output_status)) {
-      *error = refused + "the argument " + argument + ")";
-      return false;
-    }
+  const std::string input = FindInput([&](const std::string& candidate) {
+    return IsInput(candidate, path, output_status);
+  });
+  if (input.empty()) return true;
+  *error = "--" + flag + "=" + path +
+           ": refusing to overwrite an input of this run (" + input + ")";
+  return false;
+}
+
+bool CheckNotAnInputFolder(const std::string& flag,
+                           const std::string& dir,
+                           std::string* error) {
+  struct stat dir_status;
+  if (dir.empty() || ::stat(dir.c_str(), &dir_status) != 0 ||
+      !S_ISDIR(dir_status.st_mode)) {
+    return true;  // Not there yet: no input lies in it.
   }
-  std::vector<gflags::CommandLineFlagInfo> flags;
-  gflags::GetAllFlags(&flags);
-  for (const gflags::CommandLineFlagInfo& info : flags) {
-    if (info.type != "string" || IsOutputFlag(info.name)) continue;
-    for (const std::string& candidate : Candidates(info.current_value)) {
-      if (IsInput(candidate, path, output_status)) {
-        *error = refused + "--" + info.name + "=" + info.current_value + ")";
-        return false;
-      }
-    }
-  }
-  return true;
+  const std::string input = FindInput([&](const std::string& candidate) {
+    struct stat status;
+    return !candidate.empty() && ::stat(candidate.c_str(), &status) == 0 &&
+           S_ISDIR(status.st_mode) && SameFile(status, dir_status);
+  });
+  if (input.empty()) return true;
+  *error = "--" + flag + "=" + dir + ": is a folder this run reads (" + input +
+           "); write the outputs elsewhere (the next run would read them as "
+           "inputs)";
+  return false;
 }
 
 }  // namespace tools

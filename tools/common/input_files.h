@@ -25,5 +25,13 @@ bool CheckNotAnInput(const std::string& flag,
                      const std::string& path,
                      std::string* error);
 
+// False, with *error naming --`flag`=`dir` and the input, when the folder
+// `dir` exists and is one the run reads (an argument or a string flag as
+// above naming the same folder, by device and inode): a later run would
+// read the outputs as inputs (a trajectory.txt in the scan folder).
+bool CheckNotAnInputFolder(const std::string& flag,
+                           const std::string& dir,
+                           std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

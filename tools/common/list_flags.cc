@@ -1,6 +1,8 @@
 #include "tools/common/list_flags.h"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "lab/report/text_format.h"
@@ -60,6 +62,32 @@ bool ParseIntList(const std::string& text, std::vector<int>* values) {
     } catch (...) {
       return false;
     }
+  }
+  return true;
+}
+
+bool ParseCountList(const std::string& text,
+                    size_t min_value,
+                    size_t max_value,
+                    std::vector<size_t>* values,
+                    std::string* error) {
+  values->clear();
+  const std::string range = "a whole number in [" + std::to_string(min_value) +
+                            ", " + std::to_string(max_value) + "]";
+  std::vector<std::string> items;
+  if (!SplitList(text, &items)) {
+    *error = "expected comma-separated items, each " + range;
+    return false;
+  }
+  for (const std::string& item : items) {
+    errno = 0;
+    const unsigned long long v = std::strtoull(item.c_str(), nullptr, 10);
+    if (item.find_first_not_of("0123456789") != std::string::npos ||
+        errno == ERANGE || v < min_value || v > max_value) {
+      *error = "'" + item + "' is not " + range;
+      return false;
+    }
+    values->push_back(static_cast<size_t>(v));
   }
   return true;
 }

@@ -3,6 +3,7 @@
 // Comma-separated list flags ("a,b,c"): the one parser of items, numbers
 // and integers the tools share.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,16 @@ bool ParseNumberList(const std::string& text, std::vector<double>* values);
 
 // Parses "a,b,c" into integers (SplitList items); false on anything else.
 bool ParseIntList(const std::string& text, std::vector<int>* values);
+
+// Parses "a,b,c" (SplitList items) into whole numbers in [min_value,
+// max_value]: digits only, no sign, point or exponent, so "1e300" and
+// 18446744073709551615 are refused, not wrapped or rounded. False with
+// *error naming the bad item and the range.
+bool ParseCountList(const std::string& text,
+                    size_t min_value,
+                    size_t max_value,
+                    std::vector<size_t>* values,
+                    std::string* error);
 
 // Parses mlndt_scaling's --sizes: strictly increasing positive integers;
 // false with *error naming the flag and the bad item.

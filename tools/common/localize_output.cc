@@ -176,7 +176,10 @@ bool WriteLocalizationFiles(const std::string& dir,
   const std::string out = dir + "/";
   Trajectory trajectory;
   for (const LocalizationResult& r : results) {
-    trajectory.Add(input.StampOf(r.index), r.map_from_scan);
+    if (!trajectory.TryAdd(input.StampOf(r.index), r.map_from_scan, error)) {
+      *error = "scan " + input.name(r.index) + ": " + *error;
+      return false;
+    }
   }
   return WriteTrajectory(out + "trajectory_kitti.txt",
                          TrajectoryFormat::KITTI,

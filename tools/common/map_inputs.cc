@@ -217,17 +217,8 @@ bool MapScansFromFlags(const std::string& scans_dir,
     *error = "--poses: " + *error;
     return false;
   }
-  // Pose k belongs to scan k: a count that differs (more poses than
-  // scans, unless --max_scans cut the scans) means a wrong file or folder.
-  const size_t scans = input->size();
-  if (poses->size() < scans || (poses->size() > scans && max_scans == 0)) {
-    *error = "--poses=" + poses_path + " has " + std::to_string(poses->size()) +
-             " poses for " + std::to_string(scans) +
-             " scans (pose k belongs to scan k; use --max_scans to "
-             "take the first scans of a longer run)";
-    return false;
-  }
-  return true;
+  return CheckPoseCount(
+      "--poses=" + poses_path, poses->size(), input->size(), max_scans, error);
 }
 
 bool RefuseScanFlagsWithCloud(std::string* error) {

@@ -51,7 +51,10 @@ bool WriteOdometryFiles(const std::string& dir,
       "alpha_deg,beta_deg,gamma_deg,registration_ms,map_ms,total_ms,"
       "message\n";
   for (const OdometryResult& r : results) {
-    trajectory.Add(r.stamp_s, r.world_from_sensor);
+    if (!trajectory.TryAdd(r.stamp_s, r.world_from_sensor, error)) {
+      *error = "scan " + input.name(r.index) + ": " + *error;
+      return false;
+    }
     csv += ScanRow(input, r);
   }
   return WriteTrajectory(dir + "/trajectory_kitti.txt",

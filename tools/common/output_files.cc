@@ -19,6 +19,7 @@ bool PrepareOutputDir(const std::string& flag,
     *error = "--" + flag + " is empty";
     return false;
   }
+  if (!CheckNotAnInputFolder(flag, dir, error)) return false;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir, ec)) {

@@ -11,9 +11,10 @@
 namespace mlndt {
 namespace tools {
 
-// Creates the folder `dir` of the flag --`flag` (with its parents), then
-// checks that each of `files` (names inside it) can be written there
-// (CheckWritableFilePath) and that a file can really be created in it (a
+// Refuses a `dir` that is an input folder of the run (CheckNotAnInputFolder,
+// input_files.h), creates the folder `dir` of the flag --`flag` (with its
+// parents), then checks that each of `files` (names inside it) can be written
+// there (CheckWritableFilePath) and that a file can really be created in it (a
 // probe file, removed again), and that none of them is an input of the
 // run (CheckNotAnInput). False with *error naming the flag.
 bool PrepareOutputDir(const std::string& flag,

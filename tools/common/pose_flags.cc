@@ -34,5 +34,21 @@ bool CheckCameraPoseFlags(const std::string& pose_flags,
   return true;
 }
 
+bool CheckPoseCount(const std::string& given,
+                    size_t num_poses,
+                    size_t num_scans,
+                    int max_scans,
+                    std::string* error) {
+  if (num_poses == num_scans || (num_poses > num_scans && max_scans > 0)) {
+    return true;
+  }
+  *error = given + " has " + std::to_string(num_poses) + " poses for " +
+           std::to_string(num_scans) + " scans (pose k belongs to scan k" +
+           (max_scans == 0 ? "; use --max_scans to take the first scans of a "
+                             "longer run)"
+                           : ")");
+  return false;
+}
+
 }  // namespace tools
 }  // namespace mlndt

@@ -17,6 +17,7 @@
 
 #include <gflags/gflags.h>
 
+#include <cstddef>
 #include <string>
 
 DECLARE_string(calib);
@@ -32,6 +33,17 @@ namespace tools {
 bool CheckCameraPoseFlags(const std::string& pose_flags,
                           bool any_pose_file,
                           std::string* error);
+
+// Pose k belongs to scan k: refuses the pose file `given` ("--poses=FILE")
+// with fewer poses than the `num_scans` scans, and with more unless
+// --max_scans (`max_scans` > 0) took the first scans of a longer run; a
+// missing scan or a wrong file would shift every later pose by one.
+// `max_scans` < 0: the tool has no --max_scans.
+bool CheckPoseCount(const std::string& given,
+                    size_t num_poses,
+                    size_t num_scans,
+                    int max_scans,
+                    std::string* error);
 
 }  // namespace tools
 }  // namespace mlndt

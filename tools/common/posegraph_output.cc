@@ -27,6 +27,30 @@ bool WritePoseGraphTrajectories(const std::string& dir,
          WriteKittiPoses(dir + "/trajectory_joint.txt", summary.joint, error);
 }
 
+namespace {
+
+// The verdict on the joint poses (pose_graph_check.h).
+void AddJointCheck(const PoseGraphCheck& check, Json* json) {
+  (*json)["verdict"] = check.verdict;
+  if (!check.message.empty()) (*json)["verdict_message"] = check.message;
+  Json pairs = Json::array();
+  for (const PoseGraphPairCheck& c : check.pairs) {
+    pairs.push_back({{"pair", {c.map_scan, c.point_scan}},
+                     {"termination", c.termination},
+                     {"nees", Number(c.nees)},
+                     {"translation_m", Number(c.translation_m)},
+                     {"rotation_deg", Number(c.rotation_deg)}});
+  }
+  (*json)["pair_checks"] = std::move(pairs);
+  if (!check.odometry_chi2.empty()) {
+    Json chi2 = Json::array();
+    for (double value : check.odometry_chi2) chi2.push_back(Number(value));
+    (*json)["odometry_chi2"] = std::move(chi2);
+  }
+}
+
+}  // namespace
+
 bool PoseGraphJson(const PoseGraphOptions& options,
                    const PoseGraphSummary& summary,
                    const std::vector<Isometry3d>& truth,
@@ -56,6 +80,7 @@ bool PoseGraphJson(const PoseGraphOptions& options,
   json["joint_cost_at_" + InitialName(summary)] =
       Number(summary.cost_at_initial);
   json["joint_final_cost"] = Number(summary.final_cost);
+  AddJointCheck(summary.check, &json);
   if (!truth.empty() && !AddTrajectoryMetrics(InitialName(summary),
                                               summary.initial,
                                               summary.joint,

@@ -1,6 +1,7 @@
 #include "tools/common/scan_input.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 
@@ -131,6 +132,33 @@ bool ScanInput::LoadScan(size_t i,
   stamps_s_.at(i) = scan.stamp_s;
   *cloud = std::move(scan.cloud);
   if (point_times_s != nullptr) *point_times_s = std::move(scan.point_times_s);
+  return true;
+}
+
+bool ScanInput::ReadBagStamps(std::string* error) {
+  if (bag_ == nullptr) return true;
+  for (size_t i = 0; i < names_.size(); ++i) {
+    double stamp_s = 0.0;
+    if (!bag_->ReadStamp(i, &stamp_s, error)) {
+      *error = "--bag=" + *error;
+      return false;
+    }
+    if (!std::isfinite(stamp_s) || (i > 0 && !(stamp_s > stamps_s_[i - 1]))) {
+      char text[160];
+      std::snprintf(text,
+                    sizeof(text),
+                    "header stamp %.9f s of message %zu is not after the "
+                    "previous message's %.9f s",
+                    stamp_s,
+                    i,
+                    i > 0 ? stamps_s_[i - 1] : stamp_s);
+      *error = "--bag=" + FLAGS_bag + " --topic=" + FLAGS_topic + ": " + text +
+               " (the scans need strictly increasing time stamps; a driver "
+               "that does not stamp its messages gives 0)";
+      return false;
+    }
+    stamps_s_[i] = stamp_s;
+  }
   return true;
 }
 

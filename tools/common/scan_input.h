@@ -47,6 +47,14 @@ class ScanInput {
   // (mlndt_map reports it and goes on) instead of being an error.
   ScanLoader Loader(bool allow_empty = false);
 
+  // For a bag: reads the header stamps of the scans now and checks that
+  // they are finite and increase strictly, as ReadScanTimes checks a
+  // --times file (a driver that does not stamp gives 0s). For the tools
+  // whose outputs are stamped (TUM trajectories, the odometry's
+  // prediction). True for a folder. False with *error naming the bag, the
+  // message and its stamp: the tool refuses the input before any work.
+  bool ReadBagStamps(std::string* error);
+
   // Whether scans have real time stamps (a bag or --times).
   bool has_stamps() const { return !time_source_.empty(); }
   // The stamp of scan i [s]: from --times, from the bag once the scan was

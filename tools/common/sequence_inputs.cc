@@ -29,6 +29,7 @@ bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
 bool ReadSequenceRunPoses(const SequenceOptions& options,
                           const std::string& source,
                           size_t num_scans,
+                          int max_scans,
                           const std::string& gt_poses,
                           std::vector<Isometry3d>* truth,
                           std::vector<Isometry3d>* odometry,
@@ -53,9 +54,11 @@ bool ReadSequenceRunPoses(const SequenceOptions& options,
                  "--calib=calib.txt; else every error below is measured "
                  "against the wrong frame.\n";
   }
-  if (!truth->empty() && truth->size() < num_scans) {
-    *error = gt_poses + " has " + std::to_string(truth->size()) +
-             " poses for " + scans;
+  if (!gt_poses.empty() && !CheckPoseCount("--gt_poses=" + gt_poses,
+                                           truth->size(),
+                                           num_scans,
+                                           max_scans,
+                                           error)) {
     return false;
   }
   if (options.init.mode == InitMode::GT_FRACTION && truth->empty()) {
@@ -67,12 +70,11 @@ bool ReadSequenceRunPoses(const SequenceOptions& options,
           options.init.poses_path, FLAGS_calib, odometry, error)) {
     return false;
   }
-  if (odometry->size() < num_scans) {
-    *error = options.init.poses_path + " has " +
-             std::to_string(odometry->size()) + " poses for " + scans;
-    return false;
-  }
-  return true;
+  return CheckPoseCount("--init=poses:" + options.init.poses_path,
+                        odometry->size(),
+                        num_scans,
+                        max_scans,
+                        error);
 }
 
 bool ReadSequenceInputs(const SequenceOptions& options,
@@ -88,12 +90,14 @@ bool ReadSequenceInputs(const SequenceOptions& options,
           {gt_poses, FLAGS_calib, options.init.poses_path, FLAGS_times},
           static_cast<size_t>(max_scans),
           input,
-          error)) {
+          error) ||
+      !input->ReadBagStamps(error)) {
     return false;
   }
   return ReadSequenceRunPoses(options,
                               FLAGS_bag.empty() ? scans_dir : FLAGS_bag,
                               input->size(),
+                              max_scans,
                               gt_poses,
                               truth,
                               odometry,

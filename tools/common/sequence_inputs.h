@@ -21,7 +21,8 @@ bool AdaptiveOptionsFromFlags(AdaptiveStartLayerOptions* adaptive,
                               std::string* error);
 
 // The scans of --scans=`scans_dir` (or --bag; at most `max_scans`, the
-// pose, calib and times files left out) and ReadSequenceRunPoses.
+// pose, calib and times files left out; a bag's stamps checked by
+// ScanInput::ReadBagStamps) and ReadSequenceRunPoses.
 bool ReadSequenceInputs(const SequenceOptions& options,
                         const std::string& scans_dir,
                         const std::string& gt_poses,
@@ -35,11 +36,12 @@ bool ReadSequenceInputs(const SequenceOptions& options,
 // message; `gt_poses` may be empty. Warns on stderr when the ground truth
 // looks like KITTI camera poses read without --poses_are_camera. False with
 // *error (naming the flag or file) on too few scans for the step, poses
-// that cannot be read or are fewer than the scans, or gt_fraction without
-// ground truth.
+// that cannot be read or whose count is not the scans' (CheckPoseCount;
+// `max_scans` is --max_scans), or gt_fraction without ground truth.
 bool ReadSequenceRunPoses(const SequenceOptions& options,
                           const std::string& source,
                           size_t num_scans,
+                          int max_scans,
                           const std::string& gt_poses,
                           std::vector<Isometry3d>* truth,
                           std::vector<Isometry3d>* odometry,

@@ -284,7 +284,10 @@ bool WriteTumTrajectory(const std::string& path,
                         std::string* error) {
   Trajectory trajectory;
   for (size_t k = 0; k < poses.size(); ++k) {
-    trajectory.Add(input.StampOf(k * step), poses[k]);
+    if (!trajectory.TryAdd(input.StampOf(k * step), poses[k], error)) {
+      *error = path + ": scan " + input.name(k * step) + ": " + *error;
+      return false;
+    }
   }
   return WriteTrajectory(
       path, TrajectoryFormat::TUM, trajectory, input.TumComment(), error);
@@ -292,7 +295,6 @@ bool WriteTumTrajectory(const std::string& path,
 
 bool WriteSequenceFiles(const std::string& dir,
                         const SequenceOptions& options,
-                        const Json& header,
                         const ScanInput& input,
                         const ScanStore& store,
                         const std::vector<PairResult>& results,
@@ -301,10 +303,6 @@ bool WriteSequenceFiles(const std::string& dir,
   const std::string out = dir + "/";
   if (!WritePairsCsv(out + "pairs.csv", store, results, error) ||
       !WriteTraceCsv(out + "trace.csv", results, error)) {
-    return false;
-  }
-  if (!WriteJsonFile(
-          out + "summary.json", SummaryJson(header, results), error)) {
     return false;
   }
   const std::vector<Isometry3d> chained =

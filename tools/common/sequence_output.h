@@ -67,12 +67,11 @@ bool WriteTumTrajectory(const std::string& path,
                         const ScanInput& input,
                         std::string* error);
 
-// pairs.csv, trace.csv, summary.json (`header` first) and the trajectories
-// (trajectory.txt, trajectory_tum.txt, with truth gt_trajectory.txt) into
-// `dir`.
+// pairs.csv, trace.csv and the trajectories (trajectory.txt,
+// trajectory_tum.txt, with truth gt_trajectory.txt) into `dir`; the tool
+// writes summary.json (SummaryJson) last (output_set.h).
 bool WriteSequenceFiles(const std::string& dir,
                         const SequenceOptions& options,
-                        const Json& header,
                         const ScanInput& input,
                         const ScanStore& store,
                         const std::vector<PairResult>& results,

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "tools/common/flag_utils.h"
 #include "tools/common/input_files.h"
 
 // gflags' own help flags (gflags_reporting.cc).
@@ -61,6 +62,16 @@ namespace {
 std::set<std::string>& HiddenFlags() {
   static std::set<std::string> hidden;
   return hidden;
+}
+
+// RefuseUnreadFlags: the flags and the reason given for them.
+std::vector<std::string>& UnreadFlags() {
+  static std::vector<std::string> flags;
+  return flags;
+}
+std::string& UnreadFlagsReason() {
+  static std::string reason;
+  return reason;
 }
 
 std::string FileName(const std::string& path) {
@@ -123,6 +134,13 @@ void ExitOnBadFlags(const std::string& tool, int argc, char** argv) {
 
 void HideFlagsFromHelp(const std::vector<std::string>& flags) {
   HiddenFlags().insert(flags.begin(), flags.end());
+}
+
+void RefuseUnreadFlags(const std::vector<std::string>& flags,
+                       const std::string& reason) {
+  HideFlagsFromHelp(flags);
+  UnreadFlags().insert(UnreadFlags().end(), flags.begin(), flags.end());
+  UnreadFlagsReason() = reason;
 }
 
 std::string VersionLine() { return std::string("mlndt ") + MLNDT_VERSION; }
@@ -188,6 +206,11 @@ bool StartTool(const char* usage,
   SetToolArguments(std::vector<std::string>(*argv + 1, *argv + *argc));
   google::InitGoogleLogging((*argv)[0]);
   FLAGS_logtostderr = true;
+  std::string error;
+  if (!RefuseGivenFlags(UnreadFlags(), UnreadFlagsReason(), &error)) {
+    std::cerr << tool << ": " << error << "\n";
+    return false;
+  }
   if (reject_arguments && *argc > 1) {
     std::cerr << tool << ": unexpected argument '" << (*argv)[1]
               << "' (flags are --name=value)\n";

@@ -66,6 +66,13 @@ ToolArguments ParseSubcommand(const std::string& tool,
 // them. Call before StartTool.
 void HideFlagsFromHelp(const std::vector<std::string>& flags);
 
+// Shared flags (tools/common/) that the tool links but does not read:
+// --help leaves them out and StartTool refuses each one given with
+// "<tool>: --<flag> <reason>" (the tool exits with kExitUsage), so that no
+// flag is silently ignored. Call before StartTool.
+void RefuseUnreadFlags(const std::vector<std::string>& flags,
+                       const std::string& reason);
+
 // The --help text of the tool `tool` (its file is tools/<tool>.cc).
 std::string ToolHelp(const std::string& tool);
 

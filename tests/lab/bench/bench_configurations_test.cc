@@ -43,6 +43,32 @@ TEST(ParseBenchConfigurations, GridSizeFollowsTheAxes) {
   EXPECT_EQ(configurations.back().Options(1).grid.finest_cell_size_m, 2.0);
 }
 
+// Issue 41 item 5: without --loss_scales each defaults keeps its own Cauchy
+// scale (the previous defaults' 3, not the current 1.5); given scales apply
+// to both.
+TEST(ParseBenchConfigurations, PreviousDefaultsKeepTheirOwnLossScale) {
+  BenchGrid grid;
+  grid.backends = {"lm"};
+  grid.defaults = {"current", "previous"};
+  std::vector<BenchConfiguration> configurations;
+  std::string error;
+  ASSERT_TRUE(ParseBenchConfigurations(grid, &configurations, &error)) << error;
+  ASSERT_EQ(configurations.size(), 2u);
+  const RegistrationOptions current = configurations[0].Options(1);
+  const RegistrationOptions previous = configurations[1].Options(1);
+  EXPECT_EQ(current.objective.loss_scale, ObjectiveOptions().loss_scale);
+  EXPECT_EQ(previous.objective.loss_scale, 3.0);
+  EXPECT_EQ(previous.grid.finest_cell_size_m, 2.0);
+  EXPECT_EQ(previous.schedule.step_tolerance, 1e-4);
+  EXPECT_EQ(previous.objective.loss, LossType::CAUCHY);
+
+  grid.loss_scales = {2.0};
+  ASSERT_TRUE(ParseBenchConfigurations(grid, &configurations, &error)) << error;
+  ASSERT_EQ(configurations.size(), 2u);
+  EXPECT_EQ(configurations[0].Options(1).objective.loss_scale, 2.0);
+  EXPECT_EQ(configurations[1].Options(1).objective.loss_scale, 2.0);
+}
+
 TEST(ParseBenchConfigurations, RefusesBadItemsAndEmptyAxesNamingTheFlag) {
   struct Case {
     const char* flag;
@@ -69,7 +95,6 @@ TEST(ParseBenchConfigurations, RefusesBadItemsAndEmptyAxesNamingTheFlag) {
       {"--jacobians: 'numeric'",
        [](BenchGrid* g) { g->jacobians = {"numeric"}; }},
       {"--losses: 'tukey'", [](BenchGrid* g) { g->losses = {"tukey"}; }},
-      {"--loss_scales: expected", [](BenchGrid* g) { g->loss_scales = {}; }},
       {"invalid configuration", [](BenchGrid* g) { g->threads = {0}; }},
       {"invalid configuration",
        [](BenchGrid* g) { g->gbs_cell_sizes = {0.0}; }},

@@ -48,9 +48,30 @@ TEST(ListScanFiles, SortsByNameSkipsOtherFilesAndExcludes) {
   std::vector<std::string> names;
   for (const std::string& p : paths) names.push_back(FileName(p));
   EXPECT_EQ(names, (std::vector<std::string>{"a.pcd", "b.ply", "c.bin"}));
-  // Without the exclusion the .txt file counts as an xyz cloud.
+  // Without the exclusion too: a .txt file beside binary scans is not a
+  // scan (issue 41 item 11).
   ASSERT_TRUE(ListScanFiles(dir, {}, &paths, &error)) << error;
-  EXPECT_EQ(paths.size(), 4u);
+  EXPECT_EQ(paths.size(), 3u);
+}
+
+// In a folder of text clouds, the .txt files whose first line is not a
+// point (stamps, KITTI's calib.txt) are not scans (issue 41 item 11).
+TEST(ListScanFiles, TextCloudFolderLeavesOutStampsAndCalibration) {
+  const std::string dir = testing::ScratchPath("list_text_scans");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/000.txt") << "# x y z\n1 2 3\n4 5 6\n";
+  std::ofstream(dir + "/001.txt") << "\n1.5,2,3,0.7\n";
+  std::ofstream(dir + "/002.xyz") << "1 2 3\n";
+  std::ofstream(dir + "/stamps.txt") << "0\n0.1\n0.2\n";
+  std::ofstream(dir + "/calib.txt") << "P0: 7.1e+02 0 6.0e+02 0\nTr: 1 0 0 0\n";
+  std::ofstream(dir + "/two.txt") << "1 2\n";
+  std::vector<std::string> paths;
+  std::string error;
+  ASSERT_TRUE(ListScanFiles(dir, {}, &paths, &error)) << error;
+  std::vector<std::string> names;
+  for (const std::string& p : paths) names.push_back(FileName(p));
+  EXPECT_EQ(names, (std::vector<std::string>{"000.txt", "001.txt", "002.xyz"}));
 }
 
 TEST(ListScanFiles, MissingOrEmptyFolderIsAnError) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 namespace mlndt {
@@ -34,6 +36,20 @@ TEST(TrajectoryDeathTest, AddRejectsTimeThatDoesNotIncrease) {
   trajectory.Add(1.0, At(0, 0, 0));
   EXPECT_DEATH(trajectory.Add(1.0, At(0, 0, 0)), "increase strictly");
   EXPECT_DEATH(trajectory.Add(0.5, At(0, 0, 0)), "increase strictly");
+}
+
+TEST(Trajectory, TryAddRefusesTimeThatDoesNotIncreaseWithoutAdding) {
+  Trajectory trajectory;
+  std::string error;
+  ASSERT_TRUE(trajectory.TryAdd(1.0, At(0, 0, 0), &error)) << error;
+  EXPECT_FALSE(trajectory.TryAdd(1.0, At(1, 0, 0), &error));
+  EXPECT_NE(error.find("timestamp 1 after 1"), std::string::npos) << error;
+  EXPECT_NE(error.find("increase strictly"), std::string::npos) << error;
+  EXPECT_FALSE(trajectory.TryAdd(0.5, At(1, 0, 0), &error));
+  EXPECT_FALSE(trajectory.TryAdd(std::nan(""), At(1, 0, 0), &error));
+  EXPECT_EQ(trajectory.size(), 1u);
+  EXPECT_TRUE(trajectory.TryAdd(1.5, At(1, 0, 0), &error)) << error;
+  EXPECT_EQ(trajectory.size(), 2u);
 }
 
 TEST(PathDistancesM, SumsTheStepLengths) {

@@ -132,8 +132,10 @@ TEST(RunPoseGraph, ExtraPairsAddDirectedPairsAndBadOptionsAreRefused) {
   options.odometry = KittiPoses(3);
   options.odometry_noise.sigma_deg = 0.0;
   EXPECT_FALSE(RunPoseGraph(options, KittiScans(3), &summary, &error));
-  EXPECT_EQ(error,
-            "invalid option: odometry_noise.sigma_deg = 0; it must be > 0");
+  EXPECT_EQ(
+      error,
+      "invalid option: odometry_noise.sigma_deg = 0; it must be in [0.0001, "
+      "180]");
   EXPECT_FALSE(RunPoseGraph(options, {KittiScans(1)}, &summary, &error));
   EXPECT_EQ(error, "fewer than 2 scans");
 }
@@ -156,7 +158,13 @@ TEST(PoseGraphOptions, IsValidTakesTheRangesFromTheTable) {
            "invalid option: information_scale = 2000; it must be in (0, "
            "1000]"},
           {[](PoseGraphOptions* o) { o->odometry_noise.sigma_m = -1.0; },
-           "invalid option: odometry_noise.sigma_m = -1; it must be > 0"},
+           "invalid option: odometry_noise.sigma_m = -1; it must be in "
+           "[0.0001, "
+           "1000]"},
+          // 1 / sigma^2 overflows (issue 41 item 3).
+          {[](PoseGraphOptions* o) { o->odometry_noise.sigma_m = 1e-300; },
+           "invalid option: odometry_noise.sigma_m = 1e-300; it must be in "
+           "[0.0001, 1000]"},
           {[](PoseGraphOptions* o) {
              o->extra_pairs = {{1, 1}};
            },
