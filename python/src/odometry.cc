@@ -235,10 +235,33 @@ void DefineResult(py::module_& m) {
           "The registration's verdict, or LOW_QUALITY when the gate "
           "refused it.")
       .def_readonly("message", &R::message)
-      .def_readonly(
-          "fallback", &R::fallback, "The prediction stands in for the pose.")
+      .def_readonly("fallback",
+                    &R::fallback,
+                    "Not registered: the prediction stands in for the pose "
+                    "(interpolated once a later scan bridges it).")
       .def_readonly("keyframe", &R::keyframe, "The scan joined the local map.")
-      .def_readonly("map_restarted", &R::map_restarted)
+      .def_readonly("search_starts",
+                    &R::search_starts,
+                    "Starts of the search tried (the prediction did not "
+                    "register the scan).")
+      .def_readonly(
+          "recovered", &R::recovered, "A search start registered the scan.")
+      .def_readonly("interpolated",
+                    &R::interpolated,
+                    "A fallback whose pose a later registered scan "
+                    "replaced by the interpolated one (run_odometry).")
+      .def_property_readonly(
+          "bridged",
+          [](const R& r) {
+            py::list bridged;
+            for (const BridgedScan& b : r.bridged) {
+              bridged.append(py::make_tuple(
+                  b.index, Eigen::Matrix4d(b.world_from_sensor.matrix())));
+            }
+            return bridged;
+          },
+          "Earlier fallbacks this scan's registration bridged: (index, "
+          "interpolated pose 4x4) each.")
       .def_readonly("deskewed", &R::deskewed)
       .def_readonly("start_layer", &R::start_layer)
       .def_readonly("num_layers", &R::num_layers)

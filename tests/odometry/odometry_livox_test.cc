@@ -36,18 +36,12 @@ struct StepScore {
 
 // Scores scan k's motion from the last scan with a registered pose (not a
 // fallback) against the prior's, so that a scan after a fallback is judged
-// by its own pose and not by the stand-in before it. A local-map restart is
-// a declared discontinuity (the trajectory jumps there, flagged): the scans
-// after it are judged from the restart scan, whose map they register onto.
+// by its own pose and not by the stand-in before it.
 StepScore ScoreSteps(const std::vector<OdometryResult>& results,
                      const std::vector<Isometry3d>& prior) {
   StepScore score;
   size_t last = 0;
   for (size_t k = 1; k < results.size(); ++k) {
-    if (results[k].map_restarted) {
-      last = k;
-      continue;
-    }
     if (results[k].fallback) continue;
     const Isometry3d estimated = results[last].world_from_sensor.inverse() *
                                  results[k].world_from_sensor;
