@@ -25,7 +25,9 @@ def load(path):
 
 def motion_error(estimated, reference):
     e = np.linalg.inv(reference) @ estimated
-    angle = np.degrees(np.arccos(np.clip((np.trace(e[:3, :3]) - 1) / 2, -1, 1)))
+    r = e[:3, :3]
+    sine = np.linalg.norm([r[2, 1] - r[1, 2], r[0, 2] - r[2, 0], r[1, 0] - r[0, 1]]) / 2
+    angle = np.degrees(np.arctan2(sine, (np.trace(r) - 1) / 2))
     return np.linalg.norm(e[:3, 3]), angle
 
 

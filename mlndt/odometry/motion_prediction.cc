@@ -50,6 +50,12 @@ Isometry3d MotionPredictor::Predict(double stamp_s) const {
   return last_pose_ * TwistToMotion(velocity_ * dt);
 }
 
+Isometry3d MotionPredictor::DeadReckon(double stamp_s) const {
+  if (num_poses_ == 0) return Isometry3d::Identity();
+  const double dt = std::max(0.0, stamp_s - last_stamp_s_);
+  return last_pose_ * TwistToMotion(velocity_ * dt);
+}
+
 PredictionUncertainty MotionPredictor::Uncertainty() const {
   PredictionUncertainty u{options_.max_translation_m,
                           options_.max_rotation_deg};

@@ -52,6 +52,9 @@ class MotionPredictor {
   // the last pose). Identity before any pose.
   Isometry3d Predict(double stamp_s) const;
   PredictionUncertainty Uncertainty() const;
+  // The pose at `stamp_s` with the last velocity over the whole time since
+  // the last pose (what Predict gives when no scan was skipped).
+  Isometry3d DeadReckon(double stamp_s) const;
 
   // The body-frame twist per second (t [m/s], rotation vector [rad/s]) of
   // the last motion; zero before two poses.

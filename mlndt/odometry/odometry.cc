@@ -142,6 +142,15 @@ void Odometry::Gate(OdometryResult* result) const {
   if (result->correction_m <= gate_m && result->correction_deg <= gate_deg) {
     return;
   }
+  // After a gap the sensor may have kept moving: the dead-reckoned pose is
+  // as good a centre.
+  if (TranslationErrorM(result->dead_reckoned, result->world_from_sensor) <=
+          gate_m &&
+      RotationErrorRad(result->dead_reckoned, result->world_from_sensor) *
+              kRadToDeg <=
+          gate_deg) {
+    return;
+  }
   std::ostringstream message;
   message.precision(3);
   message << "the pose moved " << result->correction_m << " m, "
@@ -160,6 +169,9 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
                    result->predicted,
                    predictor_.num_poses() > 0 ? predictor_.last_pose()
                                               : result->predicted);
+  if (result->skipped_scans > 0 && options_.recovery.max_search_starts > 0) {
+    starts.insert(starts.begin(), result->dead_reckoned);
+  }
 
   for (size_t k = 0; k < starts.size(); ++k) {
     OdometryResult attempt = *result;
@@ -181,7 +193,8 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
     Register(last_scan_map_.grid(), cloud, result->predicted, true, &attempt);
     result->registration_time_s = attempt.registration_time_s;
     ++result->search_starts;
-    if (attempt.termination == TerminationType::CONVERGENCE) {
+    if (attempt.termination == TerminationType::CONVERGENCE &&
+        AgreesWithLocalMap(cloud, &attempt)) {
       const std::string first_message = result->message;
       const int tried = result->search_starts;
       *result = attempt;
@@ -197,6 +210,29 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
                       std::to_string(result->search_starts) + " search starts",
                   &result->message);
   }
+}
+
+// A pose found on the last registered scan alone must agree with the scan
+// registered onto the local map from it, when that registration is usable
+// (the last-scan check the other way round): within the prediction's
+// smallest uncertainty.
+bool Odometry::AgreesWithLocalMap(const PointCloud& cloud,
+                                  OdometryResult* result) {
+  RegistrationSummary summary;
+  mlndt::Register(ScanRegistrationOptions(result->uncertainty),
+                  local_map_.grid(),
+                  cloud,
+                  result->world_from_sensor,
+                  &summary);
+  result->registration_time_s += summary.total_time_s;
+  if (!summary.IsSolutionUsable()) return true;  // No evidence.
+  return TranslationErrorM(summary.reference_from_input,
+                           result->world_from_sensor) <=
+             options_.prediction.min_translation_m &&
+         RotationErrorRad(summary.reference_from_input,
+                          result->world_from_sensor) *
+                 kRadToDeg <=
+             options_.prediction.min_rotation_deg;
 }
 
 // The map of the last registered scan alone (built once per scan).
@@ -346,6 +382,7 @@ bool Odometry::Process(const OdometryScan& scan,
   result->predicted = predictor_.Predict(scan.stamp_s);
   result->uncertainty = predictor_.Uncertainty();
   result->skipped_scans = predictor_.skipped();
+  result->dead_reckoned = predictor_.DeadReckon(scan.stamp_s);
 
   PointCloud cloud = *scan.cloud;
   const bool has_times =

@@ -68,6 +68,9 @@ struct OdometryResult {
   size_t index = 0;
   double stamp_s = 0.0;
   Isometry3d predicted = Isometry3d::Identity();  // world_from_sensor.
+  // After skipped scans: the last velocity over the whole gap (the
+  // prediction moves one step at most); else the prediction.
+  Isometry3d dead_reckoned = Isometry3d::Identity();
   Isometry3d world_from_sensor = Isometry3d::Identity();
   PredictionUncertainty uncertainty;  // Of the prediction.
   // Scans without a registered pose since the last registered one.
@@ -153,6 +156,7 @@ class Odometry {
   void Gate(OdometryResult* result) const;
   void Search(const PointCloud& cloud, OdometryResult* result);
   bool BuildLastScanMap();
+  bool AgreesWithLocalMap(const PointCloud& cloud, OdometryResult* result);
   void Confirm(const RegistrationOptions& options,
                const LayeredGrid& map,
                const PointCloud& cloud,
