@@ -23,9 +23,10 @@
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,
 // as its header line says), scans.csv (per scan: verdict, fallback, search
-// starts, recovered, interpolated, keyframe, start layer, uncertainty, correction, pose, times),
-// summary.json, and with --plots trajectory_xy.png. With --gt_poses (one
-// world_from_sensor pose per scan): ATE after SE(3) alignment, RPE over
+// starts, recovered, interpolated, keyframe, start layer, uncertainty,
+// correction, pose, times), summary.json, and with --plots trajectory_xy.png.
+// With --gt_poses (one world_from_sensor pose per scan): ATE after SE(3)
+// alignment, RPE over
 // --rpe_delta scans and the KITTI devkit's segment errors over
 // --segment_lengths. Exit code 0 when every scan got a registered pose, 1
 // when any scan fell back to its prediction (or on unreadable data, or
@@ -209,11 +210,10 @@ int Run() {
     if (plot != 0) return plot;
   }
   if (!summary.AllUsable()) {
-    return tools::Fail(
-        kTool,
-        std::to_string(summary.fallbacks) +
-            " scan(s) have no registered pose (interpolated or "
-            "extrapolated, flagged in scans.csv)");
+    return tools::Fail(kTool,
+                       std::to_string(summary.fallbacks) +
+                           " scan(s) have no registered pose (interpolated or "
+                           "extrapolated, flagged in scans.csv)");
   }
   return 0;
 }

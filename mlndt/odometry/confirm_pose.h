@@ -46,8 +46,8 @@ struct ConfirmationOptions {
 
 // What the second run found.
 struct Confirmation {
-  bool ran = false;         // The scan needed it.
-  bool confirmed = true;    // It ran and returned to the pose (or not run).
+  bool ran = false;       // The scan needed it.
+  bool confirmed = true;  // It ran and returned to the pose (or not run).
   // It ran, had a pose to compare (a usable registration) and agreed.
   bool agreed = false;
   double distance_m = 0.0;  // Of the second run's pose from the first.

@@ -68,9 +68,9 @@ PredictionUncertainty MotionPredictor::Uncertainty() const {
   // One step's uncertainty, times the steps since the last pose, within
   // the bounds times those steps.
   const double gap = 1.0 + static_cast<double>(skipped_);
-  u.translation_m = std::min(
-      std::max(t * options_.factor, options_.min_translation_m) * gap,
-      options_.max_translation_m);
+  u.translation_m =
+      std::min(std::max(t * options_.factor, options_.min_translation_m) * gap,
+               options_.max_translation_m);
   u.rotation_deg =
       std::min(std::max(r * options_.factor, options_.min_rotation_deg) * gap,
                options_.max_rotation_deg);

@@ -74,6 +74,8 @@ class MotionPredictor {
   void SkipScan() { ++skipped_; }
 
   size_t num_poses() const { return num_poses_; }
+  // A prediction from a known velocity has been compared with a pose.
+  bool knows_model_errors() const { return !errors_.empty(); }
   // Scans skipped since the last pose.
   size_t skipped() const { return skipped_; }
   // The last pose and its stamp (identity and 0 before any).

@@ -132,13 +132,21 @@ void Odometry::Register(const LayeredGrid& map,
 // The gate: gate_factor x the uncertainty around the prediction, at most
 // the largest uncertainty the prediction can have; beyond it LOW_QUALITY.
 void Odometry::Gate(OdometryResult* result) const {
-  const double gap = 1.0 + static_cast<double>(result->skipped_scans);
+  // After skipped scans the caps grow by what the last velocity, times the
+  // prediction's factor, covers in the time since the last registered scan
+  // (once the velocity has been checked by a prediction: not at the start).
+  double cap_m = options_.prediction.max_translation_m;
+  double cap_deg = options_.prediction.max_rotation_deg;
+  if (result->skipped_scans > 0 && predictor_.knows_model_errors()) {
+    const double gap_s = result->stamp_s - predictor_.last_stamp_s();
+    const Vector6d v = predictor_.Velocity() * options_.prediction.factor;
+    cap_m += v.head<3>().norm() * gap_s;
+    cap_deg = std::min(cap_deg + v.tail<3>().norm() * kRadToDeg * gap_s, 180.0);
+  }
   const double gate_m =
-      std::min(options_.gate_factor * result->uncertainty.translation_m,
-               options_.prediction.max_translation_m * gap);
-  const double gate_deg =
-      std::min(options_.gate_factor * result->uncertainty.rotation_deg,
-               std::min(options_.prediction.max_rotation_deg * gap, 180.0));
+      std::min(options_.gate_factor * result->uncertainty.translation_m, cap_m);
+  const double gate_deg = std::min(
+      options_.gate_factor * result->uncertainty.rotation_deg, cap_deg);
   if (result->correction_m <= gate_m && result->correction_deg <= gate_deg) {
     return;
   }
@@ -164,11 +172,10 @@ void Odometry::Gate(OdometryResult* result) const {
 // (recovery.h); the first whose verdict is CONVERGENCE (always confirmed)
 // registers it. Otherwise the first attempt's verdict stands.
 void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
-  std::vector<Isometry3d> starts =
-      SearchStarts(options_.recovery,
-                   result->predicted,
-                   predictor_.num_poses() > 0 ? predictor_.last_pose()
-                                              : result->predicted);
+  std::vector<Isometry3d> starts = SearchStarts(
+      options_.recovery,
+      result->predicted,
+      predictor_.num_poses() > 0 ? predictor_.last_pose() : result->predicted);
   if (result->skipped_scans > 0 && options_.recovery.max_search_starts > 0) {
     starts.insert(starts.begin(), result->dead_reckoned);
   }
@@ -200,8 +207,10 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
       *result = attempt;
       result->search_starts = tried;
       result->recovered = true;
-      result->message = "registered onto the last registered scan alone (from "
-                        "the prediction onto the map: " + first_message + ")";
+      result->message =
+          "registered onto the last registered scan alone (from "
+          "the prediction onto the map: " +
+          first_message + ")";
       return;
     }
   }
@@ -241,8 +250,11 @@ bool Odometry::BuildLastScanMap() {
   if (last_scan_map_built_) return true;
   std::string map_error;
   last_scan_map_.Clear();
-  last_scan_map_built_ = last_scan_map_.AddKeyframe(
-      last_scan_, last_scan_pose_, options_.registration.num_threads, &map_error);
+  last_scan_map_built_ =
+      last_scan_map_.AddKeyframe(last_scan_,
+                                 last_scan_pose_,
+                                 options_.registration.num_threads,
+                                 &map_error);
   return last_scan_map_built_;
 }
 

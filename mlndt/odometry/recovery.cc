@@ -8,10 +8,9 @@ namespace {
 
 Isometry3d TurnedAboutZ(const Isometry3d& pose, double deg) {
   Isometry3d turned = pose;
-  turned.linear() =
-      pose.linear() *
-      Eigen::AngleAxisd(deg / kRadToDeg, Eigen::Vector3d::UnitZ())
-          .toRotationMatrix();
+  turned.linear() = pose.linear() *
+                    Eigen::AngleAxisd(deg / kRadToDeg, Eigen::Vector3d::UnitZ())
+                        .toRotationMatrix();
   return turned;
 }
 

@@ -34,8 +34,7 @@ TEST(SearchStarts, TriesTheLastPoseThenTurnedStarts) {
   options.yaw_step_deg = 15.0;
   const Isometry3d predicted = Pose(1.0, 0.0, 20.0);
   const Isometry3d last = Pose(0.5, 0.0, 5.0);
-  const std::vector<Isometry3d> starts =
-      SearchStarts(options, predicted, last);
+  const std::vector<Isometry3d> starts = SearchStarts(options, predicted, last);
   ASSERT_EQ(starts.size(), 5u);
   EXPECT_TRUE(starts[0].isApprox(last));
   EXPECT_TRUE(starts[1].isApprox(Pose(1.0, 0.0, 35.0)));

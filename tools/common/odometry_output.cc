@@ -23,13 +23,12 @@ std::string ScanRow(const ScanInput& input, const OdometryResult& r) {
       Fmt(r.stamp_s, 9) + "," + TerminationTypeToString(r.termination) + "," +
       (r.fallback ? "1" : "0") + "," + std::to_string(r.search_starts) + "," +
       (r.recovered ? "1" : "0") + "," + (r.interpolated ? "1" : "0") + "," +
-      (r.keyframe ? "1" : "0") + "," +
-      (r.deskewed ? "1" : "0") + "," + std::to_string(r.start_layer) + "," +
-      std::to_string(r.num_layers) + "," + std::to_string(r.iterations) + "," +
-      Num(r.uncertainty.translation_m) + "," + Num(r.uncertainty.rotation_deg) +
-      "," + Num(r.correction_m) + "," + Num(r.correction_deg) + "," +
-      Num(r.quality.inlier_fraction) + "," + std::to_string(r.map_keyframes) +
-      "," + std::to_string(r.map_points);
+      (r.keyframe ? "1" : "0") + "," + (r.deskewed ? "1" : "0") + "," +
+      std::to_string(r.start_layer) + "," + std::to_string(r.num_layers) + "," +
+      std::to_string(r.iterations) + "," + Num(r.uncertainty.translation_m) +
+      "," + Num(r.uncertainty.rotation_deg) + "," + Num(r.correction_m) + "," +
+      Num(r.correction_deg) + "," + Num(r.quality.inlier_fraction) + "," +
+      std::to_string(r.map_keyframes) + "," + std::to_string(r.map_points);
   for (int k = 0; k < 6; ++k) {
     row += "," + Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
   }
