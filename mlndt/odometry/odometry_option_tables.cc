@@ -125,9 +125,11 @@ const OptionTable& RecoveryOptionsTable() {
           .Int("max_search_starts",
                &S::max_search_starts,
                Closed(0, 5),
-               "Starts tried for a scan not registered from its prediction "
-               "(the last registered pose, then the prediction and the last "
-               "pose turned by +-yaw_step_deg); 0 = no search.")
+               "Starts onto the local map tried for a scan not registered "
+               "from its prediction (the last registered pose, then the "
+               "prediction and the last pose turned by +-yaw_step_deg; after "
+               "skipped scans the dead-reckoned pose first, besides); 0 = "
+               "none.")
           .Double("yaw_step_deg",
                   &S::yaw_step_deg,
                   "deg",

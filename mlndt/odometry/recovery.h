@@ -5,15 +5,19 @@
 // stays unregistered, bridge it by interpolation once a later scan is
 // registered.
 //
-// The search registers the scan again from starts around the prediction:
-// the last registered pose (the velocity may have changed sign, as a
-// hand-held sensor's sweeps do) and the prediction and the last pose turned
-// about the sensor's z axis by +-yaw_step_deg. A start's result counts only
-// when the odometry's whole verdict (gate, confirmation from beyond the
-// pose, last-scan check) calls it CONVERGENCE. The local map is never
-// rebuilt around a pose that is only a prediction: an unregistered scan
-// does not join it, and its pose is interpolated between the registered
-// scans before and after it, by time stamp.
+// The search registers the scan again onto the local map from starts
+// around the prediction: after skipped scans the pose dead-reckoned over
+// the gap (the odometry adds it), the last registered pose (the velocity
+// may have changed sign, as a hand-held sensor's sweeps do), and the
+// prediction and the last pose turned about the sensor's z axis by
+// +-yaw_step_deg; then onto the last registered scan alone (a map of one
+// view, which a sensor that walks on leaves later than the local map's
+// keyframes). A start's result counts only when the odometry's whole
+// verdict (gate, confirmation from beyond the pose, last-scan check) calls
+// it CONVERGENCE. The local map is never rebuilt around a pose that is only
+// a prediction: an unregistered scan does not join it, and its pose is
+// interpolated between the registered scans before and after it, by time
+// stamp.
 
 #include <string>
 #include <vector>
@@ -24,8 +28,9 @@
 namespace mlndt {
 
 struct RecoveryOptions {
-  // Starts tried, in the order above, for a scan not registered from its
-  // prediction; 0 = no search. In [0, 5].
+  // Starts onto the local map tried, in the order above (besides the
+  // dead-reckoned one), for a scan not registered from its prediction; 0 =
+  // none (and no dead-reckoned start). In [0, 5].
   int max_search_starts = 3;
   // The turn about the sensor's z axis of the turned starts [deg]. > 0.
   double yaw_step_deg = 15.0;
