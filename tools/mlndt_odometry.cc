@@ -10,8 +10,10 @@
 // when the bag has per-point times, and registered onto a local layered map
 // of the last keyframes; the prediction's uncertainty (from how far recent
 // predictions missed) sets the registration's initial_uncertainty and so
-// its start layer. A scan whose registration is not usable gets its
-// prediction as its pose, flagged as a fallback in scans.csv. The odometry
+// its start layer. A scan not registered (its verdict is not CONVERGENCE)
+// is searched for from wider starts; one that stays unregistered is flagged
+// as a fallback in scans.csv, with its pose interpolated between the
+// registered scans around it (extrapolated at the end). The odometry
 // flags are OdometryOptions' fields (tools/common/odometry_flags.h:
 // --local_map_max_keyframes, --keyframes_min_translation_m,
 // --prediction_max_translation_m, --gate_factor, --confirmation_enabled,
@@ -20,10 +22,11 @@
 //
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,
-// as its header line says), scans.csv (per scan: verdict, fallback,
-// keyframe, start layer, uncertainty, correction, pose, times),
-// summary.json, and with --plots trajectory_xy.png. With --gt_poses (one
-// world_from_sensor pose per scan): ATE after SE(3) alignment, RPE over
+// as its header line says), scans.csv (per scan: verdict, fallback, search
+// starts, recovered, interpolated, keyframe, start layer, uncertainty,
+// correction, pose, times), summary.json, and with --plots trajectory_xy.png.
+// With --gt_poses (one world_from_sensor pose per scan): ATE after SE(3)
+// alignment, RPE over
 // --rpe_delta scans and the KITTI devkit's segment errors over
 // --segment_lengths. Exit code 0 when every scan got a registered pose, 1
 // when any scan fell back to its prediction (or on unreadable data, or
@@ -218,11 +221,10 @@ int Run() {
   }
   if (plot != 0) return plot;
   if (!summary.AllUsable()) {
-    return tools::Fail(
-        kTool,
-        std::to_string(summary.fallbacks) +
-            " scan(s) have no registered pose (their prediction stands in, "
-            "flagged in scans.csv): the trajectory is not to be used as is");
+    return tools::Fail(kTool,
+                       std::to_string(summary.fallbacks) +
+                           " scan(s) have no registered pose (interpolated or "
+                           "extrapolated, flagged in scans.csv)");
   }
   return 0;
 }

@@ -71,6 +71,7 @@ Confirmation ConfirmPose(const RegistrationOptions& options,
   // has no pose to compare.
   const bool failed = summary.termination_type == TerminationType::FAILURE;
   confirmation.confirmed = !failed && returned;
+  confirmation.agreed = confirmation.confirmed;
   if (!confirmation.confirmed) {
     std::ostringstream message;
     message.precision(3);

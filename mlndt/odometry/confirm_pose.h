@@ -36,14 +36,20 @@ struct ConfirmationOptions {
   // A pose the second run returned to must also agree with the scan
   // registered onto the last registered scan alone (last_scan_check.h).
   bool check_last_scan = true;
+  // A pose the second run did not return to is confirmed when the scan
+  // registered onto the last registered scan alone is usable and agrees
+  // with it (two maps, one of them a single view, find the same pose).
+  bool last_scan_confirms = true;
 
   bool IsValid(std::string* error) const;
 };
 
 // What the second run found.
 struct Confirmation {
-  bool ran = false;         // The scan needed it.
-  bool confirmed = true;    // It ran and returned to the pose (or not run).
+  bool ran = false;       // The scan needed it.
+  bool confirmed = true;  // It ran and returned to the pose (or not run).
+  // It ran, had a pose to compare (a usable registration) and agreed.
+  bool agreed = false;
   double distance_m = 0.0;  // Of the second run's pose from the first.
   double distance_deg = 0.0;
   double time_s = 0.0;  // Of the second run.

@@ -24,6 +24,7 @@ Confirmation CheckAgainstLastScan(const RegistrationOptions& options,
       RotationErrorRad(pose, summary.reference_from_input) * kRadToDeg;
   check.confirmed = check.distance_m <= prediction.min_translation_m &&
                     check.distance_deg <= prediction.min_rotation_deg;
+  check.agreed = check.confirmed;
   if (!check.confirmed) {
     std::ostringstream message;
     message.precision(3);

@@ -42,6 +42,16 @@ MotionPredictor::MotionPredictor(const MotionPredictionOptions& options)
 
 Isometry3d MotionPredictor::Predict(double stamp_s) const {
   if (num_poses_ == 0) return Isometry3d::Identity();
+  double dt = std::max(0.0, stamp_s - last_stamp_s_);
+  // Across skipped scans, one step's motion at most: dead reckoning through
+  // a gap carries the prediction away from the map (a hand-held sensor's
+  // turns and steps reverse).
+  if (skipped_ > 0) dt = std::min(dt, last_step_s_);
+  return last_pose_ * TwistToMotion(velocity_ * dt);
+}
+
+Isometry3d MotionPredictor::DeadReckon(double stamp_s) const {
+  if (num_poses_ == 0) return Isometry3d::Identity();
   const double dt = std::max(0.0, stamp_s - last_stamp_s_);
   return last_pose_ * TwistToMotion(velocity_ * dt);
 }
@@ -55,12 +65,15 @@ PredictionUncertainty MotionPredictor::Uncertainty() const {
     t = std::max(t, e.translation_m);
     r = std::max(r, e.rotation_deg);
   }
-  u.translation_m = std::clamp(t * options_.factor,
-                               options_.min_translation_m,
-                               options_.max_translation_m);
-  u.rotation_deg = std::clamp(r * options_.factor,
-                              options_.min_rotation_deg,
-                              options_.max_rotation_deg);
+  // One step's uncertainty, times the steps since the last pose, within
+  // the bounds times those steps.
+  const double gap = 1.0 + static_cast<double>(skipped_);
+  u.translation_m =
+      std::min(std::max(t * options_.factor, options_.min_translation_m) * gap,
+               options_.max_translation_m);
+  u.rotation_deg =
+      std::min(std::max(r * options_.factor, options_.min_rotation_deg) * gap,
+               options_.max_rotation_deg);
   return u;
 }
 
@@ -71,11 +84,13 @@ void MotionPredictor::AddPose(double stamp_s,
     const double dt = stamp_s - last_stamp_s_;
     if (dt > 0) {
       velocity_ = MotionToTwist(last_pose_.inverse() * world_from_sensor) / dt;
+      last_step_s_ = dt;
     }
     if (num_poses_ > 1) {
+      const double gap = 1.0 + static_cast<double>(skipped_);
       errors_.push_back(
-          {TranslationErrorM(predicted, world_from_sensor),
-           RotationErrorRad(predicted, world_from_sensor) * kRadToDeg});
+          {TranslationErrorM(predicted, world_from_sensor) / gap,
+           RotationErrorRad(predicted, world_from_sensor) * kRadToDeg / gap});
       while (errors_.size() > static_cast<size_t>(options_.window)) {
         errors_.pop_front();
       }
@@ -83,15 +98,7 @@ void MotionPredictor::AddPose(double stamp_s,
   }
   last_pose_ = world_from_sensor;
   last_stamp_s_ = stamp_s;
-  ++num_poses_;
-}
-
-void MotionPredictor::AddPrediction(double stamp_s,
-                                    const Isometry3d& predicted) {
-  errors_.clear();
-  velocity_.setZero();
-  last_pose_ = predicted;
-  last_stamp_s_ = stamp_s;
+  skipped_ = 0;
   ++num_poses_;
 }
 

@@ -28,8 +28,9 @@ struct MotionPredictionOptions {
   double max_translation_m = 2.0;
   double min_rotation_deg = 2.0;
   double max_rotation_deg = 30.0;
-  // Before two poses exist (no velocity yet), and after a scan whose pose
-  // was not found, the uncertainty is the maximum.
+  // Before two poses exist (no velocity yet) the uncertainty is the
+  // maximum; after k scans without a pose it is (1 + k) times the one-step
+  // uncertainty (within the bounds).
 
   bool IsValid(std::string* error) const;
 };
@@ -44,32 +45,48 @@ class MotionPredictor {
  public:
   explicit MotionPredictor(const MotionPredictionOptions& options);
 
-  // The pose at `stamp_s` (>= the last pose's stamp) and its uncertainty.
-  // Identity before any pose.
+  // The pose at `stamp_s` (>= the last pose's stamp), extrapolated from the
+  // last pose with the last velocity (after skipped scans over the time of
+  // the last step at most), and its uncertainty: the largest
+  // recent model error times the factor, times (1 + the scans skipped since
+  // the last pose). Identity before any pose.
   Isometry3d Predict(double stamp_s) const;
   PredictionUncertainty Uncertainty() const;
+  // The pose at `stamp_s` with the last velocity over the whole time since
+  // the last pose (what Predict gives when no scan was skipped).
+  Isometry3d DeadReckon(double stamp_s) const;
 
   // The body-frame twist per second (t [m/s], rotation vector [rad/s]) of
   // the last motion; zero before two poses.
   Vector6d Velocity() const { return velocity_; }
 
   // Adds the estimated pose of the scan at `stamp_s`. `predicted` is what
-  // Predict(stamp_s) gave (its error feeds the uncertainty).
+  // Predict(stamp_s) gave: its error, divided by (1 + the scans skipped
+  // since the last pose), feeds the uncertainty.
   void AddPose(double stamp_s,
                const Isometry3d& predicted,
                const Isometry3d& world_from_sensor);
 
-  // Adds a scan whose pose is not known (its prediction stood in for it):
-  // the next scans are predicted at this pose (velocity zero: dead
-  // reckoning through a run of lost scans would carry the sensor away from
-  // its map), with the maximum uncertainty until the next AddPose.
-  void AddPrediction(double stamp_s, const Isometry3d& predicted);
+  // A scan whose pose is not known: the next scans are still predicted from
+  // the last pose and velocity, but over one step's time at most, and the
+  // uncertainty grows by one step's for each skipped scan until the next
+  // AddPose.
+  void SkipScan() { ++skipped_; }
 
   size_t num_poses() const { return num_poses_; }
+  // A prediction from a known velocity has been compared with a pose.
+  bool knows_model_errors() const { return !errors_.empty(); }
+  // Scans skipped since the last pose.
+  size_t skipped() const { return skipped_; }
+  // The last pose and its stamp (identity and 0 before any).
+  const Isometry3d& last_pose() const { return last_pose_; }
+  double last_stamp_s() const { return last_stamp_s_; }
 
  private:
   MotionPredictionOptions options_;
   size_t num_poses_ = 0;
+  size_t skipped_ = 0;
+  double last_step_s_ = 0.0;  // Time between the last two poses.
   double last_stamp_s_ = 0.0;
   Isometry3d last_pose_ = Isometry3d::Identity();
   Vector6d velocity_ = Vector6d::Zero();

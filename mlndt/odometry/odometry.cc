@@ -12,6 +12,7 @@
 #include "mlndt/odometry/confirm_pose.h"
 #include "mlndt/odometry/deskew.h"
 #include "mlndt/odometry/last_scan_check.h"
+#include "mlndt/odometry/recovery.h"
 #include "mlndt/registration/registration.h"
 
 namespace mlndt {
@@ -21,7 +22,7 @@ bool CheckScan(const OdometryScan& scan,
                size_t num_processed,
                double last_stamp_s,
                std::string* error) {
-  if (scan.cloud == nullptr || scan.cloud->empty()) {
+  if (scan.cloud == nullptr || (num_processed == 0 && scan.cloud->empty())) {
     *error = "scan " + std::to_string(num_processed) + ": no points";
     return false;
   }
@@ -42,6 +43,11 @@ bool CheckScan(const OdometryScan& scan,
     return false;
   }
   return true;
+}
+
+void AppendMessage(const std::string& text, std::string* message) {
+  if (text.empty()) return;
+  *message += (message->empty() ? "" : "; ") + text;
 }
 
 }  // namespace
@@ -67,7 +73,9 @@ void OdometrySummary::Add(const OdometryResult& result) {
   }
   fallbacks += result.fallback;
   keyframes += result.keyframe;
-  map_restarts += result.map_restarted;
+  searched += result.search_starts > 0;
+  recovered += result.recovered;
+  interpolated += result.bridged.size();
 }
 
 Odometry::Odometry(const OdometryOptions& options)
@@ -79,18 +87,28 @@ Odometry::Odometry(const OdometryOptions& options)
   CHECK(options_.IsValid(&error)) << error;
 }
 
-// Registers onto the local map from the prediction and applies the gate.
-void Odometry::Register(const PointCloud& cloud, OdometryResult* result) {
+RegistrationOptions Odometry::ScanRegistrationOptions(
+    const PredictionUncertainty& uncertainty) const {
   RegistrationOptions options = options_.registration;
   options.initial_uncertainty.given = true;
-  options.initial_uncertainty.translation_m = result->uncertainty.translation_m;
-  options.initial_uncertainty.rotation_deg = result->uncertainty.rotation_deg;
+  options.initial_uncertainty.translation_m = uncertainty.translation_m;
+  options.initial_uncertainty.rotation_deg = uncertainty.rotation_deg;
   options.quality_check.max_flatness = options_.max_flatness;
   options.retry.weak_direction_rounds = options_.weak_direction_rounds;
   options.quality_check.max_mean_score = options_.max_mean_score;
+  return options;
+}
+
+// Registers onto the local map from `start` and applies the verdict.
+void Odometry::Register(const LayeredGrid& map,
+                        const PointCloud& cloud,
+                        const Isometry3d& start,
+                        bool always_confirm,
+                        OdometryResult* result) {
+  const RegistrationOptions options =
+      ScanRegistrationOptions(result->uncertainty);
   RegistrationSummary summary;
-  mlndt::Register(
-      options, local_map_.grid(), cloud, result->predicted, &summary);
+  mlndt::Register(options, map, cloud, start, &summary);
   result->termination = summary.termination_type;
   result->message = summary.message;
   result->start_layer = summary.start_layer;
@@ -98,87 +116,200 @@ void Odometry::Register(const PointCloud& cloud, OdometryResult* result) {
   result->iterations = summary.num_iterations;
   result->sampled_points = summary.sampled_points;
   result->quality = summary.quality;
-  result->registration_time_s = summary.total_time_s;
+  result->registration_time_s += summary.total_time_s;
   result->world_from_sensor = summary.reference_from_input;
   result->correction_m =
       TranslationErrorM(result->predicted, summary.reference_from_input);
   result->correction_deg =
       RotationErrorRad(result->predicted, summary.reference_from_input) *
       kRadToDeg;
-  // The gate: gate_factor x the uncertainty, at most the largest
-  // uncertainty the prediction can have.
-  const double gate_m =
-      std::min(options_.gate_factor * result->uncertainty.translation_m,
-               options_.prediction.max_translation_m);
-  const double gate_deg =
-      std::min(options_.gate_factor * result->uncertainty.rotation_deg,
-               options_.prediction.max_rotation_deg);
-  if (summary.IsSolutionUsable() &&
-      (result->correction_m > gate_m || result->correction_deg > gate_deg)) {
-    std::ostringstream message;
-    message.precision(3);
-    message << "the pose moved " << result->correction_m << " m, "
-            << result->correction_deg << " deg from the prediction, beyond "
-            << "the gate (" << gate_m << " m, " << gate_deg << " deg)";
-    result->termination = TerminationType::LOW_QUALITY;
-    result->message = message.str();
-  }
-  result->fallback = result->termination != TerminationType::CONVERGENCE &&
-                     result->termination != TerminationType::NO_CONVERGENCE;
-  if (result->fallback) result->world_from_sensor = result->predicted;
+  if (summary.IsSolutionUsable()) Gate(result);
   if (result->termination == TerminationType::CONVERGENCE) {
-    Confirm(options, cloud, result);
+    Confirm(options, map, cloud, start, always_confirm, result);
   }
+}
+
+// The gate: gate_factor x the uncertainty around the prediction, at most
+// the largest uncertainty the prediction can have; beyond it LOW_QUALITY.
+void Odometry::Gate(OdometryResult* result) const {
+  // After skipped scans the caps grow by what the last velocity, times the
+  // prediction's factor, covers in the time since the last registered scan
+  // (once the velocity has been checked by a prediction: not at the start).
+  double cap_m = options_.prediction.max_translation_m;
+  double cap_deg = options_.prediction.max_rotation_deg;
+  if (result->skipped_scans > 0 && predictor_.knows_model_errors()) {
+    const double gap_s = result->stamp_s - predictor_.last_stamp_s();
+    const Vector6d v = predictor_.Velocity() * options_.prediction.factor;
+    cap_m += v.head<3>().norm() * gap_s;
+    cap_deg = std::min(cap_deg + v.tail<3>().norm() * kRadToDeg * gap_s, 180.0);
+  }
+  const double gate_m =
+      std::min(options_.gate_factor * result->uncertainty.translation_m, cap_m);
+  const double gate_deg = std::min(
+      options_.gate_factor * result->uncertainty.rotation_deg, cap_deg);
+  if (result->correction_m <= gate_m && result->correction_deg <= gate_deg) {
+    return;
+  }
+  // After a gap the sensor may have kept moving: the dead-reckoned pose is
+  // as good a centre.
+  if (TranslationErrorM(result->dead_reckoned, result->world_from_sensor) <=
+          gate_m &&
+      RotationErrorRad(result->dead_reckoned, result->world_from_sensor) *
+              kRadToDeg <=
+          gate_deg) {
+    return;
+  }
+  std::ostringstream message;
+  message.precision(3);
+  message << "the pose moved " << result->correction_m << " m, "
+          << result->correction_deg << " deg from the prediction, beyond "
+          << "the gate (" << gate_m << " m, " << gate_deg << " deg)";
+  result->termination = TerminationType::LOW_QUALITY;
+  result->message = message.str();
+}
+
+// Registers a scan the prediction did not register from wider starts
+// (recovery.h); the first whose verdict is CONVERGENCE (always confirmed)
+// registers it. Otherwise the first attempt's verdict stands.
+void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
+  std::vector<Isometry3d> starts = SearchStarts(
+      options_.recovery,
+      result->predicted,
+      predictor_.num_poses() > 0 ? predictor_.last_pose() : result->predicted);
+  if (result->skipped_scans > 0 && options_.recovery.max_search_starts > 0) {
+    starts.insert(starts.begin(), result->dead_reckoned);
+  }
+
+  for (size_t k = 0; k < starts.size(); ++k) {
+    OdometryResult attempt = *result;
+    Register(local_map_.grid(), cloud, starts[k], true, &attempt);
+    result->registration_time_s = attempt.registration_time_s;
+    ++result->search_starts;
+    if (attempt.termination != TerminationType::CONVERGENCE) continue;
+    const std::string first_message = result->message;
+    const int tried = result->search_starts;
+    *result = attempt;
+    result->search_starts = tried;
+    result->recovered = true;
+    result->message = "registered from search start " + std::to_string(k) +
+                      " (from the prediction: " + first_message + ")";
+    return;
+  }
+  if (options_.recovery.register_onto_last_scan && BuildLastScanMap()) {
+    OdometryResult attempt = *result;
+    Register(last_scan_map_.grid(), cloud, result->predicted, true, &attempt);
+    result->registration_time_s = attempt.registration_time_s;
+    ++result->search_starts;
+    if (attempt.termination == TerminationType::CONVERGENCE &&
+        AgreesWithLocalMap(cloud, &attempt)) {
+      const std::string first_message = result->message;
+      const int tried = result->search_starts;
+      *result = attempt;
+      result->search_starts = tried;
+      result->recovered = true;
+      result->message =
+          "registered onto the last registered scan alone (from "
+          "the prediction onto the map: " +
+          first_message + ")";
+      return;
+    }
+  }
+  if (result->search_starts > 0) {
+    AppendMessage("no CONVERGENCE from " +
+                      std::to_string(result->search_starts) + " search starts",
+                  &result->message);
+  }
+}
+
+// A pose found on the last registered scan alone must agree with the scan
+// registered onto the local map from it, when that registration is usable
+// (the last-scan check the other way round): within the prediction's
+// smallest uncertainty.
+bool Odometry::AgreesWithLocalMap(const PointCloud& cloud,
+                                  OdometryResult* result) {
+  RegistrationSummary summary;
+  mlndt::Register(ScanRegistrationOptions(result->uncertainty),
+                  local_map_.grid(),
+                  cloud,
+                  result->world_from_sensor,
+                  &summary);
+  result->registration_time_s += summary.total_time_s;
+  if (!summary.IsSolutionUsable()) return true;  // No evidence.
+  return TranslationErrorM(summary.reference_from_input,
+                           result->world_from_sensor) <=
+             options_.prediction.min_translation_m &&
+         RotationErrorRad(summary.reference_from_input,
+                          result->world_from_sensor) *
+                 kRadToDeg <=
+             options_.prediction.min_rotation_deg;
+}
+
+// The map of the last registered scan alone (built once per scan).
+bool Odometry::BuildLastScanMap() {
+  if (!has_last_scan_) return false;
+  if (last_scan_map_built_) return true;
+  std::string map_error;
+  last_scan_map_.Clear();
+  last_scan_map_built_ =
+      last_scan_map_.AddKeyframe(last_scan_,
+                                 last_scan_pose_,
+                                 options_.registration.num_threads,
+                                 &map_error);
+  return last_scan_map_built_;
 }
 
 // CONVERGENCE only for a pose the registration returns to (confirm_pose.h);
-// an unconfirmed pose is kept, reported NO_CONVERGENCE.
+// an unconfirmed pose is NO_CONVERGENCE.
 void Odometry::Confirm(const RegistrationOptions& options,
+                       const LayeredGrid& map,
                        const PointCloud& cloud,
+                       const Isometry3d& start,
+                       bool always_confirm,
                        OdometryResult* result) {
-  if (!NeedsConfirmation(options_.confirmation,
-                         options_.prediction,
-                         result->uncertainty,
-                         result->predicted,
-                         result->world_from_sensor)) {
+  if (!always_confirm && !NeedsConfirmation(options_.confirmation,
+                                            options_.prediction,
+                                            result->uncertainty,
+                                            start,
+                                            result->world_from_sensor)) {
     return;
   }
+  if (!options_.confirmation.enabled) return;
   const Confirmation confirmation = ConfirmPose(options,
                                                 options_.prediction,
-                                                local_map_.grid(),
+                                                map,
                                                 cloud,
                                                 result->uncertainty,
-                                                result->predicted,
+                                                start,
                                                 result->world_from_sensor);
   result->registration_time_s += confirmation.time_s;
+  // Onto the last registered scan itself, the last-scan check has no second
+  // view to offer.
+  const bool second_view = &map != &last_scan_map_.grid();
   if (!confirmation.confirmed) {
+    if (second_view && options_.confirmation.last_scan_confirms &&
+        AgreesWithLastScan(options, cloud, result).agreed) {
+      AppendMessage("confirmed by the last registered scan alone",
+                    &result->message);
+      return;
+    }
     result->termination = TerminationType::NO_CONVERGENCE;
-    result->message += "; " + confirmation.message;
+    AppendMessage(confirmation.message, &result->message);
     return;
   }
-  if (options_.confirmation.check_last_scan) {
-    AgreesWithLastScan(options, cloud, result);
-  }
+  if (!second_view || !options_.confirmation.check_last_scan) return;
+  const Confirmation check = AgreesWithLastScan(options, cloud, result);
+  if (check.confirmed) return;
+  result->termination = TerminationType::NO_CONVERGENCE;
+  AppendMessage(check.message, &result->message);
 }
 
-// A pose the second run returned to must agree with the scan registered
-// onto the last registered scan alone (last_scan_check.h); else
-// NO_CONVERGENCE, the pose kept.
-void Odometry::AgreesWithLastScan(const RegistrationOptions& options,
-                                  const PointCloud& cloud,
-                                  OdometryResult* result) {
-  if (!has_last_scan_) return;
-  if (!last_scan_map_built_) {
-    std::string map_error;
-    last_scan_map_.Clear();
-    if (!last_scan_map_.AddKeyframe(last_scan_,
-                                    last_scan_pose_,
-                                    options_.registration.num_threads,
-                                    &map_error)) {
-      return;  // No map, no evidence.
-    }
-    last_scan_map_built_ = true;
-  }
+// The scan registered onto the last registered scan alone, compared with
+// its pose (last_scan_check.h); not run (confirmed, not agreed) without a
+// last scan or its map.
+Confirmation Odometry::AgreesWithLastScan(const RegistrationOptions& options,
+                                          const PointCloud& cloud,
+                                          OdometryResult* result) {
+  if (!BuildLastScanMap()) return Confirmation();  // No evidence.
   const Confirmation check = CheckAgainstLastScan(options,
                                                   options_.prediction,
                                                   last_scan_map_.grid(),
@@ -186,19 +317,16 @@ void Odometry::AgreesWithLastScan(const RegistrationOptions& options,
                                                   result->predicted,
                                                   result->world_from_sensor);
   result->registration_time_s += check.time_s;
-  if (check.confirmed) return;
-  result->termination = TerminationType::NO_CONVERGENCE;
-  result->message += "; " + check.message;
+  return check;
 }
 
 bool Odometry::UpdateMap(const PointCloud& cloud,
                          OdometryResult* result,
                          std::string* error) {
   const bool first = local_map_.empty();
-  if (!first &&
-      (result->fallback || !IsNewKeyframe(options_.keyframes,
-                                          local_map_.last_keyframe(),
-                                          result->world_from_sensor))) {
+  if (!first && !IsNewKeyframe(options_.keyframes,
+                               local_map_.last_keyframe(),
+                               result->world_from_sensor)) {
     return true;
   }
   std::string map_error;
@@ -211,12 +339,46 @@ bool Odometry::UpdateMap(const PointCloud& cloud,
       return false;
     }
     // The previous map stays; the scan is not a keyframe.
-    result->message += (result->message.empty() ? "" : "; ") + map_error;
+    AppendMessage(map_error, &result->message);
     return true;
   }
   result->keyframe = true;
   result->map_time_s = local_map_.build_time_s();
   return true;
+}
+
+// The unregistered scans since the last registered one, interpolated
+// between it and this one (recovery.h).
+void Odometry::Bridge(OdometryResult* result) {
+  for (const auto& [index, stamp_s] : unregistered_) {
+    result->bridged.push_back({index,
+                               InterpolatePose(predictor_.last_pose(),
+                                               predictor_.last_stamp_s(),
+                                               result->world_from_sensor,
+                                               result->stamp_s,
+                                               stamp_s)});
+  }
+  unregistered_.clear();
+}
+
+// The state after the scan: a registered scan bridges the gap before it,
+// becomes the last registered scan and a pose of the prediction; an
+// unregistered one waits for the next registered scan.
+void Odometry::Account(PointCloud cloud,
+                       const OdometryScan& scan,
+                       OdometryResult* result) {
+  if (result->fallback) {
+    unregistered_.emplace_back(result->index, scan.stamp_s);
+    predictor_.SkipScan();
+    return;
+  }
+  if (predictor_.num_poses() > 0) Bridge(result);
+  last_scan_ = std::move(cloud);
+  last_scan_pose_ = result->world_from_sensor;
+  has_last_scan_ = true;
+  last_scan_map_built_ = false;
+  predictor_.AddPose(
+      scan.stamp_s, result->predicted, result->world_from_sensor);
 }
 
 bool Odometry::Process(const OdometryScan& scan,
@@ -231,6 +393,8 @@ bool Odometry::Process(const OdometryScan& scan,
   result->stamp_s = scan.stamp_s;
   result->predicted = predictor_.Predict(scan.stamp_s);
   result->uncertainty = predictor_.Uncertainty();
+  result->skipped_scans = predictor_.skipped();
+  result->dead_reckoned = predictor_.DeadReckon(scan.stamp_s);
 
   PointCloud cloud = *scan.cloud;
   const bool has_times =
@@ -240,39 +404,26 @@ bool Odometry::Process(const OdometryScan& scan,
       return false;
     result->deskewed = true;
   }
-  if (consecutive_fallbacks_ >=
-      static_cast<size_t>(options_.max_consecutive_fallbacks)) {
-    local_map_.Clear();
-    result->map_restarted = true;
-    result->fallback = true;
-    result->termination = TerminationType::FAILURE;
-    result->message = "no pose for " + std::to_string(consecutive_fallbacks_) +
-                      " scans: the local map restarts from this scan, at "
-                      "its prediction";
-    result->world_from_sensor = result->predicted;
-  } else if (local_map_.empty()) {
+  if (local_map_.empty()) {
     result->termination = TerminationType::CONVERGENCE;
     result->message = "first scan: the origin of the odometry frame";
     result->world_from_sensor = result->predicted;
+  } else if (cloud.empty()) {
+    result->termination = TerminationType::FAILURE;
+    result->message = "no points";
   } else {
-    Register(cloud, result);
+    Register(local_map_.grid(), cloud, result->predicted, false, result);
+    if (result->termination != TerminationType::CONVERGENCE) {
+      Search(cloud, result);
+    }
   }
-  if (!UpdateMap(cloud, result, error)) return false;
-  if (result->map_restarted || !result->fallback) {
-    consecutive_fallbacks_ = 0;
-    last_scan_ = std::move(cloud);
-    last_scan_pose_ = result->world_from_sensor;
-    has_last_scan_ = true;
-    last_scan_map_built_ = false;
-  } else {
-    ++consecutive_fallbacks_;
-  }
+  result->fallback = result->termination != TerminationType::CONVERGENCE;
   if (result->fallback) {
-    predictor_.AddPrediction(scan.stamp_s, result->predicted);
-  } else {
-    predictor_.AddPose(
-        scan.stamp_s, result->predicted, result->world_from_sensor);
+    result->world_from_sensor = result->predicted;
+  } else if (!UpdateMap(cloud, result, error)) {
+    return false;
   }
+  Account(std::move(cloud), scan, result);
   result->map_keyframes = local_map_.num_keyframes();
   result->map_points = local_map_.num_points();
   result->total_time_s = NowSeconds() - start;

@@ -6,33 +6,42 @@
 //   for (each scan) {
 //     OdometryResult result;
 //     odometry.Process({stamp_s, &cloud, &point_times_s}, &result);
+//     for (const BridgedScan& b : result.bridged) replace(b.index, b.pose);
 //     if (!result.fallback) use(result.world_from_sensor);
 //   }
 //
-// For each scan: predict its pose at its stamp with constant velocity
-// (motion_prediction.h); deskew it when per-point times are given
-// (deskew.h); register it onto the local map of recent keyframes
-// (local_map.h) from the prediction, with the prediction's uncertainty as
-// RegistrationOptions::initial_uncertainty (which picks the start layer,
-// Section 5.3's guideline, and checks the result against a finest-layer run
-// from the guess); accept the pose when the registration is usable and
-// within gate_factor times that uncertainty of the prediction. Otherwise
-// the prediction stands in for the pose, flagged (`fallback`), and the
-// verdict says why. A CONVERGENCE with a large correction, or from a
-// prediction at its largest uncertainty, stands only when a second
-// registration from beyond the pose returns to it (confirm_pose.h) and the
-// scan registered onto the last registered scan alone agrees
-// (last_scan_check.h); else the pose is kept and reported NO_CONVERGENCE.
-// Accepted scans that moved far enough (keyframe_policy.h) join the local map.
-// The first scan defines the world frame (identity). After
-// max_consecutive_fallbacks scans without a pose the local map restarts
-// from the next scan, at its prediction.
+// For each scan: predict its pose at its stamp with constant velocity from
+// the last registered scan (motion_prediction.h); deskew it when per-point
+// times are given (deskew.h); register it onto the local map of recent
+// keyframes (local_map.h) from the prediction, with the prediction's
+// uncertainty as RegistrationOptions::initial_uncertainty (which picks the
+// start layer, Section 5.3's guideline, and checks the result against a
+// finest-layer run from the guess); accept the pose when the registration
+// is usable and within gate_factor times that uncertainty of the
+// prediction. A CONVERGENCE with a large correction, or from a prediction at
+// its largest uncertainty, stands only when a second registration from
+// beyond the pose returns to it (confirm_pose.h) and the scan registered
+// onto the last registered scan alone agrees (last_scan_check.h); else it
+// is NO_CONVERGENCE. Only CONVERGENCE registers a scan.
+//
+// A scan not registered from its prediction is registered again from wider
+// starts (recovery.h); the first start whose verdict is CONVERGENCE
+// registers it (`recovered`). A scan that stays unregistered is flagged
+// (`fallback`, its verdict says why), does not join the map, and its
+// prediction stands in for its pose until the next registered scan, which
+// reports the interpolated poses of the unregistered scans before it
+// (`bridged`). The local map keeps what it held: the next scan is predicted
+// from the last registered one with an uncertainty that grows with each
+// skipped scan. Accepted scans that moved far enough (keyframe_policy.h)
+// join the local map. The first scan defines the world frame (identity).
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"
+#include "mlndt/odometry/confirm_pose.h"
 #include "mlndt/odometry/local_map.h"
 #include "mlndt/odometry/motion_prediction.h"
 #include "mlndt/odometry/odometry_options.h"
@@ -48,22 +57,40 @@ struct OdometryScan {
   const std::vector<double>* point_times_s = nullptr;  // May be null.
 };
 
+// An earlier scan without a registered pose, and its pose interpolated
+// between the registered scans before and after it.
+struct BridgedScan {
+  size_t index = 0;
+  Isometry3d world_from_sensor = Isometry3d::Identity();
+};
+
 struct OdometryResult {
   size_t index = 0;
   double stamp_s = 0.0;
   Isometry3d predicted = Isometry3d::Identity();  // world_from_sensor.
+  // After skipped scans: the last velocity over the whole gap (the
+  // prediction moves one step at most); else the prediction.
+  Isometry3d dead_reckoned = Isometry3d::Identity();
   Isometry3d world_from_sensor = Isometry3d::Identity();
   PredictionUncertainty uncertainty;  // Of the prediction.
+  // Scans without a registered pose since the last registered one.
+  size_t skipped_scans = 0;
   // The registration's verdict, or LOW_QUALITY when the gate refused it.
   TerminationType termination = TerminationType::FAILURE;
   std::string message;
-  // The prediction stands in for the pose (the verdict was not usable).
+  // Not registered (the verdict is not CONVERGENCE): the prediction stands
+  // in for the pose, until a later registered scan bridges it.
   bool fallback = false;
+  // Starts of the search tried (recovery.h), and whether one of them
+  // registered the scan.
+  int search_starts = 0;
+  bool recovered = false;
+  // A fallback whose pose a later scan replaced by the interpolated one
+  // (set by whoever applies `bridged`, as RunOdometry does).
+  bool interpolated = false;
+  // Earlier fallbacks bridged by this scan's registration, oldest first.
+  std::vector<BridgedScan> bridged;
   bool keyframe = false;  // The scan joined the local map.
-  // The local map was dropped before this scan (max_consecutive_fallbacks
-  // scans without a pose) and restarted from it: its pose is the
-  // prediction (a fallback) and the trajectory may jump here.
-  bool map_restarted = false;
   bool deskewed = false;
   int start_layer = 0;
   int num_layers = 0;
@@ -88,9 +115,11 @@ struct OdometrySummary {
   size_t low_quality = 0;
   size_t degenerate = 0;
   size_t failure = 0;
-  size_t fallbacks = 0;
+  size_t fallbacks = 0;  // Scans without a registered pose.
   size_t keyframes = 0;
-  size_t map_restarts = 0;
+  size_t searched = 0;      // Scans the search ran on.
+  size_t recovered = 0;     // ... and registered.
+  size_t interpolated = 0;  // Fallbacks bridged by a later registered scan.
 
   void Add(const OdometryResult& result);
   // Every scan got a pose from its registration.
@@ -102,10 +131,11 @@ class Odometry {
   // CHECK-fails on invalid options (check options.IsValid first).
   explicit Odometry(const OdometryOptions& options);
 
-  // Processes the next scan. False with *error on unusable input (a null or
-  // empty cloud, a stamp not after the last one, point times that do not
-  // match the points) or when the first scan's map cannot be built; the
-  // state is then unchanged.
+  // Processes the next scan. False with *error on unusable input (a null
+  // cloud, a stamp not after the last one, point times that do not match
+  // the points, an empty first scan) or when the first scan's map cannot be
+  // built; the state is then unchanged. A later scan without points is a
+  // FAILURE, a fallback like any scan not registered.
   bool Process(const OdometryScan& scan,
                OdometryResult* result,
                std::string* error);
@@ -114,25 +144,44 @@ class Odometry {
   size_t num_processed() const { return num_processed_; }
 
  private:
-  void Register(const PointCloud& cloud, OdometryResult* result);
+  RegistrationOptions ScanRegistrationOptions(
+      const PredictionUncertainty& uncertainty) const;
+  // Registers `cloud` from `start` and applies the verdict (gate around
+  // result->predicted, confirmation, last-scan check) into *result.
+  void Register(const LayeredGrid& map,
+                const PointCloud& cloud,
+                const Isometry3d& start,
+                bool always_confirm,
+                OdometryResult* result);
+  void Gate(OdometryResult* result) const;
+  void Search(const PointCloud& cloud, OdometryResult* result);
+  bool BuildLastScanMap();
+  bool AgreesWithLocalMap(const PointCloud& cloud, OdometryResult* result);
   void Confirm(const RegistrationOptions& options,
+               const LayeredGrid& map,
                const PointCloud& cloud,
+               const Isometry3d& start,
+               bool always_confirm,
                OdometryResult* result);
-  void AgreesWithLastScan(const RegistrationOptions& options,
-                          const PointCloud& cloud,
-                          OdometryResult* result);
+  Confirmation AgreesWithLastScan(const RegistrationOptions& options,
+                                  const PointCloud& cloud,
+                                  OdometryResult* result);
   bool UpdateMap(const PointCloud& cloud,
                  OdometryResult* result,
                  std::string* error);
+  void Bridge(OdometryResult* result);
+  void Account(PointCloud cloud, const OdometryScan& scan, OdometryResult* r);
 
   OdometryOptions options_;
   MotionPredictor predictor_;
   LocalMap local_map_;
   size_t num_processed_ = 0;
-  size_t consecutive_fallbacks_ = 0;
   double last_stamp_s_ = 0.0;
-  // The last scan with a registered pose (or a restart scan), its pose and,
-  // built when a confirmation needs it, its map (last_scan_check.h).
+  // Scans without a registered pose since the last registered one: index
+  // and stamp.
+  std::vector<std::pair<size_t, double>> unregistered_;
+  // The last scan with a registered pose, its pose and, built when a
+  // confirmation needs it, its map (last_scan_check.h).
   PointCloud last_scan_;
   Isometry3d last_scan_pose_ = Isometry3d::Identity();
   bool has_last_scan_ = false;

@@ -5,6 +5,7 @@
 #include "mlndt/odometry/local_map.h"
 #include "mlndt/odometry/motion_prediction.h"
 #include "mlndt/odometry/odometry_options.h"
+#include "mlndt/odometry/recovery.h"
 
 namespace mlndt {
 
@@ -107,6 +108,37 @@ const OptionTable& ConfirmationOptionsTable() {
                 &S::check_last_scan,
                 "A pose the second run returned to must also agree with the "
                 "scan registered onto the last registered scan alone.")
+          .Bool("last_scan_confirms",
+                &S::last_scan_confirms,
+                "A pose the second run did not return to is confirmed when "
+                "the scan registered onto the last registered scan alone "
+                "agrees with it.")
+          .Validator(&S::IsValid)
+          .Build();
+  return table;
+}
+
+const OptionTable& RecoveryOptionsTable() {
+  using S = RecoveryOptions;
+  static const OptionTable table =
+      OptionTableBuilder<S>("RecoveryOptions")
+          .Int("max_search_starts",
+               &S::max_search_starts,
+               Closed(0, 5),
+               "Starts onto the local map tried for a scan not registered "
+               "from its prediction (the last registered pose, then the "
+               "prediction and the last pose turned by +-yaw_step_deg; after "
+               "skipped scans the dead-reckoned pose first, besides); 0 = "
+               "none.")
+          .Double("yaw_step_deg",
+                  &S::yaw_step_deg,
+                  "deg",
+                  LeftOpen(0.0, 180.0),
+                  "The turn about the sensor's z axis of the turned starts.")
+          .Bool("register_onto_last_scan",
+                &S::register_onto_last_scan,
+                "Then register the scan onto the last registered scan "
+                "alone, from the prediction.")
           .Validator(&S::IsValid)
           .Build();
   return table;
@@ -135,12 +167,11 @@ const OptionTable& OdometryOwnOptionsTable() {
                 "",
                 AtLeast(1.0),
                 "A pose farther from the prediction than this times its "
-                "uncertainty is refused (LOW_QUALITY, fallback).")
-        .Int("max_consecutive_fallbacks",
-             &S::max_consecutive_fallbacks,
-             AtLeast(1),
-             "After this many scans in a row without a pose the local map "
-             "restarts.")
+                "uncertainty is refused (LOW_QUALITY).")
+        .Struct("recovery",
+                &S::recovery,
+                RecoveryOptionsTable(),
+                "The search for a scan not registered from its prediction.")
         .Double("max_flatness",
                 &S::max_flatness,
                 "",

@@ -15,6 +15,7 @@ const OptionTable& LocalMapOptionsTable();
 const OptionTable& KeyframeOptionsTable();
 const OptionTable& MotionPredictionOptionsTable();
 const OptionTable& ConfirmationOptionsTable();
+const OptionTable& RecoveryOptionsTable();
 // OdometryOptions without `registration` (its fields are the registration's
 // keywords beside these).
 const OptionTable& OdometryOwnOptionsTable();

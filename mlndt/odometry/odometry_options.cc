@@ -10,7 +10,7 @@ bool OdometryOptions::IsValid(std::string* error) const {
   // those).
   return registration.IsValid(error) && local_map.IsValid(error) &&
          keyframes.IsValid(error) && prediction.IsValid(error) &&
-         confirmation.IsValid(error) &&
+         confirmation.IsValid(error) && recovery.IsValid(error) &&
          OdometryOwnOptionsTable().Check(*this, error);
 }
 

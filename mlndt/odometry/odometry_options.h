@@ -8,6 +8,7 @@
 #include "mlndt/odometry/keyframe_policy.h"
 #include "mlndt/odometry/local_map.h"
 #include "mlndt/odometry/motion_prediction.h"
+#include "mlndt/odometry/recovery.h"
 #include "mlndt/registration/registration_options.h"
 
 namespace mlndt {
@@ -27,18 +28,14 @@ struct OdometryOptions {
   bool deskew = true;
   // A usable registration whose pose is farther from the prediction than
   // gate_factor times the prediction's uncertainty (or than the largest
-  // uncertainty, prediction.max_*) is reported LOW_QUALITY and the
-  // prediction stands in for it. >= 1.
+  // uncertainty, prediction.max_*) is reported LOW_QUALITY. >= 1.
   double gate_factor = 3.0;
-  // After this many scans in a row without a pose, the local map is
-  // dropped and restarted from the next scan at its prediction: the
-  // trajectory takes one jump there instead of drifting off a map the
-  // sensor has left. >= 1.
-  int max_consecutive_fallbacks = 3;
+  // The search for a scan not registered from its prediction (recovery.h).
+  RecoveryOptions recovery;
   // The probe of weak directions for the scans' registrations
   // (QualityCheckOptions::max_flatness, which it replaces): a pose that can
   // slide one cell edge along a weakly constrained direction without losing
-  // inliers is DEGENERATE, and the prediction stands in. On here although
+  // inliers is DEGENERATE. On here although
   // the library leaves it off: a wide search onto a local map of a few
   // scans finds such slides (docs/odometry.md: on the Livox sequence it
   // cuts the wrong poses reported CONVERGENCE by more than half; KITTI and
@@ -56,15 +53,14 @@ struct OdometryOptions {
   // by the median distance, because two keyframes of a narrow sensor overlap
   // little; a local map of several keyframes overlaps the scan widely, so
   // the mean counts the scan's own points, and a poor one (a slide onto a
-  // shifted copy of the place) is a fallback instead of a kept
-  // NO_CONVERGENCE pose (docs/odometry.md). In (0, 1e6]; 1e6 = off.
+  // shifted copy of the place) is refused (docs/odometry.md). In (0, 1e6];
+  // 1e6 = off.
   double max_mean_score = 11.0;
   // A second registration from beyond the pose for CONVERGENCE with a large
   // correction or from a prediction at its largest uncertainty
-  // (confirm_pose.h); a pose it does not return to is NO_CONVERGENCE (kept,
-  // not a fallback). On the Livox sequence it halves the wrong poses
-  // reported CONVERGENCE again (docs/odometry.md); KITTI and MulRan are
-  // unchanged.
+  // (confirm_pose.h); a pose it does not return to is NO_CONVERGENCE, not
+  // registered. On the Livox sequence it halves the wrong poses reported
+  // CONVERGENCE again (docs/odometry.md); KITTI and MulRan are unchanged.
   ConfirmationOptions confirmation;
 
   bool IsValid(std::string* error) const;

@@ -29,6 +29,11 @@ bool RunOdometry(const OdometryOptions& options,
     if (!odometry.Process({stamp_s, &cloud, &point_times_s}, &result, error)) {
       return false;
     }
+    for (const BridgedScan& bridged : result.bridged) {
+      OdometryResult& earlier = (*results)[bridged.index];
+      earlier.world_from_sensor = bridged.world_from_sensor;
+      earlier.interpolated = true;
+    }
     results->push_back(result);
     summary->Add(result);
     if (on_result) on_result(results->back());

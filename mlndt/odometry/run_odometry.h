@@ -23,7 +23,10 @@ using OdometryScanLoader =
                        std::string* error)>;
 using OdometryCallback = std::function<void(const OdometryResult&)>;
 
-// Runs scans 0..num_scans-1. `on_result` may be empty. False with *error on
+// Runs scans 0..num_scans-1, replacing the pose of each scan a later one
+// bridged by the interpolated one (and setting its `interpolated`).
+// `on_result` is called with each scan's result as it is made (before any
+// later scan bridges it) and may be empty. False with *error on
 // invalid options, a scan that cannot be loaded or is unusable input
 // (Odometry::Process); the results so far are kept in *results.
 bool RunOdometry(const OdometryOptions& options,

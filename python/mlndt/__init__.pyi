@@ -438,6 +438,10 @@ class ConfirmationOptions(TypedDict, total=False):
     min_correction_fraction: float
     check_last_scan: bool
 
+class RecoveryOptions(TypedDict, total=False):
+    max_search_starts: int
+    yaw_step_deg: float
+
 class OdometryResult:
     """One scan of the odometry (mlndt::OdometryResult); poses are world_from_sensor."""
 
@@ -460,7 +464,13 @@ class OdometryResult:
     @property
     def keyframe(self) -> bool: ...
     @property
-    def map_restarted(self) -> bool: ...
+    def search_starts(self) -> int: ...
+    @property
+    def recovered(self) -> bool: ...
+    @property
+    def interpolated(self) -> bool: ...
+    @property
+    def bridged(self) -> list[tuple[int, np.ndarray]]: ...
     @property
     def deskewed(self) -> bool: ...
     @property
@@ -499,7 +509,7 @@ class Odometry:
         prediction: MotionPredictionOptions = ...,
         deskew: bool = ...,
         gate_factor: float = ...,
-        max_consecutive_fallbacks: int = ...,
+        recovery: RecoveryOptions = ...,
         max_flatness: float = ...,
         weak_direction_rounds: int = ...,
         max_mean_score: float = ...,
@@ -532,7 +542,7 @@ def run_odometry(
     prediction: MotionPredictionOptions = ...,
     deskew: bool = ...,
     gate_factor: float = ...,
-    max_consecutive_fallbacks: int = ...,
+    recovery: RecoveryOptions = ...,
     max_flatness: float = ...,
     weak_direction_rounds: int = ...,
     max_mean_score: float = ...,

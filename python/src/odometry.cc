@@ -201,18 +201,47 @@ py::dict QualityDict(const FitQuality& q) {
   return quality;
 }
 
+// The search and the bridging of scans without a registered pose.
+void DefineRecoveryFields(py::class_<OdometryResult>* result) {
+  using R = OdometryResult;
+  (*result)
+      .def_readonly("search_starts",
+                    &R::search_starts,
+                    "Starts of the search tried (the prediction did not "
+                    "register the scan).")
+      .def_readonly(
+          "recovered", &R::recovered, "A search start registered the scan.")
+      .def_readonly("interpolated",
+                    &R::interpolated,
+                    "A fallback whose pose a later registered scan "
+                    "replaced by the interpolated one (run_odometry).")
+      .def_property_readonly(
+          "bridged",
+          [](const R& r) {
+            py::list bridged;
+            for (const BridgedScan& b : r.bridged) {
+              bridged.append(py::make_tuple(
+                  b.index, Eigen::Matrix4d(b.world_from_sensor.matrix())));
+            }
+            return bridged;
+          },
+          "Earlier fallbacks this scan's registration bridged: (index, "
+          "interpolated pose 4x4) each.");
+}
+
 void DefineResult(py::module_& m) {
   using R = OdometryResult;
   const auto matrix = [](Isometry3d R::*field) {
     return [field](const R& r) { return Eigen::Matrix4d((r.*field).matrix()); };
   };
-  py::class_<R>(m,
-                "OdometryResult",
-                "One scan of the odometry (mlndt::OdometryResult): the "
-                "prediction, the pose\n(world_from_sensor, 4x4; the first "
-                "scan defines the world), the verdict and\nhow the local "
-                "map changed.")
-      .def_readonly("index", &R::index, "0-based scan index.")
+  py::class_<R> result(m,
+                       "OdometryResult",
+                       "One scan of the odometry (mlndt::OdometryResult): the "
+                       "prediction, the pose\n(world_from_sensor, 4x4; the "
+                       "first scan defines the world), the verdict and\nhow "
+                       "the local map changed.");
+  DefineRecoveryFields(&result);
+  result.def_readonly("index", &R::index, "0-based scan index.")
       .def_readonly("stamp_s", &R::stamp_s)
       .def_property_readonly("predicted",
                              matrix(&R::predicted),
@@ -235,10 +264,11 @@ void DefineResult(py::module_& m) {
           "The registration's verdict, or LOW_QUALITY when the gate "
           "refused it.")
       .def_readonly("message", &R::message)
-      .def_readonly(
-          "fallback", &R::fallback, "The prediction stands in for the pose.")
+      .def_readonly("fallback",
+                    &R::fallback,
+                    "Not registered: the prediction stands in for the pose "
+                    "(interpolated once a later scan bridges it).")
       .def_readonly("keyframe", &R::keyframe, "The scan joined the local map.")
-      .def_readonly("map_restarted", &R::map_restarted)
       .def_readonly("deskewed", &R::deskewed)
       .def_readonly("start_layer", &R::start_layer)
       .def_readonly("num_layers", &R::num_layers)

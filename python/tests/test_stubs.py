@@ -94,7 +94,7 @@ def test_stub_signatures_list_every_option():
         "prediction",
         "deskew",
         "gate_factor",
-        "max_consecutive_fallbacks",
+        "recovery",
         "max_flatness",
         "weak_direction_rounds",
         "max_mean_score",

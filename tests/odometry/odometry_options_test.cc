@@ -24,8 +24,8 @@ TEST(OdometryOptions, IsValidRefusesEachOwnFieldOutOfRange) {
       cases = {
           {[](OdometryOptions* o) { o->gate_factor = 0.5; },
            "invalid option: gate_factor = 0.5; it must be >= 1"},
-          {[](OdometryOptions* o) { o->max_consecutive_fallbacks = 0; },
-           "invalid option: max_consecutive_fallbacks = 0; it must be >= 1"},
+          {[](OdometryOptions* o) { o->recovery.max_search_starts = 6; },
+           "invalid option: max_search_starts = 6; it must be <= 5"},
           {[](OdometryOptions* o) { o->max_flatness = 0.0; },
            "invalid option: max_flatness = 0; it must be in (0, 1]"},
           {[](OdometryOptions* o) { o->max_flatness = 1.5; },

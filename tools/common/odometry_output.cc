@@ -21,13 +21,14 @@ std::string ScanRow(const ScanInput& input, const OdometryResult& r) {
   std::string row =
       std::to_string(r.index) + "," + CsvField(input.name(r.index)) + "," +
       Fmt(r.stamp_s, 9) + "," + TerminationTypeToString(r.termination) + "," +
-      (r.fallback ? "1" : "0") + "," + (r.keyframe ? "1" : "0") + "," +
-      (r.deskewed ? "1" : "0") + "," + std::to_string(r.start_layer) + "," +
-      std::to_string(r.num_layers) + "," + std::to_string(r.iterations) + "," +
-      Num(r.uncertainty.translation_m) + "," + Num(r.uncertainty.rotation_deg) +
-      "," + Num(r.correction_m) + "," + Num(r.correction_deg) + "," +
-      Num(r.quality.inlier_fraction) + "," + std::to_string(r.map_keyframes) +
-      "," + std::to_string(r.map_points);
+      (r.fallback ? "1" : "0") + "," + std::to_string(r.search_starts) + "," +
+      (r.recovered ? "1" : "0") + "," + (r.interpolated ? "1" : "0") + "," +
+      (r.keyframe ? "1" : "0") + "," + (r.deskewed ? "1" : "0") + "," +
+      std::to_string(r.start_layer) + "," + std::to_string(r.num_layers) + "," +
+      std::to_string(r.iterations) + "," + Num(r.uncertainty.translation_m) +
+      "," + Num(r.uncertainty.rotation_deg) + "," + Num(r.correction_m) + "," +
+      Num(r.correction_deg) + "," + Num(r.quality.inlier_fraction) + "," +
+      std::to_string(r.map_keyframes) + "," + std::to_string(r.map_points);
   for (int k = 0; k < 6; ++k) {
     row += "," + Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
   }
@@ -45,7 +46,8 @@ bool WriteOdometryFiles(const std::string& dir,
                         std::string* error) {
   Trajectory trajectory;
   std::string csv =
-      "scan,name,stamp_s,verdict,fallback,keyframe,deskewed,start_layer,"
+      "scan,name,stamp_s,verdict,fallback,search_starts,recovered,"
+      "interpolated,keyframe,deskewed,start_layer,"
       "num_layers,iterations,uncertainty_m,uncertainty_deg,correction_m,"
       "correction_deg,inlier_fraction,map_keyframes,map_points,x_m,y_m,z_m,"
       "alpha_deg,beta_deg,gamma_deg,registration_ms,map_ms,total_ms,"
@@ -81,7 +83,11 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
                       {"FAILURE", summary.failure}};
   json["fallbacks"] = summary.fallbacks;
   json["keyframes"] = summary.keyframes;
-  json["map_restarts"] = summary.map_restarts;
+  json["recovery"] = {
+      {"searched", summary.searched},
+      {"recovered", summary.recovered},
+      {"interpolated", summary.interpolated},
+      {"extrapolated", summary.fallbacks - summary.interpolated}};
   std::vector<double> total_ms;
   for (const OdometryResult& r : results)
     total_ms.push_back(r.total_time_s * 1e3);
@@ -114,18 +120,22 @@ void PrintOdometrySummary(const OdometrySummary& summary,
   const Stats t = ComputeStats(total_ms);
   std::printf(
       "scans: %zu; CONVERGENCE %zu, NO_CONVERGENCE %zu, LOW_QUALITY %zu, "
-      "DEGENERATE %zu, FAILURE %zu; prediction used (fallback) for %zu; "
-      "keyframes %zu; local map restarts %zu\ntime per scan [ms]: mean %.1f, "
-      "median %.1f, max %.1f\n",
+      "DEGENERATE %zu, FAILURE %zu; keyframes %zu\nnot registered from the "
+      "prediction: searched %zu, recovered %zu; without a registered pose "
+      "(fallback) %zu: interpolated %zu, extrapolated %zu\ntime per scan "
+      "[ms]: mean %.1f, median %.1f, max %.1f\n",
       summary.scans,
       summary.convergence,
       summary.no_convergence,
       summary.low_quality,
       summary.degenerate,
       summary.failure,
-      summary.fallbacks,
       summary.keyframes,
-      summary.map_restarts,
+      summary.searched,
+      summary.recovered,
+      summary.fallbacks,
+      summary.interpolated,
+      summary.fallbacks - summary.interpolated,
       t.mean,
       t.median,
       t.max);

@@ -48,7 +48,7 @@ DiagnosticReport ScanDiagnostic(const ScanReport& report, bool odometry) {
         d.values.end(),
         {{"fallback", Flag(!report.registered)},
          {"keyframe", Flag(report.keyframe)},
-         {"map_restarted", Flag(report.map_restarted)},
+         {"recovered", Flag(report.recovered)},
          {"deskewed", Flag(report.deskewed)},
          {"prediction_uncertainty_m", Number(report.uncertainty_m, 3)},
          {"prediction_uncertainty_deg", Number(report.uncertainty_deg, 2)},

@@ -71,11 +71,6 @@ OdometryNodeOutput OdometryNodeCore::Process(const PointCloud2Scan& scan) {
   if (!report.registered) {
     output.warnings.push_back(At(scan.stamp_s) + output.diagnostic.message);
   }
-  if (report.map_restarted) {
-    output.warnings.push_back(At(scan.stamp_s) +
-                              "the local map restarted from this scan's "
-                              "prediction (the trajectory may jump here)");
-  }
   AddLocalMap(&output);
   return output;
 }

@@ -36,7 +36,7 @@ ScanReport ReportOf(const OdometryResult& result) {
                                              result.uncertainty.rotation_deg);
   }
   report.keyframe = result.keyframe;
-  report.map_restarted = result.map_restarted;
+  report.recovered = result.recovered;
   report.deskewed = result.deskewed;
   report.uncertainty_m = result.uncertainty.translation_m;
   report.uncertainty_deg = result.uncertainty.rotation_deg;

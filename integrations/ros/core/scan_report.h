@@ -34,7 +34,7 @@ struct ScanReport {
   Matrix6d covariance = Matrix6d::Zero();
   // Odometry only.
   bool keyframe = false;
-  bool map_restarted = false;
+  bool recovered = false;  // Registered from a search start.
   bool deskewed = false;
   double uncertainty_m = 0.0;  // Of the prediction.
   double uncertainty_deg = 0.0;
