@@ -182,7 +182,8 @@ void ExpectCsvEqualsJson(const std::string& out) {
   ASSERT_EQ(rows.size(), scans.size());
   for (size_t k = 0; k < rows.size(); ++k) {
     SCOPED_TRACE("scan " + std::to_string(k));
-    EXPECT_FALSE(scans[k]["registration"]["trace"].empty());
+    EXPECT_FALSE(scans[k]["registration"].contains("trace"));
+    EXPECT_TRUE(scans[k]["registration"].contains("covariance"));
     std::vector<std::pair<std::string, Json>> leaves;
     FlattenJson(scans[k], "", &leaves);
     ASSERT_EQ(rows[k].size(), leaves.size());

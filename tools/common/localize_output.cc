@@ -34,13 +34,15 @@ CsvColumn FileColumn(const std::vector<std::string>& files,
 }
 
 // scans.json: the tool's header and one object per scan, the file's name
-// and every field of LocalizationResultTable.
+// and every field of LocalizationResultTable but the registration's trace
+// (about 25 kB a scan; as in scans.csv).
 Json LocalizationScansJson(const std::vector<std::string>& files,
                            const std::vector<LocalizationResult>& results) {
   const CsvColumn file = FileColumn(files, results);
   Json scans = Json::array();
   for (size_t k = 0; k < results.size(); ++k) {
     Json scan = ResultJsonOf(LocalizationResultTable(), results[k]);
+    scan["registration"].erase("trace");
     scan["file"] = file.cells[k];
     scans.push_back(std::move(scan));
   }
