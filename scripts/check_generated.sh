@@ -6,6 +6,8 @@
 #     between the GENERATED markers  (the result tables)
 #   python/mlndt/__init__.pyi, the  mlndt_options --format=results_pyi
 #     block between the markers      (RegistrationResult's properties)
+#   docs/json_schema.md and the stub, mlndt_options --format=localization_markdown
+#     the LocalizationResult blocks   and --format=localization_pyi
 #
 #   scripts/check_generated.sh [BUILD_DIR]          # default build/
 #   scripts/check_generated.sh --write [BUILD_DIR]  # rewrites the copies
@@ -60,6 +62,8 @@ PY
 check docs/options.md markdown
 check docs/json_schema.md results_markdown block
 check python/mlndt/__init__.pyi results_pyi block
+check docs/json_schema.md localization_markdown block
+check python/mlndt/__init__.pyi localization_pyi block
 if ((status == 0)); then
   echo "check_generated: docs/options.md, docs/json_schema.md and the stub are current"
 fi

@@ -24,14 +24,14 @@
 // (map_from_scan of every scan; TUM time stamps are the bag's header stamps
 // or the --times file's, else the scan indices, as the file's first line
 // says),
-// scans.csv (per scan: verdict, fit quality, pose, correction from the
-// prediction, times), summary.json, and with --plots (default) the top view
-// trajectory_xy.png of the map's finest cells (subsampled to
-// --plot_max_cells) and the trajectory (gnuplot; data and script in
-// plot_data/). The summary counts the scans by verdict (CONVERGENCE,
-// NO_CONVERGENCE, LOW_QUALITY, DEGENERATE, FAILURE); only CONVERGENCE and
-// NO_CONVERGENCE are usable (IsUsableTermination), the others keep their
-// prediction as their pose.
+// scans.csv and scans.json (per scan: every field of LocalizationResult and
+// its registration's summary, from LocalizationResultTable), summary.json,
+// and with --plots (default) the top view trajectory_xy.png of the map's
+// finest cells (subsampled to --plot_max_cells) and the trajectory
+// (gnuplot; data and script in plot_data/). The summary counts the scans by
+// verdict (CONVERGENCE, NO_CONVERGENCE, LOW_QUALITY, DEGENERATE, FAILURE);
+// only CONVERGENCE and NO_CONVERGENCE are usable (IsUsableTermination), the
+// others keep their prediction as their pose.
 //
 // Exit codes: 2 on a bad flag or input refused before any work; 1 when any
 // scan's result is not usable (every file is still written), a scan cannot
@@ -159,6 +159,7 @@ int Run() {
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
                                {"scans.csv",
+                                "scans.json",
                                 "summary.json",
                                 "trajectory_kitti.txt",
                                 "trajectory_tum.txt"},

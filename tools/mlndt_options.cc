@@ -7,12 +7,18 @@
 //   mlndt_options --format=results_markdown  # docs/json_schema.md's
 //                                            # registration section
 //   mlndt_options --format=results_pyi       # the stub's RegistrationResult
+//   mlndt_options --format=localization_markdown  # ... mlndt_localize's
+//                                                  # scans section
+//   mlndt_options --format=localization_pyi       # LocalizationResult
 
 #include <gflags/gflags.h>
 
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "mlndt/common/result_table.h"
+#include "mlndt/pipeline/localizer.h"
 #include "mlndt/registration/registration_summary.h"
 #include "tools/common/option_flags.h"
 #include "tools/common/options_doc.h"
@@ -24,7 +30,40 @@ DEFINE_string(format,
               "markdown",
               "markdown | json | results_markdown (docs/json_schema.md's "
               "registration section) | results_pyi (the stub's "
-              "RegistrationResult)");
+              "RegistrationResult) | localization_markdown | "
+              "localization_pyi (the same of LocalizationResult)");
+
+namespace {
+
+// The reference of a result table in --format; false for another format.
+bool PrintResults(const std::string& format) {
+  using mlndt::tools::DescribedResult;
+  const std::vector<DescribedResult> registration = {
+      {&mlndt::RegistrationSummaryTable(), "RegistrationResult"}};
+  if (format == "results_markdown") {
+    std::cout << mlndt::tools::ResultsMarkdown(
+        mlndt::RegistrationSummaryTable());
+  } else if (format == "results_pyi") {
+    std::cout << mlndt::tools::ResultsStub(
+        mlndt::RegistrationSummaryTable(),
+        "RegistrationResult",
+        "What a registration reports (mlndt::RegistrationSummary).");
+  } else if (format == "localization_markdown") {
+    std::cout << mlndt::tools::ResultsMarkdown(mlndt::LocalizationResultTable(),
+                                               registration);
+  } else if (format == "localization_pyi") {
+    std::cout << mlndt::tools::ResultsStub(
+        mlndt::LocalizationResultTable(),
+        "LocalizationResult",
+        "One scan's localisation (mlndt::LocalizationResult).",
+        registration);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> option_flags;
@@ -58,18 +97,10 @@ int main(int argc, char** argv) {
     std::cout << mlndt::tools::OptionsMarkdown();
   } else if (FLAGS_format == "json") {
     std::cout << mlndt::tools::OptionsJson().dump(2) << "\n";
-  } else if (FLAGS_format == "results_markdown") {
-    std::cout << mlndt::tools::ResultsMarkdown(
-        mlndt::RegistrationSummaryTable());
-  } else if (FLAGS_format == "results_pyi") {
-    std::cout << mlndt::tools::ResultsStub(
-        mlndt::RegistrationSummaryTable(),
-        "RegistrationResult",
-        "What a registration reports (mlndt::RegistrationSummary).");
-  } else {
+  } else if (!PrintResults(FLAGS_format)) {
     std::cerr << "mlndt_options: --format=" << FLAGS_format
-              << ": expected markdown, json, results_markdown or "
-                 "results_pyi\n";
+              << ": expected markdown, json, results_markdown, results_pyi, "
+                 "localization_markdown or localization_pyi\n";
     return mlndt::tools::kExitUsage;
   }
   return mlndt::tools::kExitOk;

@@ -47,28 +47,14 @@ Isometry3d Localizer::PredictNext() const {
   return last_map_from_scan_ * last_motion_;
 }
 
-void Localizer::Localize(const PointCloud& scan,
-                         LocalizationResult* result,
-                         RegistrationSummary* summary) {
+void Localizer::Localize(const PointCloud& scan, LocalizationResult* result) {
   CHECK(result != nullptr);
-  RegistrationSummary local_summary;
-  RegistrationSummary& s = summary != nullptr ? *summary : local_summary;
+  RegistrationSummary& s = result->registration;
   const Isometry3d predicted = PredictNext();
   Register(options_.registration, map_, scan, predicted, &s);
 
   result->index = num_localized_;
   result->predicted_map_from_scan = predicted;
-  result->termination_type = s.termination_type;
-  result->message = s.message;
-  result->quality = s.quality;
-  result->iterations = s.num_iterations;
-  result->input_points = s.input_points;
-  result->sampled_points = s.sampled_points;
-  result->matched_points = s.matched_points;
-  result->final_score = s.final_score;
-  result->sampling_time_s = s.sampling_time_s;
-  result->solve_time_s = s.solve_time_s;
-  result->registration_time_s = s.total_time_s;
   result->map_from_scan =
       s.IsSolutionUsable() ? s.reference_from_input : predicted;
 
@@ -110,8 +96,8 @@ bool LocalizeScans(const LocalizerOptions& options,
     if (!load_scan(k, &scan, error)) return false;
     LocalizationResult result;
     result.load_time_s = NowSeconds() - start;
-    localizer.Localize(scan, &result, nullptr);
-    results->push_back(result);
+    localizer.Localize(scan, &result);
+    results->push_back(std::move(result));
     if (on_result) on_result(results->back());
   }
   return true;

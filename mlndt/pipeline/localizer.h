@@ -7,7 +7,7 @@
 //   Localizer localizer(options, map, first_map_from_scan);
 //   for (each scan) {
 //     LocalizationResult result;
-//     localizer.Localize(scan, &result, nullptr);
+//     localizer.Localize(scan, &result);
 //   }
 //
 // Prediction (LocalizerOptions::motion_model): the first scan starts from
@@ -35,6 +35,7 @@
 namespace mlndt {
 
 class EnumTable;
+class ResultTable;
 
 enum class MotionModel {
   CONSTANT_POSE,      // Scan k starts from pose_{k-1}.
@@ -56,32 +57,25 @@ struct LocalizerOptions {
   bool IsValid(std::string* error) const;
 };
 
-// One scan's localisation.
+// One scan's localisation: the prediction, the estimate and the
+// registration of the scan onto the map from the prediction, whole.
 struct LocalizationResult {
   size_t index = 0;  // 0-based position of the scan in the sequence.
   // The initial guess (the prediction) and the estimate; when the result is
   // not usable (IsSolutionUsable) the estimate is the prediction.
   Isometry3d predicted_map_from_scan = Isometry3d::Identity();
   Isometry3d map_from_scan = Isometry3d::Identity();
-  TerminationType termination_type = TerminationType::FAILURE;
-  std::string message;
-  FitQuality quality;  // At the solution (registration_summary.h).
-  int iterations = 0;
-  size_t input_points = 0;
-  size_t sampled_points = 0;
-  size_t matched_points = 0;
-  double final_score = 0.0;
-  double load_time_s = 0.0;      // Reading the scan (LocalizeScans).
-  double sampling_time_s = 0.0;  // Of the registration.
-  double solve_time_s = 0.0;
-  double registration_time_s = 0.0;  // RegistrationSummary::total_time_s.
+  double load_time_s = 0.0;  // Reading the scan (LocalizeScans).
+  // The registration: verdict, fit, counts, times, scores, covariance.
+  RegistrationSummary registration;
 
-  // As RegistrationSummary::IsSolutionUsable (IsUsableTermination,
-  // types.h): CONVERGENCE or NO_CONVERGENCE.
-  bool IsSolutionUsable() const {
-    return IsUsableTermination(termination_type);
-  }
+  // registration.IsSolutionUsable(): CONVERGENCE or NO_CONVERGENCE.
+  bool IsSolutionUsable() const { return registration.IsSolutionUsable(); }
 };
+
+// LocalizationResult's fields (result_table.h), the registration's table
+// nested: its JSON, CSV, Python and docs forms come from it.
+const ResultTable& LocalizationResultTable();
 
 class Localizer {
  public:
@@ -96,11 +90,8 @@ class Localizer {
 
   // Registers `scan` (in its sensor frame) from PredictNext(), fills
   // *result (its load_time_s is left as it is) and updates the motion
-  // model. `summary` may be null; else it receives the registration's full
-  // summary.
-  void Localize(const PointCloud& scan,
-                LocalizationResult* result,
-                RegistrationSummary* summary);
+  // model.
+  void Localize(const PointCloud& scan, LocalizationResult* result);
 
   size_t num_localized() const { return num_localized_; }
 

@@ -18,6 +18,7 @@
 #include "python/src/module.h"
 #include "python/src/option_binding.h"
 #include "python/src/options.h"
+#include "python/src/result_binding.h"
 
 namespace mlndt {
 namespace python {
@@ -82,7 +83,7 @@ class PyLocalizer {
     Result result;
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(mutex_);
-    localizer_->Localize(cloud, &result, nullptr);
+    localizer_->Localize(cloud, &result);
     return result;
   }
 
@@ -102,63 +103,30 @@ class PyLocalizer {
   std::mutex mutex_;
 };
 
-py::dict QualityDict(const Result& r) {
-  py::dict quality;
-  quality["points"] = r.quality.points;
-  quality["own_cell_fraction"] = r.quality.own_cell_fraction;
-  quality["inlier_fraction"] = r.quality.inlier_fraction;
-  quality["mean_score"] = r.quality.mean_score;
-  quality["median_distance"] = r.quality.median_distance;
-  return quality;
-}
-
 void DefineResult(py::module_& m) {
-  py::class_<Result>(m,
-                     "LocalizationResult",
-                     "One scan's localisation (mlndt::LocalizationResult): "
-                     "the prediction, the\nestimate, the verdict and the "
-                     "fit. Poses are map_from_scan (4x4).")
-      .def_readonly("index", &Result::index, "0-based scan index.")
+  py::class_<Result> result(
+      m,
+      "LocalizationResult",
+      "One scan's localisation (mlndt::LocalizationResult): the prediction, "
+      "the estimate and the registration's whole result. The properties are "
+      "the struct's fields (LocalizationResultTable()), named and in the "
+      "units of the C++ struct (m, rad, s); todict() gives them all, as a "
+      "scan of mlndt_localize's scans.json does.");
+  DefineResultProperties(result, LocalizationResultTable());
+  result
       .def_property_readonly(
-          "predicted_map_from_scan",
-          [](const Result& r) {
-            return Eigen::Matrix4d(r.predicted_map_from_scan.matrix());
+          "registration",
+          [](const Result& r) -> const RegistrationSummary& {
+            return r.registration;
           },
-          "The initial guess (the motion model's prediction), 4x4.")
-      .def_property_readonly(
-          "map_from_scan",
-          [](const Result& r) {
-            return Eigen::Matrix4d(r.map_from_scan.matrix());
-          },
-          "The estimate, 4x4 (the prediction on FAILURE).")
-      .def_property_readonly(
-          "termination",
-          [](const Result& r) {
-            return std::string(TerminationTypeToString(r.termination_type));
-          },
-          "CONVERGENCE, NO_CONVERGENCE, FAILURE, LOW_QUALITY or DEGENERATE.")
-      .def_property_readonly(
-          "usable", &Result::IsSolutionUsable, "termination != FAILURE.")
-      .def_readonly("message", &Result::message, "Why it ended.")
-      .def_property_readonly(
-          "quality",
-          &QualityDict,
-          "The fit at the solution (FitQuality: points, own_cell_fraction, "
-          "inlier_fraction,\nmean_score, median_distance).")
-      .def_readonly("iterations", &Result::iterations)
-      .def_readonly("input_points", &Result::input_points)
-      .def_readonly("sampled_points", &Result::sampled_points)
-      .def_readonly("matched_points", &Result::matched_points)
-      .def_readonly("score", &Result::final_score, "Eq. 10 at the solution.")
-      .def_readonly("sampling_time_s", &Result::sampling_time_s)
-      .def_readonly("solve_time_s", &Result::solve_time_s)
-      .def_readonly("registration_time_s",
-                    &Result::registration_time_s,
-                    "The registration's total wall time [s].")
+          py::return_value_policy::reference_internal,
+          "The registration of the scan onto the map from the prediction: a "
+          "RegistrationResult (todict()[\"registration\"] as a dict).")
       .def("__repr__", [](const Result& r) {
         return "<mlndt.LocalizationResult scan " + std::to_string(r.index) +
-               " " + TerminationTypeToString(r.termination_type) + ", " +
-               std::to_string(r.iterations) + " iterations>";
+               " " + TerminationTypeToString(r.registration.termination_type) +
+               ", " + std::to_string(r.registration.num_iterations) +
+               " iterations>";
       });
 }
 

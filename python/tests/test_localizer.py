@@ -36,32 +36,138 @@ def localized(kitti_map):
     return [localizer.localize(mlndt.read_cloud(path)) for path in KITTI_SCANS]
 
 
-def test_poses_equal_mlndt_localize(tmp_path, kitti_map, localized):
+@pytest.fixture(scope="module")
+def tool_run(tmp_path_factory, kitti_map):
+    """mlndt_localize on the same map and scans: its output folder."""
+    out = tmp_path_factory.mktemp("localize")
     completed = run_tool(
         "mlndt_localize",
         f"--map={kitti_map[1]}",
         f"--scans={KITTI_SCANS[0].parent}",
-        f"--output_dir={tmp_path}",
+        f"--output_dir={out}",
         "--plots=false",
     )
     assert completed.returncode == 0, completed.stderr
-    tool_poses = read_kitti_lines(tmp_path / "trajectory_kitti.txt")
+    return out
+
+
+def test_poses_equal_mlndt_localize(tool_run, localized):
+    tool_poses = read_kitti_lines(tool_run / "trajectory_kitti.txt")
     assert len(tool_poses) == len(localized) == 8
     for k, result in enumerate(localized):
         assert result.index == k
         assert np.array_equal(tool_poses[k], result.map_from_scan), k
-    with open(tmp_path / "scans.csv") as rows:
+    with open(tool_run / "scans.csv") as rows:
         table = list(csv.DictReader(rows))
-    assert [row["termination"] for row in table] == [r.termination for r in localized]
-    assert [int(row["iterations"]) for row in table] == [r.iterations for r in localized]
-    assert [int(row["sampled_points"]) for row in table] == [r.sampled_points for r in localized]
+    assert [row["registration.termination_type"] for row in table] == [
+        r.registration.termination_type for r in localized
+    ]
+    assert [int(row["registration.num_iterations"]) for row in table] == [
+        r.registration.num_iterations for r in localized
+    ]
+
+
+def _flatten(value, prefix=""):
+    """A todict() as the CSV's columns: nested dicts as "outer.inner", the
+    trace left out; {column: value}."""
+    columns = {}
+    for key, item in value.items():
+        name = prefix + key
+        if isinstance(item, dict):
+            columns.update(_flatten(item, name + "."))
+        elif key != "trace":
+            columns[name] = item
+    return columns
+
+
+def _json_flatten(value, prefix=""):
+    columns = {}
+    for key, item in value.items():
+        if isinstance(item, dict):
+            columns.update(_json_flatten(item, prefix + key + "."))
+        else:
+            columns[prefix + key] = item
+    return columns
+
+
+def _csv_cell(text):
+    """A CSV cell as a value: bools, numbers, space-separated numbers."""
+    if text in ("true", "false"):
+        return text == "true"
+    try:
+        numbers = [float(x) for x in text.split()]
+    except ValueError:
+        return text
+    return numbers[0] if len(numbers) == 1 and " " not in text else numbers
+
+
+def _as_numbers(value):
+    """A Python or JSON value as a flat list of floats (None is NaN)."""
+    if isinstance(value, (bool, str)):
+        return value
+    array = np.asarray(value, dtype=float).ravel()
+    return [float(x) for x in array]
+
+
+def _same(a, b):
+    a, b = _as_numbers(a), _as_numbers(b)
+    if isinstance(a, (bool, str)) or isinstance(b, (bool, str)):
+        return a == b
+    return len(a) == len(b) and all(x == y or (np.isnan(x) and np.isnan(y)) for x, y in zip(a, b))
+
+
+def _none_to_nan(value):
+    if value is None:
+        return float("nan")
+    if isinstance(value, list):
+        return [_none_to_nan(v) for v in value]
+    return value
+
+
+def _is_time(name):
+    """A wall time (differs between two runs): *_time_s, a record's time_s."""
+    return name.split(".")[-1] == "time_s" or name.endswith("_time_s")
+
+
+def test_scans_csv_json_and_python_agree(tool_run, localized):
+    """Issue 46: one scan's result in scans.csv, scans.json and Python has the
+    same keys and values (LocalizationResultTable; the files leave the trace
+    out). The tool and Python ran separately, so their wall times differ:
+    those keys are compared only."""
+    with open(tool_run / "scans.csv") as rows:
+        table = list(csv.DictReader(rows))
+    scans = json.loads((tool_run / "scans.json").read_text())["scans"]
+    assert len(table) == len(scans) == len(localized) == 8
+    for k, result in enumerate(localized):
+        python = result.todict()
+        row, scan = table[k], scans[k]
+        assert scan.pop("file") == row.pop("file") == KITTI_SCANS[k].name
+        # Keys: JSON = CSV = Python flattened; the registration's trace is
+        # Python's only (too large for a file of every scan).
+        assert list(scan) == list(python)
+        assert "trace" not in scan["registration"]
+        assert len(python["registration"]["trace"]) == python["registration"]["num_iterations"] > 0
+        flat = _flatten(python)
+        json_flat = _json_flatten(scan)
+        assert list(row) == list(flat) == list(json_flat)
+        assert "registration.quality.inlier_fraction" in row
+        for name, value in flat.items():
+            cell = _csv_cell(row[name])
+            from_json = _none_to_nan(json_flat[name])
+            assert _same(cell, from_json), (k, name, row[name], json_flat[name])
+            if _is_time(name):
+                continue
+            assert _same(cell, value), (k, name, row[name], value)
+        # The property is the RegistrationResult of the same registration.
+        assert isinstance(result.registration, mlndt.RegistrationResult)
+        assert result.registration.num_iterations == python["registration"]["num_iterations"]
 
 
 @pytest.mark.parametrize("k", [1, 2, 3, 5])
 def test_poses_match_the_reference_pairs(localized, k):
     expected, _ = reference_transform(KITTI_PAIRS, f"0_{k}")
     result = localized[k]
-    assert result.termination == "CONVERGENCE", result.message
+    assert result.registration.termination_type == "CONVERGENCE", result.registration.message
     assert translation_error_m(expected, result.map_from_scan) < 0.1
     assert rotation_error_deg(expected, result.map_from_scan) < 0.2
 
@@ -83,7 +189,7 @@ def test_options_reach_the_registration(kitti_map):
     localizer = mlndt.Localizer(kitti_map[0], schedule={"max_final_iterations": 2})
     result = localizer.localize(mlndt.read_cloud(KITTI_SCANS[1]))
     default = mlndt.Localizer(kitti_map[0]).localize(mlndt.read_cloud(KITTI_SCANS[1]))
-    assert result.iterations < default.iterations
+    assert result.registration.num_iterations < default.registration.num_iterations
 
 
 @pytest.mark.parametrize(

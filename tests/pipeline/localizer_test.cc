@@ -3,9 +3,12 @@
 #include <glog/logging.h>
 #include <gtest/gtest.h>
 
+#include <string>
+#include <variant>
 #include <vector>
 
 #include "mlndt/common/pose.h"
+#include "mlndt/common/result_table.h"
 #include "tests/testing/synthetic_scene.h"
 
 namespace mlndt {
@@ -88,14 +91,15 @@ TEST(LocalizeScans, ConstantVelocityFindsEveryPose) {
     SCOPED_TRACE("scan " + std::to_string(k));
     const LocalizationResult& r = results[k];
     EXPECT_EQ(r.index, k);
-    EXPECT_EQ(r.termination_type, TerminationType::CONVERGENCE) << r.message;
+    EXPECT_EQ(r.registration.termination_type, TerminationType::CONVERGENCE)
+        << r.registration.message;
     EXPECT_LT(TranslationErrorM(drive.map_from_scan[k], r.map_from_scan), 0.05);
     EXPECT_LT(
         RotationErrorRad(drive.map_from_scan[k], r.map_from_scan) * kRadToDeg,
         0.3);
-    EXPECT_GT(r.quality.inlier_fraction, 0.5);
-    EXPECT_GT(r.sampled_points, 0u);
-    EXPECT_GT(r.registration_time_s, 0.0);
+    EXPECT_GT(r.registration.quality.inlier_fraction, 0.5);
+    EXPECT_GT(r.registration.sampled_points, 0u);
+    EXPECT_GT(r.registration.total_time_s, 0.0);
     EXPECT_GE(r.load_time_s, 0.0);
     Isometry3d expected_prediction = first_guess;
     if (k == 1) expected_prediction = results[0].map_from_scan;
@@ -115,15 +119,19 @@ TEST(Localizer, ConstantPosePredictsThePreviousPose) {
   Localizer localizer(options, drive.map, drive.map_from_scan[0]);
   EXPECT_TRUE(localizer.PredictNext().isApprox(drive.map_from_scan[0]));
   LocalizationResult first, second;
-  localizer.Localize(drive.scans[0], &first, nullptr);
+  localizer.Localize(drive.scans[0], &first);
   EXPECT_TRUE(localizer.PredictNext().isApprox(first.map_from_scan, 1e-12));
-  RegistrationSummary summary;
-  localizer.Localize(drive.scans[1], &second, &summary);
+  localizer.Localize(drive.scans[1], &second);
   EXPECT_TRUE(
       second.predicted_map_from_scan.isApprox(first.map_from_scan, 1e-12));
-  // The full summary is the registration's.
+  // The result holds the registration's whole summary: its guess was the
+  // prediction, its solution is the estimate.
+  const RegistrationSummary& summary = second.registration;
   EXPECT_TRUE(summary.reference_from_input.isApprox(second.map_from_scan));
-  EXPECT_EQ(summary.num_iterations, second.iterations);
+  EXPECT_TRUE(IsometryToPoseVector(second.predicted_map_from_scan)
+                  .isApprox(summary.initial_reference_from_input_xi, 1e-9));
+  EXPECT_EQ(summary.num_iterations, static_cast<int>(summary.trace.size()));
+  EXPECT_GT(summary.num_iterations, 0);
   EXPECT_EQ(localizer.num_localized(), 2u);
 }
 
@@ -133,19 +141,19 @@ TEST(Localizer, FailureDeadReckons) {
   const Drive& drive = StreetDrive();
   Localizer localizer(LocalizerOptions(), drive.map, drive.map_from_scan[0]);
   LocalizationResult r0, r1, r2, r3;
-  localizer.Localize(drive.scans[0], &r0, nullptr);
-  localizer.Localize(drive.scans[1], &r1, nullptr);
+  localizer.Localize(drive.scans[0], &r0);
+  localizer.Localize(drive.scans[1], &r1);
   const Isometry3d motion = r0.map_from_scan.inverse() * r1.map_from_scan;
-  localizer.Localize(PointCloud(), &r2, nullptr);
-  EXPECT_EQ(r2.termination_type, TerminationType::FAILURE);
+  localizer.Localize(PointCloud(), &r2);
+  EXPECT_EQ(r2.registration.termination_type, TerminationType::FAILURE);
   EXPECT_FALSE(r2.IsSolutionUsable());
-  EXPECT_FALSE(r2.message.empty());
+  EXPECT_FALSE(r2.registration.message.empty());
   EXPECT_TRUE(r2.map_from_scan.isApprox(r1.map_from_scan * motion, 1e-12));
   EXPECT_TRUE(r2.predicted_map_from_scan.isApprox(r2.map_from_scan, 1e-12));
   EXPECT_TRUE(
       localizer.PredictNext().isApprox(r2.map_from_scan * motion, 1e-12));
-  localizer.Localize(drive.scans[3], &r3, nullptr);
-  EXPECT_EQ(r3.termination_type, TerminationType::CONVERGENCE);
+  localizer.Localize(drive.scans[3], &r3);
+  EXPECT_EQ(r3.registration.termination_type, TerminationType::CONVERGENCE);
   EXPECT_LT(TranslationErrorM(drive.map_from_scan[3], r3.map_from_scan), 0.05);
 }
 
@@ -158,10 +166,8 @@ TEST(LocalizationResult, UsableExactlyWhenTheRegistrationIs) {
                                      TerminationType::DEGENERATE,
                                      TerminationType::FAILURE}) {
     LocalizationResult result;
-    result.termination_type = type;
-    RegistrationSummary summary;
-    summary.termination_type = type;
-    EXPECT_EQ(result.IsSolutionUsable(), summary.IsSolutionUsable())
+    result.registration.termination_type = type;
+    EXPECT_EQ(result.IsSolutionUsable(), result.registration.IsSolutionUsable())
         << TerminationTypeToString(type);
     EXPECT_EQ(result.IsSolutionUsable(),
               type == TerminationType::CONVERGENCE ||
@@ -235,6 +241,47 @@ TEST(MotionModel, Strings) {
   EXPECT_EQ(model, MotionModel::CONSTANT_VELOCITY);
   EXPECT_STREQ(MotionModelToString(model), "CONSTANT_VELOCITY");
   EXPECT_FALSE(StringToMotionModel("linear", &model));
+}
+
+// The table (result_table.h) holds the result's own fields and nests the
+// registration's table on the result's own summary.
+TEST(LocalizationResultTable, NestsTheRegistrationsSummary) {
+  const Drive& drive = StreetDrive();
+  const Isometry3d guess =
+      drive.map_from_scan[0] *
+      PoseVectorToIsometry(PoseVectorFromDegrees(1.0, 0, 0, 0, 0, 5.0));
+  Localizer localizer(LocalizerOptions(), drive.map, guess);
+  LocalizationResult result;
+  localizer.Localize(drive.scans[0], &result);
+  const ResultTable& table = LocalizationResultTable();
+  std::vector<std::string> names;
+  for (const ResultField& field : table.fields()) names.push_back(field.name);
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"index",
+                                      "usable",
+                                      "predicted_map_from_scan",
+                                      "map_from_scan",
+                                      "map_from_scan_xi",
+                                      "correction_m",
+                                      "correction_rad",
+                                      "load_time_s",
+                                      "registration"}));
+  const ResultField* registration = table.Find("registration");
+  ASSERT_NE(registration, nullptr);
+  EXPECT_EQ(registration->nested, &RegistrationSummaryTable());
+  const auto nested = std::get<NestedResult>(registration->Get(result));
+  EXPECT_EQ(nested.object, static_cast<const void*>(&result.registration));
+  const auto pose =
+      std::get<Eigen::MatrixXd>(table.Find("map_from_scan")->Get(result));
+  EXPECT_TRUE(pose.isApprox(result.map_from_scan.matrix()));
+  EXPECT_NEAR(std::get<double>(table.Find("correction_m")->Get(result)),
+              TranslationErrorM(guess, result.map_from_scan),
+              1e-12);
+  EXPECT_NEAR(
+      std::get<double>(table.Find("correction_m")->Get(result)), 1.0, 0.05);
+  EXPECT_NEAR(std::get<double>(table.Find("correction_rad")->Get(result)),
+              5.0 * kDegToRad,
+              0.01);
 }
 
 }  // namespace

@@ -68,30 +68,132 @@ std::vector<Isometry3d> ReadPoses(const std::string& path) {
   return poses;
 }
 
-// scans.csv as rows of named fields (the message column is last and may be
-// quoted; it is not parsed).
-std::vector<std::map<std::string, std::string>> ReadCsv(
+// The fields of one CSV line ("..." quoting with "" for a quote; no
+// line breaks inside a field).
+std::vector<std::string> CsvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      fields.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+// scans.csv as rows of named fields, in the header's order.
+std::vector<std::vector<std::pair<std::string, std::string>>> ReadCsvRows(
     const std::string& path) {
   std::ifstream in(path);
   std::string line;
   std::vector<std::string> header;
-  std::vector<std::map<std::string, std::string>> rows;
+  std::vector<std::vector<std::pair<std::string, std::string>>> rows;
   while (std::getline(in, line)) {
-    std::vector<std::string> fields;
-    std::stringstream stream(line);
-    std::string field;
-    while (std::getline(stream, field, ',')) fields.push_back(field);
+    const std::vector<std::string> fields = CsvFields(line);
     if (header.empty()) {
       header = fields;
       continue;
     }
-    std::map<std::string, std::string> row;
-    for (size_t k = 0; k + 1 < header.size() && k < fields.size(); ++k) {
-      row[header[k]] = fields[k];
+    EXPECT_EQ(fields.size(), header.size()) << line;
+    rows.emplace_back();
+    for (size_t k = 0; k < header.size() && k < fields.size(); ++k) {
+      rows.back().emplace_back(header[k], fields[k]);
     }
-    rows.push_back(row);
   }
   return rows;
+}
+
+std::vector<std::map<std::string, std::string>> ReadCsv(
+    const std::string& path) {
+  std::vector<std::map<std::string, std::string>> rows;
+  for (const auto& row : ReadCsvRows(path)) {
+    rows.emplace_back(row.begin(), row.end());
+  }
+  return rows;
+}
+
+// The leaves of a scans.json object named as the CSV's columns: nested
+// objects as "outer.inner", lists of objects (the trace) left out.
+void FlattenJson(const Json& object,
+                 const std::string& prefix,
+                 std::vector<std::pair<std::string, Json>>* leaves) {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    const Json& value = it.value();
+    if (value.is_object()) {
+      FlattenJson(value, prefix + it.key() + ".", leaves);
+    } else if (!(value.is_array() && !value.empty() &&
+                 value.front().is_object())) {
+      leaves->emplace_back(prefix + it.key(), value);
+    }
+  }
+}
+
+// The numbers of a JSON value (nested arrays row by row; null as NaN).
+void JsonNumbers(const Json& value, std::vector<double>* numbers) {
+  if (value.is_array()) {
+    for (const Json& item : value) JsonNumbers(item, numbers);
+  } else {
+    numbers->push_back(value.is_null() ? std::nan("") : value.get<double>());
+  }
+}
+
+// A CSV cell holds the JSON value: the same text, or the same numbers.
+void ExpectSameValue(const std::string& cell, const Json& value) {
+  if (value.is_string()) {
+    EXPECT_EQ(cell, value.get<std::string>());
+    return;
+  }
+  if (value.is_boolean()) {
+    EXPECT_EQ(cell, value.get<bool>() ? "true" : "false");
+    return;
+  }
+  std::vector<double> expected, found;
+  JsonNumbers(value, &expected);
+  std::stringstream stream(cell);
+  std::string number;
+  while (stream >> number) found.push_back(std::stod(number));
+  ASSERT_EQ(found.size(), expected.size()) << cell;
+  for (size_t i = 0; i < found.size(); ++i) {
+    if (std::isnan(expected[i])) {
+      EXPECT_FALSE(std::isfinite(found[i])) << cell;
+    } else {
+      EXPECT_EQ(found[i], expected[i]) << cell;
+    }
+  }
+}
+
+// scans.csv and scans.json of one run hold the same keys and the same
+// values (both from LocalizationResultTable).
+void ExpectCsvEqualsJson(const std::string& out) {
+  const auto rows = ReadCsvRows(out + "/scans.csv");
+  std::ifstream json_file(out + "/scans.json");
+  Json json;
+  json_file >> json;
+  EXPECT_EQ(json["tool"], "mlndt_localize");
+  const Json& scans = json["scans"];
+  ASSERT_EQ(rows.size(), scans.size());
+  for (size_t k = 0; k < rows.size(); ++k) {
+    SCOPED_TRACE("scan " + std::to_string(k));
+    EXPECT_FALSE(scans[k]["registration"].contains("trace"));
+    EXPECT_TRUE(scans[k]["registration"].contains("covariance"));
+    std::vector<std::pair<std::string, Json>> leaves;
+    FlattenJson(scans[k], "", &leaves);
+    ASSERT_EQ(rows[k].size(), leaves.size());
+    std::map<std::string, Json> by_name(leaves.begin(), leaves.end());
+    for (const auto& [name, cell] : rows[k]) {
+      SCOPED_TRACE(name);
+      ASSERT_EQ(by_name.count(name), 1u);
+      ExpectSameValue(cell, by_name.at(name));
+    }
+  }
 }
 
 // Every scan of `trajectory` within 0.2 m and 1 degree of `reference`.
@@ -154,16 +256,21 @@ TEST(MlndtLocalize, KittiScansFromTenMetresAndFortyFiveDegreesOff) {
     const auto& row = rows[k];
     EXPECT_EQ(row.at("index"), std::to_string(k));
     EXPECT_EQ(row.at("file"), "00000" + std::to_string(k) + ".pcd");
-    EXPECT_EQ(row.at("termination"), "CONVERGENCE");
-    EXPECT_GT(std::stod(row.at("inlier_fraction")), 0.9);
-    EXPECT_GT(std::stod(row.at("own_cell_fraction")), 0.9);
-    EXPECT_GT(std::stod(row.at("registration_ms")), 0.0);
-    EXPECT_GE(std::stod(row.at("load_ms")), 0.0);
-    EXPECT_NEAR(std::stod(row.at("tx_m")), estimate[k].translation().x(), 1e-6);
+    EXPECT_EQ(row.at("registration.termination_type"), "CONVERGENCE");
+    EXPECT_EQ(row.at("usable"), "true");
+    EXPECT_GT(std::stod(row.at("registration.quality.inlier_fraction")), 0.9);
+    EXPECT_GT(std::stod(row.at("registration.quality.own_cell_fraction")), 0.9);
+    EXPECT_GT(std::stod(row.at("registration.total_time_s")), 0.0);
+    EXPECT_GE(std::stod(row.at("load_time_s")), 0.0);
+    // The pose vector's first number is tx, to 17 digits.
+    EXPECT_NEAR(std::stod(row.at("map_from_scan_xi")),
+                estimate[k].translation().x(),
+                1e-9);
   }
+  ExpectCsvEqualsJson(out);
   // Scan 0 was corrected by the whole offset.
   EXPECT_NEAR(std::stod(rows[0].at("correction_m")), 10.0, 0.05);
-  EXPECT_NEAR(std::stod(rows[0].at("correction_deg")), 45.0, 0.5);
+  EXPECT_NEAR(std::stod(rows[0].at("correction_rad")) * kRadToDeg, 45.0, 0.5);
 
   std::ifstream json_file(out + "/summary.json");
   Json summary;
@@ -423,7 +530,7 @@ TEST(MlndtLocalize, LowQualityScansAreCountedAndExitOne) {
   EXPECT_EQ(summary["unusable"].get<int>(), 3);
   // Dead reckoning: no correction of any prediction is kept.
   for (const auto& row : ReadCsv(out + "/scans.csv")) {
-    EXPECT_EQ(row.at("termination"), "LOW_QUALITY");
+    EXPECT_EQ(row.at("registration.termination_type"), "LOW_QUALITY");
     EXPECT_EQ(std::stod(row.at("correction_m")), 0.0);
   }
 }

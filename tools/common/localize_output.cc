@@ -13,6 +13,8 @@
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/map_memory.h"
+#include "tools/common/result_csv.h"
+#include "tools/common/result_json.h"
 #include "tools/common/tool_utils.h"
 #include "tools/common/verdict_counts_json.h"
 
@@ -20,52 +22,33 @@ namespace mlndt {
 namespace tools {
 namespace {
 
-// tx, ty, tz [m], alpha, beta, gamma [deg] of a pose (R = Rx Ry Rz).
-std::vector<double> PoseNumbers(const Isometry3d& pose) {
-  const Vector6d xi = IsometryToPoseVector(pose);
-  std::vector<double> v(xi.data(), xi.data() + 6);
-  for (int a = 3; a < 6; ++a) v[static_cast<size_t>(a)] *= kRadToDeg;
-  return v;
-}
-
-std::string PoseColumns(const Isometry3d& pose) {
-  std::string out;
-  for (const double v : PoseNumbers(pose)) {
-    out += (out.empty() ? "" : ",") + Num(v);
-  }
-  return out;
-}
-
-bool WriteLocalizationCsv(const std::string& path,
-                          const std::vector<std::string>& files,
-                          const std::vector<LocalizationResult>& results,
-                          std::string* error) {
-  std::ostringstream out;
-  out << "index,file,termination,iterations,input_points,sampled_points,"
-         "matched_points,score,own_cell_fraction,inlier_fraction,mean_score,"
-         "median_distance,tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,"
-         "correction_m,correction_deg,load_ms,sampling_ms,solve_ms,"
-         "registration_ms,message\n";
+// The scans' file names, one per result.
+CsvColumn FileColumn(const std::vector<std::string>& files,
+                     const std::vector<LocalizationResult>& results) {
+  CsvColumn column{"file", {}};
   for (const LocalizationResult& r : results) {
-    out << r.index << ","
-        << CsvField(std::filesystem::path(files[r.index]).filename().string())
-        << "," << TerminationTypeToString(r.termination_type) << ","
-        << r.iterations << "," << r.input_points << "," << r.sampled_points
-        << "," << r.matched_points << "," << Num(r.final_score) << ","
-        << Num(r.quality.own_cell_fraction) << ","
-        << Num(r.quality.inlier_fraction) << "," << Num(r.quality.mean_score)
-        << "," << Num(r.quality.median_distance) << ","
-        << PoseColumns(r.map_from_scan) << ","
-        << Num(TranslationErrorM(r.predicted_map_from_scan, r.map_from_scan))
-        << ","
-        << Num(RotationErrorRad(r.predicted_map_from_scan, r.map_from_scan) *
-               kRadToDeg)
-        << "," << Num(r.load_time_s * 1e3) << ","
-        << Num(r.sampling_time_s * 1e3) << "," << Num(r.solve_time_s * 1e3)
-        << "," << Num(r.registration_time_s * 1e3) << "," << CsvField(r.message)
-        << "\n";
+    column.cells.push_back(
+        std::filesystem::path(files[r.index]).filename().string());
   }
-  return WriteFileAtomically(path, out.str(), error);
+  return column;
+}
+
+// scans.json: the tool's header and one object per scan, the file's name
+// and every field of LocalizationResultTable but the registration's trace
+// (about 25 kB a scan; as in scans.csv).
+Json LocalizationScansJson(const std::vector<std::string>& files,
+                           const std::vector<LocalizationResult>& results) {
+  const CsvColumn file = FileColumn(files, results);
+  Json scans = Json::array();
+  for (size_t k = 0; k < results.size(); ++k) {
+    Json scan = ResultJsonOf(LocalizationResultTable(), results[k]);
+    scan["registration"].erase("trace");
+    scan["file"] = file.cells[k];
+    scans.push_back(std::move(scan));
+  }
+  Json json = ToolJson("mlndt_localize");
+  json["scans"] = std::move(scans);
+  return json;
 }
 
 }  // namespace
@@ -80,10 +63,10 @@ Json LocalizationSummaryJson(const LocalizerOptions& options,
   VerdictCounts verdicts;
   std::vector<double> registration_ms, inliers, own;
   for (const LocalizationResult& r : results) {
-    verdicts.Add(r.termination_type);
-    registration_ms.push_back(r.registration_time_s * 1e3);
-    inliers.push_back(r.quality.inlier_fraction);
-    own.push_back(r.quality.own_cell_fraction);
+    verdicts.Add(r.registration.termination_type);
+    registration_ms.push_back(r.registration.total_time_s * 1e3);
+    inliers.push_back(r.registration.quality.inlier_fraction);
+    own.push_back(r.registration.quality.own_cell_fraction);
   }
   size_t cells = 0;
   for (int i = 1; i <= map.num_layers(); ++i) {
@@ -145,7 +128,8 @@ bool WriteLocalizationPlot(const std::string& dir,
     for (const LocalizationResult& r : results) {
       trajectory << r.map_from_scan.translation().x() << " "
                  << r.map_from_scan.translation().y() << " "
-                 << (r.termination_type == TerminationType::CONVERGENCE)
+                 << (r.registration.termination_type ==
+                     TerminationType::CONVERGENCE)
                  << "\n";
     }
     if (!WriteFileAtomically(data_dir + "/map_cells.dat", out.str(), error) ||
@@ -190,8 +174,14 @@ bool WriteLocalizationFiles(const std::string& dir,
                          trajectory,
                          input.TumComment(),
                          error) &&
-         WriteLocalizationCsv(
-             out + "scans.csv", input.names(), results, error) &&
+         WriteFileAtomically(out + "scans.csv",
+                             ResultCsvOf(LocalizationResultTable(),
+                                         results,
+                                         {FileColumn(input.names(), results)}),
+                             error) &&
+         WriteJsonFile(out + "scans.json",
+                       LocalizationScansJson(input.names(), results),
+                       error) &&
          WriteJsonFile(out + "summary.json", summary, error);
 }
 
@@ -208,7 +198,7 @@ std::string UnusableScansMessage(const VerdictCounts& verdicts) {
          std::to_string(verdicts.total()) + " scans have no usable pose (" +
          verdicts.Line() +
          "): their poses in the trajectories are the predictions; "
-         "see the termination column of scans.csv";
+         "see the registration.termination_type column of scans.csv";
 }
 
 std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
@@ -218,10 +208,10 @@ std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
                 sizeof(detail),
                 "%s %s, inliers %.3f, %d it, %.0f ms",
                 std::filesystem::path(paths[r.index]).filename().c_str(),
-                TerminationTypeToString(r.termination_type),
-                r.quality.inlier_fraction,
-                r.iterations,
-                r.registration_time_s * 1e3);
+                TerminationTypeToString(r.registration.termination_type),
+                r.registration.quality.inlier_fraction,
+                r.registration.num_iterations,
+                r.registration.total_time_s * 1e3);
   return detail;
 }
 
@@ -267,17 +257,17 @@ VerdictCounts PrintLocalizationTable(
         "%9.1f\n",
         r.index,
         std::filesystem::path(paths[r.index]).filename().c_str(),
-        TerminationTypeToString(r.termination_type),
-        r.iterations,
-        r.quality.own_cell_fraction,
-        r.quality.inlier_fraction,
+        TerminationTypeToString(r.registration.termination_type),
+        r.registration.num_iterations,
+        r.registration.quality.own_cell_fraction,
+        r.registration.quality.inlier_fraction,
         xi(0),
         xi(1),
         xi(5) * kRadToDeg,
         r.load_time_s * 1e3,
-        r.registration_time_s * 1e3);
-    registration_ms.push_back(r.registration_time_s * 1e3);
-    verdicts.Add(r.termination_type);
+        r.registration.total_time_s * 1e3);
+    registration_ms.push_back(r.registration.total_time_s * 1e3);
+    verdicts.Add(r.registration.termination_type);
   }
   const Stats t = ComputeStats(registration_ms);
   std::printf(

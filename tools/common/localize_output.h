@@ -1,7 +1,8 @@
 #pragma once
 
 // mlndt_localize's outputs: trajectory_kitti.txt, trajectory_tum.txt,
-// scans.csv, summary.json (docs/json_schema.md, "mlndt_localize"), the
+// scans.csv and scans.json (LocalizationResultTable, result_csv.h and
+// result_json.h), summary.json (docs/json_schema.md, "mlndt_localize"), the
 // per-scan table on stdout and the top view trajectory_xy.png.
 
 #include <string>
@@ -25,7 +26,8 @@ Json LocalizationSummaryJson(const LocalizerOptions& options,
                              double map_load_s,
                              double total_s);
 
-// The trajectories (TUM stamps from `input`), scans.csv and summary.json
+// The trajectories (TUM stamps from `input`), scans.csv, scans.json and
+// summary.json
 // into `dir`.
 bool WriteLocalizationFiles(const std::string& dir,
                             const ScanInput& input,

@@ -7,14 +7,24 @@ namespace mlndt {
 namespace tools {
 namespace {
 
+const DescribedResult* Described(const ResultTable* table,
+                                 const std::vector<DescribedResult>& list) {
+  for (const DescribedResult& d : list) {
+    if (d.table == table) return &d;
+  }
+  return nullptr;
+}
+
 void Collect(const ResultTable& table,
+             const std::vector<DescribedResult>& described,
              std::vector<const ResultTable*>* tables) {
-  if (std::find(tables->begin(), tables->end(), &table) != tables->end()) {
+  if (std::find(tables->begin(), tables->end(), &table) != tables->end() ||
+      Described(&table, described) != nullptr) {
     return;
   }
   tables->push_back(&table);
   for (const ResultField& field : table.fields()) {
-    if (field.nested != nullptr) Collect(*field.nested, tables);
+    if (field.nested != nullptr) Collect(*field.nested, described, tables);
   }
 }
 
@@ -43,7 +53,12 @@ std::string MarkdownType(const ResultField& field) {
   return type;
 }
 
-std::string PythonType(const ResultField& field) {
+std::string PythonType(const ResultField& field,
+                       const std::vector<DescribedResult>& described) {
+  const DescribedResult* d = Described(field.nested, described);
+  if (d != nullptr && field.type == ResultType::STRUCT) {
+    return d->python_class;
+  }
   switch (field.type) {
     case ResultType::NUMBER:
       return "float";
@@ -73,49 +88,61 @@ std::string StubDoc(const ResultField& field) {
   return doc;
 }
 
-void TypedDict(const ResultTable& table, std::ostringstream* out) {
+void TypedDict(const ResultTable& table,
+               const std::vector<DescribedResult>& described,
+               std::ostringstream* out) {
   *out << "class " << table.struct_name() << "(TypedDict):\n";
   for (const ResultField& field : table.fields()) {
-    *out << "    " << field.name << ": " << PythonType(field) << "\n";
+    *out << "    " << field.name << ": " << PythonType(field, described)
+         << "\n";
   }
   *out << "\n";
 }
 
 }  // namespace
 
-std::vector<const ResultTable*> ResultTablesUnder(const ResultTable& root) {
+std::vector<const ResultTable*> ResultTablesUnder(
+    const ResultTable& root, const std::vector<DescribedResult>& described) {
   std::vector<const ResultTable*> tables;
-  Collect(root, &tables);
+  tables.push_back(&root);
+  for (const ResultField& field : root.fields()) {
+    if (field.nested != nullptr) Collect(*field.nested, described, &tables);
+  }
   return tables;
 }
 
-std::string ResultsMarkdown(const ResultTable& root) {
+std::string ResultsMarkdown(const ResultTable& root,
+                            const std::vector<DescribedResult>& described) {
   std::ostringstream out;
-  for (const ResultTable* table : ResultTablesUnder(root)) {
+  const std::vector<const ResultTable*> tables =
+      ResultTablesUnder(root, described);
+  for (const ResultTable* table : tables) {
     out << "### " << table->struct_name() << "\n\n"
         << "| key | type | unit | meaning |\n|---|---|---|---|\n";
     for (const ResultField& field : table->fields()) {
       out << "| `" << field.name << "` | " << MarkdownType(field) << " | "
           << Cell(field.unit) << " | " << Cell(field.help) << " |\n";
     }
-    if (table != ResultTablesUnder(root).back()) out << "\n";
+    if (table != tables.back()) out << "\n";
   }
   return out.str();
 }
 
 std::string ResultsStub(const ResultTable& root,
                         const std::string& python_class,
-                        const std::string& class_doc) {
+                        const std::string& class_doc,
+                        const std::vector<DescribedResult>& described) {
   std::ostringstream out;
-  const std::vector<const ResultTable*> tables = ResultTablesUnder(root);
+  const std::vector<const ResultTable*> tables =
+      ResultTablesUnder(root, described);
   for (const ResultTable* table : tables) {
-    if (table != &root) TypedDict(*table, &out);
+    if (table != &root) TypedDict(*table, described, &out);
   }
   out << "class " << python_class << ":\n    \"\"\"" << class_doc
       << "\"\"\"\n\n";
   for (const ResultField& field : root.fields()) {
     out << "    @property\n    def " << field.name << "(self) -> "
-        << PythonType(field) << ":\n        \"\"\"" << StubDoc(field)
+        << PythonType(field, described) << ":\n        \"\"\"" << StubDoc(field)
         << "\"\"\"\n";
   }
   out << "    def todict(self) -> dict[str, Any]:\n"

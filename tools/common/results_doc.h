@@ -14,19 +14,30 @@
 namespace mlndt {
 namespace tools {
 
+// A nested table described elsewhere (its own section, its own Python
+// class): not repeated, and not entered.
+struct DescribedResult {
+  const ResultTable* table = nullptr;
+  std::string python_class;  // The type of a property holding one.
+};
+
 // `root` and the tables nested in it, each once, root first, then in the
-// order they are first met.
-std::vector<const ResultTable*> ResultTablesUnder(const ResultTable& root);
+// order they are first met; tables of `described` are not entered.
+std::vector<const ResultTable*> ResultTablesUnder(
+    const ResultTable& root, const std::vector<DescribedResult>& described);
 
 // One "### `Struct`" section per table under `root`: a row per field with
 // its key, type, unit and meaning.
-std::string ResultsMarkdown(const ResultTable& root);
+std::string ResultsMarkdown(const ResultTable& root,
+                            const std::vector<DescribedResult>& described = {});
 
 // A TypedDict per nested table, then `class <python_class>` with one
-// read-only property per field of `root` and todict().
+// read-only property per field of `root` and todict(). A field holding a
+// table of `described` has its Python class as its type.
 std::string ResultsStub(const ResultTable& root,
                         const std::string& python_class,
-                        const std::string& class_doc);
+                        const std::string& class_doc,
+                        const std::vector<DescribedResult>& described = {});
 
 }  // namespace tools
 }  // namespace mlndt

@@ -92,14 +92,13 @@ LocalizerNodeOutput LocalizerNodeCore::Process(const PointCloud2Scan& scan,
   }
   stamps_.Use(scan.stamp_s);
   LocalizationResult result;
-  RegistrationSummary summary;
-  localizer_->Localize(scan.cloud, &result, &summary);
+  localizer_->Localize(scan.cloud, &result);
 
   LocalizerNodeOutput output;
   output.stamp_s = scan.stamp_s;
   output.frame_id = scan.frame_id;
   output.processed = true;
-  output.report = ReportOf(result, summary, scan.stamp_s);
+  output.report = ReportOf(result, scan.stamp_s);
   output.has_pose = output.report.registered;
   output.covariance = ToRosCovariance(output.report.pose,
                                       output.report.covariance,

@@ -50,16 +50,15 @@ ScanReport ReportOf(const OdometryResult& result) {
   return report;
 }
 
-ScanReport ReportOf(const LocalizationResult& result,
-                    const RegistrationSummary& summary,
-                    double stamp_s) {
+ScanReport ReportOf(const LocalizationResult& result, double stamp_s) {
+  const RegistrationSummary& summary = result.registration;
   ScanReport report;
   report.index = result.index;
   report.stamp_s = stamp_s;
   report.pose = result.map_from_scan;
   report.predicted = result.predicted_map_from_scan;
-  report.termination = result.termination_type;
-  report.message = result.message;
+  report.termination = result.registration.termination_type;
+  report.message = result.registration.message;
   report.registered = result.IsSolutionUsable();
   report.has_covariance = report.registered;
   if (report.registered) report.covariance = summary.covariance;
@@ -69,9 +68,9 @@ ScanReport ReportOf(const LocalizationResult& result,
       RotationErrorRad(result.map_from_scan, result.predicted_map_from_scan) *
       kRadToDeg;
   report.start_layer = summary.start_layer;
-  report.iterations = result.iterations;
-  report.inlier_fraction = result.quality.inlier_fraction;
-  report.registration_time_s = result.registration_time_s;
+  report.iterations = result.registration.num_iterations;
+  report.inlier_fraction = result.registration.quality.inlier_fraction;
+  report.registration_time_s = result.registration.total_time_s;
   return report;
 }
 

@@ -49,9 +49,7 @@ struct ScanReport {
 };
 
 ScanReport ReportOf(const OdometryResult& result);
-ScanReport ReportOf(const LocalizationResult& result,
-                    const RegistrationSummary& summary,
-                    double stamp_s);
+ScanReport ReportOf(const LocalizationResult& result, double stamp_s);
 
 }  // namespace ros_core
 }  // namespace mlndt

@@ -460,9 +460,9 @@ def test_localizer_alone_refuses_to_jump_and_takes_the_initial_pose(ros, bags, w
     from rosgraph_msgs.msg import Log
     from tf2_msgs.msg import TFMessage
     expected, scans = tool_localize(work, bags["floor"], "tool_floor", kitti_map, "0,0,0,0,0,0")
-    assert [r["termination"] for r in scans].count("DEGENERATE") == 1
+    assert [r["registration.termination_type"] for r in scans].count("DEGENERATE") == 1
     usable = [row for row, r in zip(expected, scans)
-              if r["termination"] in ("CONVERGENCE", "NO_CONVERGENCE")]
+              if r["registration.termination_type"] in ("CONVERGENCE", "NO_CONVERGENCE")]
     assert len(usable) == len(expected) - 1
 
     pose = recorders("/pose", PoseWithCovarianceStamped)
@@ -496,7 +496,7 @@ def test_localizer_alone_refuses_to_jump_and_takes_the_initial_pose(ros, bags, w
             for m in pose.snapshot()] == usable
     assert transform_rows(tf, "map", FRAME) == usable
     found = verdicts(diagnostics, name)
-    assert [v for _, v, _ in found] == [r["termination"] for r in scans]
+    assert [v for _, v, _ in found] == [r["registration.termination_type"] for r in scans]
     assert [level for _, v, level in found if v == "DEGENERATE"] == [DiagnosticStatus.WARN]
     warnings = node_warnings(logs, "localizer_f")
     assert any("DEGENERATE" in w and "no jump: map -> sensor not updated" in w
