@@ -34,7 +34,10 @@ PoseGraphPairCheck CheckPair(const RegistrationOptions& registration,
   RegistrationSummary summary;
   Register(registration, maps[i], scans[j], joint_relative, &summary);
   check.termination = TerminationTypeToString(summary.termination_type);
-  check.usable = summary.IsSolutionUsable();
+  // A DEGENERATE pair still holds along the directions it constrains: its
+  // Hessian is ~0 along the free ones, so the NEES judges the others.
+  check.usable = summary.IsSolutionUsable() ||
+                 summary.termination_type == TerminationType::DEGENERATE;
   Vector6d e = IsometryToPoseVector(joint_relative) -
                IsometryToPoseVector(summary.reference_from_input);
   for (int k = 3; k < 6; ++k) e[k] = WrapAngle(e[k]);
