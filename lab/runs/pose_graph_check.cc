@@ -84,13 +84,14 @@ std::string FirstMisfit(const PoseGraphCheck& check,
     }
   }
   for (size_t i = 0; i < check.odometry_chi2.size(); ++i) {
-    if (!(check.odometry_chi2[i] <= kOdometryChi2Gate)) {
+    const double gate = OdometryChi2Gate(check.odometry_chi2.size());
+    if (!(check.odometry_chi2[i] <= gate)) {
       std::ostringstream out;
       out << "odometry factor " << i << ":" << i + 1 << ": the joint poses are "
           << std::sqrt(check.odometry_chi2[i]) << " stated sigmas ("
           << noise.sigma_m << " m, " << noise.sigma_deg
           << " deg) from the odometry (chi-square " << check.odometry_chi2[i]
-          << " > " << kOdometryChi2Gate << ")";
+          << " > " << gate << ")";
       return out.str();
     }
   }
@@ -98,6 +99,22 @@ std::string FirstMisfit(const PoseGraphCheck& check,
 }
 
 }  // namespace
+
+double OdometryChi2Gate(size_t factors) {
+  // Survival function of chi-square with 6 degrees of freedom.
+  const auto survival = [](double x) {
+    const double h = 0.5 * x;
+    return std::exp(-h) * (1.0 + h + 0.5 * h * h);
+  };
+  const double alpha =
+      0.001 / static_cast<double>(std::max<size_t>(1, factors));
+  double lo = 0.0, hi = 1000.0;
+  for (int k = 0; k < 100; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (survival(mid) > alpha ? lo : hi) = mid;
+  }
+  return lo;
+}
 
 PoseGraphCheck CheckJointPoses(
     const RegistrationOptions& registration,

@@ -14,7 +14,8 @@
 //    average when consistent, docs/embedding.md).
 //  - Each odometry factor: its whitened squared residual at the joint
 //    poses, |t_e|^2 / sigma_m^2 + |theta_e|^2 / sigma_rad^2 (chi-square with
-//    6 degrees of freedom when the stated noise is right).
+//    6 degrees of freedom when the stated noise is right), under
+//    OdometryChi2Gate.
 // A pose 5 m off, or an odometry that drifts 3 deg a scan, ends LOW_QUALITY.
 
 #include <string>
@@ -34,8 +35,11 @@ namespace mlndt {
 // 0.48 deg uncertain) 131; a pose 10 cm or 1 deg off along a well
 // constrained direction of a KITTI pair is thousands.
 constexpr double kPairNeesGate = 500.0;
-// chi-square, 6 degrees of freedom, 99.9 %.
-constexpr double kOdometryChi2Gate = 22.46;
+// The gate of each of `factors` odometry factors: the chi-square (6
+// degrees of freedom) quantile that all of them stay under with 99.9 %
+// when the stated noise is right (Bonferroni: 1 - 0.001 / factors per
+// factor): 22.46 for one factor, 27.0 for 7, 35.2 for 249.
+double OdometryChi2Gate(size_t factors);
 
 struct PoseGraphPairCheck {
   int map_scan = 0;
