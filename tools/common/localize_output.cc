@@ -171,7 +171,6 @@ bool WriteLocalizationPlot(const std::string& dir,
 bool WriteLocalizationFiles(const std::string& dir,
                             const ScanInput& input,
                             const std::vector<LocalizationResult>& results,
-                            const Json& summary,
                             std::string* error) {
   const std::string out = dir + "/";
   Trajectory trajectory;
@@ -190,9 +189,7 @@ bool WriteLocalizationFiles(const std::string& dir,
                          trajectory,
                          input.TumComment(),
                          error) &&
-         WriteLocalizationCsv(
-             out + "scans.csv", input.names(), results, error) &&
-         WriteJsonFile(out + "summary.json", summary, error);
+         WriteLocalizationCsv(out + "scans.csv", input.names(), results, error);
 }
 
 void PrintMapLine(const std::string& map_path, const LayeredGrid& map) {
