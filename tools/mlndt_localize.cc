@@ -51,6 +51,7 @@
 #include "tools/common/map_flags.h"
 #include "tools/common/map_inputs.h"
 #include "tools/common/output_files.h"
+#include "tools/common/output_set.h"
 #include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
@@ -136,6 +137,24 @@ bool LoadMap(const LocalizerOptions& options,
              options.registration.schedule, map->num_layers(), error);
 }
 
+// trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
+int WritePlot(bool gnuplot_ok,
+              const LayeredGrid& map,
+              const std::vector<LocalizationResult>& results) {
+  if (!gnuplot_ok) return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot));
+  std::string error;
+  if (!tools::WriteLocalizationPlot(FLAGS_output_dir,
+                                    map,
+                                    results,
+                                    FLAGS_plot_max_cells,
+                                    FLAGS_gnuplot,
+                                    &error)) {
+    return tools::Fail(kTool, error);
+  }
+  std::printf("plot: trajectory_xy.png\n");
+  return 0;
+}
+
 int Run() {
   const double start = NowSeconds();
   LocalizerOptions options;
@@ -163,7 +182,8 @@ int Run() {
                                 "summary.json",
                                 "trajectory_kitti.txt",
                                 "trajectory_tum.txt"},
-                               &error)) {
+                               &error) ||
+      !tools::StartOutputSet(FLAGS_output_dir, &error)) {
     return tools::Refuse(kTool, error);
   }
   const bool gnuplot_ok = GnuplotReadyForPlots(
@@ -180,9 +200,19 @@ int Run() {
   if (!ok) return tools::Fail(kTool, error);
 
   if (!tools::WriteLocalizationFiles(
+          FLAGS_output_dir, input, results, &error)) {
+    return tools::Fail(kTool, error);
+  }
+  const VerdictCounts verdicts = tools::PrintLocalizationTable(paths, results);
+  std::printf("output: %s\n", FLAGS_output_dir.c_str());
+  const int plot = FLAGS_plots ? WritePlot(gnuplot_ok, map, results) : 0;
+  // summary.json last, naming the files written (output_set.h).
+  std::vector<std::string> files = {
+      "trajectory_kitti.txt", "trajectory_tum.txt", "scans.csv", "scans.json"};
+  if (FLAGS_plots && plot == 0) files.push_back("trajectory_xy.png");
+  if (!tools::FinishOutputSet(
           FLAGS_output_dir,
-          input,
-          results,
+          files,
           tools::LocalizationSummaryJson(options,
                                          FLAGS_map,
                                          map,
@@ -193,21 +223,7 @@ int Run() {
           &error)) {
     return tools::Fail(kTool, error);
   }
-  const VerdictCounts verdicts = tools::PrintLocalizationTable(paths, results);
-  std::printf("output: %s\n", FLAGS_output_dir.c_str());
-  if (FLAGS_plots) {
-    if (!gnuplot_ok) {
-      return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot));
-    }
-    if (!tools::WriteLocalizationPlot(FLAGS_output_dir,
-                                      map,
-                                      results,
-                                      FLAGS_plot_max_cells,
-                                      FLAGS_gnuplot,
-                                      &error))
-      return tools::Fail(kTool, error);
-    std::printf("plot: trajectory_xy.png\n");
-  }
+  if (plot != 0) return plot;
   if (verdicts.unusable() > 0) {
     return tools::Fail(kTool, tools::UnusableScansMessage(verdicts));
   }

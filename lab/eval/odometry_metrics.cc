@@ -25,12 +25,13 @@ bool ComputeOdometryMetrics(const std::vector<Isometry3d>& reference,
   // Both start at the first scan (the odometry's frame).
   const Isometry3d first_inverse = truth.front().inverse();
   for (Isometry3d& pose : truth) pose = first_inverse * pose;
-  metrics->rpe_delta = rpe_delta;
+  metrics->rpe_delta_asked = rpe_delta;
   KittiSegmentOptions segments;
   segments.lengths_m = lengths_m;
   segments.first_frame_step = 1;
   RpeOptions rpe;
   rpe.delta = std::min<int>(rpe_delta, static_cast<int>(truth.size()) - 1);
+  metrics->rpe_delta = rpe.delta;
   return ComputeAte(AteOptions(), truth, estimate, &metrics->ate, error) &&
          ComputeRpe(rpe, truth, estimate, &metrics->rpe, error) &&
          ComputeKittiSegmentErrors(

@@ -16,7 +16,10 @@ namespace mlndt {
 
 struct OdometryMetrics {
   AteSummary ate;
-  int rpe_delta = 1;  // As asked; the RPE uses at most results.size() - 1.
+  // The RPE's scans between the two poses of a motion: as asked, but at
+  // most results.size() - 1 (an 8-scan run's RPE is over 7 scans).
+  int rpe_delta = 1;
+  int rpe_delta_asked = 1;
   RpeSummary rpe;
   KittiSegmentSummary segments;
 };

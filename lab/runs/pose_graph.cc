@@ -274,7 +274,9 @@ bool RunPoseGraph(const PoseGraphOptions& options,
   SolveJointly(options, in, &blocks, summary);
   for (const PoseBlocks& b : blocks) summary->joint.push_back(b.ToIsometry());
   summary->check = CheckJointPoses(options.registration,
-                                   options.information_scale,
+                                   // The calibrated weight, whatever the
+                                   // pairs' weight in the joint problem.
+                                   kCalibratedPairInformationScale,
                                    in.maps,
                                    scans,
                                    options.extra_pairs,

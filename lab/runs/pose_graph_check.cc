@@ -34,7 +34,10 @@ PoseGraphPairCheck CheckPair(const RegistrationOptions& registration,
   RegistrationSummary summary;
   Register(registration, maps[i], scans[j], joint_relative, &summary);
   check.termination = TerminationTypeToString(summary.termination_type);
-  check.usable = summary.IsSolutionUsable();
+  // A DEGENERATE pair still holds along the directions it constrains: its
+  // Hessian is ~0 along the free ones, so the NEES judges the others.
+  check.usable = summary.IsSolutionUsable() ||
+                 summary.termination_type == TerminationType::DEGENERATE;
   Vector6d e = IsometryToPoseVector(joint_relative) -
                IsometryToPoseVector(summary.reference_from_input);
   for (int k = 3; k < 6; ++k) e[k] = WrapAngle(e[k]);
@@ -81,13 +84,14 @@ std::string FirstMisfit(const PoseGraphCheck& check,
     }
   }
   for (size_t i = 0; i < check.odometry_chi2.size(); ++i) {
-    if (!(check.odometry_chi2[i] <= kOdometryChi2Gate)) {
+    const double gate = OdometryChi2Gate(check.odometry_chi2.size());
+    if (!(check.odometry_chi2[i] <= gate)) {
       std::ostringstream out;
       out << "odometry factor " << i << ":" << i + 1 << ": the joint poses are "
           << std::sqrt(check.odometry_chi2[i]) << " stated sigmas ("
           << noise.sigma_m << " m, " << noise.sigma_deg
           << " deg) from the odometry (chi-square " << check.odometry_chi2[i]
-          << " > " << kOdometryChi2Gate << ")";
+          << " > " << gate << ")";
       return out.str();
     }
   }
@@ -95,6 +99,22 @@ std::string FirstMisfit(const PoseGraphCheck& check,
 }
 
 }  // namespace
+
+double OdometryChi2Gate(size_t factors) {
+  // Survival function of chi-square with 6 degrees of freedom.
+  const auto survival = [](double x) {
+    const double h = 0.5 * x;
+    return std::exp(-h) * (1.0 + h + 0.5 * h * h);
+  };
+  const double alpha =
+      0.001 / static_cast<double>(std::max<size_t>(1, factors));
+  double lo = 0.0, hi = 1000.0;
+  for (int k = 0; k < 100; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (survival(mid) > alpha ? lo : hi) = mid;
+  }
+  return lo;
+}
 
 PoseGraphCheck CheckJointPoses(
     const RegistrationOptions& registration,

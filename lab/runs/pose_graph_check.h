@@ -5,14 +5,17 @@
 // factors' own information.
 //  - Each pair (i, i+1, and every extra pair): scan j registered onto scan
 //    i's map again, from the joint relative pose. The pair must be usable
-//    there, and the joint relative pose must lie within the pair's own
+//    there (or DEGENERATE: then the NEES judges the directions it
+//    constrains), and the joint relative pose must lie within the pair's own
 //    information of the pair's optimum: NEES = e^T (w H / 2) e, e the pose
 //    vector difference, H the registration's Gauss-Newton Hessian and w the
-//    information_scale (the weight the pair had in the joint problem; 6 on
+//    calibrated kCalibratedPairInformationScale (RunPoseGraph passes it
+//    whatever --information_scale weighted the pairs with; the NEES is 6 on
 //    average when consistent, docs/embedding.md).
 //  - Each odometry factor: its whitened squared residual at the joint
 //    poses, |t_e|^2 / sigma_m^2 + |theta_e|^2 / sigma_rad^2 (chi-square with
-//    6 degrees of freedom when the stated noise is right).
+//    6 degrees of freedom when the stated noise is right), under
+//    OdometryChi2Gate.
 // A pose 5 m off, or an odometry that drifts 3 deg a scan, ends LOW_QUALITY.
 
 #include <string>
@@ -32,14 +35,17 @@ namespace mlndt {
 // 0.48 deg uncertain) 131; a pose 10 cm or 1 deg off along a well
 // constrained direction of a KITTI pair is thousands.
 constexpr double kPairNeesGate = 500.0;
-// chi-square, 6 degrees of freedom, 99.9 %.
-constexpr double kOdometryChi2Gate = 22.46;
+// The gate of each of `factors` odometry factors: the chi-square (6
+// degrees of freedom) quantile that all of them stay under with 99.9 %
+// when the stated noise is right (Bonferroni: 1 - 0.001 / factors per
+// factor): 22.46 for one factor, 27.0 for 7, 35.2 for 249.
+double OdometryChi2Gate(size_t factors);
 
 struct PoseGraphPairCheck {
   int map_scan = 0;
   int point_scan = 0;
-  // Of the registration from the joint relative pose, and whether it is
-  // usable (IsUsableTermination).
+  // Of the registration from the joint relative pose, and whether it can
+  // judge the joint poses (IsUsableTermination, or DEGENERATE).
   std::string termination;
   bool usable = false;
   double nees = 0.0;
@@ -59,8 +65,8 @@ struct PoseGraphCheck {
 };
 
 // Checks `joint` (world_from_scan per scan) against the pairs (consecutive
-// and `extra_pairs`, scans[j] onto maps[i]) and the odometry factors
-// (`odometry` empty: none).
+// and `extra_pairs`, scans[j] onto maps[i]; `information_scale` is the w
+// above) and the odometry factors (`odometry` empty: none).
 PoseGraphCheck CheckJointPoses(
     const RegistrationOptions& registration,
     double information_scale,

@@ -7,6 +7,7 @@
 
 #include "mlndt/common/enum_table.h"
 #include "mlndt/common/internal/check_option.h"
+#include "mlndt/common/internal/farthest_point.h"
 #include "mlndt/common/option_table.h"
 #include "mlndt/grid/cell_coverage.h"
 
@@ -605,7 +606,10 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
     std::ostringstream message;
     message << "finest_cell_size_m = " << options.finest_cell_size_m
             << " needs " << n << " layers over this cloud; max_num_layers is "
-            << options.max_num_layers;
+            << options.max_num_layers << " ("
+            << internal::DescribeFarthestPoint(reference.points(),
+                                               extent.maxCoeff())
+            << ")";
     *error = message.str();
     return false;
   }

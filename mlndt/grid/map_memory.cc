@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mlndt/common/internal/farthest_point.h"
 #include "mlndt/grid/cell_coverage.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/ndt_cell.h"
@@ -393,8 +394,16 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
   if (!CheckCloud(cloud, &bounds, error)) return false;
   std::vector<Geometry> geometry;
   int ratio = 0;
-  if (!LayerGeometries(options, bounds.sizes(), 0, &geometry, &ratio, error) ||
-      !ApplyCoverageRule(options, cloud, bounds, &geometry, &ratio, error)) {
+  if (!LayerGeometries(options, bounds.sizes(), 0, &geometry, &ratio, error)) {
+    if (error->find("layers over this cloud") != std::string::npos) {
+      *error += " (" +
+                internal::DescribeFarthestPoint(cloud.points(),
+                                                bounds.sizes().maxCoeff()) +
+                ")";
+    }
+    return false;
+  }
+  if (!ApplyCoverageRule(options, cloud, bounds, &geometry, &ratio, error)) {
     return false;
   }
   const int n = static_cast<int>(geometry.size());

@@ -1,8 +1,8 @@
 // An output set a reader can tell a finished run by (issue 41 item 12):
-// mlndt_odometry and mlndt_sequence remove the previous summary.json before
-// they write anything and write it last, naming every file they wrote with
-// its size; render folders (.mlndt_plot.*) that a killed run left behind
-// are removed by the next plot in that folder.
+// mlndt_odometry, mlndt_sequence and mlndt_localize remove the previous
+// summary.json before they write anything and write it last, naming every file
+// they wrote with its size; render folders (.mlndt_plot.*) that a killed run
+// left behind are removed by the next plot in that folder.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -72,6 +72,28 @@ TEST(OutputSet, SequenceSummaryIsWrittenLastAndNamesItsFiles) {
                               "trajectory.txt",
                               "trajectory_tum.txt",
                               "gt_trajectory.txt"});
+}
+
+TEST(OutputSet, LocalizeSummaryIsWrittenLastAndNamesItsFiles) {
+  const std::string dir = testing::FreshTestDir("output_set");
+  const std::string map = dir + "/kitti.mlndt";
+  const ToolRun built =
+      RunTool("mlndt_map",
+              Scans() + " --poses=" +
+                  Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
+                  " --max_scans=2 --voxel_size=0.2 --output=" + Quote(map));
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  const std::string out = dir + "/out";
+  const ToolRun run = RunTool("mlndt_localize",
+                              "--map=" + Quote(map) + " " + Scans() +
+                                  " --max_scans=2 --output_dir=" + Quote(out),
+                              300);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  ExpectSummaryLastAndNaming(out,
+                             {"trajectory_kitti.txt",
+                              "trajectory_tum.txt",
+                              "scans.csv",
+                              "trajectory_xy.png"});
 }
 
 // A run that stops after its work began leaves no summary.json of an

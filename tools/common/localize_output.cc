@@ -155,7 +155,6 @@ bool WriteLocalizationPlot(const std::string& dir,
 bool WriteLocalizationFiles(const std::string& dir,
                             const ScanInput& input,
                             const std::vector<LocalizationResult>& results,
-                            const Json& summary,
                             std::string* error) {
   const std::string out = dir + "/";
   Trajectory trajectory;
@@ -181,8 +180,7 @@ bool WriteLocalizationFiles(const std::string& dir,
                              error) &&
          WriteJsonFile(out + "scans.json",
                        LocalizationScansJson(input.names(), results),
-                       error) &&
-         WriteJsonFile(out + "summary.json", summary, error);
+                       error);
 }
 
 void PrintMapLine(const std::string& map_path, const LayeredGrid& map) {

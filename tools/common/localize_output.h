@@ -26,13 +26,12 @@ Json LocalizationSummaryJson(const LocalizerOptions& options,
                              double map_load_s,
                              double total_s);
 
-// The trajectories (TUM stamps from `input`), scans.csv, scans.json and
-// summary.json
-// into `dir`.
+// The trajectories (TUM stamps from `input`), scans.csv and scans.json into
+// `dir`; the tool writes summary.json (LocalizationSummaryJson) last
+// (output_set.h).
 bool WriteLocalizationFiles(const std::string& dir,
                             const ScanInput& input,
                             const std::vector<LocalizationResult>& results,
-                            const Json& summary,
                             std::string* error);
 
 // "map: PATH, N layers, finest cell X m, SIZE".

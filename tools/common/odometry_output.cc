@@ -144,8 +144,14 @@ void PrintOdometrySummary(const OdometrySummary& summary,
               metrics->ate.rmse_m,
               metrics->ate.errors.max);
   std::printf(
-      "RPE over %d scans: translation rmse %.3f m, rotation rmse %.3f deg\n",
+      "RPE over %d scans%s: translation rmse %.3f m, rotation rmse %.3f "
+      "deg\n",
       metrics->rpe_delta,
+      metrics->rpe_delta == metrics->rpe_delta_asked
+          ? ""
+          : (" (--rpe_delta=" + std::to_string(metrics->rpe_delta_asked) +
+             " is longer than the run)")
+                .c_str(),
       metrics->rpe.translation_rmse_m,
       metrics->rpe.rotation_rmse_deg);
   for (const KittiLengthErrors& l : metrics->segments.lengths) {

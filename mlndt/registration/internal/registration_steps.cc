@@ -68,6 +68,18 @@ bool SampleInput(const RangeFilterOptions& range_filter,
   summary->sampled_points = sampled->size();
   if (sampled->empty()) {
     *error = "sampling kept no input points";
+    // GBS drops cells with too few points: with a tiny cell, every cell.
+    if (options.method == SamplingMethod::GBS &&
+        sampling_summary.dropped_sparse_cells > 0) {
+      std::ostringstream why;
+      why << ": all " << sampling_summary.occupied_cells
+          << " cells of gbs_cell_size_m = " << options.gbs_cell_size_m
+          << " m hold fewer than gbs_min_points_per_cell = "
+          << options.gbs_min_points_per_cell
+          << " points (a larger cell, e.g. the default, or fewer points per "
+             "cell)";
+      *error += why.str();
+    }
     return false;
   }
   return true;

@@ -78,7 +78,8 @@ TEST(ComputeOdometryMetrics, RpeMatchesItsDefinitionOverAClampedDelta) {
   ASSERT_TRUE(
       ComputeOdometryMetrics(reference, results, 100, {1.0}, &metrics, &error))
       << error;
-  EXPECT_EQ(metrics.rpe_delta, 100);
+  EXPECT_EQ(metrics.rpe_delta, 7);  // Used (issue 41 item 14).
+  EXPECT_EQ(metrics.rpe_delta_asked, 100);
   ASSERT_EQ(metrics.rpe.translation_m.count, 1u);
   const Isometry3d q = reference[0].inverse() * reference[7];
   const Isometry3d p =

@@ -178,5 +178,14 @@ TEST(PoseGraphOptions, IsValidTakesTheRangesFromTheTable) {
   }
 }
 
+// The odometry factors' gate: chi-square(6) at 99.9 % for all factors
+// together (issue 41 item 3).
+TEST(OdometryChi2Gate, IsTheBonferroniQuantileOfChiSquareSix) {
+  EXPECT_NEAR(OdometryChi2Gate(1), 22.458, 0.01);
+  EXPECT_NEAR(OdometryChi2Gate(7), 27.03, 0.01);
+  EXPECT_NEAR(OdometryChi2Gate(249), 35.16, 0.01);
+  EXPECT_NEAR(OdometryChi2Gate(0), OdometryChi2Gate(1), 1e-12);
+}
+
 }  // namespace
 }  // namespace mlndt
