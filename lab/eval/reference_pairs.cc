@@ -6,7 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "mlndt/internal/cloud_readers.h"
+#include "mlndt/cloud/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace {

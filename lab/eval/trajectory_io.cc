@@ -9,11 +9,11 @@
 #include <string_view>
 #include <vector>
 
+#include "mlndt/cloud/internal/cloud_readers.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/internal/enum_strings.h"
 #include "mlndt/common/rigid_transform.h"
-#include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace {

@@ -32,16 +32,6 @@ int64_t Step(const ReferencePair& pair) {
 
 }  // namespace
 
-const std::vector<std::string>& DatasetNames() {
-  static const auto* const kNames = [] {
-    auto* names = new std::vector<std::string>;
-    for (const KnownDataset& known : KnownDatasets())
-      names->push_back(known.name);
-    return names;
-  }();
-  return *kNames;
-}
-
 std::vector<std::string> ExperimentDataset::PairsWithStep(int64_t step) const {
   std::vector<std::string> keys;
   for (const std::string& key : PairsByStep()) {

@@ -29,9 +29,6 @@ struct ExperimentDataset {
   std::vector<std::string> PairsByStep() const;
 };
 
-// The names in report order: kitti, mulran, 3dtk, room, koide3.
-const std::vector<std::string>& DatasetNames();
-
 // Finds every named data set under `data_dir` (shared names such as
 // kitti00_frames_0000_0007 first, then the bundled kitti, room, koide3),
 // reads its references and finds its scans. Missing data sets are listed

@@ -57,30 +57,6 @@ std::string NotReproducedSection() {
 
 }  // namespace
 
-const std::vector<std::string>& ReportHeadings() {
-  static const auto* const kHeadings = new std::vector<std::string>{
-      "## Headline: paper preset against defaults",
-      "## Configurations",
-      "## Fig. 10:",
-      "## Fig. 11:",
-      "## Fig. 12:",
-      "## Fig. 13:",
-      "## Section 5.1:",
-      "## Table 2 and Fig. 14:",
-      "## Table 3 and Fig. 15:",
-      "## Table 4 and Fig. 16:",
-      "## Table 5:",
-      "## Table 6 and Fig. 18:",
-      "## Table 7:",
-      "## Fig. 17:",
-      "## Table 8:",
-      "## Table 9:",
-      "## Sampling fraction sweep:",
-      "## Not reproduced here",
-  };
-  return *kHeadings;
-}
-
 namespace {
 
 // The data sets' table and the ones not found.

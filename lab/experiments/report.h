@@ -22,9 +22,6 @@ struct ReportHeader {
   size_t runs = 0;
 };
 
-// The headings every report has (tests check them).
-const std::vector<std::string>& ReportHeadings();
-
 // Builds README_RESULTS.md and summary.json into c.files.
 void BuildReport(const ReportHeader& header,
                  const ReportContext& c,

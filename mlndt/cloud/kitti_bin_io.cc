@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "mlndt/internal/cloud_readers.h"
+#include "mlndt/cloud/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace internal {

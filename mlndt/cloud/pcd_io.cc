@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "mlndt/cloud/internal/cloud_readers.h"
 #include "mlndt/common/internal/enum_strings.h"
-#include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace internal {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <vector>
 
-#include "mlndt/cloud/squared_range.h"
+#include "mlndt/cloud/internal/squared_range.h"
 #include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/option_table.h"
 

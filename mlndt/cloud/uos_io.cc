@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "mlndt/cloud/internal/cloud_readers.h"
 #include "mlndt/cloud/pose_io.h"
-#include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace internal {

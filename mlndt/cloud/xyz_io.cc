@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "mlndt/internal/cloud_readers.h"
+#include "mlndt/cloud/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace internal {

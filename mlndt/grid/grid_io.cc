@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "mlndt/cloud/internal/cloud_readers.h"
 #include "mlndt/common/atomic_file.h"
-#include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
+#include "mlndt/cloud/internal/squared_range.h"
 #include "mlndt/cloud/io.h"
-#include "mlndt/cloud/squared_range.h"
 #include "tests/testing/test_data.h"
 
 namespace mlndt {

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "mlndt/cloud/internal/cloud_readers.h"
 #include "mlndt/cloud/point_cloud.h"
-#include "mlndt/internal/cloud_readers.h"
 
 // Aborts (a crash for libFuzzer, with the input saved) when `condition` is
 // false.

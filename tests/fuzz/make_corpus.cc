@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "mlndt/cloud/internal/cloud_readers.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/grid/grid_io.h"
-#include "mlndt/internal/cloud_readers.h"
 
 namespace mlndt {
 namespace {
