@@ -55,6 +55,7 @@
 #include "mlndt/odometry/odometry.h"
 #include "mlndt/odometry/odometry_option_tables.h"
 #include "mlndt/odometry/odometry_options.h"
+#include "mlndt/odometry/recovery.h"
 #include "mlndt/odometry/run_odometry.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"

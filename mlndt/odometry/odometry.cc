@@ -222,9 +222,9 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
 }
 
 // A pose found on the last registered scan alone must agree with the scan
-// registered onto the local map from it, when that registration is usable
-// (the last-scan check the other way round): within the prediction's
-// smallest uncertainty.
+// registered onto the local map from it (the last-scan check the other way
+// round): that registration usable and within the prediction's smallest
+// uncertainty of the pose.
 bool Odometry::AgreesWithLocalMap(const PointCloud& cloud,
                                   OdometryResult* result) {
   RegistrationSummary summary;
@@ -234,7 +234,7 @@ bool Odometry::AgreesWithLocalMap(const PointCloud& cloud,
                   result->world_from_sensor,
                   &summary);
   result->registration_time_s += summary.total_time_s;
-  if (!summary.IsSolutionUsable()) return true;  // No evidence.
+  if (!summary.IsSolutionUsable()) return false;
   return TranslationErrorM(summary.reference_from_input,
                            result->world_from_sensor) <=
              options_.prediction.min_translation_m &&

@@ -12,7 +12,9 @@
 // prediction and the last pose turned about the sensor's z axis by
 // +-yaw_step_deg; then onto the last registered scan alone (a map of one
 // view, which a sensor that walks on leaves later than the local map's
-// keyframes). A start's result counts only when the odometry's whole
+// keyframes), where the scan registered onto the local map from the pose
+// found must be usable and end within the prediction's smallest
+// uncertainty of it. A start's result counts only when the odometry's whole
 // verdict (gate, confirmation from beyond the pose, last-scan check) calls
 // it CONVERGENCE. The local map is never rebuilt around a pose that is only
 // a prediction: an unregistered scan does not join it, and its pose is
@@ -31,7 +33,7 @@ struct RecoveryOptions {
   // Starts onto the local map tried, in the order above (besides the
   // dead-reckoned one), for a scan not registered from its prediction; 0 =
   // none (and no dead-reckoned start). In [0, 5].
-  int max_search_starts = 3;
+  int max_search_starts = 1;
   // The turn about the sensor's z axis of the turned starts [deg]. > 0.
   double yaw_step_deg = 15.0;
   // After those, the scan registered onto the last registered scan alone
