@@ -74,15 +74,17 @@ TEST(ListDatasetScanFiles, ListsTheFolderAndItsPcdFolder) {
   fs::remove_all(dir);
   fs::create_directories(dir + "/pcd");
   std::ofstream(dir + "/pcd/000003.pcd") << "x";
-  std::ofstream(dir + "/poses.txt") << "x";
+  std::ofstream(dir + "/poses.txt") << "x";  // Text, but not a cloud.
+  std::ofstream(dir + "/scan.txt") << "1 2 3\n";
   std::ofstream(dir + "/reference_pairs.json") << "{}";
   DatasetScanFiles files;
   std::string error;
   ASSERT_TRUE(ListDatasetScanFiles(dir, &files, &error)) << error;
   ASSERT_EQ(files.pcd_folder.size(), 1u);
   EXPECT_EQ(fs::path(files.pcd_folder[0]).filename(), "000003.pcd");
-  ASSERT_EQ(files.folder.size(), 1u);  // .json is not a cloud.
-  EXPECT_EQ(fs::path(files.folder[0]).filename(), "poses.txt");
+  // Neither .json nor a text file whose first line is not a point.
+  ASSERT_EQ(files.folder.size(), 1u);
+  EXPECT_EQ(fs::path(files.folder[0]).filename(), "scan.txt");
 
   EXPECT_FALSE(ListDatasetScanFiles(dir + "/missing", &files, &error));
   EXPECT_NE(error.find("not a folder"), std::string::npos) << error;
