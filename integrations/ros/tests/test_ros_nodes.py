@@ -390,7 +390,7 @@ def test_odometry_node_warns_on_a_faulty_bag(ros, bags, work, processes, recorde
                              f"--topic={TOPIC}", f"--output_dir={work / 'tool_faulty_fails'}",
                              "--plots=false"], capture_output=True, text=True,
                             timeout=RUN_TIMEOUT_S)
-    assert failed.returncode == 1, "the tool stops at the repeated stamp"
+    assert failed.returncode == 2, "the tool refuses the repeated stamp before any work"
 
     odom = recorders("/odom", Odometry)
     diagnostics = recorders("/diagnostics", DiagnosticArray)
