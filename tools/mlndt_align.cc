@@ -137,28 +137,6 @@ bool CheckFlags(MatcherOptions* options,
          tools::ReadMatrixFile(in.expected, expected, error);
 }
 
-// A cloud with fewer points than one NDT cell needs (a pose or matrix file
-// given as a cloud) can give no map or no fit: refused before any work.
-bool CheckCloudSizes(const MatcherOptions& options,
-                     const Inputs& in,
-                     const PointCloud& reference,
-                     const PointCloud& input,
-                     std::string* error) {
-  LayeredGridOptions grid;
-  if (!MatcherGridOptions(options, reference, &grid, error)) return false;
-  const size_t needed = static_cast<size_t>(grid.min_points_per_cell);
-  for (const auto& [path, cloud] : {std::make_pair(in.reference, &reference),
-                                    std::make_pair(in.input, &input)}) {
-    if (cloud->size() < needed) {
-      *error = path + ": " + std::to_string(cloud->size()) +
-               " points, fewer than one NDT cell needs (min_points_per_cell " +
-               std::to_string(needed) + "); is it a point cloud?";
-      return false;
-    }
-  }
-  return true;
-}
-
 int Run(int argc, char** argv) {
   Inputs in;
   MatcherOptions options;
@@ -175,7 +153,8 @@ int Run(int argc, char** argv) {
       !ReadPointCloud(in.input, &input, nullptr, &error)) {
     return tools::Refuse(kTool, error);
   }
-  if (!CheckCloudSizes(options, in, reference, input, &error) ||
+  if (!tools::CheckCloudSizes(
+          options, in.reference, reference, in.input, input, &error) ||
       (options.method == Method::MLNDT &&
        !tools::CheckStartLayerForReference(options.mlndt, reference, &error))) {
     return tools::Refuse(kTool, error);

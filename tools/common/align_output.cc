@@ -104,5 +104,26 @@ std::string UnacceptedResultMessage(const RegistrationSummary& summary,
          summary.message + cloud + accept;
 }
 
+bool CheckCloudSizes(const MatcherOptions& options,
+                     const std::string& reference_path,
+                     const PointCloud& reference,
+                     const std::string& input_path,
+                     const PointCloud& input,
+                     std::string* error) {
+  LayeredGridOptions grid;
+  if (!MatcherGridOptions(options, reference, &grid, error)) return false;
+  const size_t needed = static_cast<size_t>(grid.min_points_per_cell);
+  for (const auto& [path, cloud] : {std::make_pair(&reference_path, &reference),
+                                    std::make_pair(&input_path, &input)}) {
+    if (cloud->size() < needed) {
+      *error = *path + ": " + std::to_string(cloud->size()) +
+               " points, fewer than one NDT cell needs (min_points_per_cell " +
+               std::to_string(needed) + "); is it a point cloud?";
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace tools
 }  // namespace mlndt

@@ -50,5 +50,14 @@ void PrintAlignResult(const std::string& reference_path,
 std::string UnacceptedResultMessage(const RegistrationSummary& summary,
                                     const std::string& output_cloud);
 
+// A cloud with fewer points than one NDT cell needs (a pose or matrix file
+// given as a cloud) can give no map or no fit: refused before any work.
+bool CheckCloudSizes(const MatcherOptions& options,
+                     const std::string& reference_path,
+                     const PointCloud& reference,
+                     const std::string& input_path,
+                     const PointCloud& input,
+                     std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt
