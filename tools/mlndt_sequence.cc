@@ -31,14 +31,8 @@
 // --method=ndt builds its own single grid per pair (no prebuilt-grid API).
 //
 // --adaptive_start_layer: the paper's proposal (end of Section 5.3), defined
-// precisely in lab/runs/adaptive_start_layer.h: start on the last layer;
-// a pair fails when its estimate is more than 1 m or 15 deg from its --init
-// guess (or the registration fails); while the running fail rate over the
-// pairs so far exceeds 5 % start one layer coarser, above 20 % two coarser.
-// Its flags are AdaptiveStartLayerOptions' (adaptive_start_layer_flags.h:
-// --adaptive_max_translation_m, --adaptive_max_rotation_deg,
-// --adaptive_fail_rate_thresholds; the older names --adaptive_max_translation,
-// --adaptive_max_rotation, --adaptive_fail_rates still work).
+// with its flags in lab/runs/adaptive_start_layer.h and
+// tools/common/adaptive_start_layer_flags.h.
 //
 // Writes into --output_dir: pairs.csv, summary.json, trace.csv,
 // trajectory.txt (chained estimates of scans 0, step, 2 step, ...; KITTI
@@ -129,25 +123,6 @@ bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   return true;
 }
 
-// Every file the run writes into --output_dir, checked before the run (a
-// pose or times file there is refused, not overwritten).
-std::vector<std::string> OutputFiles(bool has_truth) {
-  std::vector<std::string> outputs = {"pairs.csv",
-                                      "summary.json",
-                                      "trace.csv",
-                                      "trajectory.txt",
-                                      "trajectory_tum.txt"};
-  if (has_truth) outputs.push_back("gt_trajectory.txt");
-  if (FLAGS_plots) {
-    outputs.insert(outputs.end(),
-                   {"errors_translation.png",
-                    "errors_rotation.png",
-                    "trajectory_xy.png",
-                    "score_vs_iteration.png"});
-  }
-  return outputs;
-}
-
 // The files, the totals on stdout, the plots, and summary.json last
 // (output_set.h): 0, or the exit code of a failed write or plot.
 int WriteOutputs(const SequenceOptions& options,
@@ -184,7 +159,8 @@ int WriteOutputs(const SequenceOptions& options,
                                                &plot_error);
   }
   std::vector<std::string> files;
-  for (const std::string& file : OutputFiles(!truth.empty())) {
+  for (const std::string& file :
+       tools::SequenceOutputFiles(!truth.empty(), FLAGS_plots)) {
     const bool png = file.size() > 4 && file.substr(file.size() - 4) == ".png";
     if (file != "summary.json" && (!png || plotted)) files.push_back(file);
   }
@@ -218,10 +194,11 @@ int Run() {
                                  &error)) {
     return tools::Refuse(kTool, error);
   }
-  if (!tools::PrepareOutputDir("output_dir",
-                               FLAGS_output_dir,
-                               OutputFiles(!truth.empty()),
-                               &error) ||
+  if (!tools::PrepareOutputDir(
+          "output_dir",
+          FLAGS_output_dir,
+          tools::SequenceOutputFiles(!truth.empty(), FLAGS_plots),
+          &error) ||
       !tools::StartOutputSet(FLAGS_output_dir, &error)) {
     return tools::Refuse(kTool, error);
   }

@@ -338,5 +338,22 @@ std::string UnusablePairsMessage(const SequenceOptions& options,
          " guess instead (estimate_source 'guess' in pairs.csv)";
 }
 
+std::vector<std::string> SequenceOutputFiles(bool has_truth, bool plots) {
+  std::vector<std::string> outputs = {"pairs.csv",
+                                      "summary.json",
+                                      "trace.csv",
+                                      "trajectory.txt",
+                                      "trajectory_tum.txt"};
+  if (has_truth) outputs.push_back("gt_trajectory.txt");
+  if (plots) {
+    outputs.insert(outputs.end(),
+                   {"errors_translation.png",
+                    "errors_rotation.png",
+                    "trajectory_xy.png",
+                    "score_vs_iteration.png"});
+  }
+  return outputs;
+}
+
 }  // namespace tools
 }  // namespace mlndt

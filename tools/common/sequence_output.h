@@ -89,5 +89,9 @@ void PrintSequenceTotals(const SequenceOptions& options,
                          const std::vector<PairResult>& results,
                          const std::string& output_dir);
 
+// Every file mlndt_sequence writes into --output_dir, checked before the
+// run (a pose or times file there is refused, not overwritten).
+std::vector<std::string> SequenceOutputFiles(bool has_truth, bool plots);
+
 }  // namespace tools
 }  // namespace mlndt
