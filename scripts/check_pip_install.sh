@@ -52,6 +52,6 @@ result = mlndt.register(mlndt.read_cloud(data / "251370668.pcd"), mlndt.read_clo
 if not result.converged:
     sys.exit(f"check_pip_install: the koide3 pair did not converge: {result.message}")
 print(f"check_pip_install: mlndt {mlndt.__version__} from {Path(mlndt.__file__).parent}: "
-      f"koide3 {result.termination}, t = {result.reference_from_input[:3, 3].round(3).tolist()}; "
+      f"koide3 {result.termination_type}, t = {result.reference_from_input[:3, 3].round(3).tolist()}; "
       f"mlndt.distributed imports; no lab module in the wheel: ok")
 PYTHON
