@@ -113,58 +113,75 @@ RosBagScans::~RosBagScans() = default;
 
 size_t RosBagScans::size() const { return impl_->messages.size(); }
 
-bool RosBagScans::Read(size_t i, BagScan* scan, std::string* error) const {
+namespace {
+
+// Runs `read(message, error)` on message `i`, with its bounds checked, its
+// exceptions caught and every error prefixed with where it happened.
+template <typename Read>
+bool ReadMessage(const std::string& path,
+                 const std::string& topic,
+                 const std::vector<rosbag::MessageInstance>& messages,
+                 size_t i,
+                 std::string* error,
+                 Read read) {
   const std::string where =
-      path_ + ": " + topic_ + " message " + std::to_string(i);
-  if (i >= impl_->messages.size()) {
-    *error = where + ": the topic has " +
-             std::to_string(impl_->messages.size()) + " messages";
+      path + ": " + topic + " message " + std::to_string(i);
+  if (i >= messages.size()) {
+    *error = where + ": the topic has " + std::to_string(messages.size()) +
+             " messages";
     return false;
   }
   try {
-    const sensor_msgs::PointCloud2::ConstPtr message =
-        impl_->messages[i].instantiate<sensor_msgs::PointCloud2>();
-    if (message == nullptr) {
-      *error = where + ": not a " + kPointCloud2;
-      return false;
-    }
-    if (!DecodePointCloud2(
+    if (read(messages[i], error)) return true;
+  } catch (const std::exception& e) {
+    *error = e.what();
+  }
+  *error = where + ": " + *error;
+  return false;
+}
+
+}  // namespace
+
+bool RosBagScans::Read(size_t i, BagScan* scan, std::string* error) const {
+  return ReadMessage(
+      path_,
+      topic_,
+      impl_->messages,
+      i,
+      error,
+      [scan](const rosbag::MessageInstance& instance, std::string* error) {
+        const sensor_msgs::PointCloud2::ConstPtr message =
+            instance.instantiate<sensor_msgs::PointCloud2>();
+        if (message == nullptr) {
+          *error = std::string("not a ") + kPointCloud2;
+          return false;
+        }
+        return DecodePointCloud2(
             PointCloud2ViewOf(*message, message->header.stamp.toSec()),
             scan,
-            error)) {
-      *error = where + ": " + *error;
-      return false;
-    }
-  } catch (const std::exception& e) {
-    *error = where + ": " + e.what();
-    return false;
-  }
-  return true;
+            error);
+      });
 }
 
 bool RosBagScans::ReadStamp(size_t i,
                             double* stamp_s,
                             std::string* error) const {
-  const std::string where =
-      path_ + ": " + topic_ + " message " + std::to_string(i);
-  if (i >= impl_->messages.size()) {
-    *error = where + ": the topic has " +
-             std::to_string(impl_->messages.size()) + " messages";
-    return false;
-  }
-  try {
-    const boost::shared_ptr<HeaderStamp> header =
-        impl_->messages[i].instantiate<HeaderStamp>();
-    if (header == nullptr) {
-      *error = where + ": no header";
-      return false;
-    }
-    *stamp_s = header->stamp.toSec();
-  } catch (const std::exception& e) {
-    *error = where + ": " + e.what();
-    return false;
-  }
-  return true;
+  return ReadMessage(
+      path_,
+      topic_,
+      impl_->messages,
+      i,
+      error,
+      [stamp_s](const rosbag::MessageInstance& instance, std::string* error) {
+        const boost::shared_ptr<HeaderStamp> header =
+            instance.instantiate<HeaderStamp>();
+        if (header == nullptr) {
+          *error = "no header";
+          return false;
+        }
+        *stamp_s = header->stamp.toSec();
+        return true;
+      });
 }
 
 }  // namespace mlndt
