@@ -22,11 +22,10 @@
 //
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,
-// as its header line says), scans.csv (per scan: verdict, fallback, search
-// starts, recovered, interpolated, keyframe, start layer, uncertainty,
-// correction, pose, times), summary.json, and with --plots trajectory_xy.png.
-// With --gt_poses (one world_from_sensor pose per scan): ATE after SE(3)
-// alignment, RPE over
+// as its header line says), scans.csv and scans.json (every field of
+// OdometryResultTable per scan: docs/json_schema.md), summary.json, and
+// with --plots trajectory_xy.png. With --gt_poses (one world_from_sensor
+// pose per scan): ATE after SE(3) alignment, RPE over
 // --rpe_delta scans and the KITTI devkit's segment errors over
 // --segment_lengths. Exit code 0 when every scan got a registered pose, 1
 // when any scan fell back to its prediction (or on unreadable data, or
@@ -179,6 +178,7 @@ int Run() {
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
                                {"scans.csv",
+                                "scans.json",
                                 "summary.json",
                                 "trajectory_kitti.txt",
                                 "trajectory_tum.txt",
@@ -211,7 +211,7 @@ int Run() {
   const int plot = FLAGS_plots ? WritePlot(gnuplot_ok, results, reference) : 0;
   // summary.json last, naming the files written (output_set.h).
   std::vector<std::string> files = {
-      "scans.csv", "trajectory_kitti.txt", "trajectory_tum.txt"};
+      "scans.csv", "scans.json", "trajectory_kitti.txt", "trajectory_tum.txt"};
   if (FLAGS_plots && plot == 0) files.push_back("trajectory_xy.png");
   if (!tools::FinishOutputSet(FLAGS_output_dir,
                               files,
