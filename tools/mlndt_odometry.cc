@@ -90,26 +90,14 @@ bool OptionsFromFlags(OdometryOptions* options,
              ": expected positive lengths [m], e.g. 10,100";
     return false;
   }
-  if (!tools::RegistrationOptionsFromFlags(&options->registration, error) ||
+  if (!tools::RegistrationOptionsFromFlags(
+          OdometryRegistrationOptions(), &options->registration, error) ||
       !tools::CheckCameraPoseFlags(
           "--gt_poses", !FLAGS_gt_poses.empty(), error)) {
     return false;
   }
   options->local_map.grid = options->registration.grid;
   if (!tools::OdometryFlags().Apply(options, error)) return false;
-  // The registration flags set the odometry's probe (on by default here),
-  // search along the weak direction (off here) and mean-score check (on
-  // here).
-  const RegistrationOptions& given = options->registration;
-  if (tools::FlagGiven("max_flatness")) {
-    options->max_flatness = given.quality_check.max_flatness;
-  }
-  if (tools::FlagGiven("weak_direction_rounds")) {
-    options->weak_direction_rounds = given.retry.weak_direction_rounds;
-  }
-  if (tools::FlagGiven("max_mean_score")) {
-    options->max_mean_score = given.quality_check.max_mean_score;
-  }
   if (!options->IsValid(error)) {
     *error = "odometry flags: " + *error;
     return false;
@@ -233,9 +221,9 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  // --max_flatness and --weak_direction_rounds show the odometry's defaults
-  // (OdometryOptions replaces the registration's per scan).
-  mlndt::tools::OdometryFlags().ShowFieldDefaultsOnSharedFlags();
+  // --max_flatness, --weak_direction_rounds and --max_mean_score show the
+  // odometry's defaults (OdometryRegistrationOptions).
+  mlndt::tools::ShowRegistrationDefaults(mlndt::OdometryRegistrationOptions());
   if (!mlndt::tools::StartTool(
           "Scan-to-local-map LiDAR odometry with ML-NDT over a folder or a "
           "ROS 1 bag.\n"

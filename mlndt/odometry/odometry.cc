@@ -93,9 +93,6 @@ RegistrationOptions Odometry::ScanRegistrationOptions(
   options.initial_uncertainty.given = true;
   options.initial_uncertainty.translation_m = uncertainty.translation_m;
   options.initial_uncertainty.rotation_deg = uncertainty.rotation_deg;
-  options.quality_check.max_flatness = options_.max_flatness;
-  options.retry.weak_direction_rounds = options_.weak_direction_rounds;
-  options.quality_check.max_mean_score = options_.max_mean_score;
   return options;
 }
 

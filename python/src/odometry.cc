@@ -56,8 +56,8 @@ OdometryOptions OdometryOptionsFromPython(const py::kwargs& kwargs) {
         "odometry (each scan's comes from its prediction; see prediction=)");
   }
   OdometryOptions options;
-  options.registration =
-      RegistrationOptionsFromPython(registration_fields, py::none(), false);
+  options.registration = RegistrationOptionsFromPython(
+      registration_fields, py::none(), false, OdometryRegistrationOptions());
   options.local_map.grid = options.registration.grid;
   OdometryBinding().Update(odometry_fields, "", &options);
   std::string error;
