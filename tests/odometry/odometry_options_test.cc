@@ -70,14 +70,12 @@ void Values(const OptionTable& table,
 TEST(OdometryOptions, RegistrationDefaultsAreTheOdometryPreset) {
   const RegistrationOptions library;
   const RegistrationOptions preset = OdometryRegistrationOptions();
+  const OdometryOptions odometry;
   std::map<std::string, std::string> library_values, preset_values,
       odometry_values;
   Values(RegistrationOptionsTable(), &library, "", &library_values);
   Values(RegistrationOptionsTable(), &preset, "", &preset_values);
-  Values(RegistrationOptionsTable(),
-         &OdometryOptions().registration,
-         "",
-         &odometry_values);
+  Values(RegistrationOptionsTable(), &odometry.registration, "", &odometry_values);
   EXPECT_EQ(odometry_values, preset_values);
   std::vector<std::string> differ;
   for (const auto& [path, value] : preset_values) {

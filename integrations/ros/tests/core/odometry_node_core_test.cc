@@ -95,7 +95,7 @@ TEST(OdometryNodeCore, PosesAreTheLibrarysAndBadCloudsAreRefused) {
     const ScanReport r = ReportOf(expected[k++]);
     EXPECT_EQ(out.report.pose.matrix(), r.pose.matrix()) << i;
     EXPECT_EQ(out.report.stamp_s, r.stamp_s);
-    EXPECT_EQ(out.report.termination, r.termination_type);
+    EXPECT_EQ(out.report.termination, r.termination);
     EXPECT_EQ(out.report.registered, r.registered);
     EXPECT_EQ(out.report.deskewed, r.deskewed);
   }
