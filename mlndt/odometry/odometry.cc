@@ -112,8 +112,8 @@ void Odometry::Register(const LayeredGrid& map,
   result->world_from_sensor = summary.reference_from_input;
   result->correction_m = TranslationErrorM(result->predicted_world_from_sensor,
                                            summary.reference_from_input);
-  result->correction_rad = RotationErrorRad(
-      result->predicted_world_from_sensor, summary.reference_from_input);
+  result->correction_rad = RotationErrorRad(result->predicted_world_from_sensor,
+                                            summary.reference_from_input);
   if (summary.IsSolutionUsable()) Gate(result);
   if (result->termination_type == TerminationType::CONVERGENCE) {
     Confirm(options, map, cloud, start, always_confirm, result);
@@ -144,9 +144,10 @@ void Odometry::Gate(OdometryResult* result) const {
   }
   // After a gap the sensor may have kept moving: the dead-reckoned pose is
   // as good a centre.
-  if (TranslationErrorM(result->dead_reckoned_world_from_sensor, result->world_from_sensor) <=
-          gate_m &&
-      RotationErrorRad(result->dead_reckoned_world_from_sensor, result->world_from_sensor) *
+  if (TranslationErrorM(result->dead_reckoned_world_from_sensor,
+                        result->world_from_sensor) <= gate_m &&
+      RotationErrorRad(result->dead_reckoned_world_from_sensor,
+                       result->world_from_sensor) *
               kRadToDeg <=
           gate_deg) {
     return;
@@ -167,7 +168,8 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
   std::vector<Isometry3d> starts = SearchStarts(
       options_.recovery,
       result->predicted_world_from_sensor,
-      predictor_.num_poses() > 0 ? predictor_.last_pose() : result->predicted_world_from_sensor);
+      predictor_.num_poses() > 0 ? predictor_.last_pose()
+                                 : result->predicted_world_from_sensor);
   if (result->skipped_scans > 0 && options_.recovery.max_search_starts > 0) {
     starts.insert(starts.begin(), result->dead_reckoned_world_from_sensor);
   }
@@ -189,7 +191,11 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
   }
   if (options_.recovery.register_onto_last_scan && BuildLastScanMap()) {
     OdometryResult attempt = *result;
-    Register(last_scan_map_.grid(), cloud, result->predicted_world_from_sensor, true, &attempt);
+    Register(last_scan_map_.grid(),
+             cloud,
+             result->predicted_world_from_sensor,
+             true,
+             &attempt);
     result->registration_time_s = attempt.registration_time_s;
     ++result->search_starts;
     if (attempt.termination_type == TerminationType::CONVERGENCE &&
@@ -302,12 +308,13 @@ Confirmation Odometry::AgreesWithLastScan(const RegistrationOptions& options,
                                           const PointCloud& cloud,
                                           OdometryResult* result) {
   if (!BuildLastScanMap()) return Confirmation();  // No evidence.
-  const Confirmation check = CheckAgainstLastScan(options,
-                                                  options_.prediction,
-                                                  last_scan_map_.grid(),
-                                                  cloud,
-                                                  result->predicted_world_from_sensor,
-                                                  result->world_from_sensor);
+  const Confirmation check =
+      CheckAgainstLastScan(options,
+                           options_.prediction,
+                           last_scan_map_.grid(),
+                           cloud,
+                           result->predicted_world_from_sensor,
+                           result->world_from_sensor);
   result->registration_time_s += check.time_s;
   return check;
 }
@@ -369,8 +376,9 @@ void Odometry::Account(PointCloud cloud,
   last_scan_pose_ = result->world_from_sensor;
   has_last_scan_ = true;
   last_scan_map_built_ = false;
-  predictor_.AddPose(
-      scan.stamp_s, result->predicted_world_from_sensor, result->world_from_sensor);
+  predictor_.AddPose(scan.stamp_s,
+                     result->predicted_world_from_sensor,
+                     result->world_from_sensor);
 }
 
 bool Odometry::Process(const OdometryScan& scan,
@@ -404,7 +412,11 @@ bool Odometry::Process(const OdometryScan& scan,
     result->termination_type = TerminationType::FAILURE;
     result->message = "no points";
   } else {
-    Register(local_map_.grid(), cloud, result->predicted_world_from_sensor, false, result);
+    Register(local_map_.grid(),
+             cloud,
+             result->predicted_world_from_sensor,
+             false,
+             result);
     if (result->termination_type != TerminationType::CONVERGENCE) {
       Search(cloud, result);
     }

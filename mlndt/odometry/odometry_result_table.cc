@@ -45,22 +45,20 @@ const ResultTable& BridgedScanTable() {
 // The poses of the scan: the prediction, the dead-reckoned one, the pose.
 void AddPoses(ResultTableBuilder<S>* builder) {
   builder
-      ->Computed("predicted_world_from_sensor",
-                 ResultType::MATRIX,
-                 "m",
-                 "4x4 rigid transform (row-major): the constant-velocity "
-                 "prediction, the registration's initial guess.",
-                 [](const S& s) {
-                   return Matrix4(s.predicted_world_from_sensor);
-                 })
-      .Computed("dead_reckoned_world_from_sensor",
-                ResultType::MATRIX,
-                "m",
-                "4x4 rigid transform (row-major): after skipped scans the "
-                "last velocity over the whole gap; else the prediction.",
-                [](const S& s) {
-                  return Matrix4(s.dead_reckoned_world_from_sensor);
-                })
+      ->Computed(
+          "predicted_world_from_sensor",
+          ResultType::MATRIX,
+          "m",
+          "4x4 rigid transform (row-major): the constant-velocity "
+          "prediction, the registration's initial guess.",
+          [](const S& s) { return Matrix4(s.predicted_world_from_sensor); })
+      .Computed(
+          "dead_reckoned_world_from_sensor",
+          ResultType::MATRIX,
+          "m",
+          "4x4 rigid transform (row-major): after skipped scans the "
+          "last velocity over the whole gap; else the prediction.",
+          [](const S& s) { return Matrix4(s.dead_reckoned_world_from_sensor); })
       .Computed("world_from_sensor",
                 ResultType::MATRIX,
                 "m",

@@ -75,7 +75,8 @@ TEST(OdometryOptions, RegistrationDefaultsAreTheOdometryPreset) {
       odometry_values;
   Values(RegistrationOptionsTable(), &library, "", &library_values);
   Values(RegistrationOptionsTable(), &preset, "", &preset_values);
-  Values(RegistrationOptionsTable(), &odometry.registration, "", &odometry_values);
+  Values(
+      RegistrationOptionsTable(), &odometry.registration, "", &odometry_values);
   EXPECT_EQ(odometry_values, preset_values);
   std::vector<std::string> differ;
   for (const auto& [path, value] : preset_values) {

@@ -130,9 +130,9 @@ void ExpectBridged(const std::vector<OdometryResult>& results,
   EXPECT_TRUE(bad.interpolated);
   for (const auto& r : results)
     std::cerr << "DBG " << r.index << " "
-              << TerminationTypeToString(r.termination_type) << " fb " << r.fallback
-              << " br " << r.bridged.size() << " ss " << r.search_starts << " "
-              << r.message << "\n";
+              << TerminationTypeToString(r.termination_type) << " fb "
+              << r.fallback << " br " << r.bridged.size() << " ss "
+              << r.search_starts << " " << r.message << "\n";
   ASSERT_EQ(results[k + 1].bridged.size(), 1u);
   EXPECT_EQ(results[k + 1].bridged[0].index, k);
   const Isometry3d interpolated =

@@ -71,9 +71,8 @@ bool WriteOdometryFiles(const std::string& dir,
                          error) &&
          WriteFileAtomically(
              dir + "/scans.csv",
-             ResultCsvOf(OdometryResultTable(),
-                         results,
-                         {FileColumn(input, results)}),
+             ResultCsvOf(
+                 OdometryResultTable(), results, {FileColumn(input, results)}),
              error) &&
          WriteJsonFile(
              dir + "/scans.json", OdometryScansJson(input, results), error);

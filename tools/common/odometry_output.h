@@ -1,9 +1,9 @@
 #pragma once
 
 // What mlndt_odometry writes: the trajectories (KITTI, and TUM stamped with
-// the scans' times), scans.csv and scans.json (one row per scan, from its result table), the
-// trajectory metrics against a reference (lab/eval/odometry_metrics.h), and
-// the top-view plot.
+// the scans' times), scans.csv and scans.json (one row per scan, from its
+// result table), the trajectory metrics against a reference
+// (lab/eval/odometry_metrics.h), and the top-view plot.
 
 #include <string>
 #include <vector>
