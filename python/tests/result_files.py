@@ -20,8 +20,12 @@ def flatten(value, prefix=""):
     return columns
 
 
-def csv_cell(text):
-    """A CSV cell as a value: bools, numbers, space-separated numbers."""
+def csv_cell(text, like=None):
+    """A CSV cell as a value: bools, numbers, space-separated numbers; an
+    empty cell is an empty string or, when `like` (the value it stands for)
+    is a list or array, an empty list."""
+    if text == "":
+        return [] if isinstance(like, (list, tuple, np.ndarray)) else ""
     if text in ("true", "false"):
         return text == "true"
     try:
@@ -69,7 +73,7 @@ def assert_files_agree_with_python(row, scan, python, skip_times):
     json_flat = flatten(scan)
     assert list(row) == list(flat) == list(json_flat)
     for name, value in flat.items():
-        cell = csv_cell(row[name])
+        cell = csv_cell(row[name], value)
         assert same(cell, none_to_nan(json_flat[name])), (name, row[name], json_flat[name])
         if skip_times and is_time(name):
             continue
