@@ -8,6 +8,8 @@
 #     block between the markers      (RegistrationResult's properties)
 #   docs/json_schema.md and the stub, mlndt_options --format=localization_markdown
 #     the LocalizationResult blocks   and --format=localization_pyi
+#   docs/json_schema.md and the stub, mlndt_options --format=odometry_markdown
+#     the OdometryResult blocks       and --format=odometry_pyi
 #
 #   scripts/check_generated.sh [BUILD_DIR]          # default build/
 #   scripts/check_generated.sh --write [BUILD_DIR]  # rewrites the copies
@@ -64,6 +66,8 @@ check docs/json_schema.md results_markdown block
 check python/mlndt/__init__.pyi results_pyi block
 check docs/json_schema.md localization_markdown block
 check python/mlndt/__init__.pyi localization_pyi block
+check docs/json_schema.md odometry_markdown block
+check python/mlndt/__init__.pyi odometry_pyi block
 if ((status == 0)); then
   echo "check_generated: docs/options.md, docs/json_schema.md and the stub are current"
 fi

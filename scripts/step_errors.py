@@ -7,12 +7,12 @@
 Both files are KITTI poses, one per scan. For each step k-1 -> k the relative
 motion of the estimate is compared with the reference's; a step off by more
 than --max_m or --max_deg is counted, by the verdict of scan k in
-mlndt_odometry's scans.csv when given (column "verdict", "fallback"). This is
-how "no wrong pose reported as CONVERGENCE" is checked on a sequence whose
-reference is good step to step (the Livox prior: ~2 cm).
+mlndt_odometry's scans.csv when given (columns "termination_type",
+"fallback"). This is how "no wrong pose reported as CONVERGENCE" is checked
+on a sequence whose reference is good step to step (the Livox prior: ~2 cm).
 
 With scans.csv a second count judges each scan with a registered pose
-(fallback 0) by its motion from the last such scan, so a scan right after a
+(fallback false) by its motion from the last such scan, so a scan right after a
 fallback is judged by its own pose, not by the stand-in before it (as
 tests/odometry/odometry_livox_test.cc scores); a local-map restart is a
 declared discontinuity, and the scans after it are judged from it. The
@@ -51,13 +51,13 @@ def count_from_last_pose(estimate, reference, rows, max_m, max_deg):
         if "the local map restarts" in rows[k]["message"]:
             last = k  # A declared discontinuity: judge from the new map on.
             continue
-        if rows[k]["fallback"] == "1":
+        if rows[k]["fallback"] == "true":
             continue
         t, a = step_error(estimate[last], estimate[k], reference[last], reference[k])
         if t > max_m or a > max_deg:
-            counts[rows[k]["verdict"]] += 1
-            off.append(f"{k} ({rows[k]['verdict']}, {t:.2f} m {a:.1f} deg from {last})")
-        elif rows[k]["verdict"] == "CONVERGENCE":
+            counts[rows[k]["termination_type"]] += 1
+            off.append(f"{k} ({rows[k]['termination_type']}, {t:.2f} m {a:.1f} deg from {last})")
+        elif rows[k]["termination_type"] == "CONVERGENCE":
             right_convergence += 1
         last = k
     if off:
@@ -84,7 +84,7 @@ def main(argv):
         t = np.linalg.norm(e[:3, 3])
         a = np.degrees(np.arccos(np.clip((np.trace(e[:3, :3]) - 1) / 2, -1, 1)))
         if t > max_m or a > max_deg:
-            verdict = rows[k]["verdict"] if rows else "-"
+            verdict = rows[k]["termination_type"] if rows else "-"
             counts[verdict] += 1
             print(f"scan {k}: {t:.3f} m {a:.2f} deg off, verdict {verdict}")
     print(f"{sum(counts.values())} of {len(estimate) - 1} steps off by more than "

@@ -22,11 +22,10 @@
 //
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,
-// as its header line says), scans.csv (per scan: verdict, fallback, search
-// starts, recovered, interpolated, keyframe, start layer, uncertainty,
-// correction, pose, times), summary.json, and with --plots trajectory_xy.png.
-// With --gt_poses (one world_from_sensor pose per scan): ATE after SE(3)
-// alignment, RPE over
+// as its header line says), scans.csv and scans.json (every field of
+// OdometryResultTable per scan: docs/json_schema.md), summary.json, and
+// with --plots trajectory_xy.png. With --gt_poses (one world_from_sensor
+// pose per scan): ATE after SE(3) alignment, RPE over
 // --rpe_delta scans and the KITTI devkit's segment errors over
 // --segment_lengths. Exit code 0 when every scan got a registered pose, 1
 // when any scan fell back to its prediction (or on unreadable data, or
@@ -91,26 +90,14 @@ bool OptionsFromFlags(OdometryOptions* options,
              ": expected positive lengths [m], e.g. 10,100";
     return false;
   }
-  if (!tools::RegistrationOptionsFromFlags(&options->registration, error) ||
+  if (!tools::RegistrationOptionsFromFlags(
+          OdometryRegistrationOptions(), &options->registration, error) ||
       !tools::CheckCameraPoseFlags(
           "--gt_poses", !FLAGS_gt_poses.empty(), error)) {
     return false;
   }
   options->local_map.grid = options->registration.grid;
   if (!tools::OdometryFlags().Apply(options, error)) return false;
-  // The registration flags set the odometry's probe (on by default here),
-  // search along the weak direction (off here) and mean-score check (on
-  // here).
-  const RegistrationOptions& given = options->registration;
-  if (tools::FlagGiven("max_flatness")) {
-    options->max_flatness = given.quality_check.max_flatness;
-  }
-  if (tools::FlagGiven("weak_direction_rounds")) {
-    options->weak_direction_rounds = given.retry.weak_direction_rounds;
-  }
-  if (tools::FlagGiven("max_mean_score")) {
-    options->max_mean_score = given.quality_check.max_mean_score;
-  }
   if (!options->IsValid(error)) {
     *error = "odometry flags: " + *error;
     return false;
@@ -179,6 +166,7 @@ int Run() {
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
                                {"scans.csv",
+                                "scans.json",
                                 "summary.json",
                                 "trajectory_kitti.txt",
                                 "trajectory_tum.txt",
@@ -211,7 +199,7 @@ int Run() {
   const int plot = FLAGS_plots ? WritePlot(gnuplot_ok, results, reference) : 0;
   // summary.json last, naming the files written (output_set.h).
   std::vector<std::string> files = {
-      "scans.csv", "trajectory_kitti.txt", "trajectory_tum.txt"};
+      "scans.csv", "scans.json", "trajectory_kitti.txt", "trajectory_tum.txt"};
   if (FLAGS_plots && plot == 0) files.push_back("trajectory_xy.png");
   if (!tools::FinishOutputSet(FLAGS_output_dir,
                               files,
@@ -233,9 +221,9 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
-  // --max_flatness and --weak_direction_rounds show the odometry's defaults
-  // (OdometryOptions replaces the registration's per scan).
-  mlndt::tools::OdometryFlags().ShowFieldDefaultsOnSharedFlags();
+  // --max_flatness, --weak_direction_rounds and --max_mean_score show the
+  // odometry's defaults (OdometryRegistrationOptions).
+  mlndt::tools::ShowRegistrationDefaults(mlndt::OdometryRegistrationOptions());
   if (!mlndt::tools::StartTool(
           "Scan-to-local-map LiDAR odometry with ML-NDT over a folder or a "
           "ROS 1 bag.\n"

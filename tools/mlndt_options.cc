@@ -10,6 +10,7 @@
 //   mlndt_options --format=localization_markdown  # ... mlndt_localize's
 //                                                  # scans section
 //   mlndt_options --format=localization_pyi       # LocalizationResult
+//   mlndt_options --format=odometry_markdown|odometry_pyi  # OdometryResult
 
 #include <gflags/gflags.h>
 
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "mlndt/common/result_table.h"
+#include "mlndt/odometry/odometry.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/registration/registration_summary.h"
 #include "tools/common/option_flags.h"
@@ -31,7 +33,8 @@ DEFINE_string(format,
               "markdown | json | results_markdown (docs/json_schema.md's "
               "registration section) | results_pyi (the stub's "
               "RegistrationResult) | localization_markdown | "
-              "localization_pyi (the same of LocalizationResult)");
+              "localization_pyi (the same of LocalizationResult) | "
+              "odometry_markdown | odometry_pyi (of OdometryResult)");
 
 namespace {
 
@@ -56,6 +59,15 @@ bool PrintResults(const std::string& format) {
         mlndt::LocalizationResultTable(),
         "LocalizationResult",
         "One scan's localisation (mlndt::LocalizationResult).",
+        registration);
+  } else if (format == "odometry_markdown") {
+    std::cout << mlndt::tools::ResultsMarkdown(mlndt::OdometryResultTable(),
+                                               registration);
+  } else if (format == "odometry_pyi") {
+    std::cout << mlndt::tools::ResultsStub(
+        mlndt::OdometryResultTable(),
+        "OdometryResult",
+        "One scan of the odometry (mlndt::OdometryResult).",
         registration);
   } else {
     return false;
@@ -100,7 +112,8 @@ int main(int argc, char** argv) {
   } else if (!PrintResults(FLAGS_format)) {
     std::cerr << "mlndt_options: --format=" << FLAGS_format
               << ": expected markdown, json, results_markdown, results_pyi, "
-                 "localization_markdown or localization_pyi\n";
+                 "localization_markdown, localization_pyi, odometry_markdown "
+                 "or odometry_pyi\n";
     return mlndt::tools::kExitUsage;
   }
   return mlndt::tools::kExitOk;

@@ -54,7 +54,7 @@ void AppendMessage(const std::string& text, std::string* message) {
 
 void OdometrySummary::Add(const OdometryResult& result) {
   ++scans;
-  switch (result.termination) {
+  switch (result.termination_type) {
     case TerminationType::CONVERGENCE:
       ++convergence;
       break;
@@ -93,9 +93,6 @@ RegistrationOptions Odometry::ScanRegistrationOptions(
   options.initial_uncertainty.given = true;
   options.initial_uncertainty.translation_m = uncertainty.translation_m;
   options.initial_uncertainty.rotation_deg = uncertainty.rotation_deg;
-  options.quality_check.max_flatness = options_.max_flatness;
-  options.retry.weak_direction_rounds = options_.weak_direction_rounds;
-  options.quality_check.max_mean_score = options_.max_mean_score;
   return options;
 }
 
@@ -107,24 +104,18 @@ void Odometry::Register(const LayeredGrid& map,
                         OdometryResult* result) {
   const RegistrationOptions options =
       ScanRegistrationOptions(result->uncertainty);
-  RegistrationSummary summary;
+  RegistrationSummary& summary = result->registration;
   mlndt::Register(options, map, cloud, start, &summary);
-  result->termination = summary.termination_type;
+  result->termination_type = summary.termination_type;
   result->message = summary.message;
-  result->start_layer = summary.start_layer;
-  result->num_layers = summary.num_layers;
-  result->iterations = summary.num_iterations;
-  result->sampled_points = summary.sampled_points;
-  result->quality = summary.quality;
   result->registration_time_s += summary.total_time_s;
   result->world_from_sensor = summary.reference_from_input;
-  result->correction_m =
-      TranslationErrorM(result->predicted, summary.reference_from_input);
-  result->correction_deg =
-      RotationErrorRad(result->predicted, summary.reference_from_input) *
-      kRadToDeg;
+  result->correction_m = TranslationErrorM(result->predicted_world_from_sensor,
+                                           summary.reference_from_input);
+  result->correction_rad = RotationErrorRad(result->predicted_world_from_sensor,
+                                            summary.reference_from_input);
   if (summary.IsSolutionUsable()) Gate(result);
-  if (result->termination == TerminationType::CONVERGENCE) {
+  if (result->termination_type == TerminationType::CONVERGENCE) {
     Confirm(options, map, cloud, start, always_confirm, result);
   }
 }
@@ -147,14 +138,16 @@ void Odometry::Gate(OdometryResult* result) const {
       std::min(options_.gate_factor * result->uncertainty.translation_m, cap_m);
   const double gate_deg = std::min(
       options_.gate_factor * result->uncertainty.rotation_deg, cap_deg);
-  if (result->correction_m <= gate_m && result->correction_deg <= gate_deg) {
+  const double correction_deg = result->correction_rad * kRadToDeg;
+  if (result->correction_m <= gate_m && correction_deg <= gate_deg) {
     return;
   }
   // After a gap the sensor may have kept moving: the dead-reckoned pose is
   // as good a centre.
-  if (TranslationErrorM(result->dead_reckoned, result->world_from_sensor) <=
-          gate_m &&
-      RotationErrorRad(result->dead_reckoned, result->world_from_sensor) *
+  if (TranslationErrorM(result->dead_reckoned_world_from_sensor,
+                        result->world_from_sensor) <= gate_m &&
+      RotationErrorRad(result->dead_reckoned_world_from_sensor,
+                       result->world_from_sensor) *
               kRadToDeg <=
           gate_deg) {
     return;
@@ -162,9 +155,9 @@ void Odometry::Gate(OdometryResult* result) const {
   std::ostringstream message;
   message.precision(3);
   message << "the pose moved " << result->correction_m << " m, "
-          << result->correction_deg << " deg from the prediction, beyond "
+          << correction_deg << " deg from the prediction, beyond "
           << "the gate (" << gate_m << " m, " << gate_deg << " deg)";
-  result->termination = TerminationType::LOW_QUALITY;
+  result->termination_type = TerminationType::LOW_QUALITY;
   result->message = message.str();
 }
 
@@ -174,10 +167,11 @@ void Odometry::Gate(OdometryResult* result) const {
 void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
   std::vector<Isometry3d> starts = SearchStarts(
       options_.recovery,
-      result->predicted,
-      predictor_.num_poses() > 0 ? predictor_.last_pose() : result->predicted);
+      result->predicted_world_from_sensor,
+      predictor_.num_poses() > 0 ? predictor_.last_pose()
+                                 : result->predicted_world_from_sensor);
   if (result->skipped_scans > 0 && options_.recovery.max_search_starts > 0) {
-    starts.insert(starts.begin(), result->dead_reckoned);
+    starts.insert(starts.begin(), result->dead_reckoned_world_from_sensor);
   }
 
   for (size_t k = 0; k < starts.size(); ++k) {
@@ -185,7 +179,7 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
     Register(local_map_.grid(), cloud, starts[k], true, &attempt);
     result->registration_time_s = attempt.registration_time_s;
     ++result->search_starts;
-    if (attempt.termination != TerminationType::CONVERGENCE) continue;
+    if (attempt.termination_type != TerminationType::CONVERGENCE) continue;
     const std::string first_message = result->message;
     const int tried = result->search_starts;
     *result = attempt;
@@ -197,10 +191,14 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
   }
   if (options_.recovery.register_onto_last_scan && BuildLastScanMap()) {
     OdometryResult attempt = *result;
-    Register(last_scan_map_.grid(), cloud, result->predicted, true, &attempt);
+    Register(last_scan_map_.grid(),
+             cloud,
+             result->predicted_world_from_sensor,
+             true,
+             &attempt);
     result->registration_time_s = attempt.registration_time_s;
     ++result->search_starts;
-    if (attempt.termination == TerminationType::CONVERGENCE &&
+    if (attempt.termination_type == TerminationType::CONVERGENCE &&
         AgreesWithLocalMap(cloud, &attempt)) {
       const std::string first_message = result->message;
       const int tried = result->search_starts;
@@ -292,14 +290,14 @@ void Odometry::Confirm(const RegistrationOptions& options,
                     &result->message);
       return;
     }
-    result->termination = TerminationType::NO_CONVERGENCE;
+    result->termination_type = TerminationType::NO_CONVERGENCE;
     AppendMessage(confirmation.message, &result->message);
     return;
   }
   if (!second_view || !options_.confirmation.check_last_scan) return;
   const Confirmation check = AgreesWithLastScan(options, cloud, result);
   if (check.confirmed) return;
-  result->termination = TerminationType::NO_CONVERGENCE;
+  result->termination_type = TerminationType::NO_CONVERGENCE;
   AppendMessage(check.message, &result->message);
 }
 
@@ -310,12 +308,13 @@ Confirmation Odometry::AgreesWithLastScan(const RegistrationOptions& options,
                                           const PointCloud& cloud,
                                           OdometryResult* result) {
   if (!BuildLastScanMap()) return Confirmation();  // No evidence.
-  const Confirmation check = CheckAgainstLastScan(options,
-                                                  options_.prediction,
-                                                  last_scan_map_.grid(),
-                                                  cloud,
-                                                  result->predicted,
-                                                  result->world_from_sensor);
+  const Confirmation check =
+      CheckAgainstLastScan(options,
+                           options_.prediction,
+                           last_scan_map_.grid(),
+                           cloud,
+                           result->predicted_world_from_sensor,
+                           result->world_from_sensor);
   result->registration_time_s += check.time_s;
   return check;
 }
@@ -377,8 +376,9 @@ void Odometry::Account(PointCloud cloud,
   last_scan_pose_ = result->world_from_sensor;
   has_last_scan_ = true;
   last_scan_map_built_ = false;
-  predictor_.AddPose(
-      scan.stamp_s, result->predicted, result->world_from_sensor);
+  predictor_.AddPose(scan.stamp_s,
+                     result->predicted_world_from_sensor,
+                     result->world_from_sensor);
 }
 
 bool Odometry::Process(const OdometryScan& scan,
@@ -391,10 +391,10 @@ bool Odometry::Process(const OdometryScan& scan,
   *result = OdometryResult();
   result->index = num_processed_;
   result->stamp_s = scan.stamp_s;
-  result->predicted = predictor_.Predict(scan.stamp_s);
+  result->predicted_world_from_sensor = predictor_.Predict(scan.stamp_s);
   result->uncertainty = predictor_.Uncertainty();
   result->skipped_scans = predictor_.skipped();
-  result->dead_reckoned = predictor_.DeadReckon(scan.stamp_s);
+  result->dead_reckoned_world_from_sensor = predictor_.DeadReckon(scan.stamp_s);
 
   PointCloud cloud = *scan.cloud;
   const bool has_times =
@@ -405,21 +405,25 @@ bool Odometry::Process(const OdometryScan& scan,
     result->deskewed = true;
   }
   if (local_map_.empty()) {
-    result->termination = TerminationType::CONVERGENCE;
+    result->termination_type = TerminationType::CONVERGENCE;
     result->message = "first scan: the origin of the odometry frame";
-    result->world_from_sensor = result->predicted;
+    result->world_from_sensor = result->predicted_world_from_sensor;
   } else if (cloud.empty()) {
-    result->termination = TerminationType::FAILURE;
+    result->termination_type = TerminationType::FAILURE;
     result->message = "no points";
   } else {
-    Register(local_map_.grid(), cloud, result->predicted, false, result);
-    if (result->termination != TerminationType::CONVERGENCE) {
+    Register(local_map_.grid(),
+             cloud,
+             result->predicted_world_from_sensor,
+             false,
+             result);
+    if (result->termination_type != TerminationType::CONVERGENCE) {
       Search(cloud, result);
     }
   }
-  result->fallback = result->termination != TerminationType::CONVERGENCE;
+  result->fallback = result->termination_type != TerminationType::CONVERGENCE;
   if (result->fallback) {
-    result->world_from_sensor = result->predicted;
+    result->world_from_sensor = result->predicted_world_from_sensor;
   } else if (!UpdateMap(cloud, result, error)) {
     return false;
   }

@@ -49,6 +49,8 @@
 
 namespace mlndt {
 
+class ResultTable;
+
 // One scan: its time stamp [s] (strictly increasing), its points in the
 // sensor frame and, optionally, one time per point relative to the stamp.
 struct OdometryScan {
@@ -64,19 +66,25 @@ struct BridgedScan {
   Isometry3d world_from_sensor = Isometry3d::Identity();
 };
 
+// One scan's odometry. The registration whose pose was used (from the
+// prediction, or from the search start that registered the scan) is
+// `registration`; the odometry's own verdict (`termination_type`, after the
+// gate, the confirmation and the search) and pose (`world_from_sensor`, the
+// prediction for a fallback) may differ from the registration's.
 struct OdometryResult {
-  size_t index = 0;
+  size_t index = 0;  // 0-based position of the scan in the sequence.
   double stamp_s = 0.0;
-  Isometry3d predicted = Isometry3d::Identity();  // world_from_sensor.
+  Isometry3d predicted_world_from_sensor = Isometry3d::Identity();
   // After skipped scans: the last velocity over the whole gap (the
   // prediction moves one step at most); else the prediction.
-  Isometry3d dead_reckoned = Isometry3d::Identity();
+  Isometry3d dead_reckoned_world_from_sensor = Isometry3d::Identity();
   Isometry3d world_from_sensor = Isometry3d::Identity();
   PredictionUncertainty uncertainty;  // Of the prediction.
   // Scans without a registered pose since the last registered one.
   size_t skipped_scans = 0;
-  // The registration's verdict, or LOW_QUALITY when the gate refused it.
-  TerminationType termination = TerminationType::FAILURE;
+  // The odometry's verdict: the registration's, LOW_QUALITY when the gate
+  // refused it, NO_CONVERGENCE when the confirmation did not return.
+  TerminationType termination_type = TerminationType::FAILURE;
   std::string message;
   // Not registered (the verdict is not CONVERGENCE): the prediction stands
   // in for the pose, until a later registered scan bridges it.
@@ -92,20 +100,24 @@ struct OdometryResult {
   std::vector<BridgedScan> bridged;
   bool keyframe = false;  // The scan joined the local map.
   bool deskewed = false;
-  int start_layer = 0;
-  int num_layers = 0;
-  int iterations = 0;
-  size_t sampled_points = 0;
-  FitQuality quality;
-  // Distance of the pose from the prediction.
+  // Distance of the registration's pose from the prediction.
   double correction_m = 0.0;
-  double correction_deg = 0.0;
+  double correction_rad = 0.0;
   size_t map_keyframes = 0;
   size_t map_points = 0;
+  // Every registration of the scan (confirmations, search starts, checks).
   double registration_time_s = 0.0;
   double map_time_s = 0.0;  // Rebuilding the local map (keyframes).
   double total_time_s = 0.0;
+  // The registration whose result was used (empty for the first scan and a
+  // scan without points): start layer, iterations, fit, covariance, times.
+  RegistrationSummary registration;
 };
+
+// OdometryResult's fields (result_table.h), the registration's table
+// nested: mlndt_odometry's scans.csv/scans.json, Python's OdometryResult and
+// docs/json_schema.md come from it.
+const ResultTable& OdometryResultTable();
 
 // Counts of a run's verdicts.
 struct OdometrySummary {

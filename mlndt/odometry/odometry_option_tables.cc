@@ -172,25 +172,6 @@ const OptionTable& OdometryOwnOptionsTable() {
                 &S::recovery,
                 RecoveryOptionsTable(),
                 "The search for a scan not registered from its prediction.")
-        .Double("max_flatness",
-                &S::max_flatness,
-                "",
-                LeftOpen(0.0, 1.0),
-                "The probe of weak directions of the scans' registrations "
-                "(replaces the registration's max_flatness; 1 = off).")
-        .Int("weak_direction_rounds",
-             &S::weak_direction_rounds,
-             Closed(0, 16),
-             "The search along the weak direction of the scans' "
-             "registrations (replaces the registration's "
-             "retry.weak_direction_rounds; 0 = off).")
-        .Double("max_mean_score",
-                &S::max_mean_score,
-                "",
-                LeftOpen(0.0, 1e6),
-                "LOW_QUALITY above this mean score per matched point of "
-                "the scans' registrations (replaces the registration's "
-                "max_mean_score; 1e6 = off).")
         .Struct("confirmation",
                 &S::confirmation,
                 ConfirmationOptionsTable(),

@@ -21,6 +21,7 @@
 #include "python/src/errors.h"
 #include "python/src/module.h"
 #include "python/src/options.h"
+#include "python/src/result_binding.h"
 
 namespace mlndt {
 namespace python {
@@ -55,8 +56,8 @@ OdometryOptions OdometryOptionsFromPython(const py::kwargs& kwargs) {
         "odometry (each scan's comes from its prediction; see prediction=)");
   }
   OdometryOptions options;
-  options.registration =
-      RegistrationOptionsFromPython(registration_fields, py::none(), false);
+  options.registration = RegistrationOptionsFromPython(
+      registration_fields, py::none(), false, OdometryRegistrationOptions());
   options.local_map.grid = options.registration.grid;
   OdometryBinding().Update(odometry_fields, "", &options);
   std::string error;
@@ -191,101 +192,31 @@ std::vector<OdometryResult> RunOdometryPython(const py::iterable& scan_items,
   return results;
 }
 
-py::dict QualityDict(const FitQuality& q) {
-  py::dict quality;
-  quality["points"] = q.points;
-  quality["own_cell_fraction"] = q.own_cell_fraction;
-  quality["inlier_fraction"] = q.inlier_fraction;
-  quality["mean_score"] = q.mean_score;
-  quality["median_distance"] = q.median_distance;
-  return quality;
-}
-
-// The search and the bridging of scans without a registered pose.
-void DefineRecoveryFields(py::class_<OdometryResult>* result) {
-  using R = OdometryResult;
-  (*result)
-      .def_readonly("search_starts",
-                    &R::search_starts,
-                    "Starts of the search tried (the prediction did not "
-                    "register the scan).")
-      .def_readonly(
-          "recovered", &R::recovered, "A search start registered the scan.")
-      .def_readonly("interpolated",
-                    &R::interpolated,
-                    "A fallback whose pose a later registered scan "
-                    "replaced by the interpolated one (run_odometry).")
-      .def_property_readonly(
-          "bridged",
-          [](const R& r) {
-            py::list bridged;
-            for (const BridgedScan& b : r.bridged) {
-              bridged.append(py::make_tuple(
-                  b.index, Eigen::Matrix4d(b.world_from_sensor.matrix())));
-            }
-            return bridged;
-          },
-          "Earlier fallbacks this scan's registration bridged: (index, "
-          "interpolated pose 4x4) each.");
-}
-
 void DefineResult(py::module_& m) {
   using R = OdometryResult;
-  const auto matrix = [](Isometry3d R::*field) {
-    return [field](const R& r) { return Eigen::Matrix4d((r.*field).matrix()); };
-  };
-  py::class_<R> result(m,
-                       "OdometryResult",
-                       "One scan of the odometry (mlndt::OdometryResult): the "
-                       "prediction, the pose\n(world_from_sensor, 4x4; the "
-                       "first scan defines the world), the verdict and\nhow "
-                       "the local map changed.");
-  DefineRecoveryFields(&result);
-  result.def_readonly("index", &R::index, "0-based scan index.")
-      .def_readonly("stamp_s", &R::stamp_s)
-      .def_property_readonly("predicted",
-                             matrix(&R::predicted),
-                             "The constant-velocity prediction, 4x4.")
-      .def_property_readonly("world_from_sensor",
-                             matrix(&R::world_from_sensor),
-                             "The pose, 4x4 (the prediction when `fallback`).")
+  py::class_<R> result(
+      m,
+      "OdometryResult",
+      "One scan of the odometry (mlndt::OdometryResult): the prediction, the "
+      "pose (world_from_sensor; the first scan defines the world), the "
+      "odometry's verdict, how the local map changed and the registration's "
+      "whole result. The properties are the struct's fields "
+      "(OdometryResultTable()), named and in the units of the C++ struct; "
+      "todict() gives them all, as a scan of mlndt_odometry's scans.json "
+      "does.");
+  DefineResultProperties(result, OdometryResultTable());
+  result
       .def_property_readonly(
-          "uncertainty",
-          [](const R& r) {
-            return py::make_tuple(r.uncertainty.translation_m,
-                                  r.uncertainty.rotation_deg);
+          "registration",
+          [](const R& r) -> const RegistrationSummary& {
+            return r.registration;
           },
-          "The prediction's (translation_m, rotation_deg).")
-      .def_property_readonly(
-          "termination",
-          [](const R& r) {
-            return std::string(TerminationTypeToString(r.termination));
-          },
-          "The registration's verdict, or LOW_QUALITY when the gate "
-          "refused it.")
-      .def_readonly("message", &R::message)
-      .def_readonly("fallback",
-                    &R::fallback,
-                    "Not registered: the prediction stands in for the pose "
-                    "(interpolated once a later scan bridges it).")
-      .def_readonly("keyframe", &R::keyframe, "The scan joined the local map.")
-      .def_readonly("deskewed", &R::deskewed)
-      .def_readonly("start_layer", &R::start_layer)
-      .def_readonly("num_layers", &R::num_layers)
-      .def_readonly("iterations", &R::iterations)
-      .def_readonly("sampled_points", &R::sampled_points)
-      .def_property_readonly("quality",
-                             [](const R& r) { return QualityDict(r.quality); })
-      .def_readonly("correction_m", &R::correction_m)
-      .def_readonly("correction_deg", &R::correction_deg)
-      .def_readonly("map_keyframes", &R::map_keyframes)
-      .def_readonly("map_points", &R::map_points)
-      .def_readonly("registration_time_s", &R::registration_time_s)
-      .def_readonly("map_time_s", &R::map_time_s)
-      .def_readonly("total_time_s", &R::total_time_s)
+          py::return_value_policy::reference_internal,
+          "The registration whose result was used: a RegistrationResult "
+          "(todict()[\"registration\"] as a dict).")
       .def("__repr__", [](const R& r) {
         return "<mlndt.OdometryResult scan " + std::to_string(r.index) + " " +
-               TerminationTypeToString(r.termination) +
+               TerminationTypeToString(r.termination_type) +
                (r.fallback ? " (fallback)>" : ">");
       });
 }

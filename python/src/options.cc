@@ -59,11 +59,14 @@ const StructBinding<RegistrationOptions>& RegistrationOptionsBinding() {
 }
 
 RegistrationOptions RegistrationOptionsFromPython(
-    const py::kwargs& kwargs, py::handle initial_uncertainty, bool map_given) {
+    const py::kwargs& kwargs,
+    py::handle initial_uncertainty,
+    bool map_given,
+    const RegistrationOptions& defaults) {
   py::dict options = py::dict(kwargs);  // A copy: "preset" is popped.
   const std::string preset = PopPreset(&options);
   RegistrationOptions result =
-      preset == "paper" ? PaperRegistrationOptions() : RegistrationOptions();
+      preset == "paper" ? PaperRegistrationOptions() : defaults;
   if (map_given && options.contains("grid")) {
     ThrowValueError(
         "invalid option: grid does not apply to LayeredMap.register (the map "

@@ -28,9 +28,13 @@ const StructBinding<RangeFilterOptions>& RangeFilterOptionsBinding();
 // `initial_uncertainty` (None, (translation_m, rotation_deg) or a dict of
 // InitialGuessUncertainty fields), validated. `map_given`: the map is built
 // already, so the grid option is refused (it would be ignored). Raises
-// ValueError naming the field.
+// ValueError naming the field. The fields not given keep `defaults`' values
+// (preset="paper": PaperRegistrationOptions()'s).
 RegistrationOptions RegistrationOptionsFromPython(
-    const py::kwargs& kwargs, py::handle initial_uncertainty, bool map_given);
+    const py::kwargs& kwargs,
+    py::handle initial_uncertainty,
+    bool map_given,
+    const RegistrationOptions& defaults = RegistrationOptions());
 
 // The map options of `kwargs` ("preset" and LayeredGridOptions fields),
 // validated.

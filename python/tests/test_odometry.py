@@ -5,12 +5,14 @@ in the test; the poses follow the shared Livox sequence's LIO odometry step by
 step; bad arguments raise errors naming them."""
 
 import csv
+import json
 
 import numpy as np
 import pytest
 
 import mlndt
 from conftest import KITTI_SCANS, read_kitti_lines, run_tool
+from result_files import assert_files_agree_with_python
 
 LIVOX_SCANS = 12  # The first 12 Livox keyframes: at rest, picked up, walking.
 
@@ -28,10 +30,12 @@ def assert_same_as_tool(results, poses, table):
     for k, result in enumerate(results):
         assert result.index == k
         assert np.array_equal(poses[k], result.world_from_sensor), k
-    assert [row["verdict"] for row in table] == [r.termination for r in results]
-    assert [int(row["fallback"]) for row in table] == [int(r.fallback) for r in results]
-    assert [int(row["keyframe"]) for row in table] == [int(r.keyframe) for r in results]
-    assert [int(row["start_layer"]) for row in table] == [r.start_layer for r in results]
+    assert [row["termination_type"] for row in table] == [r.termination_type for r in results]
+    assert [row["fallback"] == "true" for row in table] == [r.fallback for r in results]
+    assert [row["keyframe"] == "true" for row in table] == [r.keyframe for r in results]
+    assert [int(row["registration.start_layer"]) for row in table] == [
+        r.registration.start_layer for r in results
+    ]
 
 
 @pytest.fixture(scope="module")
@@ -71,7 +75,7 @@ def test_livox_steps_follow_the_lio_odometry(livox, livox_results):
     docs/odometry.md)."""
     _, _, _, odometry = livox
     assert not any(r.fallback for r in livox_results)
-    unconfirmed = [r.index for r in livox_results if r.termination != "CONVERGENCE"]
+    unconfirmed = [r.index for r in livox_results if r.termination_type != "CONVERGENCE"]
     assert len(unconfirmed) <= 1, unconfirmed
     assert all("not confirmed" in livox_results[k].message for k in unconfirmed)
     for k in range(1, LIVOX_SCANS):
@@ -88,7 +92,7 @@ def test_odometry_scan_by_scan_equals_run_odometry(livox, livox_results):
     for k, path in enumerate(scans[:6]):
         result = odometry.process(mlndt.read_cloud(path), stamps[k])
         assert np.array_equal(result.world_from_sensor, livox_results[k].world_from_sensor), k
-        assert result.termination == livox_results[k].termination
+        assert result.termination_type == livox_results[k].termination_type
     assert odometry.num_processed == 6
 
 
@@ -110,8 +114,34 @@ def test_kitti_arrays_equal_mlndt_odometry_with_options(tmp_path):
         grid={"finest_cell_size_m": 1.5},
     )
     assert_same_as_tool(results, poses, table)
-    assert all(r.termination == "CONVERGENCE" for r in results[1:])
+    assert all(r.termination_type == "CONVERGENCE" for r in results[1:])
     assert max(r.map_keyframes for r in results) == 3
+
+
+def test_scans_csv_json_and_python_agree(tmp_path):
+    """Issue 46: one odometry run's scans.csv, scans.json and Python results
+    (of the same scans) have the same keys and values (OdometryResultTable;
+    the files leave the registration's trace out, the CSV the bridged scans).
+    The tool and Python ran separately: wall times are compared between the
+    files only."""
+    completed, _, table = run_tool_odometry(tmp_path, f"--scans={KITTI_SCANS[0].parent}")
+    assert completed.returncode == 0, completed.stderr
+    scans = json.loads((tmp_path / "scans.json").read_text())["scans"]
+    results = mlndt.run_odometry(KITTI_SCANS)
+    assert len(table) == len(scans) == len(results) == 8
+    for k, result in enumerate(results):
+        python = result.todict()
+        row, scan = table[k], scans[k]
+        assert scan.pop("file") == row.pop("file") == KITTI_SCANS[k].name
+        assert scan["bridged"] == python["bridged"] == []
+        assert_files_agree_with_python(row, scan, python, skip_times=True)
+        for key in ("termination_type", "registration.num_iterations", "uncertainty.translation_m", "correction_rad"):
+            assert key in row, key
+        assert isinstance(result.registration, mlndt.RegistrationResult)
+        assert result.registration.num_iterations == python["registration"]["num_iterations"]
+    # The first scan defines the world; the others were registered.
+    assert results[0].registration.num_iterations == 0
+    assert all(r.registration.num_iterations > 0 for r in results[1:])
 
 
 @pytest.mark.parametrize(

@@ -95,9 +95,6 @@ def test_stub_signatures_list_every_option():
         "deskew",
         "gate_factor",
         "recovery",
-        "max_flatness",
-        "weak_direction_rounds",
-        "max_mean_score",
         "confirmation",
     }
     odometry = function(stub_classes()["Odometry"].body, "__init__")

@@ -50,7 +50,7 @@ StepScore ScoreSteps(const std::vector<OdometryResult>& results,
         TranslationErrorM(estimated, reference) > kStepToleranceM ||
         RotationErrorRad(estimated, reference) * kRadToDeg > kStepToleranceDeg;
     const bool convergence =
-        results[k].termination == TerminationType::CONVERGENCE;
+        results[k].termination_type == TerminationType::CONVERGENCE;
     if (wrong && convergence) {
       ++score.wrong_convergence;
       score.wrong_convergence_scans.push_back(k);
@@ -197,7 +197,7 @@ TEST(OdometryLivox, TheWholeLoopIsKeptWithoutRestarts) {
   EXPECT_EQ(summary.interpolated, summary.fallbacks);
   EXPECT_GT(summary.recovered, 0u);
   for (const OdometryResult& r : results) {
-    EXPECT_EQ(r.fallback, r.termination != TerminationType::CONVERGENCE);
+    EXPECT_EQ(r.fallback, r.termination_type != TerminationType::CONVERGENCE);
     EXPECT_EQ(r.fallback, r.interpolated) << "scan " << r.index;
   }
   const Isometry3d estimated_loop =

@@ -9,9 +9,14 @@
 
 #include <functional>
 #include <limits>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "mlndt/common/option_table.h"
+#include "mlndt/odometry/odometry_option_tables.h"
+#include "mlndt/registration/registration_options.h"
 
 namespace mlndt {
 namespace {
@@ -26,20 +31,6 @@ TEST(OdometryOptions, IsValidRefusesEachOwnFieldOutOfRange) {
            "invalid option: gate_factor = 0.5; it must be >= 1"},
           {[](OdometryOptions* o) { o->recovery.max_search_starts = 6; },
            "invalid option: max_search_starts = 6; it must be <= 5"},
-          {[](OdometryOptions* o) { o->max_flatness = 0.0; },
-           "invalid option: max_flatness = 0; it must be in (0, 1]"},
-          {[](OdometryOptions* o) { o->max_flatness = 1.5; },
-           "invalid option: max_flatness = 1.5; it must be in (0, 1]"},
-          {[](OdometryOptions* o) {
-             o->max_flatness = std::numeric_limits<double>::quiet_NaN();
-           },
-           "invalid option: max_flatness = nan; it must be in (0, 1]"},
-          {[](OdometryOptions* o) { o->weak_direction_rounds = 17; },
-           "invalid option: weak_direction_rounds = 17; it must be in [0, "
-           "16]"},
-          {[](OdometryOptions* o) { o->weak_direction_rounds = -1; },
-           "invalid option: weak_direction_rounds = -1; it must be in [0, "
-           "16]"},
           {[](OdometryOptions* o) { o->local_map.max_keyframes = 0; },
            "invalid option: max_keyframes = 0; it must be >= 1"},
       };
@@ -49,10 +40,53 @@ TEST(OdometryOptions, IsValidRefusesEachOwnFieldOutOfRange) {
     EXPECT_FALSE(options.IsValid(&error)) << message;
     EXPECT_EQ(error, message);
   }
+  // The registration's fields by its own IsValid.
   OdometryOptions options;
-  options.max_flatness = 1.0;  // The upper end is valid (off).
-  options.weak_direction_rounds = 16;
-  EXPECT_TRUE(options.IsValid(&error)) << error;
+  options.registration.quality_check.max_flatness = 0.0;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("max_flatness"), std::string::npos) << error;
+}
+
+// "path=value" of every field of `table` in the struct at `s`.
+void Values(const OptionTable& table,
+            const void* s,
+            const std::string& prefix,
+            std::map<std::string, std::string>* values) {
+  for (const OptionField& field : table.fields()) {
+    if (field.type == OptionType::STRUCT) {
+      Values(*field.nested,
+             field.locate(const_cast<void*>(s)),
+             prefix + field.name + ".",
+             values);
+    } else {
+      (*values)[prefix + field.name] = field.Format(s);
+    }
+  }
+}
+
+// OdometryOptions' registration starts from OdometryRegistrationOptions():
+// the library's defaults but the probe of weak directions, the search along
+// them and the mean-score check (no shadow fields of the odometry's own).
+TEST(OdometryOptions, RegistrationDefaultsAreTheOdometryPreset) {
+  const RegistrationOptions library;
+  const RegistrationOptions preset = OdometryRegistrationOptions();
+  const OdometryOptions odometry;
+  std::map<std::string, std::string> library_values, preset_values,
+      odometry_values;
+  Values(RegistrationOptionsTable(), &library, "", &library_values);
+  Values(RegistrationOptionsTable(), &preset, "", &preset_values);
+  Values(
+      RegistrationOptionsTable(), &odometry.registration, "", &odometry_values);
+  EXPECT_EQ(odometry_values, preset_values);
+  std::vector<std::string> differ;
+  for (const auto& [path, value] : preset_values) {
+    if (library_values.at(path) != value) differ.push_back(path + "=" + value);
+  }
+  EXPECT_EQ(differ,
+            (std::vector<std::string>{"quality_check.max_flatness=0.8",
+                                      "quality_check.max_mean_score=11",
+                                      "retry.weak_direction_rounds=0"}));
+  EXPECT_EQ(OdometryOwnOptionsTable().Find("max_flatness"), nullptr);
 }
 
 }  // namespace

@@ -123,16 +123,16 @@ void ExpectBridged(const std::vector<OdometryResult>& results,
   const std::vector<Isometry3d> reference = ReferenceChain(results.size());
   const OdometryResult& bad = results[k];
   EXPECT_TRUE(bad.fallback) << bad.message;
-  EXPECT_NE(bad.termination, TerminationType::CONVERGENCE);
+  EXPECT_NE(bad.termination_type, TerminationType::CONVERGENCE);
   EXPECT_EQ(bad.search_starts > 0, searched);
   EXPECT_FALSE(bad.recovered);
   EXPECT_FALSE(bad.keyframe);
   EXPECT_TRUE(bad.interpolated);
   for (const auto& r : results)
     std::cerr << "DBG " << r.index << " "
-              << TerminationTypeToString(r.termination) << " fb " << r.fallback
-              << " br " << r.bridged.size() << " ss " << r.search_starts << " "
-              << r.message << "\n";
+              << TerminationTypeToString(r.termination_type) << " fb "
+              << r.fallback << " br " << r.bridged.size() << " ss "
+              << r.search_starts << " " << r.message << "\n";
   ASSERT_EQ(results[k + 1].bridged.size(), 1u);
   EXPECT_EQ(results[k + 1].bridged[0].index, k);
   const Isometry3d interpolated =
@@ -149,7 +149,7 @@ void ExpectBridged(const std::vector<OdometryResult>& results,
   EXPECT_EQ(summary.searched, searched ? 1u : 0u);
   for (size_t i = 0; i < results.size(); ++i) {
     if (i == k) continue;
-    EXPECT_EQ(results[i].termination, TerminationType::CONVERGENCE)
+    EXPECT_EQ(results[i].termination_type, TerminationType::CONVERGENCE)
         << i << ": " << results[i].message;
     EXPECT_LT(TranslationErrorM(results[i].world_from_sensor, reference[i]),
               0.10)
@@ -179,7 +179,7 @@ TEST(Odometry, AnEmptyScanIsAFailureInterpolatedBetweenItsNeighbours) {
       [](PointCloud* cloud) { *cloud = PointCloud(); },
       &results,
       &summary));
-  EXPECT_EQ(results[4].termination, TerminationType::FAILURE);
+  EXPECT_EQ(results[4].termination_type, TerminationType::FAILURE);
   EXPECT_EQ(results[4].message, "no points");
   ExpectBridged(results, summary, 4, false);  // Nothing to search with.
 }
@@ -263,7 +263,7 @@ TEST(Odometry, ScansAfterAGapRegisterOntoTheMapThatKeptWhatItKnew) {
   ASSERT_EQ(results[6].bridged.size(), 3u);
   EXPECT_EQ(summary.interpolated, 3u);
   for (size_t k = 6; k < 8; ++k) {
-    EXPECT_EQ(results[k].termination, TerminationType::CONVERGENCE)
+    EXPECT_EQ(results[k].termination_type, TerminationType::CONVERGENCE)
         << k << ": " << results[k].message;
     EXPECT_LT(TranslationErrorM(results[k].world_from_sensor, reference[k]),
               0.1)

@@ -1,6 +1,6 @@
-// mlndt_odometry's --helpfull shows, for the registration flags that set
-// OdometryOptions' own fields in place of the registration's
-// (--max_flatness, --weak_direction_rounds), the odometry's defaults: the
+// mlndt_odometry's --helpfull shows, for the registration flags whose
+// default differs in OdometryRegistrationOptions() (--max_flatness,
+// --weak_direction_rounds, --max_mean_score), the odometry's defaults: the
 // values the tool uses when they are not given. A registration tool
 // (mlndt_align) still shows the registration's.
 
@@ -31,16 +31,21 @@ std::string HelpDefault(const std::string& help, const std::string& name) {
 TEST(MlndtOdometryHelp, SharedFlagsShowTheOdometrysDefaults) {
   const testing::ToolRun odometry =
       testing::RunTool("mlndt_odometry", "--helpfull");
-  const OdometryOptions options;
+  const RegistrationOptions options = OdometryOptions().registration;
   EXPECT_EQ(std::stod(HelpDefault(odometry.out, "max_flatness")),
-            options.max_flatness);
+            options.quality_check.max_flatness);
   EXPECT_EQ(std::stoi(HelpDefault(odometry.out, "weak_direction_rounds")),
-            options.weak_direction_rounds);
+            options.retry.weak_direction_rounds);
+  EXPECT_EQ(std::stod(HelpDefault(odometry.out, "max_mean_score")),
+            options.quality_check.max_mean_score);
   // They differ from the registration's, or the test would hold anyway.
   const RegistrationOptions registration;
-  ASSERT_NE(options.max_flatness, registration.quality_check.max_flatness);
-  ASSERT_NE(options.weak_direction_rounds,
+  ASSERT_NE(options.quality_check.max_flatness,
+            registration.quality_check.max_flatness);
+  ASSERT_NE(options.retry.weak_direction_rounds,
             registration.retry.weak_direction_rounds);
+  ASSERT_NE(options.quality_check.max_mean_score,
+            registration.quality_check.max_mean_score);
 
   const testing::ToolRun align = testing::RunTool("mlndt_align", "--helpfull");
   EXPECT_EQ(std::stod(HelpDefault(align.out, "max_flatness")),

@@ -52,6 +52,7 @@ TEST(OutputSet, OdometrySummaryIsWrittenLastAndNamesItsFiles) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   ExpectSummaryLastAndNaming(out,
                              {"scans.csv",
+                              "scans.json",
                               "trajectory_kitti.txt",
                               "trajectory_tum.txt",
                               "trajectory_xy.png"});

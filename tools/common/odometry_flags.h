@@ -5,10 +5,9 @@
 // (--local_map_max_keyframes, --keyframes_min_translation_m,
 // --prediction_max_translation_m, --confirmation_enabled, --gate_factor);
 // the flags' older names are aliases (--local_map_keyframes,
-// --keyframe_distance, --max_uncertainty_m, --confirm, ...). max_flatness
-// is set by the registration's --max_flatness when given (the odometry's
-// default differs from the registration's). Linking this file gives a tool
-// these flags.
+// --keyframe_distance, --max_uncertainty_m, --confirm, ...). The
+// registration's flags set OdometryOptions::registration, whose defaults are
+// OdometryRegistrationOptions(). Linking this file gives a tool these flags.
 
 #include "tools/common/table_flags.h"
 

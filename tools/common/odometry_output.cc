@@ -11,31 +11,40 @@
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/odometry/run_odometry.h"
+#include "tools/common/result_csv.h"
+#include "tools/common/result_json.h"
+#include "tools/common/tool_utils.h"
 
 namespace mlndt {
 namespace tools {
 namespace {
 
-std::string ScanRow(const ScanInput& input, const OdometryResult& r) {
-  const Vector6d xi = IsometryToPoseVector(r.world_from_sensor);
-  std::string row =
-      std::to_string(r.index) + "," + CsvField(input.name(r.index)) + "," +
-      Fmt(r.stamp_s, 9) + "," + TerminationTypeToString(r.termination) + "," +
-      (r.fallback ? "1" : "0") + "," + std::to_string(r.search_starts) + "," +
-      (r.recovered ? "1" : "0") + "," + (r.interpolated ? "1" : "0") + "," +
-      (r.keyframe ? "1" : "0") + "," + (r.deskewed ? "1" : "0") + "," +
-      std::to_string(r.start_layer) + "," + std::to_string(r.num_layers) + "," +
-      std::to_string(r.iterations) + "," + Num(r.uncertainty.translation_m) +
-      "," + Num(r.uncertainty.rotation_deg) + "," + Num(r.correction_m) + "," +
-      Num(r.correction_deg) + "," + Num(r.quality.inlier_fraction) + "," +
-      std::to_string(r.map_keyframes) + "," + std::to_string(r.map_points);
-  for (int k = 0; k < 6; ++k) {
-    row += "," + Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
+// The scans' names, one per result.
+CsvColumn FileColumn(const ScanInput& input,
+                     const std::vector<OdometryResult>& results) {
+  CsvColumn column{"file", {}};
+  for (const OdometryResult& r : results) {
+    column.cells.push_back(input.name(r.index));
   }
-  row += "," + Fmt(r.registration_time_s * 1e3, 3) + "," +
-         Fmt(r.map_time_s * 1e3, 3) + "," + Fmt(r.total_time_s * 1e3, 3) + "," +
-         CsvField(r.message) + "\n";
-  return row;
+  return column;
+}
+
+// scans.json: the tool's header and one object per scan, the scan's name
+// and every field of OdometryResultTable but the registration's trace (as
+// in scans.csv).
+Json OdometryScansJson(const ScanInput& input,
+                       const std::vector<OdometryResult>& results) {
+  const CsvColumn file = FileColumn(input, results);
+  Json scans = Json::array();
+  for (size_t k = 0; k < results.size(); ++k) {
+    Json scan = ResultJsonOf(OdometryResultTable(), results[k]);
+    scan["registration"].erase("trace");
+    scan["file"] = file.cells[k];
+    scans.push_back(std::move(scan));
+  }
+  Json json = ToolJson("mlndt_odometry");
+  json["scans"] = std::move(scans);
+  return json;
 }
 
 }  // namespace
@@ -45,19 +54,11 @@ bool WriteOdometryFiles(const std::string& dir,
                         const std::vector<OdometryResult>& results,
                         std::string* error) {
   Trajectory trajectory;
-  std::string csv =
-      "scan,name,stamp_s,verdict,fallback,search_starts,recovered,"
-      "interpolated,keyframe,deskewed,start_layer,"
-      "num_layers,iterations,uncertainty_m,uncertainty_deg,correction_m,"
-      "correction_deg,inlier_fraction,map_keyframes,map_points,x_m,y_m,z_m,"
-      "alpha_deg,beta_deg,gamma_deg,registration_ms,map_ms,total_ms,"
-      "message\n";
   for (const OdometryResult& r : results) {
     if (!trajectory.TryAdd(r.stamp_s, r.world_from_sensor, error)) {
       *error = "scan " + input.name(r.index) + ": " + *error;
       return false;
     }
-    csv += ScanRow(input, r);
   }
   return WriteTrajectory(dir + "/trajectory_kitti.txt",
                          TrajectoryFormat::KITTI,
@@ -68,7 +69,13 @@ bool WriteOdometryFiles(const std::string& dir,
                          trajectory,
                          input.TumComment(),
                          error) &&
-         WriteFileAtomically(dir + "/scans.csv", csv, error);
+         WriteFileAtomically(
+             dir + "/scans.csv",
+             ResultCsvOf(
+                 OdometryResultTable(), results, {FileColumn(input, results)}),
+             error) &&
+         WriteJsonFile(
+             dir + "/scans.json", OdometryScansJson(input, results), error);
 }
 
 Json OdometrySummaryJson(const OdometrySummary& summary,
@@ -219,9 +226,9 @@ std::string OdometryProgressDetail(const ScanInput& input,
                 sizeof(detail),
                 "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
                 input.name(r.index).c_str(),
-                TerminationTypeToString(r.termination),
+                TerminationTypeToString(r.termination_type),
                 r.fallback ? " (prediction used)" : "",
-                r.start_layer,
+                r.registration.start_layer,
                 r.uncertainty.translation_m,
                 r.uncertainty.rotation_deg,
                 r.total_time_s * 1e3);

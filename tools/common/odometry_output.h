@@ -1,9 +1,9 @@
 #pragma once
 
 // What mlndt_odometry writes: the trajectories (KITTI, and TUM stamped with
-// the scans' times), scans.csv (one row per scan with its verdict), the
-// trajectory metrics against a reference (lab/eval/odometry_metrics.h), and
-// the top-view plot.
+// the scans' times), scans.csv and scans.json (one row per scan, from its
+// result table), the trajectory metrics against a reference
+// (lab/eval/odometry_metrics.h), and the top-view plot.
 
 #include <string>
 #include <vector>
@@ -17,7 +17,8 @@ namespace mlndt {
 namespace tools {
 
 // trajectory_kitti.txt, trajectory_tum.txt (header: where the stamps come
-// from) and scans.csv in `dir`.
+// from), scans.csv and scans.json (OdometryResultTable, the scan's name in
+// `file`) in `dir`.
 bool WriteOdometryFiles(const std::string& dir,
                         const ScanInput& input,
                         const std::vector<OdometryResult>& results,

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "mlndt/ndt/ndt_registration.h"
+#include "mlndt/odometry/odometry_options.h"
 #include "mlndt/registration/registration_options.h"
 #include "tools/common/option_flags.h"
 #include "tools/common/tool_table_flags.h"
@@ -42,18 +43,24 @@ std::string DefaultText(const OptionFlag& flag, bool ndt) {
   return field->Format(owner);
 }
 
-// " (mlndt_odometry: 0.8)" for a shared flag that sets a field of a tool's
-// table in its place, with that field's default (the value the tool uses
-// when the flag is not given; TableFlags::ShowFieldDefaultsOnSharedFlags).
-std::string ToolDefaultsNote(const std::string& flag) {
+// " (mlndt_odometry: 0.8)" for a registration flag whose default differs
+// in a tool's registration preset (OdometryRegistrationOptions; the value
+// the tool uses when the flag is not given, as its --help shows).
+std::string ToolDefaultsNote(const OptionFlag& flag) {
+  if (flag.mlndt_path.empty()) return "";
+  const struct {
+    const char* tool;
+    RegistrationOptions options;
+  } presets[] = {{"mlndt_odometry", OdometryRegistrationOptions()}};
+  const OptionTable& table = RegistrationOptionsTable();
   std::string note;
-  for (const TableFlags* flags : ToolTableFlags()) {
-    for (const auto& [path, tool_flag] : flags->set_by_tool_flag()) {
-      if (tool_flag != flag || !flags->Shared(flag)) continue;
-      const OptionField& field = *flags->table().FindPath(path);
-      note += " (" + flags->tool() + ": " +
-              field.Format(flags->Owner(path, flags->table().defaults())) + ")";
-    }
+  for (const auto& preset : presets) {
+    const void* owner = nullptr;
+    const OptionField* field =
+        table.FindPath(flag.mlndt_path, &preset.options, &owner);
+    const std::string value = field->Format(owner);
+    if (value == DefaultText(flag, false)) continue;
+    note += std::string(" (") + preset.tool + ": " + value + ")";
   }
   return note;
 }
@@ -170,7 +177,7 @@ std::string OptionsMarkdown() {
     out << "| `--" << flag.name << "` | " << flag.mlndt_path << " | "
         << flag.ndt_path << " | " << TypeName(field.type) << " | "
         << Cell(DefaultText(flag, flag.mlndt_path.empty()) +
-                ToolDefaultsNote(flag.name))
+                ToolDefaultsNote(flag))
         << " | " << field.unit << " | " << Cell(RangeText(field)) << " | "
         << Cell(field.help) << " |\n";
   }

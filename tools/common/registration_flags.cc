@@ -1,6 +1,7 @@
 #include "tools/common/registration_flags.h"
 
 #include <gflags/gflags.h>
+#include <glog/logging.h>
 
 #include <vector>
 
@@ -191,7 +192,14 @@ bool RangeFilterOptionsFromFlags(RangeFilterOptions* filter,
 
 bool RegistrationOptionsFromFlags(RegistrationOptions* options,
                                   std::string* error) {
+  return RegistrationOptionsFromFlags(RegistrationOptions(), options, error);
+}
+
+bool RegistrationOptionsFromFlags(const RegistrationOptions& defaults,
+                                  RegistrationOptions* options,
+                                  std::string* error) {
   MatcherOptions matcher;
+  matcher.mlndt = defaults;
   if (!MatcherOptionsFromFlags(&matcher, error)) return false;
   if (matcher.method != Method::MLNDT) {
     *error = "--method=" + FLAGS_method + ": this tool runs ML-NDT only";
@@ -199,6 +207,26 @@ bool RegistrationOptionsFromFlags(RegistrationOptions* options,
   }
   *options = matcher.mlndt;
   return true;
+}
+
+void ShowRegistrationDefaults(const RegistrationOptions& defaults) {
+  const RegistrationOptions library;
+  for (const OptionFlag& flag : OptionFlags()) {
+    if (flag.mlndt_path.empty()) continue;
+    const void* owner = nullptr;
+    const void* library_owner = nullptr;
+    const OptionField* field =
+        RegistrationOptionsTable().FindPath(flag.mlndt_path, &defaults, &owner);
+    RegistrationOptionsTable().FindPath(
+        flag.mlndt_path, &library, &library_owner);
+    if (field == nullptr) continue;
+    const std::string value = field->Format(owner);
+    if (value == field->Format(library_owner)) continue;
+    CHECK(!gflags::SetCommandLineOptionWithMode(
+               flag.name.c_str(), value.c_str(), gflags::SET_FLAGS_DEFAULT)
+               .empty())
+        << "--" << flag.name << "=" << value;
+  }
 }
 
 }  // namespace tools

@@ -29,9 +29,19 @@ bool RangeFilterOptionsFromFlags(RangeFilterOptions* filter,
                                  std::string* error);
 
 // The registration options of --preset and the ML-NDT flags (ML-NDT only;
-// false with *error for --method=ndt).
+// false with *error for --method=ndt), from `defaults` (the library's, or a
+// tool's preset such as OdometryRegistrationOptions()) unless
+// --preset=paper.
 bool RegistrationOptionsFromFlags(RegistrationOptions* options,
                                   std::string* error);
+bool RegistrationOptionsFromFlags(const RegistrationOptions& defaults,
+                                  RegistrationOptions* options,
+                                  std::string* error);
+
+// Makes the registration flags whose field differs in `defaults` from the
+// library's default show the value of `defaults` in --help (gflags'
+// SET_FLAGS_DEFAULT: the flag stays not given). Call before StartTool.
+void ShowRegistrationDefaults(const RegistrationOptions& defaults);
 
 }  // namespace tools
 }  // namespace mlndt

@@ -9,7 +9,7 @@ namespace ros_core {
 namespace {
 
 // The parameter of an odometry field: its flag, or the shared flag that
-// sets it (--max_flatness sets OdometryOptions::max_flatness).
+// sets it.
 std::string ParameterName(const tools::TableFlags& flags,
                           const std::string& path) {
   const std::string flag = flags.FlagOf(path);

@@ -2,9 +2,8 @@
 
 // The odometry node's parameters, named and read as mlndt_odometry's
 // flags: OdometryOptions' own fields (tools/common/odometry_flags.h:
-// ~local_map_max_keyframes, ~gate_factor, ~confirmation_enabled, ...;
-// ~max_flatness, ~weak_direction_rounds and ~max_mean_score set the
-// odometry's fields of those names), the registration's ML-NDT flags
+// ~local_map_max_keyframes, ~gate_factor, ~confirmation_enabled, ...), the
+// registration's ML-NDT flags over OdometryRegistrationOptions()
 // (registration_parameters.h; the grid flags shape the local map, as
 // --finest_cell_size_m does for the tool), ~preset, the node's settings
 // (node_settings.h) and the frames. Equal parameters and flags give equal

@@ -25,9 +25,7 @@ bool RegistrationPresetFromParameters(const ParameterSource& source,
   if (!GetText(source, "preset", &preset, error)) return false;
   if (preset == "paper") {
     *options = PaperRegistrationOptions();
-  } else if (preset == "default") {
-    *options = RegistrationOptions();
-  } else {
+  } else if (preset != "default") {
     *error = "~preset=" + preset + ": expected default or paper";
     return false;
   }

@@ -24,8 +24,9 @@ void AddRegistrationParameters(
     const std::function<bool(const std::string& path)>& keep,
     OptionParameters* parameters);
 
-// The RegistrationOptions ~preset names: default (the library's) or paper
-// (PaperRegistrationOptions); false with *error for another value.
+// The RegistrationOptions ~preset names: default (*options as the node
+// starts from them: the library's, the odometry's OdometryRegistrationOptions)
+// or paper (PaperRegistrationOptions); false with *error for another value.
 bool RegistrationPresetFromParameters(const ParameterSource& source,
                                       RegistrationOptions* options,
                                       std::string* error);

@@ -23,13 +23,12 @@ ScanReport ReportOf(const OdometryResult& result) {
   report.index = result.index;
   report.stamp_s = result.stamp_s;
   report.pose = result.world_from_sensor;
-  report.predicted = result.predicted;
-  report.termination = result.termination;
+  report.predicted = result.predicted_world_from_sensor;
+  report.termination = result.termination_type;
   report.message = result.message;
   report.registered = !result.fallback;
-  // The registration's covariance is not in OdometryResult; once the result
-  // holds its RegistrationSummary (`result.registration`), a registered pose
-  // gets `result.registration.covariance` here.
+  // A registered pose has no covariance here yet; the registration's is
+  // result.registration.covariance.
   if (result.fallback) {
     report.has_covariance = true;
     report.covariance = PredictionCovariance(result.uncertainty.translation_m,
@@ -42,10 +41,10 @@ ScanReport ReportOf(const OdometryResult& result) {
   report.uncertainty_deg = result.uncertainty.rotation_deg;
   report.map_keyframes = result.map_keyframes;
   report.correction_m = result.correction_m;
-  report.correction_deg = result.correction_deg;
-  report.start_layer = result.start_layer;
-  report.iterations = result.iterations;
-  report.inlier_fraction = result.quality.inlier_fraction;
+  report.correction_deg = result.correction_rad * kRadToDeg;
+  report.start_layer = result.registration.start_layer;
+  report.iterations = result.registration.num_iterations;
+  report.inlier_fraction = result.registration.quality.inlier_fraction;
   report.registration_time_s = result.registration_time_s;
   return report;
 }
