@@ -92,8 +92,7 @@ bool RunInChildProcess(const std::function<BenchEstimate()>& run,
   }
   close(fds[1]);
   EstimateMessage m;
-  const bool received =
-      ReadAll(fds[0], reinterpret_cast<char*>(&m), sizeof(m));
+  const bool received = ReadAll(fds[0], reinterpret_cast<char*>(&m), sizeof(m));
   close(fds[0]);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {

@@ -22,8 +22,9 @@
 // harness of issue 45 (the proxy of the fastest peers): 0.25 m leaves,
 // correspondences within 1 m, PCL 1.13's other defaults (20 neighbours per
 // covariance, at most 200 iterations, transformation epsilon 5e-4; the leaf,
-// the distance and the cap are options). PCL reports convergence at the cap too; `converged` here means
-// it stopped before the cap. Both PCL methods are single-threaded.
+// the distance and the cap are options). PCL reports convergence at the cap
+// too; `converged` here means it stopped before the cap. Both PCL methods are
+// single-threaded.
 
 #include <memory>
 

@@ -66,13 +66,12 @@ class CeresBackend::CostPool {
     p.stride = stride;
     std::vector<const ceres::CostFunction*> costs;
     for (size_t i = 0; i < size(); i += stride) costs.push_back(Get(i));
-    const int threads =
-        ThreadsFor(static_cast<int64_t>(costs.size()),
-                   kMinResidualBlocksPerThread,
-                   max_threads);
+    const int threads = ThreadsFor(static_cast<int64_t>(costs.size()),
+                                   kMinResidualBlocksPerThread,
+                                   max_threads);
     if (threads > 1) {
-      p.cache = std::make_unique<internal::PointEvaluationCache>(
-          costs, xi_, threads);
+      p.cache =
+          std::make_unique<internal::PointEvaluationCache>(costs, xi_, threads);
       for (size_t j = 0; j < costs.size(); ++j) {
         p.cached_costs.push_back(std::make_unique<internal::CachedPointCost>(
             *p.cache, j, *costs[j]));

@@ -23,8 +23,8 @@ namespace {
 PointCloud ReadBundled(const std::string& relative) {
   PointCloud cloud;
   std::string error;
-  CHECK(ReadPointCloud(testing::BundledDataPath(relative), &cloud, nullptr,
-                       &error))
+  CHECK(ReadPointCloud(
+      testing::BundledDataPath(relative), &cloud, nullptr, &error))
       << error;
   return cloud;
 }
@@ -73,7 +73,8 @@ void CheckThreadCounts(const RegistrationOptions& options,
   EXPECT_GT(one.num_iterations, 0);
   for (int threads : {2, 4}) {
     SCOPED_TRACE(std::to_string(threads) + " threads");
-    ExpectSameBits(one, RegisterWithThreads(options, reference, input, threads));
+    ExpectSameBits(one,
+                   RegisterWithThreads(options, reference, input, threads));
   }
 }
 

@@ -51,9 +51,8 @@ void PointEvaluationCache::Fill(bool with_jacobians) {
     const double* parameters[1] = {filled_xi_};
     for (size_t i = n * s / slices; i < n * (s + 1) / slices; ++i) {
       double* jacobian = &jacobians_[18 * i];
-      ok_[i] = costs_[i]->Evaluate(parameters,
-                                   &residuals_[3 * i],
-                                   with_jacobians ? &jacobian : nullptr);
+      ok_[i] = costs_[i]->Evaluate(
+          parameters, &residuals_[3 * i], with_jacobians ? &jacobian : nullptr);
     }
   });
   filled_ = true;

@@ -9,8 +9,8 @@
 // with the thread count. Instead, Ceres runs on one thread and this
 // ceres::EvaluationCallback evaluates every block's cost function before
 // Ceres asks for it: PrepareForEvaluation runs the points' cost functions on
-// `threads` threads (slice_workers.h) at the new xi and keeps each point's residuals
-// (and Jacobian) in its own slot. Ceres' one thread then calls
+// `threads` threads (slice_workers.h) at the new xi and keeps each point's
+// residuals (and Jacobian) in its own slot. Ceres' one thread then calls
 // CachedPointCost, which copies the slot, and sums the cost in block order,
 // as it does without the cache. The blocks, losses, order and sums are the
 // same, and each point's numbers come from the same cost function called

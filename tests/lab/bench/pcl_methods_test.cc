@@ -46,8 +46,9 @@ TEST(PclMethods, NdtAndGicpRegisterTheKoide3Pair) {
     SCOPED_TRACE(labels.method);
     EXPECT_TRUE(labels.is_pcl);
     // NDT's leaf, and GICP's as the peer harness sets it up.
-    EXPECT_EQ(labels.sampling, labels.method == "pcl_ndt" ? "voxel_grid_0.1"
-                                                          : "voxel_grid_0.25");
+    EXPECT_EQ(
+        labels.sampling,
+        labels.method == "pcl_ndt" ? "voxel_grid_0.1" : "voxel_grid_0.25");
     ASSERT_TRUE(method->Prepare(pairs, &error)) << error;
     const BenchEstimate e = method->Run(0, pairs[0]);
     const BenchRun r =
