@@ -13,9 +13,10 @@
 // up little there. A loop is split only when every thread gets at least its
 // `min_items_per_thread`, derived from each item's measured cost.
 //
-// Every loop that uses ThreadsFor writes per-item results or sums in an
-// order that does not depend on the thread count, so the count only changes
-// the speed, never the bits.
+// The map build and the Ceres evaluation write per-item results or sums in
+// an order that does not depend on the thread count, so there the count
+// only changes the speed, never the bits; the Newton and LM sums keep
+// per-thread partials (the same bits for the same count).
 
 #include <algorithm>
 #include <cstdint>
@@ -26,6 +27,12 @@ namespace mlndt {
 // (solvers/internal/point_evaluation_cache.h): one auto-diff evaluation of
 // MlNdtPointCost with its Jacobian takes about 60-100 ns.
 constexpr int64_t kMinResidualBlocksPerThread = 16384;
+
+// Points of a score, gradient and Hessian sum of the Newton and LM backends
+// and the NDT baseline (cost/internal/score_reduction.h): about 50-100 ns
+// a point. These sums are per-thread partials: below this, the one-thread
+// bits.
+constexpr int64_t kMinScorePointsPerThread = 16384;
 
 // Reference points of the map build (grid/layered_grid.cc): each of its
 // parallel loops (bounds, binning, moments) takes about 5 ns a point.
