@@ -24,7 +24,6 @@ const TableFlags kBenchFlags(
      {"pcl_step_size", "pcl_ndt_step_size_m"},
      {"pcl_transformation_epsilon", "pcl_ndt_transformation_epsilon"},
      {"pcl_max_iterations", "pcl_ndt_max_iterations"},
-     {"pcl_gicp_leaf_size", "pcl_gicp_leaf_size_m"},
      {"pcl_gicp_max_correspondence_distance",
       "pcl_gicp_max_correspondence_distance_m"}},
     nullptr);
