@@ -33,8 +33,10 @@ std::string TempPath(const std::string& name) {
 
 // Runs mlndt_bench with `args` (already quoted where needed); stderr goes to
 // a file named after the current test, since ctest may run tests in parallel.
+// The warm sets only (the one-shot ones repeat every pair in a child
+// process; tests/lab/bench/bench_rounds_test.cc tests them).
 ToolRun RunBench(const std::string& args) {
-  return testing::RunTool("mlndt_bench", args);
+  return testing::RunTool("mlndt_bench", args + " --one_shot=false");
 }
 
 const char kCsvHeader[] =
