@@ -47,6 +47,14 @@ bool RunBench(const BenchOptions& options,
       !LoadBenchPairs(options.pairs, &pairs, error)) {
     return false;
   }
+  if (options.one_shot) {
+    const size_t warm = pairs.size();
+    for (size_t p = 0; p < warm; ++p) {
+      pairs.push_back(pairs[p]);
+      pairs.back().set += " one-shot";
+      pairs.back().one_shot = true;
+    }
+  }
   const std::vector<std::unique_ptr<BenchMethod>> methods =
       MakeMethods(options, configurations);
   *result = BenchResult();

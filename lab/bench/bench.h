@@ -26,6 +26,11 @@ struct BenchOptions {
   bool compare_pcl_ndt = false;
   bool compare_pcl_gicp = false;
   PclBenchOptions pcl;
+  // Also time every pair one-shot, each registration in a child process
+  // (lab/bench/bench_child.h), in sets named "<set> one-shot"; the other
+  // sets are warm (every method registers in this process, round after
+  // round).
+  bool one_shot = true;
 };
 
 struct BenchResult {

@@ -12,7 +12,7 @@ const OptionTable& PclBenchOptionsTable() {
                   &S::leaf_size_m,
                   "m",
                   LeftOpen(0.0, 1e9),
-                  "VoxelGrid leaf size for both clouds, PCL NDT and GICP.")
+                  "PCL NDT: VoxelGrid leaf size for both clouds.")
           .Double("ndt_resolution_m",
                   &S::ndt_resolution_m,
                   "m",
@@ -34,6 +34,11 @@ const OptionTable& PclBenchOptionsTable() {
                &S::ndt_max_iterations,
                AtLeast(1),
                "PCL NDT: iteration cap.")
+          .Double("gicp_leaf_size_m",
+                  &S::gicp_leaf_size_m,
+                  "m",
+                  LeftOpen(0.0, 1e9),
+                  "PCL GICP: VoxelGrid leaf size for both clouds.")
           .Double("gicp_max_correspondence_distance_m",
                   &S::gicp_max_correspondence_distance_m,
                   "m",
@@ -115,6 +120,11 @@ const OptionTable& BenchOptionsTable() {
                 &S::compare_pcl_gicp,
                 "Also run pcl::GeneralizedIterativeClosestPoint (needs "
                 "-DMLNDT_WITH_PCL=ON).")
+          .Bool("one_shot",
+                &S::one_shot,
+                "Also time every pair one-shot (a child process per "
+                "registration), as the sets '<set> one-shot'; the others "
+                "are warm (in this process).")
           .Struct("pcl",
                   &S::pcl,
                   PclBenchOptionsTable(),

@@ -36,6 +36,8 @@ struct ScanPair {
   // The consensus of reference_pairs.json.
   Isometry3d reference_from_input_truth = Isometry3d::Identity();
   Isometry3d initial_reference_from_input = Isometry3d::Identity();
+  // Each registration in a child process of its own (bench_child.h).
+  bool one_shot = false;
 };
 
 // What to load. An empty list is refused (mlndt_bench passes a list flag it

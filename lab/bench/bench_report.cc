@@ -9,7 +9,7 @@
 namespace mlndt {
 namespace {
 
-// The row's times; the ratio against PCL NDT for our rows only.
+// The row's times; the ratio against the peer for our rows only.
 BenchRowTimes TimesOf(const BenchMethodLabels& labels,
                       const BenchRowStats& s,
                       const BenchRowStats* pcl) {
@@ -26,10 +26,14 @@ std::string CsvNumber(double v) {
   return out.str();
 }
 
-// The index of PCL NDT's method (the pcl/ours column's numerator), or -1.
-int PclNdtIndex(const BenchResult& result) {
-  for (size_t m = 0; m < result.methods.size(); ++m) {
-    if (result.methods[m].method == "pcl_ndt") return static_cast<int>(m);
+// The index of the peer whose time is the pcl/ours column's numerator: PCL
+// GICP (the proxy of the fastest peers, docs/performance.md) when it ran,
+// else PCL NDT; -1 when neither did.
+int PclPeerIndex(const BenchResult& result) {
+  for (const char* peer : {"pcl_gicp", "pcl_ndt"}) {
+    for (size_t m = 0; m < result.methods.size(); ++m) {
+      if (result.methods[m].method == peer) return static_cast<int>(m);
+    }
   }
   return -1;
 }
@@ -82,9 +86,10 @@ std::string Notes(const BenchOptions& options,
          "on the last layer (mlndt only)\n"
       << "- nees: e^T P^-1 e of the usable runs against the reference, P = "
          "the registration covariance (6 if consistent)\n";
-  if (HasMethod(result, "pcl_ndt")) {
-    out << "- pcl/ours: median over rounds of the per-round time ratio; "
-           "pcl_ndt is single-threaded\n";
+  if (HasMethod(result, "pcl_ndt") || HasMethod(result, "pcl_gicp")) {
+    out << "- pcl/ours: median over rounds of the per-round time ratio "
+        << (HasMethod(result, "pcl_gicp") ? "pcl_gicp" : "pcl_ndt")
+        << " / ours; the PCL peers are single-threaded\n";
   }
   if (HasMethod(result, "pcl_gicp")) {
     out << "- pcl_gicp: single-threaded; its time covers filtering, "
@@ -224,7 +229,7 @@ std::string BenchReportText(const BenchOptions& options,
                             const BenchResult& result) {
   std::vector<std::vector<std::string>> table = {BenchTableHeader()};
   std::vector<std::string> notes;
-  const int pcl = PclNdtIndex(result);
+  const int pcl = PclPeerIndex(result);
   for (size_t k = 0; k < result.sets.size(); ++k) {
     const std::vector<BenchRowStats>& stats = result.stats[k];
     for (size_t m = 0; m < stats.size(); ++m) {
@@ -247,7 +252,7 @@ std::string BenchReportText(const BenchOptions& options,
 
 std::string BenchCsvText(const BenchResult& result) {
   std::string csv = BenchCsvHeader();
-  const int pcl = PclNdtIndex(result);
+  const int pcl = PclPeerIndex(result);
   for (size_t k = 0; k < result.sets.size(); ++k) {
     const std::vector<BenchRowStats>& stats = result.stats[k];
     for (size_t m = 0; m < stats.size(); ++m) {

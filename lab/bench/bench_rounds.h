@@ -3,7 +3,9 @@
 // mlndt_bench's round robin: every method on every pair, `repetitions`
 // rounds. Each round alternates the methods pair by pair and rotates their
 // order from round to round (round r starts with method r mod M), so that
-// machine noise hits all methods alike.
+// machine noise hits all methods alike. The one-shot pairs
+// (ScanPair::one_shot) run first, each registration in a child process
+// (bench_child.h); then the warm-up and the other pairs, in this process.
 
 #include <functional>
 #include <memory>

@@ -105,7 +105,10 @@ class PclMethod : public BenchMethod {
   BenchMethodLabels Labels() const override {
     BenchMethodLabels labels;
     labels.method = gicp_ ? "pcl_gicp" : "pcl_ndt";
-    labels.sampling = "voxel_grid_" + BenchFormat("%g", options_.leaf_size_m);
+    labels.sampling =
+        "voxel_grid_" +
+        BenchFormat("%g",
+                    gicp_ ? options_.gicp_leaf_size_m : options_.leaf_size_m);
     return labels;
   }
 
@@ -119,7 +122,7 @@ class PclMethod : public BenchMethod {
       gicp.setMaxCorrespondenceDistance(
           options_.gicp_max_correspondence_distance_m);
       gicp.setMaximumIterations(options_.gicp_max_iterations);
-      return Align(reference, input, options_.leaf_size_m, guess, &gicp);
+      return Align(reference, input, options_.gicp_leaf_size_m, guess, &gicp);
     }
     pcl::NormalDistributionsTransform<PclPoint, PclPoint> ndt;
     ndt.setTransformationEpsilon(options_.ndt_transformation_epsilon);

@@ -9,6 +9,7 @@
 #include "mlndt/common/internal/check_option.h"
 #include "mlndt/common/internal/farthest_point.h"
 #include "mlndt/common/option_table.h"
+#include "mlndt/common/thread_budget.h"
 #include "mlndt/grid/cell_coverage.h"
 
 namespace mlndt {
@@ -70,10 +71,6 @@ struct LayerGeometry {
 
 // More threads than this are refused (libgomp fails far beyond it).
 constexpr int kMaxThreads = 256;
-
-// Layers with fewer cells than this finish on one thread: forking the team
-// costs more than ~100 eigen-decompositions.
-constexpr int64_t kMinCellsToParallelise = 128;
 
 // The reference cloud's bounding box, or false when a point is not finite:
 // AllFinite and BoundingBox in one pass, split into `threads` chunks whose
@@ -308,8 +305,11 @@ NdtLayer FinishLayer(const RawLayer& raw,
   const int64_t num_dense = static_cast<int64_t>(dense.size());
   std::vector<NdtCell> cells(dense.size());
   std::vector<char> made(dense.size());
-#pragma omp parallel for num_threads(threads) \
-    schedule(static) if (threads > 1 && num_dense >= kMinCellsToParallelise)
+  // Per cell, in its own slot: the thread count changes no bit.
+  const int cell_threads =
+      ThreadsFor(num_dense, kMinMapCellsPerThread, threads);
+#pragma omp parallel for num_threads(cell_threads) \
+    schedule(static) if (cell_threads > 1)
   for (int64_t j = 0; j < num_dense; ++j) {
     const size_t i = static_cast<size_t>(dense[static_cast<size_t>(j)]);
     made[static_cast<size_t>(j)] = MakeCell(raw.moments[i],
@@ -590,6 +590,11 @@ bool LayeredGrid::Build(const LayeredGridOptions& options,
     *error = "the reference cloud is empty";
     return false;
   }
+  // Small clouds are built on one thread (thread_budget.h); the map's bits
+  // do not depend on the count.
+  num_threads = ThreadsFor(static_cast<int64_t>(reference.size()),
+                           kMinMapPointsPerThread,
+                           num_threads);
   Eigen::AlignedBox3d bounds;
   if (!ScanBounds(reference.points(), num_threads, &bounds)) {
     *error = "the reference cloud has non-finite points";

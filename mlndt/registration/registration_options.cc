@@ -114,9 +114,11 @@ const OptionTable& RegistrationOptionsTable() {
           .Int("num_threads",
                &S::num_threads,
                Closed(1, 256),
-               "Threads for the map build and the backend (Ceres evaluator "
-               "threads, or OpenMP threads for newton and lm); with > 1 on a "
-               "loaded machine set OMP_WAIT_POLICY=passive.")
+               "Threads for the map build and the backend (the Ceres "
+               "backend's residual evaluation, or OpenMP threads for newton "
+               "and lm); work too small to share stays on one thread. Ceres: "
+               "the same result for any count. newton/lm with > 1 on a "
+               "loaded machine: set OMP_WAIT_POLICY=passive.")
           .Double("min_matched_fraction",
                   &S::min_matched_fraction,
                   "",

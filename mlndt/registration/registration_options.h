@@ -96,9 +96,13 @@ struct RegistrationOptions {
   // Which minimiser, with its options.
   BackendOptions backend;
   // Threads for the whole registration: the map build (when Register builds
-  // the map) and the backend (Ceres' evaluator threads, or OpenMP threads
-  // over points). In [1, 256]. OpenMP threads busy-wait between parallel
-  // regions: on a loaded machine, run with OMP_WAIT_POLICY=passive.
+  // the map) and the backend (the Ceres backend's residual evaluation, or
+  // OpenMP threads over points for newton and lm). In [1, 256]. Work too
+  // small to share stays on one thread (common/thread_budget.h). With the
+  // Ceres backend the result has the same bits for any count; newton and lm
+  // sum per-thread partials (same bits for the same count). OpenMP threads
+  // busy-wait between parallel regions: on a loaded machine, run newton and
+  // lm with OMP_WAIT_POLICY=passive.
   int num_threads = 1;
   // The result is reported as FAILURE when fewer than this fraction of the
   // sampled points are matched to a cell at the solution. In [0, 1].

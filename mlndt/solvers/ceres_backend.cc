@@ -6,10 +6,12 @@
 #include <glog/logging.h>
 
 #include "mlndt/common/option_table.h"
+#include "mlndt/common/thread_budget.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/cost/layer_binding.h"
 #include "mlndt/cost/mlndt_point_cost.h"
 #include "mlndt/cost/mlndt_point_cost_analytic.h"
+#include "mlndt/solvers/internal/point_evaluation_cache.h"
 
 namespace mlndt {
 
@@ -51,25 +53,47 @@ class CeresBackend::CostPool {
   // the later stages with the same stride: its blocks read the layer through
   // the binding, and its one parameter block is `xi()`. Stages with the same
   // stride thus solve the same Problem (same blocks, same order) on another
-  // layer, as a freshly built one would.
-  ceres::Problem& ProblemForStride(size_t stride, const ObjectiveOptions& o) {
+  // layer, as a freshly built one would. With more than one thread for its
+  // blocks (thread_budget.h), a PointEvaluationCache evaluates them in
+  // parallel; the results do not change (point_evaluation_cache.h).
+  ceres::Problem& ProblemForStride(size_t stride,
+                                   const ObjectiveOptions& o,
+                                   int max_threads) {
     for (StrideProblem& p : problems_) {
       if (p.stride == stride) return *p.problem;
+    }
+    StrideProblem p;
+    p.stride = stride;
+    std::vector<const ceres::CostFunction*> costs;
+    for (size_t i = 0; i < size(); i += stride) costs.push_back(Get(i));
+    const int threads = ThreadsFor(static_cast<int64_t>(costs.size()),
+                                   kMinResidualBlocksPerThread,
+                                   max_threads);
+    if (threads > 1) {
+      p.cache =
+          std::make_unique<internal::PointEvaluationCache>(costs, xi_, threads);
+      for (size_t j = 0; j < costs.size(); ++j) {
+        p.cached_costs.push_back(std::make_unique<internal::CachedPointCost>(
+            *p.cache, j, *costs[j]));
+      }
     }
     ceres::Problem::Options problem_options;
     // The residual blocks are built here, correctly by construction; the
     // checks cost more than the blocks on small stages.
     problem_options.disable_all_safety_checks = true;
     problem_options.cost_function_ownership =
-        ceres::DO_NOT_TAKE_OWNERSHIP;  // The pool's.
-    auto problem = std::make_unique<ceres::Problem>(problem_options);
+        ceres::DO_NOT_TAKE_OWNERSHIP;  // The pool's and p's.
+    problem_options.evaluation_callback = p.cache.get();
+    p.problem = std::make_unique<ceres::Problem>(problem_options);
     // One loss object for every block: the Problem frees it once (if used).
     std::unique_ptr<ceres::LossFunction> loss(CreateLoss(o.loss, o.loss_scale));
-    for (size_t i = 0; i < size(); i += stride) {
-      problem->AddResidualBlock(Get(i), loss.get(), xi_);
+    for (size_t j = 0; j < costs.size(); ++j) {
+      ceres::CostFunction* cost =
+          p.cache != nullptr ? p.cached_costs[j].get() : Get(j * stride);
+      p.problem->AddResidualBlock(cost, loss.get(), xi_);
     }
-    if (problem->NumResidualBlocks() > 0) loss.release();
-    problems_.push_back({stride, std::move(problem)});
+    if (p.problem->NumResidualBlocks() > 0) loss.release();
+    problems_.push_back(std::move(p));
     return *problems_.back().problem;
   }
 
@@ -78,8 +102,12 @@ class CeresBackend::CostPool {
   double* xi() { return xi_; }
 
  private:
+  // Destroyed in reverse order: the Problem before the costs and the cache
+  // it uses.
   struct StrideProblem {
-    size_t stride;
+    size_t stride = 1;
+    std::unique_ptr<internal::PointEvaluationCache> cache;  // Or null.
+    std::vector<std::unique_ptr<internal::CachedPointCost>> cached_costs;
     std::unique_ptr<ceres::Problem> problem;
   };
 
@@ -185,7 +213,7 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   CHECK_GE(control.point_stride, 1);
   pool_->Bind(layer);
   ceres::Problem& problem = pool_->ProblemForStride(
-      static_cast<size_t>(control.point_stride), objective_);
+      static_cast<size_t>(control.point_stride), objective_, num_threads_);
   double* xi = pool_->xi();
   Eigen::Map<Vector6d> xi_map(xi);
   xi_map = *reference_from_input_xi;
@@ -198,7 +226,10 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   solver_options.minimizer_type = options_.minimizer_type;
   solver_options.line_search_direction_type =
       options_.line_search_direction_type;
-  solver_options.num_threads = num_threads_;
+  // Ceres' evaluator threads would sum the cost in scheduler-dependent
+  // partial sums; the blocks are evaluated in parallel by the Problem's
+  // PointEvaluationCache instead, and Ceres sums on one thread.
+  solver_options.num_threads = 1;
   solver_options.max_num_iterations = control.max_iterations;
   solver_options.minimizer_progress_to_stdout = false;
   solver_options.logging_type = ceres::SILENT;

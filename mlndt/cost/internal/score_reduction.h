@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "mlndt/common/thread_budget.h"
 #include "mlndt/cost/score.h"
 
 namespace mlndt {
@@ -21,12 +22,18 @@ namespace internal {
 // each, and sums the partial evaluations in slice order. The slices and the
 // order of the sum do not depend on the scheduler: a given thread count
 // always gives the same bits. `threads` >= 1.
+//
+// Fewer points than kMinScorePointsPerThread a thread (thread_budget.h) are
+// summed on fewer threads: a small problem gets the one-thread bits.
 template <typename AccumulateSlice>
 ScoreEvaluation ReduceScoreInSlices(size_t n,
-                                    int threads,
+                                    int max_threads,
                                     const AccumulateSlice& accumulate) {
+  const int threads = ThreadsFor(
+      static_cast<int64_t>(n), kMinScorePointsPerThread, max_threads);
   std::vector<ScoreEvaluation> partial(static_cast<size_t>(threads));
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
+#pragma omp parallel for num_threads(threads) \
+    schedule(static, 1) if (threads > 1)
   for (int t = 0; t < threads; ++t) {
     const size_t begin =
         n * static_cast<size_t>(t) / static_cast<size_t>(threads);

@@ -90,5 +90,26 @@ TEST(RunBenchRounds, NoWarmupWhenAskedNot) {
   EXPECT_EQ(log, (std::vector<std::string>{"0@0"}));
 }
 
+// A one-shot pair runs in a child process: the parent's log does not see
+// the run, but its estimate comes back and is scored.
+TEST(RunBenchRounds, OneShotPairsRunInAChildProcessAndReport) {
+  std::vector<std::string> log;
+  std::vector<std::unique_ptr<BenchMethod>> methods;
+  methods.push_back(std::make_unique<FakeMethod>(3, 0.5, &log));
+  std::vector<ScanPair> pairs(2);
+  pairs[1].one_shot = true;
+  BenchRoundsOptions options;
+  options.repetitions = 2;
+  const auto results = RunBenchRounds(options, methods, pairs);
+  // Only the warm pair's warm-up and rounds ran in this process.
+  EXPECT_EQ(log, (std::vector<std::string>{"3@0", "3@0", "3@0"}));
+  for (int round = 0; round < 2; ++round) {
+    const BenchRun& run = results[0][round][1];
+    EXPECT_EQ(run.time_ms, 3.0);
+    EXPECT_NEAR(run.translation_error_m, 0.5, 1e-12);
+    EXPECT_FALSE(run.success);
+  }
+}
+
 }  // namespace
 }  // namespace mlndt
