@@ -68,6 +68,22 @@ Isometry3d RandomOffset(std::mt19937_64* rng) {
   return offset;
 }
 
+// tx,ty,tz,alpha,beta,gamma [m, deg] (R = Rx Ry Rz), to reproduce a start.
+std::string OffsetText(const Isometry3d& offset) {
+  const Vector6d xi = IsometryToPoseVector(offset);
+  char text[160];
+  std::snprintf(text,
+                sizeof(text),
+                "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f",
+                xi(0),
+                xi(1),
+                xi(2),
+                xi(3) * kRadToDeg,
+                xi(4) * kRadToDeg,
+                xi(5) * kRadToDeg);
+  return text;
+}
+
 // Counts of one half.
 struct Counts {
   int scans = 0;
@@ -150,7 +166,8 @@ int Run() {
     }
     std::mt19937_64 rng(FLAGS_seed * 1000003u + k);
     const Isometry3d& truth = poses.poses()[k];
-    const Isometry3d guess = truth * RandomOffset(&rng);
+    const Isometry3d offset = RandomOffset(&rng);
+    const Isometry3d guess = truth * offset;
     // What Localizer::LocalizeFrom runs, with the check's summary.
     RegistrationSummary summary;
     PriorCheckSummary check;
@@ -168,7 +185,7 @@ int Run() {
     const PoseError e = ComputePoseError(truth, estimate);
     const bool right = tolerance.IsWithin(e);
     halves[i % 2].Add(type, right);
-    std::printf("%-4d %-4zu %-5s %-16s %9.3f %6.2f %9.3f %4d %4d %5.3f  %s\n",
+    std::printf("%-4d %-4zu %-5s %-16s %9.3f %6.2f %9.3f %4d %4d %5.3f  %s  offset %s\n",
                 i,
                 k,
                 i % 2 == 0 ? "train" : "test",
@@ -179,7 +196,8 @@ int Run() {
                 check.explored_starts,
                 check.usable_within,
                 summary.quality.inlier_fraction,
-                right ? "right" : "WRONG");
+                right ? "right" : "WRONG",
+                OffsetText(offset).c_str());
   }
   halves[0].Print("train");
   halves[1].Print("test");

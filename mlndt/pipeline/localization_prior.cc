@@ -156,9 +156,12 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
     RegistrationSummary s;
     Register(with_prior, map, scan, start, &s);
     ++c.explored_starts;
+    c.explored_time_s += s.total_time_s;
     keep(s);
   }
   c.usable_within = static_cast<int>(kept.size());
+  // The scan's time is every run's (solve_time_s stays the kept run's).
+  const double all_runs_s = summary->total_time_s + c.explored_time_s;
 
   if (kept.empty()) {
     // Step 4: nothing usable within the prior fits the map well enough.
@@ -206,6 +209,7 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
       Demote(TerminationType::DEGENERATE, why, summary);
     }
   }
+  summary->total_time_s = all_runs_s;
   c.from_guess_m = TranslationErrorM(guess, summary->reference_from_input);
   c.from_guess_deg =
       RotationErrorRad(guess, summary->reference_from_input) * kRadToDeg;

@@ -77,6 +77,7 @@ struct PriorCheckOptions {
 // What the prior's checks found.
 struct PriorCheckSummary {
   int explored_starts = 0;   // Registrations besides the one from the guess.
+  double explored_time_s = 0.0;  // Their total_time_s, summed.
   int usable_within = 0;     // Usable results within the prior (all runs).
   bool moved_to_other_start = false;  // The kept result is an explored one.
   // The kept result's distance from the guess [m], [deg].
@@ -95,7 +96,8 @@ bool WithinPrior(const InitialGuessUncertainty& prior,
 
 // Registers `scan` onto `map` from `guess` with uncertainty `prior` and
 // applies steps 1-4 to the verdict; *summary is the kept registration's,
-// its termination and message changed by steps 3-4. `check` may be null.
+// its termination and message changed by steps 3-4, its total_time_s that
+// of every run. `check` may be null.
 void RegisterWithinPrior(const PriorCheckOptions& options,
                          const RegistrationOptions& registration,
                          const LayeredGrid& map,
