@@ -113,11 +113,11 @@ bool CheckFlags(LocalizerOptions* options,
                                     FLAGS_initial_matrix,
                                     FLAGS_initial_poses,
                                     error) ||
-      !tools::CheckGuessesFlag(FLAGS_guesses,
-                               FLAGS_initial_guess + FLAGS_initial_matrix +
-                                   FLAGS_initial_poses,
-                               FLAGS_guesses_max_time_difference_s,
-                               error)) {
+      !tools::CheckGuessesFlag(
+          FLAGS_guesses,
+          FLAGS_initial_guess + FLAGS_initial_matrix + FLAGS_initial_poses,
+          FLAGS_guesses_max_time_difference_s,
+          error)) {
     return false;
   }
   // --motion_model (LocalizerOwnOptionsTable).
@@ -137,6 +137,19 @@ bool CheckFlags(LocalizerOptions* options,
          input->ReadBagStamps(error);
 }
 
+// trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
+int Plot(bool gnuplot_ok,
+         const LayeredGrid& map,
+         const std::vector<LocalizationResult>& results) {
+  return tools::WriteLocalizationPlotOrFail(kTool,
+                                            gnuplot_ok,
+                                            FLAGS_output_dir,
+                                            map,
+                                            results,
+                                            FLAGS_plot_max_cells,
+                                            FLAGS_gnuplot);
+}
+
 int Run() {
   const double start = NowSeconds();
   LocalizerOptions options;
@@ -146,22 +159,19 @@ int Run() {
   const std::vector<std::string>& paths = input.names();
   Isometry3d first_guess;
   std::vector<Isometry3d> guesses;
-  if (!tools::InitialPoseFromFlags(FLAGS_initial_guess,
-                                   FLAGS_initial_matrix,
-                                   FLAGS_initial_poses,
-                                   FLAGS_initial_poses_format,
-                                   FLAGS_calib,
-                                   &first_guess,
-                                   &error) ||
-      (!FLAGS_guesses.empty() &&
-       !tools::ReadScanGuesses(FLAGS_guesses,
-                               input,
-                               FLAGS_guesses_max_time_difference_s,
-                               &guesses,
-                               &error))) {
+  if (!tools::InitialGuessesFromFlags({FLAGS_initial_guess,
+                                       FLAGS_initial_matrix,
+                                       FLAGS_initial_poses,
+                                       FLAGS_initial_poses_format,
+                                       FLAGS_calib},
+                                      FLAGS_guesses,
+                                      FLAGS_guesses_max_time_difference_s,
+                                      input,
+                                      &first_guess,
+                                      &guesses,
+                                      &error)) {
     return tools::Refuse(kTool, error);
   }
-  if (!guesses.empty()) first_guess = guesses.front();
   LayeredGrid map;
   if (!tools::LoadLocalizationMap(FLAGS_map, options, &map, &error)) {
     return tools::Refuse(kTool, error);
@@ -169,11 +179,7 @@ int Run() {
   const double map_load_s = NowSeconds() - start;
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
-                               {"scans.csv",
-                                "scans.json",
-                                "summary.json",
-                                "trajectory_kitti.txt",
-                                "trajectory_tum.txt"},
+                               tools::LocalizationOutputFiles(),
                                &error) ||
       !tools::StartOutputSet(FLAGS_output_dir, &error)) {
     return tools::Refuse(kTool, error);
@@ -197,15 +203,7 @@ int Run() {
   }
   const VerdictCounts verdicts = tools::PrintLocalizationTable(paths, results);
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
-  const int plot = FLAGS_plots ? tools::WriteLocalizationPlotOrFail(
-                                     kTool,
-                                     gnuplot_ok,
-                                     FLAGS_output_dir,
-                                     map,
-                                     results,
-                                     FLAGS_plot_max_cells,
-                                     FLAGS_gnuplot)
-                               : 0;
+  const int plot = FLAGS_plots ? Plot(gnuplot_ok, map, results) : 0;
   // summary.json last, naming the files written (output_set.h).
   std::vector<std::string> files = {
       "trajectory_kitti.txt", "trajectory_tum.txt", "scans.csv", "scans.json"};

@@ -185,19 +185,21 @@ int Run() {
     const PoseError e = ComputePoseError(truth, estimate);
     const bool right = tolerance.IsWithin(e);
     halves[i % 2].Add(type, right);
-    std::printf("%-4d %-4zu %-5s %-16s %9.3f %6.2f %9.3f %4d %4d %5.3f  %s  offset %s\n",
-                i,
-                k,
-                i % 2 == 0 ? "train" : "test",
-                TerminationTypeToString(type),
-                e.translation_m,
-                e.rotation_deg(),
-                TranslationErrorM(guess, estimate),
-                check.explored_starts,
-                check.usable_within,
-                summary.quality.inlier_fraction,
-                right ? "right" : "WRONG",
-                OffsetText(offset).c_str());
+    std::printf(
+        "%-4d %-4zu %-5s %-16s %9.3f %6.2f %9.3f %4d %4d %5.3f  %s  offset "
+        "%s\n",
+        i,
+        k,
+        i % 2 == 0 ? "train" : "test",
+        TerminationTypeToString(type),
+        e.translation_m,
+        e.rotation_deg(),
+        TranslationErrorM(guess, estimate),
+        check.explored_starts,
+        check.usable_within,
+        summary.quality.inlier_fraction,
+        right ? "right" : "WRONG",
+        OffsetText(offset).c_str());
   }
   halves[0].Print("train");
   halves[1].Print("test");

@@ -86,9 +86,59 @@ void Demote(TerminationType type,
             const std::string& why,
             RegistrationSummary* summary) {
   summary->message = why + " (the registration said " +
-                     TerminationTypeToString(summary->termination_type) +
-                     ": " + summary->message + ")";
+                     TerminationTypeToString(summary->termination_type) + ": " +
+                     summary->message + ")";
   summary->termination_type = type;
+}
+
+void DemotePoorFit(double min_inliers, RegistrationSummary* summary) {
+  char why[160];
+  std::snprintf(why,
+                sizeof(why),
+                "fits the map worse than the map's own points do: "
+                "inliers %.3f < %.3f",
+                summary->quality.inlier_fraction,
+                min_inliers);
+  Demote(TerminationType::LOW_QUALITY, why, summary);
+}
+
+void DemoteNotKept(const InitialGuessUncertainty& prior,
+                   const Isometry3d& guess,
+                   double min_inliers,
+                   RegistrationSummary* summary) {
+  char why[240];
+  std::snprintf(
+      why,
+      sizeof(why),
+      "no usable result within the prior fits the map as its own points do "
+      "(inliers >= %.3f): the registration's is %.2f m, %.1f deg from the "
+      "guess (prior %.2f m, %.1f deg), inliers %.3f; outside the prior or a "
+      "look-alike place",
+      min_inliers,
+      TranslationErrorM(guess, summary->reference_from_input),
+      RotationErrorRad(guess, summary->reference_from_input) * kRadToDeg,
+      prior.translation_m,
+      prior.rotation_deg,
+      summary->quality.inlier_fraction);
+  Demote(TerminationType::LOW_QUALITY, why, summary);
+}
+
+void DemoteAmbiguous(const RegistrationSummary& rival,
+                     RegistrationSummary* summary) {
+  char why[200];
+  std::snprintf(
+      why,
+      sizeof(why),
+      "another minimum within the prior fits as well: %.2f m, %.1f deg away, "
+      "inliers %.3f against %.3f",
+      TranslationErrorM(summary->reference_from_input,
+                        rival.reference_from_input),
+      RotationErrorRad(summary->reference_from_input,
+                       rival.reference_from_input) *
+          kRadToDeg,
+      rival.quality.inlier_fraction,
+      summary->quality.inlier_fraction);
+  Demote(TerminationType::DEGENERATE, why, summary);
 }
 
 }  // namespace
@@ -107,7 +157,8 @@ bool PriorCheckOptions::IsValid(std::string* error) const {
 }
 
 double GaussianInlierShare(double gate) {
-  // chi2 with 3 degrees of freedom: erf(g / sqrt 2) - sqrt(2 / pi) g e^(-g^2/2).
+  // chi2 with 3 degrees of freedom: erf(g / sqrt 2) - sqrt(2 / pi) g
+  // e^(-g^2/2).
   return std::erf(gate / std::sqrt(2.0)) -
          std::sqrt(2.0 / M_PI) * gate * std::exp(-0.5 * gate * gate);
 }
@@ -135,13 +186,20 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
   RegistrationOptions with_prior = registration;
   if (prior.given) with_prior.initial_uncertainty = prior;
   Register(with_prior, map, scan, guess, summary);
-  if (!prior.given) return;
-
-  // Step 2: every usable result within the prior that fits as the map's
-  // own points do, the first run's first.
   const double min_inliers =
       options.min_fit_ratio *
       GaussianInlierShare(registration.quality_check.inlier_gate);
+  if (!prior.given) {
+    // No prior: the fit alone.
+    if (summary->IsSolutionUsable() &&
+        summary->quality.inlier_fraction < min_inliers) {
+      DemotePoorFit(min_inliers, summary);
+    }
+    return;
+  }
+
+  // Step 2: every usable result within the prior that fits as the map's
+  // own points do, the first run's first.
   std::vector<RegistrationSummary> kept;
   const auto keep = [&](const RegistrationSummary& s) {
     if (s.IsSolutionUsable() &&
@@ -151,8 +209,9 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
     }
   };
   keep(*summary);
-  for (const Isometry3d& start : ExploreStarts(
-           options, prior, summary->finest_cell_size_m, guess)) {
+  const bool first_kept = !kept.empty();
+  for (const Isometry3d& start :
+       ExploreStarts(options, prior, summary->finest_cell_size_m, guess)) {
     RegistrationSummary s;
     Register(with_prior, map, scan, start, &s);
     ++c.explored_starts;
@@ -166,48 +225,17 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
   if (kept.empty()) {
     // Step 4: nothing usable within the prior fits the map well enough.
     if (summary->IsSolutionUsable()) {
-      char why[240];
-      std::snprintf(why,
-                    sizeof(why),
-                    "no usable result within the prior fits the map as its "
-                    "own points do (inliers >= %.3f): the registration's is "
-                    "%.2f m, %.1f deg from the guess (prior %.2f m, %.1f "
-                    "deg), inliers %.3f; outside the prior or a look-alike "
-                    "place",
-                    min_inliers,
-                    TranslationErrorM(guess, summary->reference_from_input),
-                    RotationErrorRad(guess, summary->reference_from_input) *
-                        kRadToDeg,
-                    prior.translation_m,
-                    prior.rotation_deg,
-                    summary->quality.inlier_fraction);
-      Demote(TerminationType::LOW_QUALITY, why, summary);
+      DemoteNotKept(prior, guess, min_inliers, summary);
     }
   } else {
     size_t best = 0;
     for (size_t i = 1; i < kept.size(); ++i) {
       if (FitsBetter(kept[i], kept[best])) best = i;
     }
-    c.moved_to_other_start = best != 0 || !summary->IsSolutionUsable() ||
-                             !WithinPrior(prior, guess,
-                                          summary->reference_from_input);
+    c.moved_to_other_start = !first_kept || best != 0;
     const RegistrationSummary* rival = Rival(options, kept, kept[best]);
     *summary = kept[best];
-    if (rival != nullptr) {
-      char why[200];
-      std::snprintf(why,
-                    sizeof(why),
-                    "another minimum within the prior fits as well: %.2f m, "
-                    "%.1f deg away, inliers %.3f against %.3f",
-                    TranslationErrorM(summary->reference_from_input,
-                                      rival->reference_from_input),
-                    RotationErrorRad(summary->reference_from_input,
-                                     rival->reference_from_input) *
-                        kRadToDeg,
-                    rival->quality.inlier_fraction,
-                    summary->quality.inlier_fraction);
-      Demote(TerminationType::DEGENERATE, why, summary);
-    }
+    if (rival != nullptr) DemoteAmbiguous(*rival, summary);
   }
   summary->total_time_s = all_runs_s;
   c.from_guess_m = TranslationErrorM(guess, summary->reference_from_input);

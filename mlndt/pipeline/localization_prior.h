@@ -41,8 +41,9 @@
 // the scan). A map of another session (moved objects) or that misses part
 // of what the scan sees needs a lower ratio.
 //
-// A prior that is not given (InitialGuessUncertainty::given false) leaves
-// the registration's verdict as it is (none of 1-4 runs).
+// A prior that is not given (InitialGuessUncertainty::given false): none of
+// 1-4 runs, and a usable result that fits the map worse than the map's own
+// points do is LOW_QUALITY.
 
 #include <string>
 
@@ -76,9 +77,9 @@ struct PriorCheckOptions {
 
 // What the prior's checks found.
 struct PriorCheckSummary {
-  int explored_starts = 0;   // Registrations besides the one from the guess.
+  int explored_starts = 0;  // Registrations besides the one from the guess.
   double explored_time_s = 0.0;  // Their total_time_s, summed.
-  int usable_within = 0;     // Usable results within the prior (all runs).
+  int usable_within = 0;         // Usable results within the prior (all runs).
   bool moved_to_other_start = false;  // The kept result is an explored one.
   // The kept result's distance from the guess [m], [deg].
   double from_guess_m = 0.0;

@@ -66,7 +66,9 @@ struct LocalizerOptions {
   double guess_translation_m = 0.0;
   double guess_rotation_deg = 0.0;
   // How far the prediction of a scan whose previous scan was usable may be
-  // from the truth [m], [deg]; both 0: not stated.
+  // from the truth [m], [deg]; both 0: not stated. It depends on the
+  // sensor's motion (a car's 1 m between frames, a hand-held sensor's sweeps
+  // of 15 deg): the caller states it (docs/maps.md).
   double prediction_translation_m = 0.0;
   double prediction_rotation_deg = 0.0;
   // Added to the prediction's (or the first guess's) uncertainty per
@@ -151,9 +153,10 @@ using ScanLoader =
 using LocalizationCallback = std::function<void(const LocalizationResult&)>;
 
 // Localises scans 0..num_scans-1 in order, loading each one when its turn
-// comes into one reused cloud, each from the prediction. `on_result` may be empty; `results` gets
-// every result (cleared first). False with *error on invalid options, an
-// empty map or a scan that cannot be loaded (the results so far are kept).
+// comes into one reused cloud, each from the prediction. `on_result` may be
+// empty; `results` gets every result (cleared first). False with *error on
+// invalid options, an empty map or a scan that cannot be loaded (the results so
+// far are kept).
 bool LocalizeScans(const LocalizerOptions& options,
                    const LayeredGrid& map,
                    const Isometry3d& first_map_from_scan,

@@ -33,7 +33,8 @@ const Livox* TheLivox(const std::string& data_dir, std::string* error) {
   auto* l = new Livox;
   const std::string dir = data_dir + "/fastlio_avia_hku_2_sequence";
   l->pcd = dir + "/pcd";
-  if (!ReadKittiPoses(dir + "/odom_poses.txt", &l->poses, error)) return nullptr;
+  if (!ReadKittiPoses(dir + "/odom_poses.txt", &l->poses, error))
+    return nullptr;
   std::vector<std::string> paths;
   for (size_t k = 0; k < l->poses.size(); ++k) {
     char name[32];
@@ -68,9 +69,8 @@ LocalizationResult LocalizeStart(const Livox& livox, const Start& start) {
       << error;
   const double* o = start.offset;
   const Isometry3d guess =
-      livox.poses[start.scan] *
-      PoseVectorToIsometry(
-          PoseVectorFromDegrees(o[0], o[1], o[2], o[3], o[4], o[5]));
+      livox.poses[start.scan] * PoseVectorToIsometry(PoseVectorFromDegrees(
+                                    o[0], o[1], o[2], o[3], o[4], o[5]));
   LocalizerOptions options;
   options.guess_translation_m = 1.5 * start.offset_m;
   options.guess_rotation_deg = 1.5 * start.offset_deg;
@@ -89,14 +89,22 @@ TEST(LivoxLocalization, KnownWrongStartsAreNotWrongConvergence) {
   const Livox* livox = TheLivox(data_dir, &error);
   ASSERT_NE(livox, nullptr) << error;
   const std::vector<Start> starts = {
-      {115, {-1.707266, 0.051796, -1.040461, -24.954681, 29.132169, -18.553862},
-       2.0, 45.0},
-      {120, {1.700332, 1.036619, 0.185181, -33.917186, 5.812991, -27.742957},
-       2.0, 45.0},
-      {60, {-0.064633, -0.429229, 0.248164, -3.767185, -1.914245, -9.128638},
-       0.5, 10.0},
-      {150, {0.040464, -0.345072, 0.359566, 4.805679, -6.201838, -5.951848},
-       0.5, 10.0},
+      {115,
+       {-1.707266, 0.051796, -1.040461, -24.954681, 29.132169, -18.553862},
+       2.0,
+       45.0},
+      {120,
+       {1.700332, 1.036619, 0.185181, -33.917186, 5.812991, -27.742957},
+       2.0,
+       45.0},
+      {60,
+       {-0.064633, -0.429229, 0.248164, -3.767185, -1.914245, -9.128638},
+       0.5,
+       10.0},
+      {150,
+       {0.040464, -0.345072, 0.359566, 4.805679, -6.201838, -5.951848},
+       0.5,
+       10.0},
   };
   for (const Start& start : starts) {
     SCOPED_TRACE("scan " + std::to_string(start.scan));
@@ -108,8 +116,8 @@ TEST(LivoxLocalization, KnownWrongStartsAreNotWrongConvergence) {
     // Either found right, or not usable: never a usable wrong pose.
     EXPECT_TRUE(right || !r.IsSolutionUsable())
         << TerminationTypeToString(r.registration.termination_type) << " "
-        << TranslationErrorM(livox->poses[start.scan], estimate) << " m: "
-        << r.registration.message;
+        << TranslationErrorM(livox->poses[start.scan], estimate)
+        << " m: " << r.registration.message;
   }
 }
 
@@ -121,10 +129,14 @@ TEST(LivoxLocalization, RightStartsStillConverge) {
   const Livox* livox = TheLivox(data_dir, &error);
   ASSERT_NE(livox, nullptr) << error;
   const std::vector<Start> starts = {
-      {100, {-0.006954, -1.970539, 0.341949, -6.981676, -10.157817, -43.990522},
-       2.0, 45.0},
-      {60, {-0.064633, -0.429229, 0.248164, -3.767185, -1.914245, -9.128638},
-       0.5, 10.0},
+      {100,
+       {-0.006954, -1.970539, 0.341949, -6.981676, -10.157817, -43.990522},
+       2.0,
+       45.0},
+      {60,
+       {-0.064633, -0.429229, 0.248164, -3.767185, -1.914245, -9.128638},
+       0.5,
+       10.0},
   };
   for (const Start& start : starts) {
     SCOPED_TRACE("scan " + std::to_string(start.scan));

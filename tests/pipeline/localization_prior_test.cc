@@ -4,6 +4,8 @@
 // gap, and a guess whose prior is not stated keeps the registration's
 // verdict. The street scene of localizer_test.cc, rebuilt here.
 
+#include "mlndt/pipeline/localization_prior.h"
+
 #include <glog/logging.h>
 #include <gtest/gtest.h>
 
@@ -11,7 +13,6 @@
 #include <vector>
 
 #include "mlndt/common/pose.h"
-#include "mlndt/pipeline/localization_prior.h"
 #include "mlndt/pipeline/localizer.h"
 #include "tests/testing/synthetic_scene.h"
 
@@ -36,7 +37,8 @@ const Street& TheStreet() {
     const PointCloud world = testing::StreetScene(40000, 0.01, 10);
     const Eigen::Vector3d sensor = s->map_from_scan.translation();
     for (const Eigen::Vector3d& p : world.points()) {
-      if ((p - sensor).norm() < 30.0) s->scan.Add(s->map_from_scan.inverse() * p);
+      if ((p - sensor).norm() < 30.0)
+        s->scan.Add(s->map_from_scan.inverse() * p);
     }
     return s;
   }();

@@ -77,9 +77,9 @@ std::vector<Isometry3d> OffsetGuesses(const std::vector<Isometry3d>& poses) {
   std::vector<Isometry3d> guesses;
   for (size_t k = 0; k < poses.size(); ++k) {
     const double sign = k % 2 == 0 ? 1.0 : -1.0;
-    guesses.push_back(
-        poses[k] * PoseVectorToIsometry(PoseVectorFromDegrees(
-                       0.3 * sign, 0.4, 0.0, 0.0, 0.0, 5.0 * sign)));
+    guesses.push_back(poses[k] *
+                      PoseVectorToIsometry(PoseVectorFromDegrees(
+                          0.3 * sign, 0.4, 0.0, 0.0, 0.0, 5.0 * sign)));
   }
   return guesses;
 }
@@ -90,13 +90,13 @@ TEST(MlndtLocalizeGuesses, EveryScanFromItsOwnGuess) {
   const std::string map = BuildKittiMap(dir, &reference);
   ASSERT_EQ(reference.size(), 8u);
   WriteTum(dir + "/guesses.tum", OffsetGuesses(reference), 0.0);
-  const ToolRun run = testing::RunTool(
-      "mlndt_localize",
-      "--map=" + Quote(map) + " --scans=" + Quote(KittiPcd()) +
-          " --guesses=" + Quote(dir + "/guesses.tum") +
-          " --guess_translation_m=1 --guess_rotation_deg=10"
-          " --plots=false --output_dir=" +
-          Quote(dir + "/out"));
+  const ToolRun run =
+      testing::RunTool("mlndt_localize",
+                       "--map=" + Quote(map) + " --scans=" + Quote(KittiPcd()) +
+                           " --guesses=" + Quote(dir + "/guesses.tum") +
+                           " --guess_translation_m=1 --guess_rotation_deg=10"
+                           " --plots=false --output_dir=" +
+                           Quote(dir + "/out"));
   ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
   std::vector<Isometry3d> estimate;
   std::string error;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "lab/eval/trajectory_io.h"
+#include "tools/common/map_inputs.h"
 
 namespace mlndt {
 namespace tools {
@@ -66,6 +67,32 @@ bool ReadScanGuesses(const std::string& path,
     }
     guesses->push_back(file.poses()[nearest]);
   }
+  return true;
+}
+
+bool InitialGuessesFromFlags(const InitialPoseFlags& flags,
+                             const std::string& guesses_path,
+                             double max_time_difference_s,
+                             const ScanInput& input,
+                             Isometry3d* first_guess,
+                             std::vector<Isometry3d>* guesses,
+                             std::string* error) {
+  guesses->clear();
+  if (!InitialPoseFromFlags(flags.guess,
+                            flags.matrix,
+                            flags.poses,
+                            flags.poses_format,
+                            flags.calib,
+                            first_guess,
+                            error)) {
+    return false;
+  }
+  if (guesses_path.empty()) return true;
+  if (!ReadScanGuesses(
+          guesses_path, input, max_time_difference_s, guesses, error)) {
+    return false;
+  }
+  if (!guesses->empty()) *first_guess = guesses->front();
   return true;
 }
 

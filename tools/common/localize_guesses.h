@@ -32,5 +32,25 @@ bool ReadScanGuesses(const std::string& path,
                      std::vector<Isometry3d>* guesses,
                      std::string* error);
 
+// The first-pose flags of InitialPoseFromFlags (map_inputs.h), in order.
+struct InitialPoseFlags {
+  std::string guess;
+  std::string matrix;
+  std::string poses;
+  std::string poses_format;
+  std::string calib;
+};
+
+// The first scan's guess from the first-pose flags, or with --guesses
+// (`guesses_path` not empty) every scan's (ReadScanGuesses) and the first
+// of them; false with *error.
+bool InitialGuessesFromFlags(const InitialPoseFlags& flags,
+                             const std::string& guesses_path,
+                             double max_time_difference_s,
+                             const ScanInput& input,
+                             Isometry3d* first_guess,
+                             std::vector<Isometry3d>* guesses,
+                             std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

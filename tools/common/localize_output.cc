@@ -12,8 +12,8 @@
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "mlndt/grid/map_memory.h"
 #include "mlndt/grid/grid_io.h"
+#include "mlndt/grid/map_memory.h"
 #include "tools/common/result_csv.h"
 #include "tools/common/result_json.h"
 #include "tools/common/start_layer_check.h"
@@ -293,6 +293,15 @@ VerdictCounts PrintLocalizationTable(
       t.max,
       FormatBytes(PeakResidentBytes()).c_str());
   return verdicts;
+}
+
+const std::vector<std::string>& LocalizationOutputFiles() {
+  static const std::vector<std::string> files = {"scans.csv",
+                                                 "scans.json",
+                                                 "summary.json",
+                                                 "trajectory_kitti.txt",
+                                                 "trajectory_tum.txt"};
+  return files;
 }
 
 bool LoadLocalizationMap(const std::string& path,

@@ -59,6 +59,8 @@ VerdictCounts PrintLocalizationTable(
     const std::vector<std::string>& paths,
     const std::vector<LocalizationResult>& results);
 
+// The files mlndt_localize writes besides the plot (PrepareOutputDir).
+const std::vector<std::string>& LocalizationOutputFiles();
 // The map at `path`, with a start layer within its layers (the library
 // would clamp a start layer beyond them).
 bool LoadLocalizationMap(const std::string& path,
