@@ -6,6 +6,7 @@
 //                  [--initial_guess=tx,ty,tz,a,b,g | --initial_matrix=...
 //                   | --initial_poses=FILE [--poses_are_camera
 //                   --calib=calib.txt]]
+//                  | --guesses=FILE]
 //                  [--motion_model=constant_velocity|constant_pose]
 //                  [--plots=false] [any registration flag of mlndt_align]
 //
@@ -13,9 +14,11 @@
 // Rz), --initial_matrix (12 numbers, row-major 3x4) or the first pose of
 // --initial_poses (KITTI or TUM; with --poses_are_camera --calib KITTI camera
 // poses), else the identity; map_from_scan. Each next scan starts from the
-// previous pose moved by the last relative motion (constant velocity; Localizer
-// in mlndt/pipeline/localizer.h). The map and the current scan are the only
-// clouds in memory: each scan is read when its turn comes.
+// previous pose moved by the last relative motion (constant velocity), after
+// an unusable scan from the last usable pose, its uncertainty grown
+// (Localizer in mlndt/pipeline/localizer.h). With --guesses=FILE (TUM) every
+// scan starts from its own guess, matched by stamp (localize_guesses.h). The
+// map and the current scan are the only clouds in memory.
 //
 // Scans come from a folder, a --scan_list or a ROS 1 bag's PointCloud2
 // topic (tools/common/scan_input.h).
@@ -46,6 +49,7 @@
 #include "mlndt/common/timer.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/localizer.h"
+#include "tools/common/localize_guesses.h"
 #include "tools/common/localize_output.h"
 #include "tools/common/localizer_flags.h"
 #include "tools/common/map_flags.h"
@@ -55,7 +59,6 @@
 #include "tools/common/pose_flags.h"
 #include "tools/common/registration_flags.h"
 #include "tools/common/scan_input.h"
-#include "tools/common/start_layer_check.h"
 #include "tools/common/tool_main.h"
 
 // clang-format off
@@ -70,6 +73,8 @@ DEFINE_string(initial_matrix, "", "First scan's map_from_scan: 12 comma-separate
 DEFINE_string(initial_poses, "", "Pose file (KITTI or TUM) whose first pose is the first scan's "
               "map_from_scan");
 DEFINE_string(initial_poses_format, "auto", "auto | kitti | tum");
+DEFINE_string(guesses, "", "TUM file: each scan's guess, matched by stamp (or index)");
+DEFINE_double(guesses_max_time_difference_s, 0.01, "A scan's guess is within this of its stamp");
 DEFINE_string(output_dir, "", "Folder for the trajectories, scans.csv, summary.json and the plot");
 DEFINE_bool(plots, true, "Write trajectory_xy.png with gnuplot (exit 1 when gnuplot is missing)");
 DEFINE_string(gnuplot, "gnuplot", "The gnuplot program");
@@ -107,7 +112,12 @@ bool CheckFlags(LocalizerOptions* options,
   if (!tools::CheckInitialPoseFlags(FLAGS_initial_guess,
                                     FLAGS_initial_matrix,
                                     FLAGS_initial_poses,
-                                    error)) {
+                                    error) ||
+      !tools::CheckGuessesFlag(
+          FLAGS_guesses,
+          FLAGS_initial_guess + FLAGS_initial_matrix + FLAGS_initial_poses,
+          FLAGS_guesses_max_time_difference_s,
+          error)) {
     return false;
   }
   // --motion_model (LocalizerOwnOptionsTable).
@@ -127,32 +137,17 @@ bool CheckFlags(LocalizerOptions* options,
          input->ReadBagStamps(error);
 }
 
-// --map, with a start layer within its layers (the library would clamp a
-// start layer beyond them).
-bool LoadMap(const LocalizerOptions& options,
-             LayeredGrid* map,
-             std::string* error) {
-  return LoadLayeredGrid(FLAGS_map, map, error) &&
-         tools::CheckStartLayerForMap(
-             options.registration.schedule, map->num_layers(), error);
-}
-
 // trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
-int WritePlot(bool gnuplot_ok,
-              const LayeredGrid& map,
-              const std::vector<LocalizationResult>& results) {
-  if (!gnuplot_ok) return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot));
-  std::string error;
-  if (!tools::WriteLocalizationPlot(FLAGS_output_dir,
-                                    map,
-                                    results,
-                                    FLAGS_plot_max_cells,
-                                    FLAGS_gnuplot,
-                                    &error)) {
-    return tools::Fail(kTool, error);
-  }
-  std::printf("plot: trajectory_xy.png\n");
-  return 0;
+int Plot(bool gnuplot_ok,
+         const LayeredGrid& map,
+         const std::vector<LocalizationResult>& results) {
+  return tools::WriteLocalizationPlotOrFail(kTool,
+                                            gnuplot_ok,
+                                            FLAGS_output_dir,
+                                            map,
+                                            results,
+                                            FLAGS_plot_max_cells,
+                                            FLAGS_gnuplot);
 }
 
 int Run() {
@@ -163,25 +158,28 @@ int Run() {
   if (!CheckFlags(&options, &input, &error)) return tools::Refuse(kTool, error);
   const std::vector<std::string>& paths = input.names();
   Isometry3d first_guess;
-  if (!tools::InitialPoseFromFlags(FLAGS_initial_guess,
-                                   FLAGS_initial_matrix,
-                                   FLAGS_initial_poses,
-                                   FLAGS_initial_poses_format,
-                                   FLAGS_calib,
-                                   &first_guess,
-                                   &error)) {
+  std::vector<Isometry3d> guesses;
+  if (!tools::InitialGuessesFromFlags({FLAGS_initial_guess,
+                                       FLAGS_initial_matrix,
+                                       FLAGS_initial_poses,
+                                       FLAGS_initial_poses_format,
+                                       FLAGS_calib},
+                                      FLAGS_guesses,
+                                      FLAGS_guesses_max_time_difference_s,
+                                      input,
+                                      &first_guess,
+                                      &guesses,
+                                      &error)) {
     return tools::Refuse(kTool, error);
   }
   LayeredGrid map;
-  if (!LoadMap(options, &map, &error)) return tools::Refuse(kTool, error);
+  if (!tools::LoadLocalizationMap(FLAGS_map, options, &map, &error)) {
+    return tools::Refuse(kTool, error);
+  }
   const double map_load_s = NowSeconds() - start;
   if (!tools::PrepareOutputDir("output_dir",
                                FLAGS_output_dir,
-                               {"scans.csv",
-                                "scans.json",
-                                "summary.json",
-                                "trajectory_kitti.txt",
-                                "trajectory_tum.txt"},
+                               tools::LocalizationOutputFiles(),
                                &error) ||
       !tools::StartOutputSet(FLAGS_output_dir, &error)) {
     return tools::Refuse(kTool, error);
@@ -196,7 +194,7 @@ int Run() {
 
   std::vector<LocalizationResult> results;
   const bool ok = tools::LocalizeScansWithProgress(
-      options, map, first_guess, &input, &results, &error);
+      options, map, first_guess, guesses, &input, &results, &error);
   if (!ok) return tools::Fail(kTool, error);
 
   if (!tools::WriteLocalizationFiles(
@@ -205,7 +203,7 @@ int Run() {
   }
   const VerdictCounts verdicts = tools::PrintLocalizationTable(paths, results);
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
-  const int plot = FLAGS_plots ? WritePlot(gnuplot_ok, map, results) : 0;
+  const int plot = FLAGS_plots ? Plot(gnuplot_ok, map, results) : 0;
   // summary.json last, naming the files written (output_set.h).
   std::vector<std::string> files = {
       "trajectory_kitti.txt", "trajectory_tum.txt", "scans.csv", "scans.json"};

@@ -2,6 +2,8 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
+
 #include "mlndt/common/enum_table.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/pipeline/pipeline_option_tables.h"
@@ -27,8 +29,22 @@ bool StringToMotionModel(std::string value, MotionModel* model) {
 
 bool LocalizerOptions::IsValid(std::string* error) const {
   return registration.IsValid(error) &&
-         LocalizerOwnOptionsTable().Check(*this, error);
+         LocalizerOwnOptionsTable().Check(*this, error) &&
+         prior_check.IsValid(error);
 }
+
+namespace {
+
+// Both 0: not stated.
+InitialGuessUncertainty Prior(double translation_m, double rotation_deg) {
+  InitialGuessUncertainty prior;
+  prior.given = translation_m > 0.0 || rotation_deg > 0.0;
+  prior.translation_m = translation_m;
+  prior.rotation_deg = rotation_deg;
+  return prior;
+}
+
+}  // namespace
 
 Localizer::Localizer(const LocalizerOptions& options,
                      const LayeredGrid& map,
@@ -41,32 +57,74 @@ Localizer::Localizer(const LocalizerOptions& options,
 
 Isometry3d Localizer::PredictNext() const {
   if (num_localized_ == 0) return first_map_from_scan_;
-  if (options_.motion_model == MotionModel::CONSTANT_POSE) {
+  if (!any_usable_) return first_map_from_scan_;
+  // After a gap the motion is not known: the last usable pose.
+  if (num_lost_ > 0 || options_.motion_model == MotionModel::CONSTANT_POSE) {
     return last_map_from_scan_;
   }
   return last_map_from_scan_ * last_motion_;
 }
 
+InitialGuessUncertainty Localizer::PredictionPrior() const {
+  const LocalizerOptions& o = options_;
+  const bool from_guess = num_localized_ == 0 || !any_usable_;
+  double t = from_guess ? o.guess_translation_m : o.prediction_translation_m;
+  double r = from_guess ? o.guess_rotation_deg : o.prediction_rotation_deg;
+  // A prior not stated stays not stated over a gap.
+  if (num_lost_ > 0 && (t > 0.0 || r > 0.0)) {
+    const double gap = static_cast<double>(num_lost_);
+    t = std::min(t + gap * o.lost_translation_m_per_scan,
+                 std::max(t, o.max_lost_translation_m));
+    r = std::min(r + gap * o.lost_rotation_deg_per_scan,
+                 std::max(r, o.max_lost_rotation_deg));
+  }
+  return Prior(t, std::min(r, 180.0));
+}
+
 void Localizer::Localize(const PointCloud& scan, LocalizationResult* result) {
+  LocalizeWithin(scan, PredictNext(), PredictionPrior(), result);
+}
+
+void Localizer::LocalizeFrom(const PointCloud& scan,
+                             const Isometry3d& guess,
+                             LocalizationResult* result) {
+  LocalizeWithin(
+      scan,
+      guess,
+      Prior(options_.guess_translation_m, options_.guess_rotation_deg),
+      result);
+}
+
+void Localizer::LocalizeWithin(const PointCloud& scan,
+                               const Isometry3d& guess,
+                               const InitialGuessUncertainty& prior,
+                               LocalizationResult* result) {
   CHECK(result != nullptr);
   RegistrationSummary& s = result->registration;
-  const Isometry3d predicted = PredictNext();
-  Register(options_.registration, map_, scan, predicted, &s);
+  RegisterWithinPrior(options_.prior_check,
+                      options_.registration,
+                      map_,
+                      scan,
+                      guess,
+                      prior,
+                      &s,
+                      nullptr);
 
   result->index = num_localized_;
-  result->predicted_map_from_scan = predicted;
-  result->map_from_scan =
-      s.IsSolutionUsable() ? s.reference_from_input : predicted;
+  result->predicted_map_from_scan = guess;
+  result->map_from_scan = s.IsSolutionUsable() ? s.reference_from_input : guess;
 
   if (s.IsSolutionUsable()) {
-    if (num_localized_ > 0) {
-      last_motion_ = last_map_from_scan_.inverse() * result->map_from_scan;
-    }
+    // The motion is known only between consecutive usable scans.
+    last_motion_ = any_usable_ && num_lost_ == 0
+                       ? last_map_from_scan_.inverse() * result->map_from_scan
+                       : Isometry3d::Identity();
     last_map_from_scan_ = result->map_from_scan;
+    any_usable_ = true;
+    num_lost_ = 0;
   } else {
-    // Dead reckoning: the prediction stands in for the pose, the motion is
-    // kept.
-    last_map_from_scan_ = predicted;
+    // The last usable pose and the motion stay; the gap grows.
+    ++num_lost_;
   }
   ++num_localized_;
 }
@@ -97,6 +155,38 @@ bool LocalizeScans(const LocalizerOptions& options,
     LocalizationResult result;
     result.load_time_s = NowSeconds() - start;
     localizer.Localize(scan, &result);
+    results->push_back(std::move(result));
+    if (on_result) on_result(results->back());
+  }
+  return true;
+}
+
+bool LocalizeScansFromGuesses(const LocalizerOptions& options,
+                              const LayeredGrid& map,
+                              const std::vector<Isometry3d>& guesses,
+                              const ScanLoader& load_scan,
+                              const LocalizationCallback& on_result,
+                              std::vector<LocalizationResult>* results,
+                              std::string* error) {
+  CHECK(results != nullptr);
+  CHECK(error != nullptr);
+  CHECK(load_scan);
+  results->clear();
+  if (!options.IsValid(error)) return false;
+  if (map.empty()) {
+    *error = "the map is empty";
+    return false;
+  }
+  if (guesses.empty()) return true;
+  Localizer localizer(options, map, guesses.front());
+  PointCloud scan;
+  results->reserve(guesses.size());
+  for (size_t k = 0; k < guesses.size(); ++k) {
+    const double start = NowSeconds();
+    if (!load_scan(k, &scan, error)) return false;
+    LocalizationResult result;
+    result.load_time_s = NowSeconds() - start;
+    localizer.LocalizeFrom(scan, guesses[k], &result);
     results->push_back(std::move(result));
     if (on_result) on_result(results->back());
   }

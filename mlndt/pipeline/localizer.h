@@ -16,8 +16,14 @@
 // by the last relative motion (identity motion until two poses exist); with
 // CONSTANT_POSE from pose_{k-1}. A registration whose result is not to be
 // used (FAILURE, LOW_QUALITY or DEGENERATE: !IsSolutionUsable()) gets its
-// prediction as its pose and leaves the motion unchanged, so the next
-// prediction dead-reckons through it.
+// prediction as its pose (flagged). No prediction is ever made from such a
+// pose: after g unusable scans, scan k starts from the last usable pose
+// (the velocity of a hand-held sensor's sweeps is not known across a gap)
+// and the prediction's uncertainty grows with the gap (PredictionPrior).
+//
+// Each scan is registered within its prior (localization_prior.h): the
+// guess with its stated uncertainty. A result outside the prior, or one
+// that another minimum within the prior fits as well, is not usable.
 //
 // LocalizeScans runs the loop over a scan source that loads one scan at a
 // time: the map and the current scan are the only clouds held.
@@ -30,6 +36,7 @@
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/pipeline/localization_prior.h"
 #include "mlndt/registration/registration.h"
 
 namespace mlndt {
@@ -53,6 +60,26 @@ struct LocalizerOptions {
   // apply (the map is built beforehand).
   RegistrationOptions registration;
   MotionModel motion_model = MotionModel::CONSTANT_VELOCITY;
+  // How far the first scan's guess, and every guess given per scan
+  // (Localizer::LocalizeFrom's callers), may be from the truth [m], [deg];
+  // both 0: not stated (the registration's verdict stands alone).
+  double guess_translation_m = 0.0;
+  double guess_rotation_deg = 0.0;
+  // How far the prediction of a scan whose previous scan was usable may be
+  // from the truth [m], [deg]; both 0: not stated. It depends on the
+  // sensor's motion (a car's 1 m between frames, a hand-held sensor's sweeps
+  // of 15 deg): the caller states it (docs/maps.md).
+  double prediction_translation_m = 0.0;
+  double prediction_rotation_deg = 0.0;
+  // Added to the prediction's (or the first guess's) uncertainty per
+  // unusable scan since the last usable one [m], [deg], up to the maxima
+  // below; an uncertainty not stated stays not stated.
+  double lost_translation_m_per_scan = 0.5;
+  double lost_rotation_deg_per_scan = 10.0;
+  double max_lost_translation_m = 5.0;
+  double max_lost_rotation_deg = 90.0;
+  // The checks of a result against its prior (localization_prior.h).
+  PriorCheckOptions prior_check;
 
   bool IsValid(std::string* error) const;
 };
@@ -85,13 +112,19 @@ class Localizer {
             const LayeredGrid& map,
             const Isometry3d& first_map_from_scan);
 
-  // The initial guess of the next scan.
+  // The initial guess of the next scan, and its uncertainty.
   Isometry3d PredictNext() const;
+  InitialGuessUncertainty PredictionPrior() const;
 
-  // Registers `scan` (in its sensor frame) from PredictNext(), fills
-  // *result (its load_time_s is left as it is) and updates the motion
-  // model.
+  // Registers `scan` (in its sensor frame) from PredictNext() within
+  // PredictionPrior(), fills *result (its load_time_s is left as it is)
+  // and updates the motion model.
   void Localize(const PointCloud& scan, LocalizationResult* result);
+  // The same from a guess of the caller's (a pose file, odometry) with the
+  // options' guess uncertainty.
+  void LocalizeFrom(const PointCloud& scan,
+                    const Isometry3d& guess,
+                    LocalizationResult* result);
 
   size_t num_localized() const { return num_localized_; }
 
@@ -103,6 +136,14 @@ class Localizer {
   // Last relative motion pose_{k-2}^-1 pose_{k-1} (identity at first).
   Isometry3d last_motion_ = Isometry3d::Identity();
   size_t num_localized_ = 0;
+  // Unusable scans since the last usable one (or since the start).
+  size_t num_lost_ = 0;
+  bool any_usable_ = false;
+
+  void LocalizeWithin(const PointCloud& scan,
+                      const Isometry3d& guess,
+                      const InitialGuessUncertainty& prior,
+                      LocalizationResult* result);
 };
 
 // Loads scan `index` (in its sensor frame) into *scan; false with *error.
@@ -112,9 +153,10 @@ using ScanLoader =
 using LocalizationCallback = std::function<void(const LocalizationResult&)>;
 
 // Localises scans 0..num_scans-1 in order, loading each one when its turn
-// comes into one reused cloud. `on_result` may be empty; `results` gets
-// every result (cleared first). False with *error on invalid options, an
-// empty map or a scan that cannot be loaded (the results so far are kept).
+// comes into one reused cloud, each from the prediction. `on_result` may be
+// empty; `results` gets every result (cleared first). False with *error on
+// invalid options, an empty map or a scan that cannot be loaded (the results so
+// far are kept).
 bool LocalizeScans(const LocalizerOptions& options,
                    const LayeredGrid& map,
                    const Isometry3d& first_map_from_scan,
@@ -123,5 +165,15 @@ bool LocalizeScans(const LocalizerOptions& options,
                    const LocalizationCallback& on_result,
                    std::vector<LocalizationResult>* results,
                    std::string* error);
+
+// The same with a guess per scan: scan k starts from guesses[k]
+// (LocalizeFrom), for every guess.
+bool LocalizeScansFromGuesses(const LocalizerOptions& options,
+                              const LayeredGrid& map,
+                              const std::vector<Isometry3d>& guesses,
+                              const ScanLoader& load_scan,
+                              const LocalizationCallback& on_result,
+                              std::vector<LocalizationResult>* results,
+                              std::string* error);
 
 }  // namespace mlndt

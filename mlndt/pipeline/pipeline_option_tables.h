@@ -15,7 +15,9 @@ namespace mlndt {
 
 // MapBuildOptions without grid and range_filter.
 const OptionTable& MapBuildOwnOptionsTable();
-// LocalizerOptions without registration.
+// PriorCheckOptions (localization_prior.h).
+const OptionTable& PriorCheckOptionsTable();
+// LocalizerOptions without registration (prior_check nested).
 const OptionTable& LocalizerOwnOptionsTable();
 
 }  // namespace mlndt

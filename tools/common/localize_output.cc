@@ -12,9 +12,12 @@
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/map_memory.h"
 #include "tools/common/result_csv.h"
 #include "tools/common/result_json.h"
+#include "tools/common/start_layer_check.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_utils.h"
 #include "tools/common/verdict_counts_json.h"
 
@@ -216,6 +219,7 @@ std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
 bool LocalizeScansWithProgress(const LocalizerOptions& options,
                                const LayeredGrid& map,
                                const Isometry3d& first_guess,
+                               const std::vector<Isometry3d>& guesses,
                                ScanInput* input,
                                std::vector<LocalizationResult>* results,
                                std::string* error) {
@@ -225,8 +229,18 @@ bool LocalizeScansWithProgress(const LocalizerOptions& options,
   const LocalizationCallback report = [&](const LocalizationResult& r) {
     progress.Update(r.index + 1, LocalizationProgressDetail(paths, r));
   };
-  const bool ok = LocalizeScans(
-      options, map, first_guess, paths.size(), load, report, results, error);
+  const bool ok =
+      guesses.empty()
+          ? LocalizeScans(options,
+                          map,
+                          first_guess,
+                          paths.size(),
+                          load,
+                          report,
+                          results,
+                          error)
+          : LocalizeScansFromGuesses(
+                options, map, guesses, load, report, results, error);
   progress.Finish();
   return ok;
 }
@@ -279,6 +293,41 @@ VerdictCounts PrintLocalizationTable(
       t.max,
       FormatBytes(PeakResidentBytes()).c_str());
   return verdicts;
+}
+
+const std::vector<std::string>& LocalizationOutputFiles() {
+  static const std::vector<std::string> files = {"scans.csv",
+                                                 "scans.json",
+                                                 "summary.json",
+                                                 "trajectory_kitti.txt",
+                                                 "trajectory_tum.txt"};
+  return files;
+}
+
+bool LoadLocalizationMap(const std::string& path,
+                         const LocalizerOptions& options,
+                         LayeredGrid* map,
+                         std::string* error) {
+  return LoadLayeredGrid(path, map, error) &&
+         CheckStartLayerForMap(
+             options.registration.schedule, map->num_layers(), error);
+}
+
+int WriteLocalizationPlotOrFail(const char* tool,
+                                bool gnuplot_ok,
+                                const std::string& dir,
+                                const LayeredGrid& map,
+                                const std::vector<LocalizationResult>& results,
+                                int plot_max_cells,
+                                const std::string& gnuplot) {
+  if (!gnuplot_ok) return Fail(tool, PlotSkippedMessage(gnuplot));
+  std::string error;
+  if (!WriteLocalizationPlot(
+          dir, map, results, plot_max_cells, gnuplot, &error)) {
+    return Fail(tool, error);
+  }
+  std::printf("plot: trajectory_xy.png\n");
+  return 0;
 }
 
 }  // namespace tools

@@ -44,10 +44,12 @@ std::string UnusableScansMessage(const VerdictCounts& verdicts);
 std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
                                        const LocalizationResult& r);
 
-// LocalizeScans over the scans of `input`, with a progress line.
+// LocalizeScans over the scans of `input`, with a progress line; with
+// `guesses` (one per scan) LocalizeScansFromGuesses.
 bool LocalizeScansWithProgress(const LocalizerOptions& options,
                                const LayeredGrid& map,
                                const Isometry3d& first_guess,
+                               const std::vector<Isometry3d>& guesses,
                                ScanInput* input,
                                std::vector<LocalizationResult>* results,
                                std::string* error);
@@ -57,6 +59,23 @@ VerdictCounts PrintLocalizationTable(
     const std::vector<std::string>& paths,
     const std::vector<LocalizationResult>& results);
 
+// The files mlndt_localize writes besides the plot (PrepareOutputDir).
+const std::vector<std::string>& LocalizationOutputFiles();
+// The map at `path`, with a start layer within its layers (the library
+// would clamp a start layer beyond them).
+bool LoadLocalizationMap(const std::string& path,
+                         const LocalizerOptions& options,
+                         LayeredGrid* map,
+                         std::string* error);
+// WriteLocalizationPlot with "plot: trajectory_xy.png" on stdout; exit code
+// 1 (printed as `tool`'s failure) when gnuplot is missing or fails, else 0.
+int WriteLocalizationPlotOrFail(const char* tool,
+                                bool gnuplot_ok,
+                                const std::string& dir,
+                                const LayeredGrid& map,
+                                const std::vector<LocalizationResult>& results,
+                                int plot_max_cells,
+                                const std::string& gnuplot);
 // trajectory_xy.png (data and script in dir/plot_data) with `gnuplot`.
 bool WriteLocalizationPlot(const std::string& dir,
                            const LayeredGrid& map,

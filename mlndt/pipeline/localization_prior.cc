@@ -1,0 +1,246 @@
+#include "mlndt/pipeline/localization_prior.h"
+
+#include <glog/logging.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "mlndt/common/pose.h"
+
+namespace mlndt {
+namespace {
+
+bool Fail(const char* message, std::string* error) {
+  if (error != nullptr) *error = message;
+  return false;
+}
+
+// guess * delta for a motion in the guess's (the sensor's) frame.
+Isometry3d Moved(const Isometry3d& guess,
+                 double x_m,
+                 double y_m,
+                 double yaw_deg) {
+  return guess * PoseVectorToIsometry(
+                     PoseVectorFromDegrees(x_m, y_m, 0.0, 0.0, 0.0, yaw_deg));
+}
+
+// Step 1: the starts on the prior's half-bound (none when one basin holds
+// the prior).
+std::vector<Isometry3d> ExploreStarts(const PriorCheckOptions& options,
+                                      const InitialGuessUncertainty& prior,
+                                      double finest_cell_m,
+                                      const Isometry3d& guess) {
+  std::vector<Isometry3d> starts;
+  if (!options.explore) return starts;
+  const double t = 0.5 * prior.translation_m;
+  const double r = 0.5 * prior.rotation_deg;
+  if (prior.translation_m > finest_cell_m) {
+    for (double sign : {1.0, -1.0}) {
+      starts.push_back(Moved(guess, sign * t, 0.0, 0.0));
+      starts.push_back(Moved(guess, 0.0, sign * t, 0.0));
+    }
+  }
+  if (prior.rotation_deg > options.explore_min_rotation_deg) {
+    for (double sign : {1.0, -1.0}) {
+      starts.push_back(Moved(guess, 0.0, 0.0, sign * r));
+    }
+  }
+  return starts;
+}
+
+// Step 2's order: more inliers, then a lower mean score.
+bool FitsBetter(const RegistrationSummary& a, const RegistrationSummary& b) {
+  if (a.quality.inlier_fraction != b.quality.inlier_fraction) {
+    return a.quality.inlier_fraction > b.quality.inlier_fraction;
+  }
+  return a.quality.mean_score < b.quality.mean_score;
+}
+
+bool Distinct(const PriorCheckOptions& options,
+              const RegistrationSummary& a,
+              const RegistrationSummary& b) {
+  const double half_cell = 0.5 * a.finest_cell_size_m;
+  return TranslationErrorM(a.reference_from_input, b.reference_from_input) >
+             half_cell ||
+         RotationErrorRad(a.reference_from_input, b.reference_from_input) *
+                 kRadToDeg >
+             options.explore_distinct_rotation_deg;
+}
+
+// Step 3: another kept minimum, distinct from `best`, that fits as well.
+const RegistrationSummary* Rival(const PriorCheckOptions& options,
+                                 const std::vector<RegistrationSummary>& kept,
+                                 const RegistrationSummary& best) {
+  for (const RegistrationSummary& other : kept) {
+    if (&other == &best || !Distinct(options, best, other)) continue;
+    if (other.quality.inlier_fraction >=
+        best.quality.inlier_fraction - options.ambiguity_inlier_margin) {
+      return &other;
+    }
+  }
+  return nullptr;
+}
+
+void Demote(TerminationType type,
+            const std::string& why,
+            RegistrationSummary* summary) {
+  summary->message = why + " (the registration said " +
+                     TerminationTypeToString(summary->termination_type) + ": " +
+                     summary->message + ")";
+  summary->termination_type = type;
+}
+
+void DemotePoorFit(double min_inliers, RegistrationSummary* summary) {
+  char why[160];
+  std::snprintf(why,
+                sizeof(why),
+                "fits the map worse than the map's own points do: "
+                "inliers %.3f < %.3f",
+                summary->quality.inlier_fraction,
+                min_inliers);
+  Demote(TerminationType::LOW_QUALITY, why, summary);
+}
+
+void DemoteNotKept(const InitialGuessUncertainty& prior,
+                   const Isometry3d& guess,
+                   double min_inliers,
+                   RegistrationSummary* summary) {
+  char why[240];
+  std::snprintf(
+      why,
+      sizeof(why),
+      "no usable result within the prior fits the map as its own points do "
+      "(inliers >= %.3f): the registration's is %.2f m, %.1f deg from the "
+      "guess (prior %.2f m, %.1f deg), inliers %.3f; outside the prior or a "
+      "look-alike place",
+      min_inliers,
+      TranslationErrorM(guess, summary->reference_from_input),
+      RotationErrorRad(guess, summary->reference_from_input) * kRadToDeg,
+      prior.translation_m,
+      prior.rotation_deg,
+      summary->quality.inlier_fraction);
+  Demote(TerminationType::LOW_QUALITY, why, summary);
+}
+
+void DemoteAmbiguous(const RegistrationSummary& rival,
+                     RegistrationSummary* summary) {
+  char why[200];
+  std::snprintf(
+      why,
+      sizeof(why),
+      "another minimum within the prior fits as well: %.2f m, %.1f deg away, "
+      "inliers %.3f against %.3f",
+      TranslationErrorM(summary->reference_from_input,
+                        rival.reference_from_input),
+      RotationErrorRad(summary->reference_from_input,
+                       rival.reference_from_input) *
+          kRadToDeg,
+      rival.quality.inlier_fraction,
+      summary->quality.inlier_fraction);
+  Demote(TerminationType::DEGENERATE, why, summary);
+}
+
+}  // namespace
+
+bool PriorCheckOptions::IsValid(std::string* error) const {
+  if (!(explore_min_rotation_deg >= 0.0 && explore_min_rotation_deg <= 180.0))
+    return Fail("explore_min_rotation_deg must be in [0, 180]", error);
+  if (!(explore_distinct_rotation_deg > 0.0 &&
+        explore_distinct_rotation_deg <= 180.0))
+    return Fail("explore_distinct_rotation_deg must be in (0, 180]", error);
+  if (!(ambiguity_inlier_margin >= 0.0 && ambiguity_inlier_margin <= 1.0))
+    return Fail("ambiguity_inlier_margin must be in [0, 1]", error);
+  if (!(min_fit_ratio >= 0.0 && min_fit_ratio <= 1.0))
+    return Fail("min_fit_ratio must be in [0, 1]", error);
+  return true;
+}
+
+double GaussianInlierShare(double gate) {
+  // chi2 with 3 degrees of freedom: erf(g / sqrt 2) - sqrt(2 / pi) g
+  // e^(-g^2/2).
+  return std::erf(gate / std::sqrt(2.0)) -
+         std::sqrt(2.0 / M_PI) * gate * std::exp(-0.5 * gate * gate);
+}
+
+bool WithinPrior(const InitialGuessUncertainty& prior,
+                 const Isometry3d& guess,
+                 const Isometry3d& pose) {
+  if (!prior.given) return true;
+  return TranslationErrorM(guess, pose) <= prior.translation_m &&
+         RotationErrorRad(guess, pose) * kRadToDeg <= prior.rotation_deg;
+}
+
+void RegisterWithinPrior(const PriorCheckOptions& options,
+                         const RegistrationOptions& registration,
+                         const LayeredGrid& map,
+                         const PointCloud& scan,
+                         const Isometry3d& guess,
+                         const InitialGuessUncertainty& prior,
+                         RegistrationSummary* summary,
+                         PriorCheckSummary* check) {
+  CHECK(summary != nullptr);
+  PriorCheckSummary local;
+  PriorCheckSummary& c = check != nullptr ? *check : local;
+  c = PriorCheckSummary();
+  RegistrationOptions with_prior = registration;
+  if (prior.given) with_prior.initial_uncertainty = prior;
+  Register(with_prior, map, scan, guess, summary);
+  const double min_inliers =
+      options.min_fit_ratio *
+      GaussianInlierShare(registration.quality_check.inlier_gate);
+  if (!prior.given) {
+    // No prior: the fit alone.
+    if (summary->IsSolutionUsable() &&
+        summary->quality.inlier_fraction < min_inliers) {
+      DemotePoorFit(min_inliers, summary);
+    }
+    return;
+  }
+
+  // Step 2: every usable result within the prior that fits as the map's
+  // own points do, the first run's first.
+  std::vector<RegistrationSummary> kept;
+  const auto keep = [&](const RegistrationSummary& s) {
+    if (s.IsSolutionUsable() &&
+        WithinPrior(prior, guess, s.reference_from_input) &&
+        s.quality.inlier_fraction >= min_inliers) {
+      kept.push_back(s);
+    }
+  };
+  keep(*summary);
+  const bool first_kept = !kept.empty();
+  for (const Isometry3d& start :
+       ExploreStarts(options, prior, summary->finest_cell_size_m, guess)) {
+    RegistrationSummary s;
+    Register(with_prior, map, scan, start, &s);
+    ++c.explored_starts;
+    c.explored_time_s += s.total_time_s;
+    keep(s);
+  }
+  c.usable_within = static_cast<int>(kept.size());
+  // The scan's time is every run's (solve_time_s stays the kept run's).
+  const double all_runs_s = summary->total_time_s + c.explored_time_s;
+
+  if (kept.empty()) {
+    // Step 4: nothing usable within the prior fits the map well enough.
+    if (summary->IsSolutionUsable()) {
+      DemoteNotKept(prior, guess, min_inliers, summary);
+    }
+  } else {
+    size_t best = 0;
+    for (size_t i = 1; i < kept.size(); ++i) {
+      if (FitsBetter(kept[i], kept[best])) best = i;
+    }
+    c.moved_to_other_start = !first_kept || best != 0;
+    const RegistrationSummary* rival = Rival(options, kept, kept[best]);
+    *summary = kept[best];
+    if (rival != nullptr) DemoteAmbiguous(*rival, summary);
+  }
+  summary->total_time_s = all_runs_s;
+  c.from_guess_m = TranslationErrorM(guess, summary->reference_from_input);
+  c.from_guess_deg =
+      RotationErrorRad(guess, summary->reference_from_input) * kRadToDeg;
+}
+
+}  // namespace mlndt
