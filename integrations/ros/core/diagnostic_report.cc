@@ -34,7 +34,7 @@ DiagnosticReport ScanDiagnostic(const ScanReport& report, bool odometry) {
   if (!report.message.empty()) d.message += ": " + report.message;
   d.values = {{"stamp_s", Number(report.stamp_s, 9)},
               {"scan", std::to_string(report.index)},
-              {"verdict", TerminationTypeToString(report.termination)},
+              {"termination_type", TerminationTypeToString(report.termination)},
               {"registered", Flag(report.registered)},
               {"covariance_known", Flag(report.has_covariance)},
               {"correction_m", Number(report.correction_m, 4)},
@@ -42,7 +42,7 @@ DiagnosticReport ScanDiagnostic(const ScanReport& report, bool odometry) {
               {"start_layer", std::to_string(report.start_layer)},
               {"iterations", std::to_string(report.iterations)},
               {"inlier_fraction", Number(report.inlier_fraction, 3)},
-              {"registration_ms", Number(report.registration_time_s * 1e3, 1)}};
+              {"registration_time_s", Number(report.registration_time_s, 4)}};
   if (odometry) {
     d.values.insert(
         d.values.end(),
@@ -61,7 +61,7 @@ DiagnosticReport RefusedDiagnostic(double stamp_s, const std::string& reason) {
   DiagnosticReport d;
   d.level = DiagnosticLevel::ERROR;
   d.message = "scan not used: " + reason;
-  d.values = {{"stamp_s", Number(stamp_s, 9)}, {"verdict", "REFUSED"}};
+  d.values = {{"stamp_s", Number(stamp_s, 9)}, {"termination_type", "REFUSED"}};
   return d;
 }
 

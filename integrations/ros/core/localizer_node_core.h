@@ -11,8 +11,8 @@
 // A result that is not to be used (LOW_QUALITY, DEGENERATE, FAILURE) makes
 // no jump: no pose is published, map -> odom stays where the last usable
 // one put it (re-stamped), and a warning and a WARN/ERROR diagnostic say
-// so; the Localizer dead-reckons its next prediction through it as the tool
-// does. Clouds before the first pose wait (waiting_for_initial_pose); a
+// so; the Localizer starts the next scan from the last usable pose, with an
+// uncertainty grown by the gap, as the tool does. Clouds before the first pose wait (waiting_for_initial_pose); a
 // malformed or empty cloud or a stamp not after the last one is refused as
 // the odometry node refuses it.
 

@@ -304,7 +304,7 @@ def verdicts(diagnostic_recorder, node_name):
         for status in message.status:
             if status.name == node_name:
                 values = {v.key: v.value for v in status.values}
-                found.append((float(values["stamp_s"]), values["verdict"], status.level))
+                found.append((float(values["stamp_s"]), values["termination_type"], status.level))
     return found
 
 
