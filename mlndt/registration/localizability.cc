@@ -1,8 +1,6 @@
 #include "mlndt/registration/localizability.h"
 
 #include <Eigen/Eigenvalues>
-#include <algorithm>
-#include <cmath>
 
 #include "mlndt/registration/quality_check.h"
 
@@ -10,63 +8,47 @@ namespace mlndt {
 
 namespace {
 
-// The normalised point-to-plane rows u = J / |J| (localizability.h) of the
-// inliers on planar cells.
-std::vector<Vector6d> PlanarRows(
-    const std::vector<Eigen::Vector3d>& input_points,
+// The unit normals of the planar cells of the inliers among `matches`.
+std::vector<Eigen::Vector3d> PlanarNormals(
     const std::vector<PointMatch>& matches,
-    const Matrix3d& rotation,
-    double rms_range_m,
     double gate) {
-  const double inverse_lever = 1.0 / std::max(rms_range_m, 1e-3);
-  std::vector<Vector6d> rows;
-  rows.reserve(input_points.size());
-  for (size_t k = 0; k < input_points.size(); ++k) {
-    if (!matches[k].IsInlier(gate)) continue;
-    const NdtCell& cell = *matches[k].cell;
-    const Eigen::Array<bool, 3, 1> thin = ThinCellDirections(cell);
+  std::vector<Eigen::Vector3d> normals;
+  normals.reserve(matches.size());
+  for (const PointMatch& match : matches) {
+    if (!match.IsInlier(gate)) continue;
+    const Eigen::Array<bool, 3, 1> thin = ThinCellDirections(*match.cell);
     if (thin.count() != 1) continue;
     int i = 0;
     thin.maxCoeff(&i);
     // Row i of W is v_i^T / sqrt(lambda_i) (ndt_cell.h): the normal.
-    const Eigen::Vector3d n = cell.whitening.row(i).transpose().normalized();
-    Vector6d row;
-    row << n, (rotation * input_points[k]).cross(n) * inverse_lever;
-    rows.push_back(row.normalized());
+    normals.push_back(match.cell->whitening.row(i).transpose().normalized());
   }
-  return rows;
+  return normals;
 }
 
 }  // namespace
 
-Localizability LocalizabilityOf(
-    const std::vector<Eigen::Vector3d>& input_points,
-    const std::vector<PointMatch>& matches,
-    const Matrix3d& rotation,
-    double rms_range_m,
-    double gate,
-    double constraining_cosine) {
+Localizability LocalizabilityOf(const std::vector<PointMatch>& matches,
+                                double gate,
+                                double constraining_cosine) {
   Localizability result;
-  const std::vector<Vector6d> rows =
-      PlanarRows(input_points, matches, rotation, rms_range_m, gate);
-  result.planar_points = static_cast<int>(rows.size());
-  if (rows.empty()) return result;
-  Matrix6d information = Matrix6d::Zero();
-  for (const Vector6d& u : rows) {
-    information.selfadjointView<Eigen::Lower>().rankUpdate(u);
-  }
-  information = information.selfadjointView<Eigen::Lower>();
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(information);
+  const std::vector<Eigen::Vector3d> normals = PlanarNormals(matches, gate);
+  result.planar_points = static_cast<int>(normals.size());
+  if (normals.empty()) return result;
+  Matrix3d information = Matrix3d::Zero();
+  for (const Eigen::Vector3d& n : normals) information += n * n.transpose();
+  const Eigen::SelfAdjointEigenSolver<Matrix3d> solver(information);
   result.directions = solver.eigenvectors();
-  const double n = static_cast<double>(rows.size());
-  result.information = solver.eigenvalues().cwiseMax(0.0) / n;
-  // The points whose row leans on each direction by at least the cosine.
-  Vector6d constraining = Vector6d::Zero();
-  for (const Vector6d& u : rows) {
-    const Vector6d cosines = (result.directions.transpose() * u).cwiseAbs();
-    constraining += (cosines.array() >= constraining_cosine).cast<double>().matrix();
+  const double count = static_cast<double>(normals.size());
+  result.information = solver.eigenvalues().cwiseMax(0.0) / count;
+  // The normals that lean on each direction by at least the cosine.
+  Eigen::Vector3d constraining = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& n : normals) {
+    const Eigen::Vector3d cosines = (result.directions.transpose() * n).cwiseAbs();
+    constraining +=
+        (cosines.array() >= constraining_cosine).cast<double>().matrix();
   }
-  result.share = constraining / n;
+  result.share = constraining / count;
   return result;
 }
 

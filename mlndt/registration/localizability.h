@@ -1,22 +1,21 @@
 #pragma once
 
-// Localizability per direction of the pose: how many of the matched points
-// constrain each direction through their surface's normal, as a share of
-// those points (dimensionless; X-ICP, Tuna et al. 2023, and the degeneracy
-// factor of Zhang, Kaess and Singh 2016, on point-to-plane information).
+// Localizability of the translation, per direction: how many of the matched
+// points constrain each direction through their surface's normal, as a
+// share of those points (dimensionless; X-ICP, Tuna et al. 2023, on
+// point-to-plane information, and the degeneracy factor of Zhang, Kaess and
+// Singh 2016).
 //
 // A point x = R p + t matched to a planar cell (one thin direction,
 // ThinCellDirections in quality_check.h) with unit normal n constrains the
-// pose through the point-to-plane row J = [n; (R p) x n / L]: the residual
-// n . (x - mu) changes by J . delta for a pose change delta (translation
-// [m], rotation vector scaled to metres at the lever L, the points' RMS
-// range). Each row is normalised, u = J / |J|, so that every point carries
-// one unit of information whatever its lever. The directions are the
-// eigenvectors v_k of A = sum_i u_i u_i^T, and point i constrains v_k when
-// |u_i . v_k| >= constraining_cosine. The share of the points that do
+// translation through the point-to-plane residual n . (x - mu): a shift
+// delta changes it by n . delta. With the rotation held (X-ICP decomposes
+// the translation and rotation blocks apart), the directions are the
+// eigenvectors v_k of A = sum_i n_i n_i^T, and point i constrains v_k when
+// |n_i . v_k| >= constraining_cosine. The share of the points that do
 // depends neither on the density (a corridor's axis has none at any count)
-// nor on the NDT Hessian, whose in-plane terms come from each cell's
-// extent (the covariance regularisation and the grid), not from a surface.
+// nor on the NDT Hessian, whose in-plane terms come from each cell's extent
+// (the covariance regularisation and the grid), not from a surface.
 
 #include <vector>
 
@@ -25,34 +24,31 @@
 
 namespace mlndt {
 
-// The localizability of a pose at a solution (LocalizabilityOf).
+// The translation's localizability at a solution (LocalizabilityOf).
 struct Localizability {
-  // Columns: unit directions of the pose vector (translation [m]; rotation
-  // vector times L), the eigenvectors of A, weakest eigenvalue first.
-  Matrix6d directions = Matrix6d::Zero();
-  // Per direction: the share of the planar points that constrain it
-  // (|u . v_k| >= the cosine), in [0, 1].
-  Vector6d share = Vector6d::Zero();
-  // Per direction: eigenvalue of A over the planar points, the mean
-  // information a point gives it (in [0, 1], the six sum to 1).
-  Vector6d information = Vector6d::Zero();
-  // Matched points on planar cells: the rows counted.
+  // Columns: unit translation directions, the eigenvectors of A, weakest
+  // eigenvalue first.
+  Matrix3d directions = Matrix3d::Zero();
+  // Per direction: the share of the planar inliers that constrain it
+  // (|n . v_k| >= the cosine), in [0, 1].
+  Eigen::Vector3d share = Eigen::Vector3d::Zero();
+  // Per direction: the eigenvalue of A over the planar inliers, the mean
+  // information a point gives it (in [0, 1]; the three sum to 1).
+  Eigen::Vector3d information = Eigen::Vector3d::Zero();
+  // Inliers on planar cells: the normals counted.
   int planar_points = 0;
 };
 
-// Points whose normalised row has at least this cosine with a direction
-// constrain it (X-ICP's contribution threshold; cos 60 deg).
+// Normals at least this cosine from a direction constrain it (X-ICP's
+// contribution threshold; cos 60 deg: a surface tilted less than 60 deg
+// from facing the direction).
 constexpr double kConstrainingCosine = 0.5;
 
-// The localizability of the points `input_points` moved by `rotation` onto
-// their matches: the inliers (Mahalanobis distance below `gate`) on planar
-// cells; rotations scaled by `rms_range_m` (> 0). Empty (planar_points 0)
-// when no inlier lies on a planar cell.
+// The localizability of `matches` (of the input points, at the solution):
+// the inliers (Mahalanobis distance below `gate`) on planar cells. Empty
+// (planar_points 0) when no inlier lies on a planar cell.
 Localizability LocalizabilityOf(
-    const std::vector<Eigen::Vector3d>& input_points,
     const std::vector<PointMatch>& matches,
-    const Matrix3d& rotation,
-    double rms_range_m,
     double gate,
     double constraining_cosine = kConstrainingCosine);
 
