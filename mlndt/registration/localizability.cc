@@ -10,8 +10,7 @@ namespace {
 
 // The unit normals of the planar cells of the inliers among `matches`.
 std::vector<Eigen::Vector3d> PlanarNormals(
-    const std::vector<PointMatch>& matches,
-    double gate) {
+    const std::vector<PointMatch>& matches, double gate) {
   std::vector<Eigen::Vector3d> normals;
   normals.reserve(matches.size());
   for (const PointMatch& match : matches) {
@@ -44,7 +43,8 @@ Localizability LocalizabilityOf(const std::vector<PointMatch>& matches,
   // The normals that lean on each direction by at least the cosine.
   Eigen::Vector3d constraining = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& n : normals) {
-    const Eigen::Vector3d cosines = (result.directions.transpose() * n).cwiseAbs();
+    const Eigen::Vector3d cosines =
+        (result.directions.transpose() * n).cwiseAbs();
     constraining +=
         (cosines.array() >= constraining_cosine).cast<double>().matrix();
   }

@@ -266,8 +266,8 @@ ConstraintAnalysis AnalyseMatched(
   const std::vector<bool> inlier = InlierFlags(matches, options.inlier_gate);
   // The ratio has already named this many free directions: the probe names
   // only weaker-ranked ones beyond them.
-  const size_t by_ratio = analysis.degenerate_directions.size() -
-                          analysis.unlocalizable_directions;
+  const size_t by_ratio =
+      analysis.degenerate_directions.size() - analysis.unlocalizable_directions;
   for (int i = 0; i < 3 && lambda(i) < kProbedConstraintRatio * largest; ++i) {
     const Vector6d d = solver.eigenvectors().col(i);
     const Probe probe = ProbeDirection(layer,
