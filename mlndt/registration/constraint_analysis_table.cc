@@ -13,6 +13,21 @@ const ResultTable& ConstraintAnalysisTable() {
                   "lambda_min / lambda_max of the planar cells' information: "
                   "1 when every direction is constrained alike, 0 for a "
                   "direction with none.")
+          .Number("localizability",
+                  &C::localizability,
+                  "",
+                  "The smallest share of the inliers on planar cells whose "
+                  "normal constrains a direction of the pose (dimensionless; "
+                  "0 along a free direction).")
+          .Vector("least_localizable_direction",
+                  &C::least_localizable_direction,
+                  "",
+                  "That direction (unit, scaled as degenerate_directions).")
+          .Integer("unlocalizable_directions",
+                   &C::unlocalizable_directions,
+                   "",
+                   "How many of degenerate_directions are below "
+                   "min_localizability.")
           .Rows("degenerate_directions",
                 &C::degenerate_directions,
                 "",

@@ -14,6 +14,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/point_matches.h"
 #include "mlndt/cost/transform_derivatives.h"
+#include "mlndt/registration/localizability.h"
 
 namespace mlndt {
 
@@ -55,6 +56,13 @@ const OptionTable& QualityCheckOptionsTable() {
                   RightOpen(0.0, 1.0),
                   "DEGENERATE below this weakest/strongest information "
                   "ratio.")
+          .Double("min_localizability",
+                  &S::min_localizability,
+                  "",
+                  RightOpen(0.0, 1.0),
+                  "DEGENERATE when fewer than this share of the inliers on "
+                  "planar cells constrain a direction of the pose through "
+                  "their normal (localizability, dimensionless); 0 = off.")
           .Double("max_flatness",
                   &S::max_flatness,
                   "",
@@ -187,6 +195,39 @@ Probe ProbeDirection(const NdtLayer& layer,
   return probe;
 }
 
+// True when d is within about 25 deg of one of `directions` (either sign).
+bool AlreadyNamed(const std::vector<Vector6d>& directions, const Vector6d& d) {
+  for (const Vector6d& named : directions) {
+    if (std::abs(named.dot(d)) > 0.9) return true;
+  }
+  return false;
+}
+
+// The translation's localizability (localizability.h) into *analysis; the
+// directions below options.min_localizability, unless already named, join
+// its degenerate directions.
+void AddUnlocalizableDirections(const std::vector<PointMatch>& matches,
+                                const QualityCheckOptions& options,
+                                ConstraintAnalysis* analysis) {
+  const Localizability localizability =
+      LocalizabilityOf(matches, options.inlier_gate);
+  if (localizability.planar_points == 0) return;
+  Eigen::Index least = 0;
+  analysis->localizability = localizability.share.minCoeff(&least);
+  analysis->least_localizable_direction.head<3>() =
+      localizability.directions.col(least);
+  for (int k = 0; k < 3; ++k) {
+    Vector6d d = Vector6d::Zero();
+    d.head<3>() = localizability.directions.col(k);
+    if (localizability.share(k) >= options.min_localizability ||
+        AlreadyNamed(analysis->degenerate_directions, d)) {
+      continue;
+    }
+    analysis->degenerate_directions.push_back(d);
+    analysis->unlocalizable_directions++;
+  }
+}
+
 // AnalyseConstraints on points already matched at the pose.
 ConstraintAnalysis AnalyseMatched(
     const NdtLayer& layer,
@@ -210,6 +251,7 @@ ConstraintAnalysis AnalyseMatched(
     }
   }
   if (!(mu(5) > 0.0)) return analysis;
+  AddUnlocalizableDirections(matches, options, &analysis);
   analysis.weakest_translations =
       Eigen::SelfAdjointEigenSolver<Matrix3d>(sums.planar.topLeftCorner<3, 3>())
           .eigenvectors();
@@ -224,7 +266,8 @@ ConstraintAnalysis AnalyseMatched(
   const std::vector<bool> inlier = InlierFlags(matches, options.inlier_gate);
   // The ratio has already named this many free directions: the probe names
   // only weaker-ranked ones beyond them.
-  const size_t by_ratio = analysis.degenerate_directions.size();
+  const size_t by_ratio =
+      analysis.degenerate_directions.size() - analysis.unlocalizable_directions;
   for (int i = 0; i < 3 && lambda(i) < kProbedConstraintRatio * largest; ++i) {
     const Vector6d d = solver.eigenvectors().col(i);
     const Probe probe = ProbeDirection(layer,
@@ -242,7 +285,8 @@ ConstraintAnalysis AnalyseMatched(
     }
     if (static_cast<size_t>(i) >= by_ratio &&
         probe.kept > options.max_flatness &&
-        probe.evidence < options.min_probe_evidence) {
+        probe.evidence < options.min_probe_evidence &&
+        !AlreadyNamed(analysis.degenerate_directions, d)) {
       analysis.degenerate_directions.push_back(d);
       analysis.flat_directions++;
     }
@@ -374,6 +418,11 @@ TerminationType CheckQuality(const QualityCheckOptions& options,
     if (constraints.flat_directions > 0) {
       why << " (moving the pose one cell along it keeps "
           << std::lround(100.0 * constraints.flatness) << " % of the inliers)";
+    } else if (constraints.unlocalizable_directions > 0) {
+      why << " (" << 100.0 * constraints.localizability
+          << " % of the inliers on planar surfaces constrain it through "
+             "their normal, below "
+          << 100.0 * options.min_localizability << " %)";
     } else {
       why << " (constraint ratio " << constraints.constraint_ratio << " < "
           << options.min_constraint_ratio << ")";

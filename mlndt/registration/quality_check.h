@@ -31,6 +31,9 @@
 //    but real constraint (a street's cross walls) loses the points on the
 //    surfaces across it: 7-17 % of the inliers (ProbeDirection in
 //    quality_check.cc).
+//  - localizability (localizability.h): the share of the inliers on planar
+//    cells whose normal constrains each direction of the pose; a direction
+//    that almost none constrain is free (min_localizability).
 
 #include <limits>
 #include <string>
@@ -68,6 +71,15 @@ struct QualityCheckOptions {
   // fraction of the strongest one's constraint (ConstraintAnalysis). In
   // [0, 1).
   double min_constraint_ratio = 0.01;
+  // DEGENERATE when fewer than this share of the inliers on planar cells
+  // constrain a direction of the pose through their normal
+  // (Localizability, localizability.h): the surfaces the points lie on
+  // leave that direction free (a corridor's axis, a wall's plane), whatever
+  // the point density. Off by default: at 0.02 (chosen on the simulator's
+  // training seeds 0-3) it flags right results on the KITTI crops that
+  // tests/registration/weak_geometry_test.cc holds (docs/trust.md). In
+  // [0, 1); 0 = off.
+  double min_localizability = 0.0;
   // DEGENERATE when moving the pose by one last-layer cell edge along one of
   // its weak directions keeps more than `max_flatness` of the inliers both
   // ways, and the net loss is below `min_probe_evidence` standard deviations
@@ -99,6 +111,14 @@ struct ConstraintAnalysis {
   // when every direction is constrained alike, 0 for a direction with no
   // information.
   double constraint_ratio = 0.0;
+  // The smallest share of the inliers on planar cells that constrain a
+  // direction of the pose (Localizability::share; localizability.h): 0
+  // along a free direction, about 1/6 or more in a well-conditioned scene.
+  double localizability = 0.0;
+  // That direction (unit, scaled as the rows above).
+  Vector6d least_localizable_direction = Vector6d::Zero();
+  // How many of degenerate_directions are below min_localizability.
+  int unlocalizable_directions = 0;
   // Unit directions (translation [m]; rotation vector scaled by L) whose
   // eigenvalue is below min_constraint_ratio times the largest.
   std::vector<Vector6d> degenerate_directions;

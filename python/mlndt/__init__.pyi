@@ -89,6 +89,7 @@ class QualityCheckOptions(TypedDict, total=False):
     min_inlier_fraction: float
     max_mean_score: float
     min_constraint_ratio: float
+    min_localizability: float
     max_flatness: float
     min_probe_evidence: float
     min_fit_points: int
@@ -151,6 +152,9 @@ class FitQuality(TypedDict):
 
 class ConstraintAnalysis(TypedDict):
     constraint_ratio: float
+    localizability: float
+    least_localizable_direction: npt.NDArray[np.float64]
+    unlocalizable_directions: int
     degenerate_directions: npt.NDArray[np.float64]
     flatness: float
     probe_evidence: float

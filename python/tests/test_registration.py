@@ -59,6 +59,9 @@ def test_result_fields_are_consistent(koide3, koide3_result):
     }
     assert set(result.constraints) == {
         "constraint_ratio",
+        "localizability",
+        "least_localizable_direction",
+        "unlocalizable_directions",
         "degenerate_directions",
         "flatness",
         "probe_evidence",
