@@ -2,6 +2,7 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -91,15 +92,14 @@ void Demote(TerminationType type,
   summary->termination_type = type;
 }
 
-void DemotePoorFit(double min_inliers, RegistrationSummary* summary) {
-  char why[160];
-  std::snprintf(why,
-                sizeof(why),
-                "fits the map worse than the map's own points do: "
-                "inliers %.3f < %.3f",
-                summary->quality.inlier_fraction,
-                min_inliers);
-  Demote(TerminationType::LOW_QUALITY, why, summary);
+// The inlier fraction among the points whose own cell the map holds: what
+// the map can explain at any pose. A scan that sees beyond the mapped
+// region keeps the points outside out of the comparison with the map's own
+// points (its inlier_fraction alone would call a right pose of a scan that
+// reaches past a one-frame map a poor fit).
+double CoveredInlierFraction(const FitQuality& quality) {
+  if (quality.own_cell_fraction <= 0.0) return 0.0;
+  return std::min(1.0, quality.inlier_fraction / quality.own_cell_fraction);
 }
 
 void DemoteNotKept(const InitialGuessUncertainty& prior,
@@ -119,7 +119,7 @@ void DemoteNotKept(const InitialGuessUncertainty& prior,
       RotationErrorRad(guess, summary->reference_from_input) * kRadToDeg,
       prior.translation_m,
       prior.rotation_deg,
-      summary->quality.inlier_fraction);
+      CoveredInlierFraction(summary->quality));
   Demote(TerminationType::LOW_QUALITY, why, summary);
 }
 
@@ -189,14 +189,7 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
   const double min_inliers =
       options.min_fit_ratio *
       GaussianInlierShare(registration.quality_check.inlier_gate);
-  if (!prior.given) {
-    // No prior: the fit alone.
-    if (summary->IsSolutionUsable() &&
-        summary->quality.inlier_fraction < min_inliers) {
-      DemotePoorFit(min_inliers, summary);
-    }
-    return;
-  }
+  if (!prior.given) return;  // The registration's verdict stands.
 
   // Step 2: every usable result within the prior that fits as the map's
   // own points do, the first run's first.
@@ -204,7 +197,7 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
   const auto keep = [&](const RegistrationSummary& s) {
     if (s.IsSolutionUsable() &&
         WithinPrior(prior, guess, s.reference_from_input) &&
-        s.quality.inlier_fraction >= min_inliers) {
+        CoveredInlierFraction(s.quality) >= min_inliers) {
       kept.push_back(s);
     }
   };

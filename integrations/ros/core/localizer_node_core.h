@@ -12,9 +12,9 @@
 // no jump: no pose is published, map -> odom stays where the last usable
 // one put it (re-stamped), and a warning and a WARN/ERROR diagnostic say
 // so; the Localizer starts the next scan from the last usable pose, with an
-// uncertainty grown by the gap, as the tool does. Clouds before the first pose wait (waiting_for_initial_pose); a
-// malformed or empty cloud or a stamp not after the last one is refused as
-// the odometry node refuses it.
+// uncertainty grown by the gap, as the tool does. Clouds before the first pose
+// wait (waiting_for_initial_pose); a malformed or empty cloud or a stamp not
+// after the last one is refused as the odometry node refuses it.
 
 #include <array>
 #include <memory>
