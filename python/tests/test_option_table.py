@@ -131,23 +131,35 @@ def test_nested_tool_table_fields_are_keywords(description):
         for row in table["options"]:
             path, kind = row["field"], row["type"]
             assert row["flag"] in ("", path.replace(".", "_")), row
-            def keyword(value):
-                if "." not in path:
-                    return {path: value}
-                outer, inner = path.split(".")
-                return {outer: {inner: value}}
-
-            cls(**keyword(python_value(row["default"], kind)))  # A keyword.
+            cls(**as_keyword(path, python_value(row["default"], kind)))  # A keyword.
             with pytest.raises(ValueError, match=re.escape(path)):
-                cls(**keyword(object()))
+                cls(**as_keyword(path, object()))
             checked += 1
     assert checked >= 16
 
 
 def documented_defaults(doc):
     """{name: default} of the "    name: type = default" lines a table's
-    description puts into a docstring."""
-    return {m.group(1): m.group(2).strip('"') for m in re.finditer(r"^    (\w+): .+ = (.+)$", doc, re.M)}
+    description puts into a docstring; a nested struct's fields, indented
+    below its "    name: dict (...)" line, as "name.field"."""
+    found, outer = {}, None
+    for m in re.finditer(r"^(    |        )(\w+): (.+)$", doc, re.M):
+        indent, name, rest = m.groups()
+        if len(indent) == 4:
+            outer = name if rest.startswith("dict") else None
+        if " = " not in rest:
+            continue
+        key = name if len(indent) == 4 else f"{outer}.{name}"
+        found[key] = rest.rsplit(" = ", 1)[1].strip('"')
+    return found
+
+
+def as_keyword(path, value):
+    """The keyword of a field path: {"a": v}, or {"a": {"b": v}} for "a.b"."""
+    if "." not in path:
+        return {path: value}
+    outer, inner = path.split(".")
+    return {outer: {inner: value}}
 
 
 def python_value(text, kind):
@@ -176,8 +188,8 @@ def test_tool_table_fields_are_keywords_with_their_defaults(description, small_m
             name, kind = row["field"], row["type"]
             assert name in documented, f"{table['struct']}.{name} is not documented by {cls.__name__}"
             assert same_default(python_value(documented[name], kind), row["default"], kind), (name, documented[name])
-            cls(small_map, **{name: python_value(row["default"], kind)})  # A keyword.
-            with pytest.raises(ValueError, match=r"invalid option: " + name + " = "):
-                cls(small_map, **{name: object()})
+            cls(small_map, **as_keyword(name, python_value(row["default"], kind)))  # A keyword.
+            with pytest.raises(ValueError, match=r"invalid option: " + re.escape(name) + " = "):
+                cls(small_map, **as_keyword(name, object()))
             checked += 1
     assert checked >= 1
