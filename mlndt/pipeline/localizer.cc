@@ -129,14 +129,19 @@ void Localizer::LocalizeWithin(const PointCloud& scan,
   ++num_localized_;
 }
 
-bool LocalizeScans(const LocalizerOptions& options,
-                   const LayeredGrid& map,
-                   const Isometry3d& first_map_from_scan,
-                   size_t num_scans,
-                   const ScanLoader& load_scan,
-                   const LocalizationCallback& on_result,
-                   std::vector<LocalizationResult>* results,
-                   std::string* error) {
+namespace {
+
+// The loop of LocalizeScans and LocalizeScansFromGuesses: scan k from the
+// prediction, or from (*guesses)[k] when `guesses` is not null.
+bool LocalizeEach(const LocalizerOptions& options,
+                  const LayeredGrid& map,
+                  const Isometry3d& first_map_from_scan,
+                  size_t num_scans,
+                  const std::vector<Isometry3d>* guesses,
+                  const ScanLoader& load_scan,
+                  const LocalizationCallback& on_result,
+                  std::vector<LocalizationResult>* results,
+                  std::string* error) {
   CHECK(results != nullptr);
   CHECK(error != nullptr);
   CHECK(load_scan);
@@ -154,11 +159,36 @@ bool LocalizeScans(const LocalizerOptions& options,
     if (!load_scan(k, &scan, error)) return false;
     LocalizationResult result;
     result.load_time_s = NowSeconds() - start;
-    localizer.Localize(scan, &result);
+    if (guesses != nullptr) {
+      localizer.LocalizeFrom(scan, (*guesses)[k], &result);
+    } else {
+      localizer.Localize(scan, &result);
+    }
     results->push_back(std::move(result));
     if (on_result) on_result(results->back());
   }
   return true;
+}
+
+}  // namespace
+
+bool LocalizeScans(const LocalizerOptions& options,
+                   const LayeredGrid& map,
+                   const Isometry3d& first_map_from_scan,
+                   size_t num_scans,
+                   const ScanLoader& load_scan,
+                   const LocalizationCallback& on_result,
+                   std::vector<LocalizationResult>* results,
+                   std::string* error) {
+  return LocalizeEach(options,
+                      map,
+                      first_map_from_scan,
+                      num_scans,
+                      nullptr,
+                      load_scan,
+                      on_result,
+                      results,
+                      error);
 }
 
 bool LocalizeScansFromGuesses(const LocalizerOptions& options,
@@ -168,29 +198,17 @@ bool LocalizeScansFromGuesses(const LocalizerOptions& options,
                               const LocalizationCallback& on_result,
                               std::vector<LocalizationResult>* results,
                               std::string* error) {
-  CHECK(results != nullptr);
-  CHECK(error != nullptr);
-  CHECK(load_scan);
-  results->clear();
-  if (!options.IsValid(error)) return false;
-  if (map.empty()) {
-    *error = "the map is empty";
-    return false;
-  }
-  if (guesses.empty()) return true;
-  Localizer localizer(options, map, guesses.front());
-  PointCloud scan;
-  results->reserve(guesses.size());
-  for (size_t k = 0; k < guesses.size(); ++k) {
-    const double start = NowSeconds();
-    if (!load_scan(k, &scan, error)) return false;
-    LocalizationResult result;
-    result.load_time_s = NowSeconds() - start;
-    localizer.LocalizeFrom(scan, guesses[k], &result);
-    results->push_back(std::move(result));
-    if (on_result) on_result(results->back());
-  }
-  return true;
+  const Isometry3d first =
+      guesses.empty() ? Isometry3d::Identity() : guesses.front();
+  return LocalizeEach(options,
+                      map,
+                      first,
+                      guesses.size(),
+                      &guesses,
+                      load_scan,
+                      on_result,
+                      results,
+                      error);
 }
 
 }  // namespace mlndt
