@@ -15,8 +15,8 @@
 //     the scan is registered again from starts on the prior's half-bound
 //     around the guess: moved by +-translation/2 along the sensor's x and y,
 //     and turned by +-rotation/2 about the sensor's z (the guess's own
-//     frame: which way a hand-held sensor is off is not known). Each start
-//     gets the same prior;
+//     frame: which way a hand-held sensor is off is not known;
+//     StartsAround). Each start gets the same prior;
 //  2. keeps the usable results (IsSolutionUsable) that lie within the prior
 //     (4) and fit the map as well as the map's own points do (below); of
 //     those the one with the most inliers (FitQuality::
@@ -26,7 +26,9 @@
 //     prior fits as well") when another kept result lies farther than half
 //     a finest cell edge or explore_distinct_rotation_deg from it and has an
 //     inlier fraction within ambiguity_inlier_margin of it: the data do not
-//     decide between two places the prior allows;
+//     decide between two places the prior allows (a rival minimum,
+//     registration/rival_minima.h, as the registration's own verdict and
+//     the odometry's confirmation ask it);
 //  4. calls a usable result outside the prior LOW_QUALITY ("outside the
 //     prior"): |t| > translation_m or angle > rotation_deg of
 //     guess^-1 * result. A result 6.9 m from a guess stated good to 2 m is

@@ -9,6 +9,7 @@
 #include "mlndt/cost/point_matches.h"
 #include "mlndt/cost/score.h"
 #include "mlndt/registration/quality_check.h"
+#include "mlndt/registration/rival_minima.h"
 
 namespace mlndt {
 namespace internal {
@@ -162,24 +163,30 @@ bool KeepBetter(Attempt candidate, Attempt* best) {
   return false;
 }
 
-// How far apart two poses lie, in last-layer cell edges: the translation
-// plus the rotation at the points' RMS range.
-double CellsApart(const Context& c, const Vector6d& a, const Vector6d& b) {
-  const Isometry3d pose_a = PoseVectorToIsometry(a);
-  const Isometry3d pose_b = PoseVectorToIsometry(b);
-  return (TranslationErrorM(pose_a, pose_b) +
-          RotationErrorRad(pose_a, pose_b) * c.problem.rms_range_m) /
-         c.problem.last().cell_size();
+// Minima more than `cells` last-layer cell edges apart, the rotation
+// counted as what it moves a point at the points' RMS range
+// (rival_minima.h).
+MinimaSeparation SeparationInCells(const Context& c, double cells) {
+  MinimaSeparation separation;
+  separation.cell_size_m = c.problem.last().cell_size();
+  separation.max_cells = cells;
+  separation.lever_m = c.problem.rms_range_m;
+  return separation;
 }
 
-// True when the two poses lie more than a tenth of a last-layer cell apart
-// (CellsApart): different basins, of which the better fit is kept. Closer,
-// they are one minimum where each run stopped, and the first is kept, so
-// that the result does not flip between the two on round-off.
+// Two runs that stop within this many last-layer cell edges of each other
+// reached one minimum where each stopped: the first is kept, so that the
+// result does not flip between the two on round-off.
+constexpr double kSameBasinCells = 0.1;
+
+// True when `xi_local` lies in another basin than `best_xi_local`
+// (kSameBasinCells apart): of the two, the better fit is kept.
 bool AnotherBasin(const Context& c,
                   const Vector6d& xi_local,
                   const Vector6d& best_xi_local) {
-  return CellsApart(c, xi_local, best_xi_local) > 0.1;
+  return DistinctMinima(SeparationInCells(c, kSameBasinCells),
+                        PoseVectorToIsometry(xi_local),
+                        PoseVectorToIsometry(best_xi_local));
 }
 
 // Where a stage on `layer` (the last layer, or step 4's planar one) leads
@@ -539,14 +546,13 @@ void CheckTheScanPattern(const Context& c, Attempt* attempt) {
   }
 }
 
-// Two minima more than this many last-layer cell edges apart (CellsApart)
-// are distinct: within half a cell most points keep their cells, and the
-// hand-held Livox pairs' wide basins hold minima up to 0.4 cell edges apart
-// that fit as well (docs/trust.md).
+// Two minima more than this many last-layer cell edges apart are distinct:
+// within half a cell most points keep their cells.
 constexpr double kDistinctMinimaCells = 0.5;
 
 // A distinct minimum fits as well as the result unless it holds clearly
-// fewer inliers on the last layer (InlierGainEvidence below minus this).
+// fewer inliers on the last layer (InlierGainEvidence below minus this
+// many standard deviations).
 constexpr double kAsGoodInlierEvidence = 1.0;
 
 // From pose a to pose b as the constraint rows scale it: the translation,
@@ -561,37 +567,42 @@ Vector6d ScaledDifference(const Isometry3d& a,
 }
 
 // Step 6 above: a converged result is DEGENERATE when a distinct minimum
-// that a run converged to fits as well: the data do not decide between the
-// two (the KITTI input cropped to 8 m, 1->2: where the sensors coincide and
-// 0.63 m ahead, 91 % and 90 % of the points are inliers). The direction
-// from the result to it is named, and unbounded in the covariance.
-void FlagAnotherMinimumAsGood(const Context& c, Attempt* best) {
+// that a run converged to fits as well (FindRivalMinimum): the data do not
+// decide between the two. The direction from the result to it is named,
+// and unbounded in the covariance.
+void FlagRivalMinimum(const Context& c, Attempt* best) {
   if (best->verdict != TerminationType::CONVERGENCE) return;
+  std::vector<Isometry3d> minima = {PoseVectorToIsometry(best->xi_local)};
   for (const Vector6d& minimum : *c.minima) {
-    if (CellsApart(c, best->xi_local, minimum) <= kDistinctMinimaCells ||
-        InlierGainEvidence(c, c.problem.last(), best->xi_local, minimum) <
-            -kAsGoodInlierEvidence) {
-      continue;
-    }
-    const Isometry3d result = PoseVectorToIsometry(best->xi_local);
-    const Isometry3d other = PoseVectorToIsometry(minimum);
-    const Vector6d d = ScaledDifference(result, other, c.problem.rms_range_m);
-    char apart[64];
-    std::snprintf(apart,
-                  sizeof(apart),
-                  "%.2f m and %.2f deg",
-                  TranslationErrorM(result, other),
-                  RotationErrorRad(result, other) * kRadToDeg);
-    best->constraints.degenerate_directions.push_back(d.normalized());
-    best->verdict = TerminationType::DEGENERATE;
-    best->verdict_message =
-        std::string(
-            "degenerate: the fit does not decide between this pose "
-            "and another minimum ") +
-        apart + " away (" + DescribeDirection(d) +
-        ") with about as many inliers";
-    return;
+    minima.push_back(PoseVectorToIsometry(minimum));
   }
+  RivalMinimaOptions options;
+  options.separation = SeparationInCells(c, kDistinctMinimaCells);
+  options.as_well_margin = kAsGoodInlierEvidence;
+  // The fit: the inlier gain's z-score from the result (0 at the result).
+  const RivalMinimaSummary rival =
+      FindRivalMinimum(options, minima, 0, [&](size_t i) {
+        if (i == 0) return 0.0;
+        return InlierGainEvidence(
+            c, c.problem.last(), best->xi_local, (*c.minima)[i - 1]);
+      });
+  if (!rival.found()) return;
+  const Vector6d d = ScaledDifference(minima[0],
+                                      minima[static_cast<size_t>(rival.rival)],
+                                      c.problem.rms_range_m);
+  char apart[64];
+  std::snprintf(apart,
+                sizeof(apart),
+                "%.2f m and %.2f deg",
+                rival.apart_m,
+                rival.apart_deg);
+  best->constraints.degenerate_directions.push_back(d.normalized());
+  best->verdict = TerminationType::DEGENERATE;
+  best->verdict_message =
+      std::string(
+          "degenerate: the fit does not decide between this pose "
+          "and another minimum ") +
+      apart + " away (" + DescribeDirection(d) + ") with about as many inliers";
 }
 
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
@@ -629,7 +640,7 @@ Attempt SolveAttempts(const RegistrationOptions& options,
     CheckTheScanPattern(c, &turned);
     KeepBetter(std::move(turned), &best);
   }
-  FlagAnotherMinimumAsGood(c, &best);
+  FlagRivalMinimum(c, &best);
   return best;
 }
 
