@@ -46,8 +46,7 @@
 //
 // The map's own points are a map accumulated from many viewpoints (as
 // mlndt_map builds one from a sequence): a map of one sparse scan fits its
-// neighbours' right poses worse (KITTI frames 1-7 on frame 0's map: 0.79 to
-// 0.85 of the covered points inliers), and needs a lower ratio or 0.
+// neighbours' right poses worse, and needs a lower ratio or 0 (docs/maps.md).
 //
 // A prior that is not given (InitialGuessUncertainty::given false): none of
 // 1-4 runs; the registration's verdict stands.
@@ -71,11 +70,11 @@ struct PriorCheckOptions {
   // cell edge or than this rotation [deg]. In (0, 180].
   double explore_distinct_rotation_deg = 5.0;
   // Another minimum whose inlier fraction is at least the best's minus this
-  // fits as well (step 3). Chosen on the train half of the Livox starts
+  // fits as well (step 3). Chosen on a train half of starts
   // (docs/maps.md). In [0, 1].
   double ambiguity_inlier_margin = 0.02;
   // The fit the map's own points give, times this, is the least a kept
-  // result needs (above). Chosen on the train half of the Livox starts
+  // result needs (above). Chosen on a train half of starts
   // (docs/maps.md). In [0, 1]; 0 = off.
   double min_fit_ratio = 0.95;
 

@@ -8,6 +8,8 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/point_matches.h"
 #include "mlndt/cost/score.h"
+#include "mlndt/registration/internal/cell_shape.h"
+#include "mlndt/registration/internal/direction_probe.h"
 #include "mlndt/registration/quality_check.h"
 #include "mlndt/registration/rival_minima.h"
 
@@ -215,8 +217,8 @@ StageControl SubsetControl(const Context& c) {
 // The last layer alone from `start`, unassessed. A run the iteration cap
 // stopped goes on once from where it stopped: a candidate of the search
 // starts a cell edge or more from its minimum and can still be sliding along
-// a weak direction when the cap ends it (a road seen within 8 m), and an
-// unconverged solution cannot compete with a converged one.
+// a weak direction when the cap ends it, and an unconverged solution cannot
+// compete with a converged one.
 Attempt SolveLastLayer(const Context& c, const Vector6d& start) {
   const int n = c.problem.map.num_layers();
   Attempt attempt = Solve(c, n, start, /*assess=*/false);
@@ -257,9 +259,9 @@ bool LastLayerInAnotherBasin(const Context& c,
 
 // A solution found by the search replaces best only when it has more
 // inliers by at least this many standard deviations of the points that
-// changed (InlierGainEvidence): among the minima of a wide, flat basin
-// (hand-held Livox scans) the inlier count differs by chance, and a smaller
-// margin swaps a right result for another one nearby (docs/trust.md).
+// changed (InlierGainEvidence): among the minima of a wide, flat basin the
+// inlier count differs by chance, and a smaller margin swaps a right result
+// for another one nearby.
 constexpr double kMinInlierGainEvidence = 1.0;
 
 // More inliers at all (InlierGainEvidence > 0): what a minimum beyond the
@@ -295,7 +297,7 @@ Eigen::Vector3d SensorPosition(const Context& c, const Vector6d& xi_local) {
 
 // True when step 4 applies to `attempt`: converged, its translation within
 // retry.scan_pattern_reach_cells last-layer cell edges of zero.
-bool NearTheSensorsCoinciding(const Context& c, const Attempt& attempt) {
+bool AtZeroMotion(const Context& c, const Attempt& attempt) {
   const double reach_m =
       c.options.retry.scan_pattern_reach_cells * c.problem.last().cell_size();
   return attempt.verdict == TerminationType::CONVERGENCE &&
@@ -329,9 +331,7 @@ bool ConvergedWithMoreInliers(const Context& c,
 // coincide. Its verdict stands unless it converged with no more inliers on
 // the whole last layer (only the planar cells prefer it): then the rings and
 // the planes disagree, and it is LOW_QUALITY.
-void ReplaceAtTheCoincidence(const Context& c,
-                             Attempt other,
-                             Attempt* current) {
+void ReplacePatternMinimum(const Context& c, Attempt other, Attempt* current) {
   if (other.verdict == TerminationType::CONVERGENCE &&
       !ConvergedWithMoreInliers(c, *current, other, kAnyInlierGain)) {
     other.verdict = TerminationType::LOW_QUALITY;
@@ -348,14 +348,13 @@ void ReplaceAtTheCoincidence(const Context& c,
 // that solution, assessed, replaces best if it fits better: on the planar
 // cells when best converged where the sensors coincide (the coarse layers
 // can carry a guess into the pattern's minimum), else by KeepBetter.
-void CheckTheGuess(const Context& c, Attempt* best) {
+void CompareWithLastLayerFromGuess(const Context& c, Attempt* best) {
   ++c.cost->attempts;
   Attempt from_guess;
   if (LastLayerInAnotherBasin(c, c.initial_local, *best, &from_guess)) {
     Assess(c, &from_guess);
-    if (NearTheSensorsCoinciding(c, *best) &&
-        PlanarCellsPrefer(c, *best, from_guess)) {
-      ReplaceAtTheCoincidence(c, std::move(from_guess), best);
+    if (AtZeroMotion(c, *best) && PlanarCellsPrefer(c, *best, from_guess)) {
+      ReplacePatternMinimum(c, std::move(from_guess), best);
     } else {
       KeepBetter(std::move(from_guess), best);
     }
@@ -370,12 +369,10 @@ using Preference = bool (*)(const Context& c,
 
 // Steps 3 and 4's first part: converged, with clearly more inliers on the
 // last layer (kMinInlierGainEvidence), and an objective (Eq. 10 with the
-// robust loss, on the last layer) no higher than current's. In a hand-held
-// Livox scan's wide basin a minimum a few centimetres away can gain inliers
-// at the gate's edge while the bulk of the points fits worse (211->212 from
-// its prior, 3.4 cm off: 9.4 cm off with a higher score than at the prior).
-// The score alone does not decide, since a point that leaves the map scores
-// nothing.
+// robust loss, on the last layer) no higher than current's: in a wide
+// basin a minimum nearby can gain inliers at the gate's edge while the bulk
+// of the points fits worse. The score alone does not decide, since a point
+// that leaves the map scores nothing.
 bool ClearlyMoreInliers(const Context& c,
                         const Attempt& current,
                         const Attempt& other) {
@@ -387,9 +384,9 @@ bool ClearlyMoreInliers(const Context& c,
 // pattern adds inliers to `current`, so a converged `other` with more
 // inliers at all (kAnyInlierGain) fits better, and so does one the planar
 // cells prefer.
-bool BetterBeyondThePattern(const Context& c,
-                            const Attempt& current,
-                            const Attempt& other) {
+bool FitsBetterThanPatternMinimum(const Context& c,
+                                  const Attempt& current,
+                                  const Attempt& other) {
   return ConvergedWithMoreInliers(c, current, other, kAnyInlierGain) ||
          PlanarCellsPrefer(c, current, other);
 }
@@ -434,7 +431,7 @@ bool BetterMinimumAlong(const Context& c,
 
 // One round of the search along best's flattest weak direction, one cell
 // edge each way; true when a solution in another basin replaced best.
-bool ExploreWeakDirection(const Context& c, Attempt* best) {
+bool BetterMinimumAlongFlattest(const Context& c, Attempt* best) {
   const Vector6d d = best->constraints.flattest_direction;
   if (d.isZero() || best->constraints.flatness <
                         c.options.retry.weak_direction_min_flatness) {
@@ -450,12 +447,12 @@ bool ExploreWeakDirection(const Context& c, Attempt* best) {
          KeepBetter(std::move(moved), best);
 }
 
-// Step 3 above: rounds of ExploreWeakDirection while the result converged
+// Step 3 above: rounds of BetterMinimumAlongFlattest while the result converged
 // and the last round found a better minimum.
-void SearchWeakDirection(const Context& c, Attempt* best) {
+void SearchAlongFlattestDirection(const Context& c, Attempt* best) {
   for (int round = 0; round < c.options.retry.weak_direction_rounds; ++round) {
     if (best->verdict != TerminationType::CONVERGENCE ||
-        !ExploreWeakDirection(c, best)) {
+        !BetterMinimumAlongFlattest(c, best)) {
       return;
     }
   }
@@ -464,11 +461,11 @@ void SearchWeakDirection(const Context& c, Attempt* best) {
 // Step 4's first part: where the planar cells alone lead from *attempt.
 // True when *attempt stands; false when a clearly better solution replaced
 // it or it was flagged LOW_QUALITY.
-bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
+bool PlanarCellsReturn(const Context& c, Attempt* attempt) {
   const NdtLayer& planar = c.problem.planar_last();
   // The last layer's stage over the samples and iterations of the layer
-  // before it (every 2nd sample: a sparser subset moves on its own sampling
-  // noise, and flagged right Livox results); a one-layer map's own.
+  // before it (a sparser subset moves on its own sampling noise); a
+  // one-layer map's own.
   const int n = c.problem.map.num_layers();
   const StageControl before_last =
       StageControlFor(c.options.schedule, std::max(1, n - 1), n);
@@ -478,11 +475,11 @@ bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
   Vector6d led = attempt->xi_local;
   if (!ExploreFrom(c, planar, control, &led)) return true;
   // The pattern holds the sensor's position: only a translation by more
-  // than AnotherBasin's tenth of a cell counts (without the ground's rings
-  // the planar cells may tilt the pose a little, as on koide3).
+  // than kSameBasinCells counts (without the ground's rings the planar
+  // cells may tilt the pose a little).
   const double led_m =
       (SensorPosition(c, led) - SensorPosition(c, attempt->xi_local)).norm();
-  if (led_m <= 0.1 * c.problem.last().cell_size()) return true;
+  if (led_m <= kSameBasinCells * c.problem.last().cell_size()) return true;
   Attempt other;
   if (LastLayerInAnotherBasin(c, led, *attempt, &other)) {
     if (FitsBetter(c, *attempt, ClearlyMoreInliers, &other)) {
@@ -501,17 +498,15 @@ bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
 }
 
 // Step 4's second part: the scene's own minimum may lie beyond the
-// pattern's, along d, the translation the planar cells constrain least (a
-// road seen within 8 m, or ahead in a 30 deg wedge: 0.7-1.5 m ahead). Only
-// where they keep as many of their inliers one cell edge along d (their
-// ProbeAlong, quality_check.h) as the search (step 3) needs of the flattest
-// direction can such a minimum lie near (koide3's d, constrained, keeps
-// 20 %). The last layer runs from the
-// result moved along d and back by (1 + reach) cell edges: out of the
+// pattern's, along d, the translation the planar cells constrain least.
+// Only where they keep as many of their inliers one cell edge along d
+// (ProbeAlong, direction_probe.h) as the search (step 3) needs of the
+// flattest direction can such a minimum lie near. The last layer runs from
+// the result moved along d and back by (1 + reach) cell edges: out of the
 // pattern's reach and of its neighbouring cells' pull. A minimum in another
-// basin that fits BetterBeyondThePattern replaces the result
-// (ReplaceAtTheCoincidence).
-void LookBeyondThePattern(const Context& c, Attempt* attempt) {
+// basin that FitsBetterThanPatternMinimum replaces the result
+// (ReplacePatternMinimum).
+void SearchBeyondPatternReach(const Context& c, Attempt* attempt) {
   Vector6d d = Vector6d::Zero();
   d.head<3>() = attempt->constraints.weakest_translations.col(0);
   if (d.isZero() ||
@@ -531,18 +526,18 @@ void LookBeyondThePattern(const Context& c, Attempt* attempt) {
                          d,
                          (1.0 + c.options.retry.scan_pattern_reach_cells) *
                              c.problem.last().cell_size(),
-                         BetterBeyondThePattern,
+                         FitsBetterThanPatternMinimum,
                          &found)) {
-    ReplaceAtTheCoincidence(c, std::move(found), attempt);
+    ReplacePatternMinimum(c, std::move(found), attempt);
   }
 }
 
 // Step 4 above, on a converged *attempt where the sensors nearly coincide.
-void CheckTheScanPattern(const Context& c, Attempt* attempt) {
-  if (!NearTheSensorsCoinciding(c, *attempt)) return;
+void CheckPatternMinimum(const Context& c, Attempt* attempt) {
+  if (!AtZeroMotion(c, *attempt)) return;
   ++c.cost->attempts;
-  if (StandsOnThePlanarCells(c, attempt)) {
-    LookBeyondThePattern(c, attempt);
+  if (PlanarCellsReturn(c, attempt)) {
+    SearchBeyondPatternReach(c, attempt);
   }
 }
 
@@ -629,15 +624,16 @@ Attempt SolveAttempts(const RegistrationOptions& options,
   cost->attempts = 1;
   if (best.schedule.termination_type == TerminationType::FAILURE) return best;
   const InitialGuessUncertainty& u = options.initial_uncertainty;
-  if (start < n && LeftTheGuess(c, best.xi_local)) CheckTheGuess(c, &best);
-  SearchWeakDirection(c, &best);
-  CheckTheScanPattern(c, &best);
+  if (start < n && LeftTheGuess(c, best.xi_local))
+    CompareWithLastLayerFromGuess(c, &best);
+  SearchAlongFlattestDirection(c, &best);
+  CheckPatternMinimum(c, &best);
   for (const double yaw_deg : options.retry.yaw_seeds_deg) {
     if (best.verdict == TerminationType::CONVERGENCE) break;
     if (u.given && std::abs(yaw_deg) > u.rotation_deg) continue;
     ++cost->attempts;
     Attempt turned = Solve(c, start, TurnedGuess(initial_local, yaw_deg));
-    CheckTheScanPattern(c, &turned);
+    CheckPatternMinimum(c, &turned);
     KeepBetter(std::move(turned), &best);
   }
   FlagRivalMinimum(c, &best);
