@@ -35,6 +35,7 @@
 #include "tools/common/option_flags.h"
 #include "tools/common/pose_graph_flags.h"
 #include "tools/common/sequence_flags.h"
+#include "tools/common/tool_main.h"
 #include "tools/common/tool_table_flags.h"
 #include "tools/common/trajectory_evaluation_flags.h"
 
@@ -117,7 +118,7 @@ TEST(ToolOptionFlags, EveryFieldHasItsFlagHelpAndDefault) {
         continue;
       }
       EXPECT_EQ(info.description, field.FullHelp()) << what;
-      EXPECT_EQ(info.filename, "tools/" + flags->tool() + ".cc") << what;
+      EXPECT_EQ(info.filename, tools::MainFile(flags->tool())) << what;
     }
   }
 }
@@ -135,7 +136,7 @@ TEST(ToolOptionFlags, NoFlagOfATableIsUndescribed) {
   for (const auto& [tool, flags] : expected) {
     std::set<std::string> registered;
     for (const gflags::CommandLineFlagInfo& info : all) {
-      if (info.filename == "tools/" + tool + ".cc") {
+      if (info.filename == tools::MainFile(tool)) {
         registered.insert(info.name);
       }
     }

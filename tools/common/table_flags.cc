@@ -7,6 +7,7 @@
 
 #include "tools/common/flag_utils.h"
 #include "tools/common/option_flags_store.h"
+#include "tools/common/tool_main.h"
 
 namespace mlndt {
 namespace tools {
@@ -42,7 +43,7 @@ TableFlags::TableFlags(const OptionTable& table,
                        Names inverted_aliases)
     : table_(table),
       tool_(tool),
-      file_("tools/" + tool + ".cc"),
+      file_(MainFile(tool)),
       renamed_(std::move(renamed)),
       set_by_tool_flag_(std::move(set_by_tool_flag)),
       aliases_(std::move(aliases)),

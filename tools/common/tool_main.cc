@@ -78,9 +78,11 @@ std::string FileName(const std::string& path) {
   return std::filesystem::path(path).filename().string();
 }
 
-// "tools/common/registration_flags.cc" for a flag's full source path.
+// "tools/common/registration_flags.cc" (or "lab/programs/mlndt_suite.cc")
+// for a flag's full source path.
 std::string ShortPath(const std::string& path) {
-  const size_t at = path.rfind("tools/");
+  size_t at = path.rfind("lab/programs/");
+  if (at == std::string::npos) at = path.rfind("tools/");
   return at == std::string::npos ? FileName(path) : path.substr(at);
 }
 
@@ -145,15 +147,29 @@ void RefuseUnreadFlags(const std::vector<std::string>& flags,
 
 std::string VersionLine() { return std::string("mlndt ") + MLNDT_VERSION; }
 
+bool IsLabProgram(const std::string& tool) {
+  static const std::set<std::string> kLabPrograms = {"mlndt_suite",
+                                                     "mlndt_bench",
+                                                     "mlndt_experiments",
+                                                     "mlndt_scaling",
+                                                     "mlndt_covariance",
+                                                     "mlndt_gt_check",
+                                                     "mlndt_pairs"};
+  return kLabPrograms.count(tool) > 0;
+}
+
+std::string MainFile(const std::string& tool) {
+  return (IsLabProgram(tool) ? "lab/programs/" : "tools/") + tool + ".cc";
+}
+
 std::string ToolHelp(const std::string& tool) {
   std::vector<gflags::CommandLineFlagInfo> flags;
   gflags::GetAllFlags(&flags);
-  const std::string own_file = tool + ".cc";
   std::vector<gflags::CommandLineFlagInfo> own;
   std::map<std::string, std::vector<gflags::CommandLineFlagInfo>> shared;
   for (const gflags::CommandLineFlagInfo& flag : flags) {
     const std::string path = ShortPath(flag.filename);
-    if (path == "tools/" + own_file) {
+    if (path == MainFile(tool)) {
       own.push_back(flag);
     } else if (path.rfind("tools/common/", 0) == 0 &&
                HiddenFlags().count(flag.name) == 0) {

@@ -73,7 +73,17 @@ void HideFlagsFromHelp(const std::vector<std::string>& flags);
 void RefuseUnreadFlags(const std::vector<std::string>& flags,
                        const std::string& reason);
 
-// The --help text of the tool `tool` (its file is tools/<tool>.cc).
+// Whose program `tool` is: true for the lab's programs (lab/programs/,
+// built but not installed: mlndt_suite, mlndt_bench, mlndt_experiments,
+// mlndt_scaling, mlndt_covariance, mlndt_gt_check, mlndt_pairs), false for
+// the product's tools (tools/, installed).
+bool IsLabProgram(const std::string& tool);
+
+// The main's file of `tool`: "lab/programs/<tool>.cc" for a lab program,
+// "tools/<tool>.cc" for a tool.
+std::string MainFile(const std::string& tool);
+
+// The --help text of the tool `tool` (its file is MainFile(tool)).
 std::string ToolHelp(const std::string& tool);
 
 // "mlndt <PROJECT_VERSION>".
