@@ -11,7 +11,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/registration/registration.h"
-#include "tools/common/registration_flags.h"
+#include "tools/cli/registration_flags.h"
 
 namespace mlndt {
 namespace {

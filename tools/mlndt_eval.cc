@@ -35,7 +35,7 @@
 // scan; the printed line lists the scans when they are not consecutive.
 //
 // The evaluation's flags are TrajectoryEvaluationOptions' fields
-// (tools/common/trajectory_evaluation_flags.h; the older names
+// (tools/cli/trajectory_evaluation_flags.h; the older names
 // --max_time_difference, --segment_lengths and --segment_step still work).
 //
 // Exit codes: 2 on a bad flag or an input refused before any work (an
@@ -53,14 +53,14 @@
 #include "lab/eval/trajectory_evaluation.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/common/eval_flags.h"
-#include "tools/common/eval_output.h"
-#include "tools/common/flag_utils.h"
-#include "tools/common/json_output.h"
-#include "tools/common/map_inputs.h"
-#include "tools/common/output_files.h"
-#include "tools/common/tool_main.h"
-#include "tools/common/trajectory_evaluation_flags.h"
+#include "tools/cli/eval_flags.h"
+#include "tools/cli/eval_output.h"
+#include "tools/cli/flag_utils.h"
+#include "tools/cli/json_output.h"
+#include "tools/cli/map_inputs.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/tool_main.h"
+#include "tools/cli/trajectory_evaluation_flags.h"
 
 // clang-format off
 DEFINE_string(reference, "", "The reference trajectory (KITTI or TUM)");

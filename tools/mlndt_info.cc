@@ -37,9 +37,9 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
-#include "tools/common/grid_flags.h"
-#include "tools/common/json_output.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/grid_flags.h"
+#include "tools/cli/json_output.h"
+#include "tools/cli/tool_main.h"
 
 DEFINE_bool(layers,
             false,

@@ -22,11 +22,11 @@
 #include "mlndt/odometry/odometry.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/registration/registration_summary.h"
-#include "tools/common/option_flags.h"
-#include "tools/common/options_doc.h"
-#include "tools/common/results_doc.h"
-#include "tools/common/tool_main.h"
-#include "tools/common/tool_table_flags.h"
+#include "tools/cli/option_flags.h"
+#include "tools/cli/options_doc.h"
+#include "tools/cli/results_doc.h"
+#include "tools/cli/tool_main.h"
+#include "tools/cli/tool_table_flags.h"
 
 DEFINE_string(format,
               "markdown",

@@ -32,10 +32,10 @@
 #include "lab/bench/bench_report.h"
 #include "lab/report/gnuplot.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/common/bench_flags.h"
-#include "tools/common/list_flags.h"
-#include "tools/common/output_files.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/bench_flags.h"
+#include "tools/cli/list_flags.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(pairs, "koide3,kitti",
@@ -88,7 +88,7 @@ DEFINE_string(output_csv, "", "Write one row per set of pairs and configuration 
 namespace mlndt {
 namespace {
 
-// A list flag parsed by `parse` (tools/common/list_flags.h); an empty list
+// A list flag parsed by `parse` (tools/cli/list_flags.h); an empty list
 // when it does not parse (the lab then names the flag and what it expects).
 template <typename T>
 std::vector<T> List(const std::string& text,

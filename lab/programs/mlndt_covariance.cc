@@ -39,15 +39,15 @@
 #include <vector>
 
 #include "lab/experiments/covariance_campaign.h"
+#include "lab/programs/covariance_output.h"
 #include "lab/report/progress.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/common/covariance_output.h"
-#include "tools/common/json_output.h"
-#include "tools/common/matrix_text.h"
-#include "tools/common/output_files.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/json_output.h"
+#include "tools/cli/matrix_text.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(data_dir, MLNDT_DATA_DIR, "Folder with kitti/ and koide3/ (the repository's data/)");

@@ -25,8 +25,8 @@
 #include "lab/experiments/run_batch.h"
 #include "lab/experiments/trace_experiment.h"
 #include "lab/report/gnuplot.h"
-#include "tools/common/tool_main.h"
-#include "tools/common/tool_utils.h"
+#include "tools/cli/tool_main.h"
+#include "tools/cli/tool_utils.h"
 
 // clang-format off
 DEFINE_string(data_dir, MLNDT_DATA_DIR,

@@ -23,7 +23,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/fast_floor.h"
 #include "mlndt/common/types.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/tool_main.h"
 
 DEFINE_string(reference, "", "Reference scan");
 DEFINE_string(input, "", "Input scan");

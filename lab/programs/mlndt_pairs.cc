@@ -20,16 +20,16 @@
 
 #include "lab/eval/dataset.h"
 #include "lab/experiments/gap_pairs.h"
+#include "lab/programs/pairs_output.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/list_flags.h"
-#include "tools/common/output_files.h"
-#include "tools/common/pairs_output.h"
-#include "tools/common/pose_flags.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/start_layer_check.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/list_flags.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/pose_flags.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/start_layer_check.h"
+#include "tools/cli/tool_main.h"
 
 DEFINE_string(scans, "", "Folder of scans (sorted by file name)");
 DEFINE_string(gt_poses,

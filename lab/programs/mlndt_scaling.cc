@@ -48,15 +48,15 @@
 
 #include "lab/experiments/scaling_measure.h"
 #include "lab/experiments/scaling_report.h"
+#include "lab/programs/scaling_output.h"
 #include "lab/report/gnuplot.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/merged_cloud.h"
 #include "mlndt/common/pose.h"
-#include "tools/common/list_flags.h"
-#include "tools/common/output_files.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/scaling_output.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/list_flags.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(scans, MLNDT_DATA_DIR "/kitti/pcd",

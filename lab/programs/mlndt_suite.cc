@@ -34,17 +34,17 @@
 #include <cstdio>
 
 #include "lab/eval/suite_report.h"
+#include "lab/programs/suite_inputs.h"
+#include "lab/programs/suite_output.h"
 #include "lab/report/gnuplot.h"
 #include "lab/runs/suite_run.h"
 #include "lab/runs/suite_runner.h"
-#include "tools/common/flag_utils.h"
-#include "tools/common/list_flags.h"
-#include "tools/common/output_files.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/suite_inputs.h"
-#include "tools/common/suite_output.h"
-#include "tools/common/suite_plan_flags.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/flag_utils.h"
+#include "tools/cli/list_flags.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/suite_plan_flags.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(datasets, "",

@@ -1,11 +1,11 @@
 """mlndt.register gives mlndt_align's result on the same inputs and options,
 under the same names: both are made from RegistrationSummary's result table
 (mlndt/common/result_table.h), mlndt_align's JSON "registration" object by
-tools/common/result_json.cc and the Python properties and todict() by
+tools/cli/result_json.cc and the Python properties and todict() by
 python/src/result_binding.h.
 
 mlndt_align writes its JSON (docs/json_schema.md) with 17 significant digits
-(tools/common/json_output.h), so each number reads back as the double the
+(tools/cli/json_output.h), so each number reads back as the double the
 tool computed and is compared for equality, not with a tolerance. Every key
 and every value (timings aside) of todict() is compared with the tool's, and
 every property with its todict() entry."""

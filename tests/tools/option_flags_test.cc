@@ -1,11 +1,11 @@
 // The registration flags against the option description
-// (tools/common/option_flags.h): every described field of RegistrationOptions
+// (tools/cli/option_flags.h): every described field of RegistrationOptions
 // and NdtOptions has a flag named as the field (the renames below are the
 // only exceptions) with the field's default; no flag of the shared files is
 // undescribed (the tool-specific ones are listed); a flag given lands in its
 // field; a deprecated name works and refuses to be given with the new one.
 
-#include "tools/common/option_flags.h"
+#include "tools/cli/option_flags.h"
 
 #include <gflags/gflags.h>
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@
 
 #include "mlndt/ndt/ndt_registration.h"
 #include "mlndt/registration/registration_options.h"
-#include "tools/common/registration_flags.h"
+#include "tools/cli/registration_flags.h"
 
 namespace mlndt {
 namespace {
@@ -146,10 +146,10 @@ TEST(OptionFlags, NoSharedFlagIsUndescribed) {
   int shared = 0;
   for (const gflags::CommandLineFlagInfo& info : all) {
     const std::string& file = info.filename;
-    if (file.find("tools/common/option_flags.cc") != std::string::npos) {
+    if (file.find("tools/cli/option_flags.cc") != std::string::npos) {
       EXPECT_EQ(described.count(info.name), 1u) << info.name;
       ++shared;
-    } else if (file.find("tools/common/registration_flags.cc") !=
+    } else if (file.find("tools/cli/registration_flags.cc") !=
                std::string::npos) {
       EXPECT_EQ(kToolSpecific.count(info.name), 1u) << info.name;
     }

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "tests/testing/run_tool.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/tool_main.h"
 
 namespace mlndt {
 namespace {

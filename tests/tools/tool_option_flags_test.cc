@@ -1,4 +1,4 @@
-// The tools' own option tables against their flags (tools/common/
+// The tools' own option tables against their flags (tools/cli/
 // table_flags.h): every field of every table in ToolTableFlags() (nested
 // structs' fields too) has a flag named as the field's path (or as listed),
 // registered as the tool's, whose --help is the field's FullHelp and whose
@@ -28,16 +28,16 @@
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"
 #include "mlndt/pipeline/pipeline_option_tables.h"
-#include "tools/common/bench_flags.h"
-#include "tools/common/localizer_flags.h"
-#include "tools/common/map_build_flags.h"
-#include "tools/common/odometry_flags.h"
-#include "tools/common/option_flags.h"
-#include "tools/common/pose_graph_flags.h"
-#include "tools/common/sequence_flags.h"
-#include "tools/common/tool_main.h"
-#include "tools/common/tool_table_flags.h"
-#include "tools/common/trajectory_evaluation_flags.h"
+#include "tools/cli/bench_flags.h"
+#include "tools/cli/localizer_flags.h"
+#include "tools/cli/map_build_flags.h"
+#include "tools/cli/odometry_flags.h"
+#include "tools/cli/option_flags.h"
+#include "tools/cli/pose_graph_flags.h"
+#include "tools/cli/sequence_flags.h"
+#include "tools/cli/tool_main.h"
+#include "tools/cli/tool_table_flags.h"
+#include "tools/cli/trajectory_evaluation_flags.h"
 
 namespace mlndt {
 namespace {
