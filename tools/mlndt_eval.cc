@@ -35,8 +35,7 @@
 // scan; the printed line lists the scans when they are not consecutive.
 //
 // The evaluation's flags are TrajectoryEvaluationOptions' fields
-// (tools/cli/trajectory_evaluation_flags.h; the older names
-// --max_time_difference, --segment_lengths and --segment_step still work).
+// (tools/cli/trajectory_evaluation_flags.h).
 //
 // Exit codes: 2 on a bad flag or an input refused before any work (an
 // unreadable file, trajectories of different lengths paired by index); 1
@@ -178,8 +177,7 @@ bool ParseFlags(EvalFlags* flags, std::string* error) {
                                   error)) {
     return false;
   }
-  return tools::CheckFlagAliases(error) &&
-         tools::TrajectoryEvaluationFlags().Apply(&flags->options, error);
+  return tools::TrajectoryEvaluationFlags().Apply(&flags->options, error);
 }
 
 int Run() {

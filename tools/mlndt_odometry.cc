@@ -17,8 +17,7 @@
 // flags are OdometryOptions' fields (tools/cli/odometry_flags.h:
 // --local_map_max_keyframes, --keyframes_min_translation_m,
 // --prediction_max_translation_m, --gate_factor, --confirmation_enabled,
-// ...; the older names --local_map_keyframes, --keyframe_distance,
-// --max_uncertainty_m, --confirm, ... still work).
+// ...).
 //
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,

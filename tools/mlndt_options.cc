@@ -82,9 +82,6 @@ int main(int argc, char** argv) {
   for (const auto& flag : mlndt::tools::OptionFlags()) {
     option_flags.push_back(flag.name);
   }
-  for (const auto& [alias, name] : mlndt::tools::FlagAliases()) {
-    option_flags.push_back(alias);
-  }
   for (const auto* table_flags : mlndt::tools::ToolTableFlags()) {
     for (const std::string& flag : table_flags->RegisteredFlags()) {
       option_flags.push_back(flag);

@@ -12,8 +12,7 @@
 //                   flags]
 //
 // The joint problem's flags are PoseGraphOptions' fields
-// (tools/cli/pose_graph_flags.h); the older names --joint_point_blocks,
-// --odometry_sigma_m and --odometry_sigma_deg still work.
+// (tools/cli/pose_graph_flags.h).
 //
 // Writes trajectory_<init>.txt (chained or odometry) and trajectory_joint.txt
 // (KITTI lines, world_from_scan, scan 0 = world) into --output_dir when

@@ -7,7 +7,7 @@
 //               [--offsets="x:0.5,2,5,10;yaw:10,30,45;xyyaw:3,3,20"]
 //               [--steps=1,2,3,5,10] [--output_dir=DIR [--plot]]
 //               [--fail_on=precision:0.995,recall:0.97,success:0.98]
-//               [registration flags: --preset, --finest_cell_size, ...]
+//               [registration flags: --preset, --finest_cell_size_m, ...]
 //
 // Every data set folder holds a reference_pairs.json; its scans are in it
 // or in pcd/, found by the digits of their file names. On the shared data

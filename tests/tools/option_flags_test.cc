@@ -132,11 +132,6 @@ TEST(OptionFlags, NoSharedFlagIsUndescribed) {
   for (const tools::OptionFlag& flag : OptionFlags()) {
     described.insert(flag.name);
   }
-  for (const auto& [alias, name] : tools::FlagAliases()) {
-    EXPECT_EQ(described.count(alias), 0u) << alias;
-    EXPECT_EQ(described.count(name), 1u) << name;
-    described.insert(alias);
-  }
   // Tool-specific, not option fields: the preset, the method and the
   // composite initial uncertainty.
   const std::set<std::string> kToolSpecific = {
@@ -225,37 +220,16 @@ TEST(OptionFlags, AGivenFlagSetsItsField) {
   }
 }
 
-TEST(OptionFlags, DeprecatedNamesStillWork) {
-  {
-    gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("threads", "3");
-    gflags::SetCommandLineOption("unmatched", "zero_residual");
-    MatcherOptions options;
-    std::string error;
-    ASSERT_TRUE(tools::MatcherOptionsFromFlags(&options, &error)) << error;
-    EXPECT_EQ(options.mlndt.num_threads, 3);
-    EXPECT_EQ(options.mlndt.objective.unmatched_policy,
-              UnmatchedPolicy::ZERO_RESIDUAL);
-  }
-  {
-    gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("threads", "3");
-    gflags::SetCommandLineOption("num_threads", "2");
-    MatcherOptions options;
-    std::string error;
-    EXPECT_FALSE(tools::MatcherOptionsFromFlags(&options, &error));
-    EXPECT_NE(error.find("--threads and --num_threads"), std::string::npos)
-        << error;
-  }
+TEST(OptionFlags, ARefusalNamesTheFlag) {
   {
     // A refusal names the flag as it was given.
     gflags::FlagSaver saver;
     gflags::SetCommandLineOption("method", "ndt");
-    gflags::SetCommandLineOption("retry_yaw_seeds", "90");
+    gflags::SetCommandLineOption("yaw_seeds_deg", "90");
     MatcherOptions options;
     std::string error;
     EXPECT_FALSE(tools::MatcherOptionsFromFlags(&options, &error));
-    EXPECT_EQ(error, "--retry_yaw_seeds does not apply to --method=ndt");
+    EXPECT_EQ(error, "--yaw_seeds_deg does not apply to --method=ndt");
   }
 }
 

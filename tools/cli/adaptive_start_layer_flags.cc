@@ -15,9 +15,6 @@ const TableFlags kAdaptiveStartLayerFlags(
      {"max_rotation_deg", "adaptive_max_rotation_deg"},
      {"fail_rate_thresholds", "adaptive_fail_rate_thresholds"}},
     {},
-    {{"adaptive_max_translation", "adaptive_max_translation_m"},
-     {"adaptive_max_rotation", "adaptive_max_rotation_deg"},
-     {"adaptive_fail_rates", "adaptive_fail_rate_thresholds"}},
     &IsSharedFlag);
 
 }  // namespace

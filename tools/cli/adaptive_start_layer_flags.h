@@ -4,9 +4,7 @@
 // from AdaptiveStartLayerOptionsTable), prefixed as the struct is
 // SequenceOptions::adaptive: --adaptive_start_layer (enabled),
 // --adaptive_max_translation_m, --adaptive_max_rotation_deg,
-// --adaptive_fail_rate_thresholds; the older names
-// --adaptive_max_translation, --adaptive_max_rotation and
-// --adaptive_fail_rates are aliases. Linking this file gives a tool these
+// --adaptive_fail_rate_thresholds. Linking this file gives a tool these
 // flags.
 
 #include "tools/cli/table_flags.h"

@@ -4,11 +4,7 @@
 // from BenchOptionsTable): --repetitions, --warmup, --max_pairs,
 // --max_translation_error_m, --max_rotation_error_deg (the rounds' and the
 // pairs' fields by their own names), --compare_pcl_ndt, --compare_pcl_gicp
-// and --pcl_<field> of PclBenchOptions. Older names are aliases:
-// --compare_pcl, --max_translation_error, --max_rotation_error,
-// --pcl_leaf_size, --pcl_resolution, --pcl_step_size,
-// --pcl_transformation_epsilon, --pcl_max_iterations,
-// --pcl_gicp_max_correspondence_distance. The grid's list flags, --seed and
+// and --pcl_<field> of PclBenchOptions. The grid's list flags, --seed and
 // the pairs' path and lists stay the tool's (tests/tools/
 // tool_option_flags_test.cc lists them with their reasons). Linking this
 // file gives a tool these flags.

@@ -17,8 +17,8 @@ bool SplitEstimateList(const std::string& text,
                        std::string* error);
 
 // "100,200,..." into lengths [m]; false with *error naming
-// `flag`=`text` ("--segment_lengths=...") when one is not > 0 or is given
-// twice.
+// `flag`=`text` ("--segments_lengths_m=...") when one is not > 0 or is
+// given twice.
 bool ParseSegmentLengths(const std::string& flag,
                          const std::string& text,
                          std::vector<double>* lengths,

@@ -54,8 +54,7 @@ bool GridFlagsGiven() {
 bool ApplyGridFlags(const std::string& tool,
                     LayeredGridOptions* grid,
                     std::string* error) {
-  if (!CheckFlagAliases(error) ||
-      !RefuseGivenFlags(
+  if (!RefuseGivenFlags(
           NonGridFlags(),
           "does not apply to " + tool + " (it reads only the map's flags)",
           error) ||

@@ -8,7 +8,7 @@ namespace tools {
 namespace {
 
 const TableFlags kLocalizerFlags(
-    LocalizerOwnOptionsTable(), "mlndt_localize", {}, {}, {}, &IsSharedFlag);
+    LocalizerOwnOptionsTable(), "mlndt_localize", {}, {}, &IsSharedFlag);
 
 }  // namespace
 

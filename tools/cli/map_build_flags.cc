@@ -11,7 +11,6 @@ const TableFlags kMapBuildFlags(MapBuildOwnOptionsTable(),
                                 "mlndt_map",
                                 {{"voxel_size_m", "voxel_size"}},
                                 {{"max_memory_bytes", "max_memory_gb"}},
-                                {},
                                 &IsSharedFlag);
 
 }  // namespace

@@ -52,8 +52,7 @@ const std::vector<std::string>& MapFlagList() {
 bool GridOptionsFromFlags(const std::string& tool,
                           LayeredGridOptions* grid,
                           std::string* error) {
-  if (!CheckFlagAliases(error) ||
-      !RefuseGivenFlags(MapBuildRefusedFlags(),
+  if (!RefuseGivenFlags(MapBuildRefusedFlags(),
                         "does not apply to " + tool +
                             " (it builds a map; registration flags belong "
                             "to mlndt_localize)",

@@ -109,7 +109,6 @@ std::string HelpText(const OptionFlag& flag) {
 class FlagRegistry {
  public:
   FlagRegistry() {
-    std::vector<std::string> aliases;
     for (const OptionFlag& flag : OptionFlags()) {
       RegisterOptionFlag(flag.name,
                          HelpText(flag),
@@ -117,18 +116,6 @@ class FlagRegistry {
                          flag.field->type,
                          DefaultText(flag));
     }
-    for (const auto& [alias, name] : FlagAliases()) {
-      const OptionFlag& flag = *FlagOfName(name);
-      RegisterOptionFlag(alias,
-                         "Deprecated name of --" + name + ".",
-                         __FILE__,
-                         flag.field->type,
-                         DefaultText(flag));
-      RegisterFlagAlias(alias, name);
-      aliases.push_back(alias);
-    }
-    // The old names work but --help lists only the new ones.
-    HideFlagsFromHelp(aliases);
   }
 };
 
@@ -162,24 +149,6 @@ const OptionFlag* FlagOfName(const std::string& name) {
     if (flag.name == name) return &flag;
   }
   return nullptr;
-}
-
-const std::vector<std::pair<std::string, std::string>>& FlagAliases() {
-  static const std::vector<std::pair<std::string, std::string>> aliases = {
-      {"threads", "num_threads"},
-      {"unmatched", "unmatched_policy"},
-      {"gbs_cell_size", "gbs_cell_size_m"},
-      {"min_eigenvalue", "min_eigenvalue_m2"},
-      {"finest_cell_size", "finest_cell_size_m"},
-      {"max_iterations", "max_final_iterations"},
-      {"linear_solver", "linear_solver_type"},
-      {"trust_region", "trust_region_strategy_type"},
-      {"min_range", "min_range_m"},
-      {"max_range", "max_range_m"},
-      {"ndt_cell_size", "ndt_cell_size_m"},
-      {"ndt_max_step", "ndt_max_step_norm"},
-      {"retry_yaw_seeds", "yaw_seeds_deg"}};
-  return aliases;
 }
 
 bool ApplyGivenFlags(const OptionTable& table,

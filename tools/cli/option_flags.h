@@ -12,8 +12,7 @@
 //   max_step_norm -> --ndt_<name>;
 // initial_uncertainty.* have none (--initial_uncertainty=t,r sets them).
 // A flag both methods read (sampling, range filter, cells, quality check,
-// --step_tolerance, --num_threads) is one flag. The flags' old names
-// (--threads, --unmatched, ...) are deprecated aliases (flag_utils.h).
+// --step_tolerance, --num_threads) is one flag.
 // They are registered with gflags when this file is linked (a tool that
 // calls MatcherOptionsFromFlags gets them, and shows them in --help).
 
@@ -44,8 +43,6 @@ const std::vector<OptionFlag>& OptionFlags();
 const OptionFlag* FlagOfPath(const std::string& path, bool ndt);
 // The flag named `name`, nullptr when no flag is made from the tables.
 const OptionFlag* FlagOfName(const std::string& name);
-// The deprecated names: {old, new}.
-const std::vector<std::pair<std::string, std::string>>& FlagAliases();
 
 // Whether --<name> is one of these flags (for TableFlags).
 bool IsSharedFlag(const std::string& name);
@@ -60,7 +57,7 @@ bool ApplyGivenFlags(const OptionTable& table,
                      std::string* error);
 
 // The values of flags made from the tables, for tools that read one
-// directly (of the deprecated alias when that was given).
+// directly.
 int IntFlag(const std::string& name);
 double DoubleFlag(const std::string& name);
 uint64_t Uint64Flag(const std::string& name);

@@ -83,14 +83,7 @@ std::string Cell(const std::string& text) {
 std::string ToolFlagCell(const TableFlags& flags, const std::string& path) {
   const std::string flag = flags.FlagOf(path);
   if (!flag.empty()) {
-    std::string cell = "`--" + flag + "`";
-    for (const auto& [alias, name] : flags.aliases()) {
-      if (name == flag) cell += " (older name `--" + alias + "`)";
-    }
-    for (const auto& [alias, name] : flags.inverted_aliases()) {
-      if (name == flag) cell += " (older name `--" + alias + "`, inverted)";
-    }
-    return cell;
+    return "`--" + flag + "`";
   }
   for (const auto& [name, tool_flag] : flags.set_by_tool_flag()) {
     if (name == path) return "(`--" + tool_flag + "`)";
@@ -105,8 +98,8 @@ std::string ToolOptionsMarkdown() {
          "Made from the option tables of the structs a tool fills beside "
          "the registration's;\nthe flag is the field's name (a nested "
          "struct's field: its path with `_` for `.`),\nor another where the "
-         "field's name is a registration flag; an older name still\nsets the "
-         "field. A flag in parentheses is another flag that sets the field "
+         "field's name is a registration flag. A flag in\nparentheses is "
+         "another flag that sets the field "
          "(in\nanother unit, or a registration flag over the tool's own "
          "default).\n";
   for (const TableFlags* flags : ToolTableFlags()) {
@@ -181,13 +174,7 @@ std::string OptionsMarkdown() {
         << " | " << field.unit << " | " << Cell(RangeText(field)) << " | "
         << Cell(field.help) << " |\n";
   }
-  out << "\nDeprecated flag names (still accepted, with a notice): ";
-  bool first = true;
-  for (const auto& [alias, name] : FlagAliases()) {
-    out << (first ? "" : ", ") << "`--" << alias << "` = `--" << name << "`";
-    first = false;
-  }
-  out << ".\n" << ToolOptionsMarkdown();
+  out << ToolOptionsMarkdown();
   return out.str();
 }
 
@@ -204,11 +191,7 @@ Json OptionsJson() {
                     {"range", RangeText(field)},
                     {"help", field.help}});
   }
-  Json aliases = Json::object();
-  for (const auto& [alias, name] : FlagAliases()) aliases[alias] = name;
-  return {{"options", rows},
-          {"aliases", aliases},
-          {"tool_options", ToolOptionsJson()}};
+  return {{"options", rows}, {"tool_options", ToolOptionsJson()}};
 }
 
 }  // namespace tools

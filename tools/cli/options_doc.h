@@ -18,7 +18,7 @@ namespace tools {
 std::string OptionsMarkdown();
 
 // {"options": [{"flag", "mlndt_path", "ndt_path", "type", "default", "unit",
-//   "range", "help"}, ...], "aliases": {old: new}, "tool_options":
+//   "range", "help"}, ...], "tool_options":
 //   [{"struct", "tool", "options": [{"flag", "field", "type", "default",
 //   "unit", "range", "help"}, ...]}, ...]} (the tools' own tables,
 //   tool_table_flags.h; "flag" is "" for a field set by a tool flag in

@@ -150,7 +150,6 @@ bool ParseNdt(NdtOptions* options, std::string* error) {
 }  // namespace
 
 bool MatcherOptionsFromFlags(MatcherOptions* options, std::string* error) {
-  if (!CheckFlagAliases(error)) return false;
   if (!StringToMethod(FLAGS_method, &options->method)) {
     *error = "--method=" + FLAGS_method + ": expected mlndt or ndt";
     return false;
@@ -175,8 +174,7 @@ bool MatcherOptionsFromFlags(MatcherOptions* options, std::string* error) {
 
 bool RangeFilterOptionsFromFlags(RangeFilterOptions* filter,
                                  std::string* error) {
-  if (!CheckFlagAliases(error) ||
-      !ApplyGivenFlags(
+  if (!ApplyGivenFlags(
           RangeFilterOptionsTable(), "range_filter.", false, filter, error)) {
     return false;
   }

@@ -8,7 +8,7 @@ namespace tools {
 namespace {
 
 const TableFlags kSequenceFlags(
-    SequenceOwnOptionsTable(), "mlndt_sequence", {}, {}, {}, &IsSharedFlag);
+    SequenceOwnOptionsTable(), "mlndt_sequence", {}, {}, &IsSharedFlag);
 
 }  // namespace
 

@@ -12,7 +12,6 @@ const TableFlags kSuitePlanFlags(SuitePlanOptionsTable(),
                                  {},
                                  {{"perturb_translation_m", "perturb"},
                                   {"perturb_rotation_deg", "perturb"}},
-                                 {},
                                  &IsSharedFlag);
 
 }  // namespace

@@ -3,8 +3,6 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include <iostream>
-
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/option_flags_store.h"
 #include "tools/cli/tool_main.h"
@@ -38,17 +36,13 @@ TableFlags::TableFlags(const OptionTable& table,
                        const std::string& tool,
                        Names renamed,
                        Names set_by_tool_flag,
-                       Names aliases,
-                       IsShared is_shared,
-                       Names inverted_aliases)
+                       IsShared is_shared)
     : table_(table),
       tool_(tool),
       file_(MainFile(tool)),
       renamed_(std::move(renamed)),
       set_by_tool_flag_(std::move(set_by_tool_flag)),
-      aliases_(std::move(aliases)),
-      is_shared_(is_shared),
-      inverted_aliases_(std::move(inverted_aliases)) {
+      is_shared_(is_shared) {
   CollectFields(table_, "", &fields_);
   // Leaked on purpose: gflags keeps the file name for the program's life.
   const char* file = (new std::string(file_))->c_str();
@@ -57,51 +51,7 @@ TableFlags::TableFlags(const OptionTable& table,
     if (flag.empty() || Shared(flag)) continue;
     const std::string value = f.field->Format(Owner(f.path, table_.defaults()));
     RegisterOptionFlag(flag, f.field->FullHelp(), file, f.field->type, value);
-    for (const auto& [alias, name] : aliases_) {
-      if (name != flag) continue;
-      RegisterOptionFlag(
-          alias, "Older name of --" + flag + ".", file, f.field->type, value);
-      RegisterFlagAlias(alias, flag);
-    }
-    RegisterInvertedAliases(f, flag, file);
   }
-}
-
-void TableFlags::RegisterInvertedAliases(const Field& f,
-                                         const std::string& flag,
-                                         const char* file) {
-  for (const auto& [alias, name] : inverted_aliases_) {
-    if (name != flag) continue;
-    CHECK(f.field->type == OptionType::BOOL) << "--" << alias;
-    const bool value = f.field->Ref<bool>(Owner(f.path, table_.defaults()));
-    RegisterOptionFlag(alias,
-                       "Older name of --" + flag + "=false (inverted).",
-                       file,
-                       OptionType::BOOL,
-                       value ? "false" : "true");
-  }
-}
-
-bool TableFlags::ApplyInvertedAliases(void* s, std::string* error) const {
-  for (const auto& [alias, name] : inverted_aliases_) {
-    gflags::CommandLineFlagInfo info;
-    if (!gflags::GetCommandLineFlagInfo(alias.c_str(), &info) ||
-        info.is_default) {
-      continue;
-    }
-    if (FlagGiven(name)) {
-      *error = "give --" + name + " or --" + alias + ", not both";
-      return false;
-    }
-    std::cerr << "note: --" << alias << " is deprecated; it is --" << name
-              << "=false now\n";
-    for (const Field& f : fields_) {
-      if (FlagOf(f.path) != name) continue;
-      void* owner = const_cast<void*>(Owner(f.path, s));
-      f.field->Ref<bool>(owner) = info.current_value != "true";
-    }
-  }
-  return true;
 }
 
 const void* TableFlags::Owner(const std::string& path, const void* s) const {
@@ -131,8 +81,6 @@ std::vector<std::string> TableFlags::RegisteredFlags() const {
     const std::string flag = FlagOf(f.path);
     if (!flag.empty() && !Shared(flag)) flags.push_back(flag);
   }
-  for (const auto& [alias, name] : aliases_) flags.push_back(alias);
-  for (const auto& [alias, name] : inverted_aliases_) flags.push_back(alias);
   return flags;
 }
 
@@ -149,7 +97,6 @@ void TableFlags::ShowFieldDefaultsOnSharedFlags() const {
 }
 
 bool TableFlags::Apply(void* s, std::string* error) const {
-  if (!ApplyInvertedAliases(s, error)) return false;
   for (const Field& f : fields_) {
     const std::string flag = FlagOf(f.path);
     if (flag.empty() || !FlagGiven(flag)) continue;

@@ -11,12 +11,8 @@
 // is a shared flag of another option has another flag name
 // (MapBuildOptions::voxel_size_m is --voxel_size, as --voxel_size_m is the
 // sampling's); a field may be set by a tool flag in another unit
-// (MapBuildOptions::max_memory_bytes by mlndt_map's --max_memory_gb); a flag
-// may keep an older name as an alias that sets the same field
-// (mlndt_odometry's --keyframe_distance for --keyframes_min_translation_m;
-// giving it prints a one-line note, flag_utils.h); a bool flag may keep an
-// older name of the opposite sense as an inverted alias (mlndt_posegraph's
-// --joint_one_way is --both_directions=false; the same note).
+// (MapBuildOptions::max_memory_bytes by mlndt_map's --max_memory_gb). A flag
+// has one name: no older names are kept.
 //
 // A TableFlags is constructed at namespace scope in a tools/cli file that
 // only its tool links (map_build_flags.cc, localizer_flags.cc): its flags
@@ -34,7 +30,7 @@ namespace tools {
 
 class TableFlags {
  public:
-  // {field path, flag name}; for aliases {old flag name, flag name}.
+  // {field path, flag name}.
   using Names = std::vector<std::pair<std::string, std::string>>;
   // Whether a flag name is a shared registration flag (IsSharedFlag of
   // option_flags.h, which links them); nullptr for a tool without them.
@@ -49,23 +45,18 @@ class TableFlags {
   // `tool`: "mlndt_map"; the flags are registered as if defined in
   // tools/<tool>.cc. `renamed`: fields whose flag is not their path's;
   // `set_by_tool_flag`: fields without a flag of their own, and the tool's
-  // flag (defined in the tool's main) that sets them; `aliases`: older
-  // names of the flags; `is_shared`: see IsShared; `inverted_aliases`:
-  // older names of bool flags that set the field to the opposite value.
+  // flag (defined in the tool's main) that sets them; `is_shared`: see
+  // IsShared.
   TableFlags(const OptionTable& table,
              const std::string& tool,
              Names renamed,
              Names set_by_tool_flag,
-             Names aliases,
-             IsShared is_shared,
-             Names inverted_aliases = {});
+             IsShared is_shared);
 
   const OptionTable& table() const { return table_; }
   const std::string& tool() const { return tool_; }
   const Names& renamed() const { return renamed_; }
   const Names& set_by_tool_flag() const { return set_by_tool_flag_; }
-  const Names& aliases() const { return aliases_; }
-  const Names& inverted_aliases() const { return inverted_aliases_; }
   // Every field with a value (nested structs' fields, not the structs).
   const std::vector<Field>& fields() const { return fields_; }
   // The struct inside *s (of the table's type) that holds field `path`.
@@ -75,7 +66,7 @@ class TableFlags {
   std::string FlagOf(const std::string& path) const;
   // Whether `flag` is a shared registration flag (not registered here).
   bool Shared(const std::string& flag) const;
-  // The flags registered here (aliases, inverted too, included).
+  // The flags registered here.
   std::vector<std::string> RegisteredFlags() const;
 
   // Sets the fields of *s (a struct of the table's type) from the flags
@@ -94,22 +85,12 @@ class TableFlags {
   void ShowFieldDefaultsOnSharedFlags() const;
 
  private:
-  // Registers the inverted aliases of the bool flag `flag` of field `f`.
-  void RegisterInvertedAliases(const Field& f,
-                               const std::string& flag,
-                               const char* file);
-  // Sets the fields of the inverted aliases given; false with *error when
-  // the flag itself was given too.
-  bool ApplyInvertedAliases(void* s, std::string* error) const;
-
   const OptionTable& table_;
   std::string tool_;
   std::string file_;
   Names renamed_;
   Names set_by_tool_flag_;
-  Names aliases_;
   IsShared is_shared_;
-  Names inverted_aliases_;
   std::vector<Field> fields_;
 };
 

@@ -7,14 +7,7 @@ namespace tools {
 namespace {
 
 const TableFlags kTrajectoryEvaluationFlags(
-    TrajectoryEvaluationOptionsTable(),
-    "mlndt_eval",
-    {},
-    {},
-    {{"max_time_difference", "max_time_difference_s"},
-     {"segment_lengths", "segments_lengths_m"},
-     {"segment_step", "segments_first_frame_step"}},
-    nullptr);
+    TrajectoryEvaluationOptionsTable(), "mlndt_eval", {}, {}, nullptr);
 
 }  // namespace
 
