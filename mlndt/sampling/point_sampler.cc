@@ -76,15 +76,48 @@ void SampleRandom(const SamplingOptions& options,
   for (size_t i : indices) sampled->Add(input[i]);
 }
 
-// ML-NDT Section 4.3, grid-based sampling.
+// The per-cell cap of GBS: gbs_points_per_cell, raised to the smallest
+// cap P at which sum_c min(n_c, P) over the cells that give points reaches
+// min(gbs_min_samples, their points) (a water level: every cell gives P or
+// all it has). The kept count grows monotonically with P: bisection.
+size_t GbsCap(const SamplingOptions& options,
+              const VoxelGroups& cells,
+              size_t min_per_cell) {
+  size_t cap = static_cast<size_t>(options.gbs_points_per_cell);
+  if (options.gbs_min_samples <= 0) return cap;
+  std::vector<size_t> counts;
+  size_t available = 0;
+  for (size_t c = 0; c < cells.num_voxels(); ++c) {
+    if (cells.num_points(c) < min_per_cell) continue;
+    counts.push_back(cells.num_points(c));
+    available += counts.back();
+  }
+  const size_t target =
+      std::min(available, static_cast<size_t>(options.gbs_min_samples));
+  auto kept = [&counts](size_t p) {
+    size_t sum = 0;
+    for (size_t n : counts) sum += std::min(n, p);
+    return sum;
+  };
+  if (kept(cap) >= target) return cap;
+  size_t high = *std::max_element(counts.begin(), counts.end());
+  while (cap + 1 < high) {  // kept(cap) < target <= kept(high).
+    const size_t middle = cap + (high - cap) / 2;
+    (kept(middle) >= target ? high : cap) = middle;
+  }
+  return high;
+}
+
+// ML-NDT Section 4.3, grid-based sampling, with the cap of GbsCap.
 void SampleGbs(const SamplingOptions& options,
                const PointCloud& input,
                const VoxelGroups& cells,
                PointCloud* sampled,
                SamplingSummary* summary) {
-  const size_t per_cell = static_cast<size_t>(options.gbs_points_per_cell);
   const size_t min_per_cell =
       static_cast<size_t>(options.gbs_min_points_per_cell);
+  const size_t per_cell = GbsCap(options, cells, min_per_cell);
+  summary->points_per_cell = per_cell;
   std::mt19937_64 rng(options.seed);
   std::vector<size_t> scratch;
   sampled->Reserve(std::min(input.size(), cells.num_voxels() * per_cell));
@@ -170,6 +203,12 @@ const OptionTable& SamplingOptionsTable() {
                &S::gbs_min_points_per_cell,
                AtLeast(1),
                "GBS: a cell with fewer points gives none.")
+          .Int("gbs_min_samples",
+               &S::gbs_min_samples,
+               Closed(0, 100000000),
+               "GBS: when the per-cell cap keeps fewer points, the cap is "
+               "raised (the same for every cell) until this many are kept or "
+               "every point of the cells that give any; 0 = off.")
           .Double("voxel_size_m",
                   &S::voxel_size_m,
                   "m",

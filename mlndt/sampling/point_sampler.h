@@ -60,6 +60,14 @@ struct SamplingOptions {
   // GBS: a cell with fewer points than this gives none; must be >= 1. Cells
   // with gbs_min_points_per_cell..gbs_points_per_cell points give them all.
   int gbs_min_points_per_cell = 3;
+  // GBS sample budget: when capping every cell at gbs_points_per_cell keeps
+  // fewer than this many points, the cap is raised, the same for every
+  // cell, to the smallest that keeps at least this many (or every point of
+  // the cells that give any). The samples stay spread over the scanned
+  // surface as evenly as the scan allows; a dense scan, whose capped cells
+  // already give the budget, is sampled as the paper says. 0: off (the
+  // default; docs/defaults.md says why). In [0, 1e8].
+  int gbs_min_samples = 0;
 
   // VOXEL_CENTROID: voxel edge [m], in (0, kMaxSamplingCellM].
   double voxel_size_m = 0.5;
@@ -80,6 +88,7 @@ struct SamplingSummary {
   size_t sampled_points = 0;        // Points written to the output.
   size_t occupied_cells = 0;        // GBS cells / voxels holding >= 1 point.
   size_t dropped_sparse_cells = 0;  // GBS: cells with too few points.
+  size_t points_per_cell = 0;       // GBS: the cap applied to every cell.
   double time_s = 0;                // Wall time of SamplePoints [s].
 };
 

@@ -43,6 +43,7 @@ class SamplingOptions(TypedDict, total=False):
     gbs_cell_size_m: float
     gbs_points_per_cell: int
     gbs_min_points_per_cell: int
+    gbs_min_samples: int
     voxel_size_m: float
     seed: int
 

@@ -146,6 +146,7 @@ TEST(PointSampler, DefaultOptionsFollowThePaper) {
   EXPECT_EQ(options.gbs_cell_size_m, 1.0);
   EXPECT_EQ(options.gbs_points_per_cell, 5);
   EXPECT_EQ(options.gbs_min_points_per_cell, 3);
+  EXPECT_EQ(options.gbs_min_samples, 0);  // Off: the paper's cap of 5.
   std::string error;
   EXPECT_TRUE(options.IsValid(&error)) << error;
 }
@@ -234,6 +235,34 @@ TEST(PointSampler, GbsMinPointsPerCellChangesResult) {
   options.gbs_min_points_per_cell = 11;
   EXPECT_EQ(Sample(options, HandBuiltCloud(), &summary).size(), 0u);
   EXPECT_EQ(summary.dropped_sparse_cells, 4u);
+}
+
+// The sample budget raises the one cap shared by every cell to the smallest
+// that keeps gbs_min_samples points; cells too sparse to give any still
+// give none, and a budget the capped cells already meet changes nothing.
+TEST(PointSampler, GbsMinSamplesRaisesTheCapOfEveryCell) {
+  SamplingOptions options = GbsOptions();
+  SamplingSummary summary;
+  options.gbs_min_samples = 13;  // Met by the cap of 5: 5 + 5 + 3.
+  EXPECT_EQ(Sample(options, HandBuiltCloud(), &summary).size(), 13u);
+  EXPECT_EQ(summary.points_per_cell, 5u);
+  options.gbs_min_samples = 15;  // Cap 6 keeps 14, cap 7 keeps 7 + 5 + 3.
+  const PointCloud sampled = Sample(options, HandBuiltCloud(), &summary);
+  EXPECT_EQ(sampled.size(), 15u);
+  EXPECT_EQ(summary.points_per_cell, 7u);
+  std::map<Key, int> per_cell;
+  for (const Eigen::Vector3d& p : sampled.points()) ++per_cell[CellOf(p, 1.0)];
+  EXPECT_EQ(per_cell[Key(0, 0, 0)], 7);
+  EXPECT_EQ(per_cell[Key(1, 0, 0)], 5);
+  EXPECT_EQ(per_cell[Key(0, 1, 0)], 3);
+  options.gbs_min_samples = 1000;  // More than the 18 the cells can give.
+  EXPECT_EQ(Sample(options, HandBuiltCloud(), &summary).size(), 18u);
+  EXPECT_EQ(summary.points_per_cell, 10u);
+  EXPECT_EQ(summary.dropped_sparse_cells, 1u);
+  options.gbs_min_samples = -1;
+  std::string error;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("gbs_min_samples"), std::string::npos) << error;
 }
 
 TEST(PointSampler, GbsCellSizeChangesResult) {
