@@ -14,7 +14,9 @@
 // translation and rotation); the pose is confirmed when that run ends
 // within the prediction's smallest uncertainty (MotionPredictionOptions::
 // min_*) of it, whatever its own quality verdict (only a FAILURE has no
-// pose). Measured in docs/odometry.md.
+// pose): a run that ends farther away found a rival minimum
+// (registration/rival_minima.h, with every distinct minimum a rival).
+// Measured in docs/odometry.md.
 
 #include <string>
 

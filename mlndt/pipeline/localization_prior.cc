@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mlndt/common/pose.h"
+#include "mlndt/registration/rival_minima.h"
 
 namespace mlndt {
 namespace {
@@ -17,37 +18,19 @@ bool Fail(const char* message, std::string* error) {
   return false;
 }
 
-// guess * delta for a motion in the guess's (the sensor's) frame.
-Isometry3d Moved(const Isometry3d& guess,
-                 double x_m,
-                 double y_m,
-                 double yaw_deg) {
-  return guess * PoseVectorToIsometry(
-                     PoseVectorFromDegrees(x_m, y_m, 0.0, 0.0, 0.0, yaw_deg));
-}
-
 // Step 1: the starts on the prior's half-bound (none when one basin holds
 // the prior).
 std::vector<Isometry3d> ExploreStarts(const PriorCheckOptions& options,
                                       const InitialGuessUncertainty& prior,
                                       double finest_cell_m,
                                       const Isometry3d& guess) {
-  std::vector<Isometry3d> starts;
-  if (!options.explore) return starts;
-  const double t = 0.5 * prior.translation_m;
-  const double r = 0.5 * prior.rotation_deg;
-  if (prior.translation_m > finest_cell_m) {
-    for (double sign : {1.0, -1.0}) {
-      starts.push_back(Moved(guess, sign * t, 0.0, 0.0));
-      starts.push_back(Moved(guess, 0.0, sign * t, 0.0));
-    }
-  }
-  if (prior.rotation_deg > options.explore_min_rotation_deg) {
-    for (double sign : {1.0, -1.0}) {
-      starts.push_back(Moved(guess, 0.0, 0.0, sign * r));
-    }
-  }
-  return starts;
+  if (!options.explore) return {};
+  const double step_m =
+      prior.translation_m > finest_cell_m ? 0.5 * prior.translation_m : 0.0;
+  const double turn_deg = prior.rotation_deg > options.explore_min_rotation_deg
+                              ? 0.5 * prior.rotation_deg
+                              : 0.0;
+  return StartsAround(guess, step_m, turn_deg);
 }
 
 // Step 2's order: more inliers, then a lower mean score.
@@ -58,29 +41,27 @@ bool FitsBetter(const RegistrationSummary& a, const RegistrationSummary& b) {
   return a.quality.mean_score < b.quality.mean_score;
 }
 
-bool Distinct(const PriorCheckOptions& options,
-              const RegistrationSummary& a,
-              const RegistrationSummary& b) {
-  const double half_cell = 0.5 * a.finest_cell_size_m;
-  return TranslationErrorM(a.reference_from_input, b.reference_from_input) >
-             half_cell ||
-         RotationErrorRad(a.reference_from_input, b.reference_from_input) *
-                 kRadToDeg >
-             options.explore_distinct_rotation_deg;
-}
-
-// Step 3: another kept minimum, distinct from `best`, that fits as well.
+// Step 3: another kept minimum, distinct from kept[best] (farther than half
+// a finest cell edge or explore_distinct_rotation_deg), whose inlier
+// fraction is within ambiguity_inlier_margin of it (rival_minima.h).
 const RegistrationSummary* Rival(const PriorCheckOptions& options,
                                  const std::vector<RegistrationSummary>& kept,
-                                 const RegistrationSummary& best) {
-  for (const RegistrationSummary& other : kept) {
-    if (&other == &best || !Distinct(options, best, other)) continue;
-    if (other.quality.inlier_fraction >=
-        best.quality.inlier_fraction - options.ambiguity_inlier_margin) {
-      return &other;
-    }
+                                 size_t best) {
+  RivalMinimaOptions rival_options;
+  rival_options.separation.cell_size_m = kept[best].finest_cell_size_m;
+  rival_options.separation.max_cells = 0.5;
+  rival_options.separation.max_rotation_deg =
+      options.explore_distinct_rotation_deg;
+  rival_options.as_well_margin = options.ambiguity_inlier_margin;
+  std::vector<Isometry3d> minima;
+  for (const RegistrationSummary& s : kept) {
+    minima.push_back(s.reference_from_input);
   }
-  return nullptr;
+  const RivalMinimaSummary rival =
+      FindRivalMinimum(rival_options, minima, best, [&](size_t i) {
+        return kept[i].quality.inlier_fraction;
+      });
+  return rival.found() ? &kept[static_cast<size_t>(rival.rival)] : nullptr;
 }
 
 void Demote(TerminationType type,
@@ -226,7 +207,7 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
       if (FitsBetter(kept[i], kept[best])) best = i;
     }
     c.moved_to_other_start = !first_kept || best != 0;
-    const RegistrationSummary* rival = Rival(options, kept, kept[best]);
+    const RegistrationSummary* rival = Rival(options, kept, best);
     *summary = kept[best];
     if (rival != nullptr) DemoteAmbiguous(*rival, summary);
   }

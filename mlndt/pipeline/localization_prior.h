@@ -15,8 +15,8 @@
 //     the scan is registered again from starts on the prior's half-bound
 //     around the guess: moved by +-translation/2 along the sensor's x and y,
 //     and turned by +-rotation/2 about the sensor's z (the guess's own
-//     frame: which way a hand-held sensor is off is not known). Each start
-//     gets the same prior;
+//     frame: which way a hand-held sensor is off is not known;
+//     StartsAround). Each start gets the same prior;
 //  2. keeps the usable results (IsSolutionUsable) that lie within the prior
 //     (4) and fit the map as well as the map's own points do (below); of
 //     those the one with the most inliers (FitQuality::
@@ -26,7 +26,9 @@
 //     prior fits as well") when another kept result lies farther than half
 //     a finest cell edge or explore_distinct_rotation_deg from it and has an
 //     inlier fraction within ambiguity_inlier_margin of it: the data do not
-//     decide between two places the prior allows;
+//     decide between two places the prior allows (a rival minimum,
+//     registration/rival_minima.h, as the registration's own verdict and
+//     the odometry's confirmation ask it);
 //  4. calls a usable result outside the prior LOW_QUALITY ("outside the
 //     prior"): |t| > translation_m or angle > rotation_deg of
 //     guess^-1 * result. A result 6.9 m from a guess stated good to 2 m is
@@ -44,8 +46,7 @@
 //
 // The map's own points are a map accumulated from many viewpoints (as
 // mlndt_map builds one from a sequence): a map of one sparse scan fits its
-// neighbours' right poses worse (KITTI frames 1-7 on frame 0's map: 0.79 to
-// 0.85 of the covered points inliers), and needs a lower ratio or 0.
+// neighbours' right poses worse, and needs a lower ratio or 0 (docs/maps.md).
 //
 // A prior that is not given (InitialGuessUncertainty::given false): none of
 // 1-4 runs; the registration's verdict stands.
@@ -69,11 +70,11 @@ struct PriorCheckOptions {
   // cell edge or than this rotation [deg]. In (0, 180].
   double explore_distinct_rotation_deg = 5.0;
   // Another minimum whose inlier fraction is at least the best's minus this
-  // fits as well (step 3). Chosen on the train half of the Livox starts
+  // fits as well (step 3). Chosen on a train half of starts
   // (docs/maps.md). In [0, 1].
   double ambiguity_inlier_margin = 0.02;
   // The fit the map's own points give, times this, is the least a kept
-  // result needs (above). Chosen on the train half of the Livox starts
+  // result needs (above). Chosen on a train half of starts
   // (docs/maps.md). In [0, 1]; 0 = off.
   double min_fit_ratio = 0.95;
 

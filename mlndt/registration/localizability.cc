@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "mlndt/registration/internal/cell_shape.h"
 #include "mlndt/registration/quality_check.h"
 
 namespace mlndt {
@@ -15,7 +16,8 @@ std::vector<Eigen::Vector3d> PlanarNormals(
   normals.reserve(matches.size());
   for (const PointMatch& match : matches) {
     if (!match.IsInlier(gate)) continue;
-    const Eigen::Array<bool, 3, 1> thin = ThinCellDirections(*match.cell);
+    const Eigen::Array<bool, 3, 1> thin =
+        internal::ThinCellDirections(*match.cell);
     if (thin.count() != 1) continue;
     int i = 0;
     thin.maxCoeff(&i);

@@ -7,10 +7,10 @@
 // Singh 2016).
 //
 // A point x = R p + t matched to a planar cell (one thin direction,
-// ThinCellDirections in quality_check.h) with unit normal n constrains the
-// translation through the point-to-plane residual n . (x - mu): a shift
-// delta changes it by n . delta. With the rotation held (X-ICP decomposes
-// the translation and rotation blocks apart), the directions are the
+// ThinCellDirections in registration/internal/cell_shape.h) with unit normal n
+// constrains the translation through the point-to-plane residual n . (x - mu):
+// a shift delta changes it by n . delta. With the rotation held (X-ICP
+// decomposes the translation and rotation blocks apart), the directions are the
 // eigenvectors v_k of A = sum_i n_i n_i^T, and point i constrains v_k when
 // |n_i . v_k| >= constraining_cosine. The share of the points that do
 // depends neither on the density (a corridor's axis has none at any count)

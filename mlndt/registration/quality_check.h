@@ -29,8 +29,8 @@
 //    depend on the density) and the few lost are not clearly more than those
 //    gained, the data cannot tell the poses apart (a flat direction). A weak
 //    but real constraint (a street's cross walls) loses the points on the
-//    surfaces across it: 7-17 % of the inliers (ProbeDirection in
-//    quality_check.cc).
+//    surfaces across it (ProbeDirection in
+//    registration/internal/direction_probe.h).
 //  - localizability (localizability.h): the share of the inliers on planar
 //    cells whose normal constrains each direction of the pose; a direction
 //    that almost none constrain is free (min_localizability).
@@ -75,27 +75,23 @@ struct QualityCheckOptions {
   // constrain a direction of the pose through their normal
   // (Localizability, localizability.h): the surfaces the points lie on
   // leave that direction free (a corridor's axis, a wall's plane), whatever
-  // the point density. Off by default: at 0.02 (chosen on the simulator's
-  // training seeds 0-3) it flags right results on the KITTI crops that
-  // tests/registration/weak_geometry_test.cc holds (docs/trust.md). In
-  // [0, 1); 0 = off.
+  // the point density. Off by default: at 0.02 it also flags right
+  // results of cropped car scans (tests/registration/weak_geometry_test.cc;
+  // docs/trust.md). In [0, 1); 0 = off.
   double min_localizability = 0.0;
   // DEGENERATE when moving the pose by one last-layer cell edge along one of
   // its weak directions keeps more than `max_flatness` of the inliers both
   // ways, and the net loss is below `min_probe_evidence` standard deviations
   // of the points that change (ConstraintAnalysis). max_flatness in (0, 1],
   // 1 = off. Density-independent: a free direction keeps all its inliers up
-  // to noise (a corridor: 0.99-1.00 at 8000 and 45000 points), a weak but
-  // real one loses the points on the surfaces across it (a street's cross
-  // walls; right results of every shared set and test scene keep at most
-  // 0.93; docs/trust.md). min_probe_evidence >= 0.
+  // to noise, a weak but real one loses the points on the surfaces across
+  // it (a street's cross walls; docs/trust.md gives the measured shares).
+  // min_probe_evidence >= 0.
   double max_flatness = 0.95;
   double min_probe_evidence = 12.0;
 
   // LOW_QUALITY when fewer input points than this were sampled: too few
-  // to tell a right fit from a wrong one (KITTI thinned to every 200th
-  // point keeps 130-190 and is wrong as often as right; docs/trust.md).
-  // In [0, 1e6].
+  // to tell a right fit from a wrong one (docs/trust.md). In [0, 1e6].
   int min_fit_points = 500;
 
   bool IsValid(std::string* error) const;
@@ -143,49 +139,6 @@ struct ConstraintAnalysis {
 
 // ConstraintAnalysis's fields: name, unit, help (result_table.h).
 const ResultTable& ConstraintAnalysisTable();
-
-// Directions whose eigenvalue is below this fraction of the largest are
-// probed (at most the three weakest).
-constexpr double kProbedConstraintRatio = 0.25;
-
-// The pose moved by `step_m` along the scaled direction d = [a; b] (a a
-// translation, b a rotation times the lever `rms_range_m`, applied about the
-// origin after the pose's rotation), as the probe moves it.
-Isometry3d MovedAlong(const Isometry3d& pose,
-                      const Vector6d& d,
-                      double step_m,
-                      double rms_range_m);
-
-// How much worse the fit is one cell edge away along d, the weaker of the
-// two ways: `kept`, the share of the inliers left; `evidence`, the inliers
-// lost net of those gained over the square root of all that changed.
-struct Probe {
-  double kept = 1.0;
-  double evidence = std::numeric_limits<double>::infinity();
-};
-
-// The probe of AnalyseConstraints along the scaled direction d (as
-// MovedAlong moves the pose), one cell edge of `layer`, for the points moved
-// by xi; `gate` as QualityCheckOptions::inlier_gate.
-Probe ProbeAlong(const NdtLayer& layer,
-                 const std::vector<Eigen::Vector3d>& input_points,
-                 const Vector6d& reference_from_input_xi,
-                 const ObjectiveOptions& objective,
-                 double rms_range_m,
-                 double gate,
-                 const Vector6d& d);
-
-// A cell direction counts as thin when its variance is below this fraction
-// of the cell's largest.
-constexpr double kThinCellDirection = 0.1;
-
-// Which of the cell's directions (the rows of its W) are thin: one for a
-// planar cell, two for a line cell.
-Eigen::Array<bool, 3, 1> ThinCellDirections(const NdtCell& cell);
-
-// `layer` without its line cells: the surfaces a scan saw, without the
-// single rings crossing a cell that a spinning LiDAR's pattern leaves.
-NdtLayer WithoutLineCells(const NdtLayer& layer);
 
 // Analyses the fit of `input_points` moved by xi onto `layer` (cells as the
 // objective's policy matches them); rotations about the input points' own

@@ -8,7 +8,10 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/point_matches.h"
 #include "mlndt/cost/score.h"
+#include "mlndt/registration/internal/cell_shape.h"
+#include "mlndt/registration/internal/direction_probe.h"
 #include "mlndt/registration/quality_check.h"
+#include "mlndt/registration/rival_minima.h"
 
 namespace mlndt {
 namespace internal {
@@ -162,24 +165,30 @@ bool KeepBetter(Attempt candidate, Attempt* best) {
   return false;
 }
 
-// How far apart two poses lie, in last-layer cell edges: the translation
-// plus the rotation at the points' RMS range.
-double CellsApart(const Context& c, const Vector6d& a, const Vector6d& b) {
-  const Isometry3d pose_a = PoseVectorToIsometry(a);
-  const Isometry3d pose_b = PoseVectorToIsometry(b);
-  return (TranslationErrorM(pose_a, pose_b) +
-          RotationErrorRad(pose_a, pose_b) * c.problem.rms_range_m) /
-         c.problem.last().cell_size();
+// Minima more than `cells` last-layer cell edges apart, the rotation
+// counted as what it moves a point at the points' RMS range
+// (rival_minima.h).
+MinimaSeparation SeparationInCells(const Context& c, double cells) {
+  MinimaSeparation separation;
+  separation.cell_size_m = c.problem.last().cell_size();
+  separation.max_cells = cells;
+  separation.lever_m = c.problem.rms_range_m;
+  return separation;
 }
 
-// True when the two poses lie more than a tenth of a last-layer cell apart
-// (CellsApart): different basins, of which the better fit is kept. Closer,
-// they are one minimum where each run stopped, and the first is kept, so
-// that the result does not flip between the two on round-off.
+// Two runs that stop within this many last-layer cell edges of each other
+// reached one minimum where each stopped: the first is kept, so that the
+// result does not flip between the two on round-off.
+constexpr double kSameBasinCells = 0.1;
+
+// True when `xi_local` lies in another basin than `best_xi_local`
+// (kSameBasinCells apart): of the two, the better fit is kept.
 bool AnotherBasin(const Context& c,
                   const Vector6d& xi_local,
                   const Vector6d& best_xi_local) {
-  return CellsApart(c, xi_local, best_xi_local) > 0.1;
+  return DistinctMinima(SeparationInCells(c, kSameBasinCells),
+                        PoseVectorToIsometry(xi_local),
+                        PoseVectorToIsometry(best_xi_local));
 }
 
 // Where a stage on `layer` (the last layer, or step 4's planar one) leads
@@ -208,8 +217,8 @@ StageControl SubsetControl(const Context& c) {
 // The last layer alone from `start`, unassessed. A run the iteration cap
 // stopped goes on once from where it stopped: a candidate of the search
 // starts a cell edge or more from its minimum and can still be sliding along
-// a weak direction when the cap ends it (a road seen within 8 m), and an
-// unconverged solution cannot compete with a converged one.
+// a weak direction when the cap ends it, and an unconverged solution cannot
+// compete with a converged one.
 Attempt SolveLastLayer(const Context& c, const Vector6d& start) {
   const int n = c.problem.map.num_layers();
   Attempt attempt = Solve(c, n, start, /*assess=*/false);
@@ -250,9 +259,9 @@ bool LastLayerInAnotherBasin(const Context& c,
 
 // A solution found by the search replaces best only when it has more
 // inliers by at least this many standard deviations of the points that
-// changed (InlierGainEvidence): among the minima of a wide, flat basin
-// (hand-held Livox scans) the inlier count differs by chance, and a smaller
-// margin swaps a right result for another one nearby (docs/trust.md).
+// changed (InlierGainEvidence): among the minima of a wide, flat basin the
+// inlier count differs by chance, and a smaller margin swaps a right result
+// for another one nearby.
 constexpr double kMinInlierGainEvidence = 1.0;
 
 // More inliers at all (InlierGainEvidence > 0): what a minimum beyond the
@@ -288,7 +297,7 @@ Eigen::Vector3d SensorPosition(const Context& c, const Vector6d& xi_local) {
 
 // True when step 4 applies to `attempt`: converged, its translation within
 // retry.scan_pattern_reach_cells last-layer cell edges of zero.
-bool NearTheSensorsCoinciding(const Context& c, const Attempt& attempt) {
+bool AtZeroMotion(const Context& c, const Attempt& attempt) {
   const double reach_m =
       c.options.retry.scan_pattern_reach_cells * c.problem.last().cell_size();
   return attempt.verdict == TerminationType::CONVERGENCE &&
@@ -322,9 +331,7 @@ bool ConvergedWithMoreInliers(const Context& c,
 // coincide. Its verdict stands unless it converged with no more inliers on
 // the whole last layer (only the planar cells prefer it): then the rings and
 // the planes disagree, and it is LOW_QUALITY.
-void ReplaceAtTheCoincidence(const Context& c,
-                             Attempt other,
-                             Attempt* current) {
+void ReplacePatternMinimum(const Context& c, Attempt other, Attempt* current) {
   if (other.verdict == TerminationType::CONVERGENCE &&
       !ConvergedWithMoreInliers(c, *current, other, kAnyInlierGain)) {
     other.verdict = TerminationType::LOW_QUALITY;
@@ -341,14 +348,13 @@ void ReplaceAtTheCoincidence(const Context& c,
 // that solution, assessed, replaces best if it fits better: on the planar
 // cells when best converged where the sensors coincide (the coarse layers
 // can carry a guess into the pattern's minimum), else by KeepBetter.
-void CheckTheGuess(const Context& c, Attempt* best) {
+void CompareWithLastLayerFromGuess(const Context& c, Attempt* best) {
   ++c.cost->attempts;
   Attempt from_guess;
   if (LastLayerInAnotherBasin(c, c.initial_local, *best, &from_guess)) {
     Assess(c, &from_guess);
-    if (NearTheSensorsCoinciding(c, *best) &&
-        PlanarCellsPrefer(c, *best, from_guess)) {
-      ReplaceAtTheCoincidence(c, std::move(from_guess), best);
+    if (AtZeroMotion(c, *best) && PlanarCellsPrefer(c, *best, from_guess)) {
+      ReplacePatternMinimum(c, std::move(from_guess), best);
     } else {
       KeepBetter(std::move(from_guess), best);
     }
@@ -363,12 +369,10 @@ using Preference = bool (*)(const Context& c,
 
 // Steps 3 and 4's first part: converged, with clearly more inliers on the
 // last layer (kMinInlierGainEvidence), and an objective (Eq. 10 with the
-// robust loss, on the last layer) no higher than current's. In a hand-held
-// Livox scan's wide basin a minimum a few centimetres away can gain inliers
-// at the gate's edge while the bulk of the points fits worse (211->212 from
-// its prior, 3.4 cm off: 9.4 cm off with a higher score than at the prior).
-// The score alone does not decide, since a point that leaves the map scores
-// nothing.
+// robust loss, on the last layer) no higher than current's: in a wide
+// basin a minimum nearby can gain inliers at the gate's edge while the bulk
+// of the points fits worse. The score alone does not decide, since a point
+// that leaves the map scores nothing.
 bool ClearlyMoreInliers(const Context& c,
                         const Attempt& current,
                         const Attempt& other) {
@@ -380,9 +384,9 @@ bool ClearlyMoreInliers(const Context& c,
 // pattern adds inliers to `current`, so a converged `other` with more
 // inliers at all (kAnyInlierGain) fits better, and so does one the planar
 // cells prefer.
-bool BetterBeyondThePattern(const Context& c,
-                            const Attempt& current,
-                            const Attempt& other) {
+bool FitsBetterThanPatternMinimum(const Context& c,
+                                  const Attempt& current,
+                                  const Attempt& other) {
   return ConvergedWithMoreInliers(c, current, other, kAnyInlierGain) ||
          PlanarCellsPrefer(c, current, other);
 }
@@ -427,7 +431,7 @@ bool BetterMinimumAlong(const Context& c,
 
 // One round of the search along best's flattest weak direction, one cell
 // edge each way; true when a solution in another basin replaced best.
-bool ExploreWeakDirection(const Context& c, Attempt* best) {
+bool BetterMinimumAlongFlattest(const Context& c, Attempt* best) {
   const Vector6d d = best->constraints.flattest_direction;
   if (d.isZero() || best->constraints.flatness <
                         c.options.retry.weak_direction_min_flatness) {
@@ -443,12 +447,12 @@ bool ExploreWeakDirection(const Context& c, Attempt* best) {
          KeepBetter(std::move(moved), best);
 }
 
-// Step 3 above: rounds of ExploreWeakDirection while the result converged
+// Step 3 above: rounds of BetterMinimumAlongFlattest while the result converged
 // and the last round found a better minimum.
-void SearchWeakDirection(const Context& c, Attempt* best) {
+void SearchAlongFlattestDirection(const Context& c, Attempt* best) {
   for (int round = 0; round < c.options.retry.weak_direction_rounds; ++round) {
     if (best->verdict != TerminationType::CONVERGENCE ||
-        !ExploreWeakDirection(c, best)) {
+        !BetterMinimumAlongFlattest(c, best)) {
       return;
     }
   }
@@ -457,11 +461,11 @@ void SearchWeakDirection(const Context& c, Attempt* best) {
 // Step 4's first part: where the planar cells alone lead from *attempt.
 // True when *attempt stands; false when a clearly better solution replaced
 // it or it was flagged LOW_QUALITY.
-bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
+bool PlanarCellsReturn(const Context& c, Attempt* attempt) {
   const NdtLayer& planar = c.problem.planar_last();
   // The last layer's stage over the samples and iterations of the layer
-  // before it (every 2nd sample: a sparser subset moves on its own sampling
-  // noise, and flagged right Livox results); a one-layer map's own.
+  // before it (a sparser subset moves on its own sampling noise); a
+  // one-layer map's own.
   const int n = c.problem.map.num_layers();
   const StageControl before_last =
       StageControlFor(c.options.schedule, std::max(1, n - 1), n);
@@ -471,11 +475,11 @@ bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
   Vector6d led = attempt->xi_local;
   if (!ExploreFrom(c, planar, control, &led)) return true;
   // The pattern holds the sensor's position: only a translation by more
-  // than AnotherBasin's tenth of a cell counts (without the ground's rings
-  // the planar cells may tilt the pose a little, as on koide3).
+  // than kSameBasinCells counts (without the ground's rings the planar
+  // cells may tilt the pose a little).
   const double led_m =
       (SensorPosition(c, led) - SensorPosition(c, attempt->xi_local)).norm();
-  if (led_m <= 0.1 * c.problem.last().cell_size()) return true;
+  if (led_m <= kSameBasinCells * c.problem.last().cell_size()) return true;
   Attempt other;
   if (LastLayerInAnotherBasin(c, led, *attempt, &other)) {
     if (FitsBetter(c, *attempt, ClearlyMoreInliers, &other)) {
@@ -494,17 +498,15 @@ bool StandsOnThePlanarCells(const Context& c, Attempt* attempt) {
 }
 
 // Step 4's second part: the scene's own minimum may lie beyond the
-// pattern's, along d, the translation the planar cells constrain least (a
-// road seen within 8 m, or ahead in a 30 deg wedge: 0.7-1.5 m ahead). Only
-// where they keep as many of their inliers one cell edge along d (their
-// ProbeAlong, quality_check.h) as the search (step 3) needs of the flattest
-// direction can such a minimum lie near (koide3's d, constrained, keeps
-// 20 %). The last layer runs from the
-// result moved along d and back by (1 + reach) cell edges: out of the
+// pattern's, along d, the translation the planar cells constrain least.
+// Only where they keep as many of their inliers one cell edge along d
+// (ProbeAlong, direction_probe.h) as the search (step 3) needs of the
+// flattest direction can such a minimum lie near. The last layer runs from
+// the result moved along d and back by (1 + reach) cell edges: out of the
 // pattern's reach and of its neighbouring cells' pull. A minimum in another
-// basin that fits BetterBeyondThePattern replaces the result
-// (ReplaceAtTheCoincidence).
-void LookBeyondThePattern(const Context& c, Attempt* attempt) {
+// basin that FitsBetterThanPatternMinimum replaces the result
+// (ReplacePatternMinimum).
+void SearchBeyondPatternReach(const Context& c, Attempt* attempt) {
   Vector6d d = Vector6d::Zero();
   d.head<3>() = attempt->constraints.weakest_translations.col(0);
   if (d.isZero() ||
@@ -524,29 +526,28 @@ void LookBeyondThePattern(const Context& c, Attempt* attempt) {
                          d,
                          (1.0 + c.options.retry.scan_pattern_reach_cells) *
                              c.problem.last().cell_size(),
-                         BetterBeyondThePattern,
+                         FitsBetterThanPatternMinimum,
                          &found)) {
-    ReplaceAtTheCoincidence(c, std::move(found), attempt);
+    ReplacePatternMinimum(c, std::move(found), attempt);
   }
 }
 
 // Step 4 above, on a converged *attempt where the sensors nearly coincide.
-void CheckTheScanPattern(const Context& c, Attempt* attempt) {
-  if (!NearTheSensorsCoinciding(c, *attempt)) return;
+void CheckPatternMinimum(const Context& c, Attempt* attempt) {
+  if (!AtZeroMotion(c, *attempt)) return;
   ++c.cost->attempts;
-  if (StandsOnThePlanarCells(c, attempt)) {
-    LookBeyondThePattern(c, attempt);
+  if (PlanarCellsReturn(c, attempt)) {
+    SearchBeyondPatternReach(c, attempt);
   }
 }
 
-// Two minima more than this many last-layer cell edges apart (CellsApart)
-// are distinct: within half a cell most points keep their cells, and the
-// hand-held Livox pairs' wide basins hold minima up to 0.4 cell edges apart
-// that fit as well (docs/trust.md).
+// Two minima more than this many last-layer cell edges apart are distinct:
+// within half a cell most points keep their cells.
 constexpr double kDistinctMinimaCells = 0.5;
 
 // A distinct minimum fits as well as the result unless it holds clearly
-// fewer inliers on the last layer (InlierGainEvidence below minus this).
+// fewer inliers on the last layer (InlierGainEvidence below minus this
+// many standard deviations).
 constexpr double kAsGoodInlierEvidence = 1.0;
 
 // From pose a to pose b as the constraint rows scale it: the translation,
@@ -561,37 +562,42 @@ Vector6d ScaledDifference(const Isometry3d& a,
 }
 
 // Step 6 above: a converged result is DEGENERATE when a distinct minimum
-// that a run converged to fits as well: the data do not decide between the
-// two (the KITTI input cropped to 8 m, 1->2: where the sensors coincide and
-// 0.63 m ahead, 91 % and 90 % of the points are inliers). The direction
-// from the result to it is named, and unbounded in the covariance.
-void FlagAnotherMinimumAsGood(const Context& c, Attempt* best) {
+// that a run converged to fits as well (FindRivalMinimum): the data do not
+// decide between the two. The direction from the result to it is named,
+// and unbounded in the covariance.
+void FlagRivalMinimum(const Context& c, Attempt* best) {
   if (best->verdict != TerminationType::CONVERGENCE) return;
+  std::vector<Isometry3d> minima = {PoseVectorToIsometry(best->xi_local)};
   for (const Vector6d& minimum : *c.minima) {
-    if (CellsApart(c, best->xi_local, minimum) <= kDistinctMinimaCells ||
-        InlierGainEvidence(c, c.problem.last(), best->xi_local, minimum) <
-            -kAsGoodInlierEvidence) {
-      continue;
-    }
-    const Isometry3d result = PoseVectorToIsometry(best->xi_local);
-    const Isometry3d other = PoseVectorToIsometry(minimum);
-    const Vector6d d = ScaledDifference(result, other, c.problem.rms_range_m);
-    char apart[64];
-    std::snprintf(apart,
-                  sizeof(apart),
-                  "%.2f m and %.2f deg",
-                  TranslationErrorM(result, other),
-                  RotationErrorRad(result, other) * kRadToDeg);
-    best->constraints.degenerate_directions.push_back(d.normalized());
-    best->verdict = TerminationType::DEGENERATE;
-    best->verdict_message =
-        std::string(
-            "degenerate: the fit does not decide between this pose "
-            "and another minimum ") +
-        apart + " away (" + DescribeDirection(d) +
-        ") with about as many inliers";
-    return;
+    minima.push_back(PoseVectorToIsometry(minimum));
   }
+  RivalMinimaOptions options;
+  options.separation = SeparationInCells(c, kDistinctMinimaCells);
+  options.as_well_margin = kAsGoodInlierEvidence;
+  // The fit: the inlier gain's z-score from the result (0 at the result).
+  const RivalMinimaSummary rival =
+      FindRivalMinimum(options, minima, 0, [&](size_t i) {
+        if (i == 0) return 0.0;
+        return InlierGainEvidence(
+            c, c.problem.last(), best->xi_local, (*c.minima)[i - 1]);
+      });
+  if (!rival.found()) return;
+  const Vector6d d = ScaledDifference(minima[0],
+                                      minima[static_cast<size_t>(rival.rival)],
+                                      c.problem.rms_range_m);
+  char apart[64];
+  std::snprintf(apart,
+                sizeof(apart),
+                "%.2f m and %.2f deg",
+                rival.apart_m,
+                rival.apart_deg);
+  best->constraints.degenerate_directions.push_back(d.normalized());
+  best->verdict = TerminationType::DEGENERATE;
+  best->verdict_message =
+      std::string(
+          "degenerate: the fit does not decide between this pose "
+          "and another minimum ") +
+      apart + " away (" + DescribeDirection(d) + ") with about as many inliers";
 }
 
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
@@ -618,18 +624,19 @@ Attempt SolveAttempts(const RegistrationOptions& options,
   cost->attempts = 1;
   if (best.schedule.termination_type == TerminationType::FAILURE) return best;
   const InitialGuessUncertainty& u = options.initial_uncertainty;
-  if (start < n && LeftTheGuess(c, best.xi_local)) CheckTheGuess(c, &best);
-  SearchWeakDirection(c, &best);
-  CheckTheScanPattern(c, &best);
+  if (start < n && LeftTheGuess(c, best.xi_local))
+    CompareWithLastLayerFromGuess(c, &best);
+  SearchAlongFlattestDirection(c, &best);
+  CheckPatternMinimum(c, &best);
   for (const double yaw_deg : options.retry.yaw_seeds_deg) {
     if (best.verdict == TerminationType::CONVERGENCE) break;
     if (u.given && std::abs(yaw_deg) > u.rotation_deg) continue;
     ++cost->attempts;
     Attempt turned = Solve(c, start, TurnedGuess(initial_local, yaw_deg));
-    CheckTheScanPattern(c, &turned);
+    CheckPatternMinimum(c, &turned);
     KeepBetter(std::move(turned), &best);
   }
-  FlagAnotherMinimumAsGood(c, &best);
+  FlagRivalMinimum(c, &best);
   return best;
 }
 
