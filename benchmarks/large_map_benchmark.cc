@@ -9,7 +9,7 @@
 // boxes 2-30 m on a side and up to 30 m high (walls and roofs, 30 %), 20000
 // poles of 0.15 m radius and up to 8 m (10 %); the points are clamped into
 // [0, 2000] x [0, 2000] x [0, 33.554432] m with both corners present, so
-// that with q = 8 and --finest_cell_size 1 the map has n = 9 layers and
+// that with q = 8 and --finest_cell_size_m 1 the map has n = 9 layers and
 // its finest cell is exactly 1 m (V / 8^9 = 1 m^3).
 //
 // BM_EstimateLargeMap times EstimateMapMemory (grid/map_memory.h);

@@ -1,7 +1,7 @@
 // Registration cost per pair on the bundled real scans, by backend: the
 // KITTI 00 pair 0 -> 1 and the koide3 Velodyne pair. Options are the
 // defaults, changed by the registration flags of the tools (e.g.
-// --gbs_cell_size=2); --backend is overridden per benchmark. CPU time is the
+// --gbs_cell_size_m=2); --backend is overridden per benchmark. CPU time is the
 // figure to compare (the machine is shared).
 
 #include <benchmark/benchmark.h>
@@ -11,7 +11,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/registration/registration.h"
-#include "tools/common/registration_flags.h"
+#include "tools/cli/registration_flags.h"
 
 namespace mlndt {
 namespace {

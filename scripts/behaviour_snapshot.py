@@ -88,17 +88,17 @@ def main():
     runs += [
         pair_koide + ["--loss=none"],
         pair_koide + ["--loss=huber", "--loss_scale=2"],
-        pair_koide + ["--unmatched=zero_residual"],
+        pair_koide + ["--unmatched_policy=zero_residual"],
         pair_koide + ["--sampling=random", "--seed=7"],
         pair_koide + ["--sampling=voxel_centroid"],
         pair_koide + ["--start_layer=2", "--iterations_per_layer=3", "--max_coarse_point_stride=1"],
-        pair_koide + ["--finest_cell_size=0", "--num_layers=4"],
-        pair_koide + ["--finest_cell_size=1", "--backend=lm"],
-        pair_koide + ["--trust_region=dogleg"],
+        pair_koide + ["--finest_cell_size_m=0", "--num_layers=4"],
+        pair_koide + ["--finest_cell_size_m=1", "--backend=lm"],
+        pair_koide + ["--trust_region_strategy_type=dogleg"],
         pair_koide + ["--method=ndt"],
-        pair_koide + ["--method=ndt", "--ndt_cell_size=2"],
-        pair_koide + ["--method=ndt", "--ndt_cell_size=1", "--ndt_neighbors=direct7"],
-        ["--reference=" + kitti(0), "--input=" + kitti(1), "--method=ndt", "--ndt_cell_size=2"],
+        pair_koide + ["--method=ndt", "--ndt_cell_size_m=2"],
+        pair_koide + ["--method=ndt", "--ndt_cell_size_m=1", "--ndt_neighbors=direct7"],
+        ["--reference=" + kitti(0), "--input=" + kitti(1), "--method=ndt", "--ndt_cell_size_m=2"],
         ["--reference=" + kitti(3), "--input=" + kitti(4), "--method=ndt"],
         ["--reference=" + kitti(0), "--input=" + kitti(3), "--initial_guess=10,0,0,0,0,0"],
         ["--reference=" + kitti(4), "--input=" + kitti(6), "--initial_guess=0,0,0,0,0,45", "--backend=lm"],
@@ -110,7 +110,7 @@ def main():
     for flags in (["--step=1", "--init=zero"], ["--step=2", "--init=constant_velocity"],
                   ["--step=1", "--init=gt_fraction:0.5", "--backend=newton"],
                   ["--step=1", "--init=zero", "--adaptive_start_layer"],
-                  ["--step=1", "--method=ndt", "--ndt_cell_size=2"]):
+                  ["--step=1", "--method=ndt", "--ndt_cell_size_m=2"]):
         for line in sequence(build, flags):
             lines.append("sequence " + " ".join(flags) + " :: " + line)
     with open(out_path, "w") as f:

@@ -7,7 +7,7 @@
 #    scripts/build.sh with MLNDT_BUILD_TARGETS=mlndt_bench (ccache makes a
 #    rebuild cheap; $MLNDT_AGAINST_CMAKE_ARGS go to its cmake, e.g.
 #    -DMLNDT_WITH_PCL=ON);
-# 2. runs this tree's build/tools/mlndt_bench ($MLNDT_BENCH overrides) and
+# 2. runs this tree's build/lab/programs/mlndt_bench ($MLNDT_BENCH overrides) and
 #    REV's alternately, $MLNDT_AGAINST_ROUNDS rounds (default 5; the first of
 #    a round alternates too), each with the same flags, --repetitions=1
 #    unless given, and its own --output_csv;
@@ -33,7 +33,7 @@ if ! [[ $rounds =~ ^[1-9][0-9]*$ ]]; then
   echo "bench_against: MLNDT_AGAINST_ROUNDS must be a positive integer, not '$rounds'" >&2
   exit 2
 fi
-new_bench="${MLNDT_BENCH:-$root/build/tools/mlndt_bench}"
+new_bench="${MLNDT_BENCH:-$root/build/lab/programs/mlndt_bench}"
 if [[ ! -x $new_bench ]]; then
   echo "bench_against: $new_bench not found: build it first (MLNDT_BUILD_TARGETS=mlndt_bench scripts/build.sh)" >&2
   exit 1
@@ -69,7 +69,9 @@ if ! (cd "$tree" && MLNDT_BUILD_TARGETS=mlndt_bench scripts/build.sh ${MLNDT_AGA
   tail -20 "$tree/build.log" >&2
   exit 1
 fi
-old_bench="$tree/build/tools/mlndt_bench"
+old_bench="$tree/build/lab/programs/mlndt_bench"
+# Revisions before the lab's drivers moved to lab/programs/ built it in tools/.
+[[ -x $old_bench ]] || old_bench="$tree/build/tools/mlndt_bench"
 
 # 2. The flags both know.
 flag_names() { "$1" --helpfull 2>&1 | sed -nE 's/^ +-([a-z0-9_]+) \(.*/\1/p' | sort -u; }

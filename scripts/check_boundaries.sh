@@ -2,7 +2,9 @@
 # Fails when an include crosses a module boundary the wrong way. The
 # dependency order is mlndt <- lab <- tools (README, "Modules"):
 #   mlndt/   the installed library: no lab/, tools/, gflags or nlohmann_json;
-#   lab/     evaluation and experiments: no tools/ and no gflags;
+#   lab/     evaluation and experiments: no tools/ and no gflags; its
+#            programs (lab/programs/, mains built but never installed)
+#            sit on top of both and may use the command-line layer;
 #   python/         the product's Python module (bindings, package, tests):
 #                   no lab/ or tools/ include, no import of the lab's module;
 #   lab/python/     the lab's development module mlndt_lab (never
@@ -23,7 +25,7 @@ forbid() {
 
 forbid mlndt 'lab/|tools/' "the lab or the tools (mlndt <- lab <- tools)"
 forbid mlndt 'gflags/|nlohmann/' "gflags or nlohmann_json (the installed package needs neither)"
-forbid lab 'tools/' "the tools (mlndt <- lab <- tools)"
+forbid lab 'tools/' "the tools (mlndt <- lab <- tools)" --exclude-dir=programs
 forbid lab 'gflags/' "gflags (flags belong to tools/ and the lab's programs)" --exclude-dir=programs
 forbid python 'lab/|tools/' "the lab or the tools (python/ is the product: mlndt binds the library only)"
 forbid lab/python 'tools/' "the tools (mlndt_lab binds the lab)"

@@ -16,7 +16,7 @@ registers the cropped input onto the whole reference. Reference scans are
 symbolic links to SRC.
 
   scripts/make_kitti_crops.py ../shared/data/kitti00_frames_0000_0007 /tmp/crops
-  build/tools/mlndt_suite --data_dir=/tmp/crops \\
+  build/lab/programs/mlndt_suite --data_dir=/tmp/crops \\
       --datasets=kitti_crop_ground,kitti_crop_near,kitti_crop_wedge,kitti_crop_thin \\
       --starts=identity,prior,perturbed
 """

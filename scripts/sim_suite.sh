@@ -16,7 +16,7 @@
 # (4 sensors x 5 scenes x 2 seeds, 4 scans, pairs of steps 1-3: 720 runs).
 #
 # Needs a build with MLNDT_WITH_EMBREE (build/lab/programs/mlndt_simulate)
-# and build/tools/mlndt_suite. Writes DIR/sets (the data sets), DIR/suite
+# and build/lab/programs/mlndt_suite. Writes DIR/sets (the data sets), DIR/suite
 # (mlndt_suite's runs.csv, summary.json and log) and DIR/table.txt. Exit
 # code: mlndt_suite's (0 complete, 1 a --fail_on target missed, 2 bad input).
 set -euo pipefail
@@ -51,7 +51,7 @@ while (($# > 0)); do
 done
 
 simulate="$build/lab/programs/mlndt_simulate"
-suite="$build/tools/mlndt_suite"
+suite="$build/lab/programs/mlndt_suite"
 for program in "$simulate" "$suite"; do
   if [[ ! -x $program ]]; then
     echo "sim_suite: $program is missing (build with Embree: MLNDT_BUILD_TARGETS=\"mlndt_simulate mlndt_suite\" scripts/build.sh)" >&2

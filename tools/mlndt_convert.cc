@@ -12,9 +12,9 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/sampling/point_sampler.h"
-#include "tools/common/input_files.h"
-#include "tools/common/output_files.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/input_files.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/tool_main.h"
 
 DEFINE_string(
     input,

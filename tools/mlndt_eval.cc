@@ -35,8 +35,7 @@
 // scan; the printed line lists the scans when they are not consecutive.
 //
 // The evaluation's flags are TrajectoryEvaluationOptions' fields
-// (tools/common/trajectory_evaluation_flags.h; the older names
-// --max_time_difference, --segment_lengths and --segment_step still work).
+// (tools/cli/trajectory_evaluation_flags.h).
 //
 // Exit codes: 2 on a bad flag or an input refused before any work (an
 // unreadable file, trajectories of different lengths paired by index); 1
@@ -53,14 +52,14 @@
 #include "lab/eval/trajectory_evaluation.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/common/eval_flags.h"
-#include "tools/common/eval_output.h"
-#include "tools/common/flag_utils.h"
-#include "tools/common/json_output.h"
-#include "tools/common/map_inputs.h"
-#include "tools/common/output_files.h"
-#include "tools/common/tool_main.h"
-#include "tools/common/trajectory_evaluation_flags.h"
+#include "tools/cli/eval_flags.h"
+#include "tools/cli/eval_output.h"
+#include "tools/cli/flag_utils.h"
+#include "tools/cli/json_output.h"
+#include "tools/cli/map_inputs.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/tool_main.h"
+#include "tools/cli/trajectory_evaluation_flags.h"
 
 // clang-format off
 DEFINE_string(reference, "", "The reference trajectory (KITTI or TUM)");
@@ -178,8 +177,7 @@ bool ParseFlags(EvalFlags* flags, std::string* error) {
                                   error)) {
     return false;
   }
-  return tools::CheckFlagAliases(error) &&
-         tools::TrajectoryEvaluationFlags().Apply(&flags->options, error);
+  return tools::TrajectoryEvaluationFlags().Apply(&flags->options, error);
 }
 
 int Run() {

@@ -3,8 +3,8 @@
 //   mlndt_info [--layers [--num_layers=4 | --finest_cell_size_m=1]
 //              [--division_constant=8] [--min_points_per_cell=5]] FILE...
 //
-// The map flags are the shared ones of LayeredGridOptions (option_flags.h;
-// --finest_cell_size is the older name of --finest_cell_size_m); the map
+// The map flags are the shared ones of LayeredGridOptions (option_flags.h:
+// --finest_cell_size_m, --num_layers, ...); the map
 // starts from the paper's (PaperLayeredGridOptions: n = 4, no finest cell
 // size, coarse weighting by points), the defaults --help shows. The other
 // registration flags are refused.
@@ -37,9 +37,9 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
-#include "tools/common/grid_flags.h"
-#include "tools/common/json_output.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/grid_flags.h"
+#include "tools/cli/json_output.h"
+#include "tools/cli/tool_main.h"
 
 DEFINE_bool(layers,
             false,

@@ -21,7 +21,7 @@
 // map and the current scan are the only clouds in memory.
 //
 // Scans come from a folder, a --scan_list or a ROS 1 bag's PointCloud2
-// topic (tools/common/scan_input.h).
+// topic (tools/cli/scan_input.h).
 //
 // Writes into --output_dir: trajectory_kitti.txt and trajectory_tum.txt
 // (map_from_scan of every scan; TUM time stamps are the bag's header stamps
@@ -49,17 +49,17 @@
 #include "mlndt/common/timer.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/localizer.h"
-#include "tools/common/localize_guesses.h"
-#include "tools/common/localize_output.h"
-#include "tools/common/localizer_flags.h"
-#include "tools/common/map_flags.h"
-#include "tools/common/map_inputs.h"
-#include "tools/common/output_files.h"
-#include "tools/common/output_set.h"
-#include "tools/common/pose_flags.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/scan_input.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/localize_guesses.h"
+#include "tools/cli/localize_output.h"
+#include "tools/cli/localizer_flags.h"
+#include "tools/cli/map_flags.h"
+#include "tools/cli/map_inputs.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/output_set.h"
+#include "tools/cli/pose_flags.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/scan_input.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(map, "", "The map file (mlndt_map --output)");

@@ -2,9 +2,9 @@
 // (SaveLayeredGrid), or describes a saved map.
 //
 //   mlndt_map --scans=DIR --poses=poses.txt --output=map.mlndt
-//             [--poses_are_camera --calib=calib.txt] [--min_range=3
-//             --max_range=80]
-//             [--voxel_size=0.2] [--finest_cell_size=2 ...]
+//             [--poses_are_camera --calib=calib.txt] [--min_range_m=3
+//             --max_range_m=80]
+//             [--voxel_size=0.2] [--finest_cell_size_m=2 ...]
 //   mlndt_map --scan_list=scans.txt --poses=poses.tum --output=map.mlndt
 //   mlndt_map --bag=run.bag --topic=/points --poses=poses.txt --output=...
 //   mlndt_map --cloud=merged.pcd --output=map.mlndt [--voxel_size=0.2]
@@ -13,16 +13,16 @@
 // Building (the default): every scan of --scans (the cloud files in DIR,
 // sorted by name), --scan_list (one path per line) or the PointCloud2
 // messages of --topic in the ROS 1 bag --bag is read in turn,
-// cropped by range from its sensor (--min_range, --max_range), moved into
+// cropped by range from its sensor (--min_range_m, --max_range_m), moved into
 // the world frame by its pose and merged; pose k of --poses (KITTI
 // 12-number lines or TUM lines, format detected or --poses_format;
 // world_from_scan) belongs to scan k; with --poses_are_camera --calib they are
 // KITTI camera poses, converted with its Tr line. Or --cloud: one cloud already
 // in the world frame. The merged cloud is voxel-filtered (--voxel_size, one
 // centroid per voxel) and the map is built with the shared map flags
-// (--preset, --finest_cell_size, --num_layers, --division_constant,
-// --min_points_per_cell, --min_eigenvalue, --min_eigenvalue_ratio,
-// --threads). The memory a build needs is estimated before anything large
+// (--preset, --finest_cell_size_m, --num_layers, --division_constant,
+// --min_points_per_cell, --min_eigenvalue_m2, --min_eigenvalue_ratio,
+// --num_threads). The memory a build needs is estimated before anything large
 // is allocated (mlndt/grid/map_memory.h); a build over --max_memory_gb
 // (default 8) is refused with the amount it needs.
 //
@@ -47,16 +47,16 @@
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/map_builder.h"
-#include "tools/common/json_output.h"
-#include "tools/common/map_build_flags.h"
-#include "tools/common/map_flags.h"
-#include "tools/common/map_inputs.h"
-#include "tools/common/map_output.h"
-#include "tools/common/output_files.h"
-#include "tools/common/pose_flags.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/scan_input.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/json_output.h"
+#include "tools/cli/map_build_flags.h"
+#include "tools/cli/map_flags.h"
+#include "tools/cli/map_inputs.h"
+#include "tools/cli/map_output.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/pose_flags.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/scan_input.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");

@@ -14,11 +14,10 @@
 // is searched for from wider starts; one that stays unregistered is flagged
 // as a fallback in scans.csv, with its pose interpolated between the
 // registered scans around it (extrapolated at the end). The odometry
-// flags are OdometryOptions' fields (tools/common/odometry_flags.h:
+// flags are OdometryOptions' fields (tools/cli/odometry_flags.h:
 // --local_map_max_keyframes, --keyframes_min_translation_m,
 // --prediction_max_translation_m, --gate_factor, --confirmation_enabled,
-// ...; the older names --local_map_keyframes, --keyframe_distance,
-// --max_uncertainty_m, --confirm, ... still work).
+// ...).
 //
 // Writes into --output_dir: trajectory_kitti.txt, trajectory_tum.txt
 // (stamped with the bag's header stamps or --times; else the scan indices,
@@ -40,17 +39,17 @@
 #include "lab/eval/dataset.h"
 #include "lab/report/gnuplot.h"
 #include "lab/report/progress.h"
-#include "tools/common/flag_utils.h"
-#include "tools/common/list_flags.h"
-#include "tools/common/odometry_flags.h"
-#include "tools/common/odometry_output.h"
-#include "tools/common/output_files.h"
-#include "tools/common/output_set.h"
-#include "tools/common/pose_flags.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/scan_input.h"
-#include "tools/common/start_layer_check.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/flag_utils.h"
+#include "tools/cli/list_flags.h"
+#include "tools/cli/odometry_flags.h"
+#include "tools/cli/odometry_output.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/output_set.h"
+#include "tools/cli/pose_flags.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/scan_input.h"
+#include "tools/cli/start_layer_check.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");

@@ -22,11 +22,11 @@
 #include "mlndt/odometry/odometry.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/registration/registration_summary.h"
-#include "tools/common/option_flags.h"
-#include "tools/common/options_doc.h"
-#include "tools/common/results_doc.h"
-#include "tools/common/tool_main.h"
-#include "tools/common/tool_table_flags.h"
+#include "tools/cli/option_flags.h"
+#include "tools/cli/options_doc.h"
+#include "tools/cli/results_doc.h"
+#include "tools/cli/tool_main.h"
+#include "tools/cli/tool_table_flags.h"
 
 DEFINE_string(format,
               "markdown",
@@ -81,9 +81,6 @@ int main(int argc, char** argv) {
   std::vector<std::string> option_flags;
   for (const auto& flag : mlndt::tools::OptionFlags()) {
     option_flags.push_back(flag.name);
-  }
-  for (const auto& [alias, name] : mlndt::tools::FlagAliases()) {
-    option_flags.push_back(alias);
   }
   for (const auto* table_flags : mlndt::tools::ToolTableFlags()) {
     for (const std::string& flag : table_flags->RegisteredFlags()) {

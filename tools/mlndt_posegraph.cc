@@ -12,8 +12,7 @@
 //                   flags]
 //
 // The joint problem's flags are PoseGraphOptions' fields
-// (tools/common/pose_graph_flags.h); the older names --joint_point_blocks,
-// --odometry_sigma_m and --odometry_sigma_deg still work.
+// (tools/cli/pose_graph_flags.h).
 //
 // Writes trajectory_<init>.txt (chained or odometry) and trajectory_joint.txt
 // (KITTI lines, world_from_scan, scan 0 = world) into --output_dir when
@@ -33,16 +32,16 @@
 #include "lab/eval/dataset.h"
 #include "lab/report/progress.h"
 #include "lab/runs/pose_graph.h"
-#include "tools/common/flag_utils.h"
-#include "tools/common/json_output.h"
-#include "tools/common/output_files.h"
-#include "tools/common/pose_flags.h"
-#include "tools/common/pose_graph_flags.h"
-#include "tools/common/posegraph_output.h"
-#include "tools/common/posegraph_pairs.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/start_layer_check.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/flag_utils.h"
+#include "tools/cli/json_output.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/pose_flags.h"
+#include "tools/cli/pose_graph_flags.h"
+#include "tools/cli/posegraph_output.h"
+#include "tools/cli/posegraph_pairs.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/start_layer_check.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (files with a cloud extension, sorted by name)");

@@ -12,7 +12,7 @@
 // Scans are the point-cloud files in DIR (by extension), sorted by file
 // name; pose and calibration files given on the command line are left out
 // even when they sit in DIR. Or the sensor_msgs/PointCloud2 messages of
-// --topic in the ROS 1 bag --bag, in bag order (tools/common/scan_input.h).
+// --topic in the ROS 1 bag --bag, in bag order (tools/cli/scan_input.h).
 // Ground-truth poses are KITTI lines, one per scan, world_from_scan in the
 // scans' own frame; with --poses_are_camera
 // --calib they are KITTI camera poses and are converted with the Tr line
@@ -32,7 +32,7 @@
 //
 // --adaptive_start_layer: the paper's proposal (end of Section 5.3), defined
 // with its flags in lab/runs/adaptive_start_layer.h and
-// tools/common/adaptive_start_layer_flags.h.
+// tools/cli/adaptive_start_layer_flags.h.
 //
 // Writes into --output_dir: pairs.csv, summary.json, trace.csv,
 // trajectory.txt (chained estimates of scans 0, step, 2 step, ...; KITTI
@@ -58,17 +58,17 @@
 #include "lab/report/gnuplot.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
-#include "tools/common/output_files.h"
-#include "tools/common/output_set.h"
-#include "tools/common/pose_flags.h"
-#include "tools/common/registration_flags.h"
-#include "tools/common/scan_input.h"
-#include "tools/common/sequence_flags.h"
-#include "tools/common/sequence_inputs.h"
-#include "tools/common/sequence_output.h"
-#include "tools/common/sequence_plot_list.h"
-#include "tools/common/start_layer_check.h"
-#include "tools/common/tool_main.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/output_set.h"
+#include "tools/cli/pose_flags.h"
+#include "tools/cli/registration_flags.h"
+#include "tools/cli/scan_input.h"
+#include "tools/cli/sequence_flags.h"
+#include "tools/cli/sequence_inputs.h"
+#include "tools/cli/sequence_output.h"
+#include "tools/cli/sequence_plot_list.h"
+#include "tools/cli/start_layer_check.h"
+#include "tools/cli/tool_main.h"
 
 // clang-format off
 DEFINE_string(scans, "", "Folder of scans (every point-cloud file in it, sorted by file name)");

@@ -1,6 +1,6 @@
 #pragma once
 
-// mlndt_covariance's measure (its report: tools/common/covariance_output.h):
+// mlndt_covariance's measure (its report: lab/programs/covariance_output.h):
 // how well the registration covariance P predicts the spread of many
 // registrations of one pair (NEES about the runs' mean and about the reference
 // pose, lab/eval/nees.h), per pair and pooled over a data set.

@@ -186,7 +186,7 @@ std::vector<SuiteRun> PlanDatasetRuns(
     const std::map<std::string, ReferencePair>& pairs,
     SuiteSkips* skips);
 
-// A data set ready to run (tools/common/suite_inputs.h LoadSuiteDataset
+// A data set ready to run (lab/programs/suite_inputs.h LoadSuiteDataset
 // reads one).
 struct LoadedSuiteDataset {
   SuiteDataset dataset;

@@ -2,7 +2,7 @@
 
 // Results counted by verdict, for the printed summaries and summary.json of
 // the tools that run many registrations (mlndt_localize, mlndt_sequence;
-// the JSON form is tools/common/verdict_counts_json.h): one count per
+// the JSON form is tools/cli/verdict_counts_json.h): one count per
 // TerminationType (CONVERGENCE, NO_CONVERGENCE, LOW_QUALITY,
 // DEGENERATE, FAILURE; every key always present) and the usable ones by the
 // library's one definition (IsUsableTermination, mlndt/common/types.h). A

@@ -1,7 +1,7 @@
 #pragma once
 
 // One point of mlndt_scaling (the tool parses --sizes: ParseSizes in
-// tools/common/list_flags.h): registering a random subset of N points of a
+// tools/cli/list_flags.h): registering a random subset of N points of a
 // merged cloud onto another, independently drawn one, and what it measures.
 
 #include <cstdint>

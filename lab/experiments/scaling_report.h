@@ -3,7 +3,7 @@
 // mlndt_scaling's reports of what it measured at every cloud size
 // (lab/experiments/scaling_measure.h): the log-log slopes, the markdown
 // table, scaling.csv and the gnuplot figure. The tool prints the texts
-// (tools/common/scaling_output.h).
+// (lab/programs/scaling_output.h).
 
 #include <string>
 #include <utility>

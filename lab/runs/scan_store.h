@@ -34,7 +34,7 @@ namespace mlndt {
 class ScanStore {
  public:
   explicit ScanStore(std::vector<std::string> paths);
-  // Scans from `load` (a ROS bag, tools/common/scan_input.h) instead of
+  // Scans from `load` (a ROS bag, tools/cli/scan_input.h) instead of
   // files; `names` name them in messages and reports, one per scan.
   ScanStore(std::vector<std::string> names, ScanLoader load);
 

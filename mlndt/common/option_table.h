@@ -6,7 +6,7 @@
 // (never repeated); enum fields carry their EnumTable. From the table come
 //   - IsValid's range checks and messages ("invalid option: x = v; it must
 //     be in [lo, hi]"), see CheckRanges;
-//   - the tools' flags and --help (tools/common/registration_flags.cc);
+//   - the tools' flags and --help (tools/cli/registration_flags.cc);
 //   - the Python keywords and docstrings (python/src/options.cc);
 //   - the option reference docs/options.md (mlndt_options_doc).
 // The type-erased fields are read and written through `locate`, which maps a

@@ -3,7 +3,7 @@
 // One description per result: the name (= the C++ field's), unit, help and a
 // getter of every field of a result struct, written once next to the
 // struct. The read-only sibling of option_table.h. From the table come
-//   - the tools' JSON object of the result (tools/common/result_json.h);
+//   - the tools' JSON object of the result (tools/cli/result_json.h);
 //   - the Python module's read-only properties and todict()
 //     (python/src/result_binding.h);
 //   - the reference of the result's JSON in docs/json_schema.md

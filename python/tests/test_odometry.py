@@ -97,14 +97,14 @@ def test_odometry_scan_by_scan_equals_run_odometry(livox, livox_results):
 
 
 def test_kitti_arrays_equal_mlndt_odometry_with_options(tmp_path):
-    """Arrays in, non-default options on both sides (--keyframe_distance,
-    --local_map_keyframes, --finest_cell_size)."""
+    """Arrays in, non-default options on both sides (--keyframes_min_translation_m,
+    --local_map_max_keyframes, --finest_cell_size_m)."""
     completed, poses, table = run_tool_odometry(
         tmp_path,
         f"--scans={KITTI_SCANS[0].parent}",
-        "--keyframe_distance=1.5",
-        "--local_map_keyframes=3",
-        "--finest_cell_size=1.5",
+        "--keyframes_min_translation_m=1.5",
+        "--local_map_max_keyframes=3",
+        "--finest_cell_size_m=1.5",
     )
     assert completed.returncode == 0, completed.stderr
     results = mlndt.run_odometry(

@@ -1,11 +1,11 @@
 """mlndt.register gives mlndt_align's result on the same inputs and options,
 under the same names: both are made from RegistrationSummary's result table
 (mlndt/common/result_table.h), mlndt_align's JSON "registration" object by
-tools/common/result_json.cc and the Python properties and todict() by
+tools/cli/result_json.cc and the Python properties and todict() by
 python/src/result_binding.h.
 
 mlndt_align writes its JSON (docs/json_schema.md) with 17 significant digits
-(tools/common/json_output.h), so each number reads back as the double the
+(tools/cli/json_output.h), so each number reads back as the double the
 tool computed and is compared for equality, not with a tolerance. Every key
 and every value (timings aside) of todict() is compared with the tool's, and
 every property with its todict() entry."""
@@ -71,7 +71,7 @@ def run_align(tmp_path, flags):
 CASES = {
     "defaults": ([], {}, {}),
     "lm_2m_gbs": (
-        ["--backend=lm", "--gbs_cell_size=2", "--loss=huber", "--loss_scale=2.5"],
+        ["--backend=lm", "--gbs_cell_size_m=2", "--loss=huber", "--loss_scale=2.5"],
         {},
         {"backend": {"type": "lm"}, "sampling": {"gbs_cell_size_m": 2.0}, "objective": {"loss": "huber", "loss_scale": 2.5}},
     ),
@@ -80,12 +80,12 @@ CASES = {
         [
             "--initial_guess=0.4,0.1,0,0,0,-1",
             "--initial_uncertainty=0.2,2",
-            "--finest_cell_size=1",
-            "--min_eigenvalue=0.002",
+            "--finest_cell_size_m=1",
+            "--min_eigenvalue_m2=0.002",
             "--coarse_weighting=finest_cells",
             "--seed=7",
-            "--max_range=40",
-            "--retry_yaw_seeds=",
+            "--max_range_m=40",
+            "--yaw_seeds_deg=",
         ],
         {"initial": mlndt.pose_from_xi([0.4, 0.1, 0, 0, 0, -1], degrees=True), "initial_uncertainty": (0.2, 2.0)},
         {
@@ -96,7 +96,7 @@ CASES = {
         },
     ),
     "newton_schedule": (
-        ["--backend=newton", "--start_layer=2", "--iterations_per_layer=4", "--max_iterations=12", "--unmatched=zero_residual"],
+        ["--backend=newton", "--start_layer=2", "--iterations_per_layer=4", "--max_final_iterations=12", "--unmatched_policy=zero_residual"],
         {},
         {
             "backend": {"type": "newton"},

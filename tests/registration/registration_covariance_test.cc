@@ -4,8 +4,8 @@
 // draws a fresh reference and input scan (independent noise), starts from its
 // own perturbed guess and samples with its own seed, and the normalised
 // estimation error squared NEES = e^T P^-1 e (e = xi - xi_true in the pose
-// vector of Eq. 11) should average 6 (6 DoF). tools/mlndt_covariance does the
-// same on real pairs, where the truth is not known well enough.
+// vector of Eq. 11) should average 6 (6 DoF). lab/programs/mlndt_covariance
+// does the same on real pairs, where the truth is not known well enough.
 
 #include <gtest/gtest.h>
 

@@ -18,7 +18,12 @@ std::string SharedDataDir() {
 
 std::string ToolPath(const std::string& name) {
   const char* dir = std::getenv("MLNDT_TOOLS_DIR");
-  return std::string(dir != nullptr ? dir : MLNDT_TOOLS_DIR) + "/" + name;
+  const std::string tool =
+      std::string(dir != nullptr ? dir : MLNDT_TOOLS_DIR) + "/" + name;
+  if (std::filesystem::exists(tool)) return tool;
+  const char* lab = std::getenv("MLNDT_LAB_PROGRAMS_DIR");
+  return std::string(lab != nullptr ? lab : MLNDT_LAB_PROGRAMS_DIR) + "/" +
+         name;
 }
 
 }  // namespace testing

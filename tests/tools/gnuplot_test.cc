@@ -211,7 +211,7 @@ TEST(PlottingTools, MlndtSuite) {
       {"mlndt_suite",
        "--datasets=" + testing::ShellQuote(testing::BundledDataPath("koide3")) +
            " --starts=identity,offsets --offsets=yaw:10,150 "
-           "--retry_yaw_seeds= --plot --output_dir=" +
+           "--yaw_seeds_deg= --plot --output_dir=" +
            testing::ShellQuote(out),
        out + "/quality.png",
        out + "/plot_data/quality.gp.log"});

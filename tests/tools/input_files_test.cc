@@ -1,8 +1,8 @@
-// No output of a tool may overwrite one of its inputs (tools/common/
+// No output of a tool may overwrite one of its inputs (tools/cli/
 // input_files.h, issue 27 item 10): refused with exit 2, naming the flag and
 // the input, before any work, the input left byte for byte as it was.
 
-#include "tools/common/input_files.h"
+#include "tools/cli/input_files.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,7 +1,7 @@
-// The tools' list and matrix parsers (tools/common/list_flags.h,
-// tools/common/matrix_text.h).
+// The tools' list and matrix parsers (tools/cli/list_flags.h,
+// tools/cli/matrix_text.h).
 
-#include "tools/common/list_flags.h"
+#include "tools/cli/list_flags.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "mlndt/common/pose.h"
 #include "tests/testing/scratch_dir.h"
-#include "tools/common/matrix_text.h"
+#include "tools/cli/matrix_text.h"
 
 namespace mlndt {
 namespace {

@@ -139,19 +139,19 @@ TEST(MlndtAlign, MisconfigurationsAreRefusedNamingTheFlag) {
     std::string args;
     std::string message;
   } cases[] = {
-      {"--num_layers=3", "--num_layers is ignored while --finest_cell_size"},
+      {"--num_layers=3", "--num_layers is ignored while --finest_cell_size_m"},
       {"--method=ndt --backend=newton",
        "--backend does not apply to --method=ndt"},
       {"--method=ndt --start_layer=2",
        "--start_layer does not apply to --method=ndt"},
       {"--start_layer=9", "--start_layer=9 is out of range"},
       {"--start_layer=-9", "--start_layer=-9 is out of range"},
-      {"--finest_cell_size=0 --num_layers=3 --start_layer=4",
+      {"--finest_cell_size_m=0 --num_layers=3 --start_layer=4",
        "--start_layer=4 is out of range"},
       {"--output_json=" + Quote(dir + "/file/result.json"), "--output_json"},
       {"--output_cloud=" + Quote(dir + "/missing/out.pcd"), "--output_cloud"},
       {"--bogus_flag=1", "unknown flag --bogus_flag"},
-      {"--threads=many", "--threads=many: not a valid int32"},
+      {"--num_threads=many", "--num_threads=many: not a valid int32"},
   };
   for (const Case& c : cases) {
     const ToolRun run = RunAlign(c.args);
@@ -167,7 +167,7 @@ TEST(MlndtAlign, MisconfigurationsAreRefusedNamingTheFlag) {
 TEST(MlndtAlign, FailedRegistrationWritesNoOutputCloud) {
   const std::string cloud = TestDir() + "/moved.pcd";
   const ToolRun run =
-      RunAlign("--max_range=0.5 --output_cloud=" + Quote(cloud));
+      RunAlign("--max_range_m=0.5 --output_cloud=" + Quote(cloud));
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_NE(run.err.find("FAILURE"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("--output_cloud=" + cloud + " not written"),
@@ -180,7 +180,7 @@ TEST(MlndtAlign, FailedRegistrationWritesNoOutputCloud) {
 // not an estimate), and a pose file given as a cloud (4 "points") is
 // refused before any work.
 TEST(MlndtAlign, FailurePrintsNoMatrixAndAPoseFileIsNoCloud) {
-  const ToolRun failed = RunAlign("--max_range=0.5");
+  const ToolRun failed = RunAlign("--max_range_m=0.5");
   EXPECT_EQ(failed.exit_code, 1) << failed.err;
   EXPECT_NE(failed.out.find("FAILURE"), std::string::npos) << failed.out;
   EXPECT_EQ(failed.out.find("reference_from_input (4x4"), std::string::npos)
@@ -228,7 +228,7 @@ TEST(MlndtAlign, BadInputFailsWithAMessage) {
            " --input=" + Quote(dir + "/bad.pcd"),
        "bad.pcd"},
       {"--backend=simplex", "simplex"},
-      {"--threads=0", "threads"},
+      {"--num_threads=0", "threads"},
       {"only_one_scan", "give both the reference and the input (REF IN)"},
       {"a b stray_argument", "unexpected argument 'stray_argument'"},
       {Quote(reference) + " --input=" + Quote(reference),
@@ -304,7 +304,7 @@ TEST(MlndtAlign, RangeFiltersSayTheyWorkAboutTheOriginAndWarnFarFromIt) {
             std::string::npos)
       << on.err;
   const ToolRun off =
-      RunAlign(pair + " --min_range=0 --saturated_range_fraction=0");
+      RunAlign(pair + " --min_range_m=0 --saturated_range_fraction=0");
   EXPECT_EQ(off.err.find("from its origin"), std::string::npos) << off.err;
   // A scan in its sensor frame: no warning.
   const ToolRun sensor = RunAlign("");
@@ -329,25 +329,25 @@ TEST(MlndtAlign, IgnoredFlagsUnwritableCloudsAndAbsurdNumbersAreRefused) {
     std::string message;
   } cases[] = {
       // Item 5: the four reported, then the same kind in the same code.
-      {"--sampling=random --gbs_cell_size=2",
-       "--gbs_cell_size applies to --sampling=gbs only (the sampling is "
+      {"--sampling=random --gbs_cell_size_m=2",
+       "--gbs_cell_size_m applies to --sampling=gbs only (the sampling is "
        "RANDOM; it would be ignored)"},
       {"--sampling=all --random_fraction=0.5",
        "--random_fraction applies to --sampling=random only"},
-      {"--backend=newton --linear_solver=dense_qr",
-       "--linear_solver applies to --backend=ceres only"},
+      {"--backend=newton --linear_solver_type=dense_qr",
+       "--linear_solver_type applies to --backend=ceres only"},
       {"--method=ndt --quality_check=false --max_mean_score=20",
        "--max_mean_score is a quality-check threshold; it is ignored with "
        "--quality_check=false"},
       {"--sampling=all --seed=7", "--seed applies to --sampling=random or gbs"},
-      {"--backend=lm --trust_region=dogleg",
-       "--trust_region applies to --backend=ceres only"},
+      {"--backend=lm --trust_region_strategy_type=dogleg",
+       "--trust_region_strategy_type applies to --backend=ceres only"},
       {"--loss=none --loss_scale=2",
        "--loss_scale is ignored with --loss=none"},
       {"--quality_check=false --min_inlier_fraction=0.5",
        "--min_inlier_fraction is a quality-check threshold"},
-      {"--method=ndt --retry_yaw_seeds=45",
-       "--retry_yaw_seeds does not apply to --method=ndt"},
+      {"--method=ndt --yaw_seeds_deg=45",
+       "--yaw_seeds_deg does not apply to --method=ndt"},
       // Item 6: the cloud's format is checked before the work.
       {"--output_cloud=" + Quote(dir + "/x.json"),
        "--output_cloud: " + dir + "/x.json"},
@@ -356,7 +356,7 @@ TEST(MlndtAlign, IgnoredFlagsUnwritableCloudsAndAbsurdNumbersAreRefused) {
       // Item 7: a reflection and 1e300-class numbers.
       {"--expected_matrix_file=" + Quote(dir + "/reflection.txt"),
        "reflection.txt: the 3x3 part is not a rotation"},
-      {"--gbs_cell_size=1e300",
+      {"--gbs_cell_size_m=1e300",
        "gbs_cell_size_m = 1e+300; it must be in (0, 10000]"},
       {"--initial_guess=0,0,0,0,0,1e300",
        "--initial_guess=0,0,0,0,0,1e300: angles must be within [-360, 360]"},

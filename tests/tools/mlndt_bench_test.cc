@@ -310,7 +310,7 @@ TEST(MlndtBench, RejectsBadFlagValues) {
         "--pairs=koide3 --output_plot=/nonexistent/x.png",
         "--repetitions=0",
         "--pairs=koide3 --output_csv=/nonexistent/x.csv",
-        "--pcl_leaf_size=0",
+        "--pcl_leaf_size_m=0",
         "--pcl_gicp_max_iterations=0",
         "unexpected_argument"}) {
     SCOPED_TRACE(flags);

@@ -248,7 +248,8 @@ TEST(MlndtEval, ReproducesKittiSegmentErrorsOverShortLengths) {
   const ToolRun run = testing::RunTool(
       "mlndt_eval",
       "--reference=" + Quote(KittiGt()) + " --estimate=" + Quote(trajectory) +
-          " --segment_lengths=1,2,4,100 --segment_step=1 --output_json=" +
+          " --segments_lengths_m=1,2,4,100 --segments_first_frame_step=1 "
+          "--output_json=" +
           Quote(json_path));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Json json = ReadJson(json_path);
@@ -319,12 +320,12 @@ TEST(MlndtEval, TumFilesByTimestampAndMixedFormatsByIndex) {
   const double ate = a["estimates"][0]["ate"]["rmse_m"].get<double>();
   EXPECT_NEAR(by_time["ate"]["rmse_m"].get<double>(), ate, 1e-9);
   EXPECT_NEAR(by_index["ate"]["rmse_m"].get<double>(), ate, 1e-9);
-  // A time offset beyond --max_time_difference leaves no pairs.
+  // A time offset beyond --max_time_difference_s leaves no pairs.
   const ToolRun strict =
       testing::RunTool("mlndt_eval",
                        "--reference=" + Quote(dir + "/gt_tum.txt") +
                            " --estimate=" + Quote(dir + "/estimate_tum.txt") +
-                           " --max_time_difference=0.001");
+                           " --max_time_difference_s=0.001");
   EXPECT_EQ(strict.exit_code, 1);
   EXPECT_NE(strict.err.find("no pose pairs"), std::string::npos) << strict.err;
 }
@@ -350,11 +351,14 @@ TEST(MlndtEval, RefusesBadFlags) {
       {ok + " --alignment=affine", "--alignment=affine: expected se3"},
       {ok + " --delta=0", "--delta must be >= 1"},
       {ok + " --association=nearest", "--association=nearest: expected"},
-      {ok + " --max_time_difference=0", "--max_time_difference must be > 0"},
-      {ok + " --segment_lengths=abc", "--segment_lengths=abc: expected"},
-      {ok + " --segment_lengths=100,-5", "--segment_lengths=100,-5: expected"},
-      {ok + " --segment_lengths=100,100", "a length is given twice"},
-      {ok + " --segment_step=0", "--segment_step must be >= 1"},
+      {ok + " --max_time_difference_s=0",
+       "--max_time_difference_s must be > 0"},
+      {ok + " --segments_lengths_m=abc", "--segments_lengths_m=abc: expected"},
+      {ok + " --segments_lengths_m=100,-5",
+       "--segments_lengths_m=100,-5: expected"},
+      {ok + " --segments_lengths_m=100,100", "a length is given twice"},
+      {ok + " --segments_first_frame_step=0",
+       "--segments_first_frame_step must be >= 1"},
       {"--reference=/nonexistent/gt.txt --estimate=" + gt,
        "--reference: /nonexistent/gt.txt"},
       {"--reference=" + gt + " --estimate=/nonexistent/e.txt",

@@ -183,7 +183,7 @@ TEST(MlndtInfo, NumLayersFlagSetsTheLayerCount) {
 }
 
 TEST(MlndtInfo, FinestCellSizeChoosesTheLayerCount) {
-  const ToolRun run = RunInfo("--layers --finest_cell_size=1 " +
+  const ToolRun run = RunInfo("--layers --finest_cell_size_m=1 " +
                               Quote(testing::BundledDataPath(kReference)));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
@@ -293,7 +293,7 @@ TEST(MlndtInfo, RejectsBadFlagCombinations) {
   const std::string reference = Quote(testing::BundledDataPath(kReference));
   for (const std::string flags :
        {"--num_layers=3",
-        "--layers --num_layers=3 --finest_cell_size=1",
+        "--layers --num_layers=3 --finest_cell_size_m=1",
         "--layers --division_constant=1",
         "--layers --num_layers=0"}) {
     SCOPED_TRACE(flags);

@@ -39,7 +39,7 @@ std::string BuildKittiMap(const std::string& dir,
   const ToolRun built = testing::RunTool(
       "mlndt_map",
       "--scans=" + Quote(KittiPcd()) + " --poses=" + Quote(chained) +
-          " --min_range=3 --max_range=80 --voxel_size=0.2 --output=" +
+          " --min_range_m=3 --max_range_m=80 --voxel_size=0.2 --output=" +
           Quote(map));
   EXPECT_EQ(built.exit_code, 0) << built.err;
   std::string error;

@@ -55,7 +55,7 @@ KittiMap BuildKittiMap(const std::string& dir) {
   const ToolRun map = testing::RunTool(
       "mlndt_map",
       "--scans=" + Quote(KittiPcd()) + " --poses=" + Quote(m.poses) +
-          " --min_range=3 --max_range=80 --voxel_size=0.2 --output=" +
+          " --min_range_m=3 --max_range_m=80 --voxel_size=0.2 --output=" +
           Quote(m.map));
   EXPECT_EQ(map.exit_code, 0) << map.err;
   return m;
@@ -399,14 +399,14 @@ TEST(MlndtLocalize, RefusesBadFlags) {
        "--poses_are_camera needs --calib=calib.txt"},
       {base + " --motion_model=kalman",
        "--motion_model=kalman: expected constant_velocity or constant_pose"},
-      {base + " --finest_cell_size=1",
-       "--finest_cell_size does not apply to mlndt_localize"},
+      {base + " --finest_cell_size_m=1",
+       "--finest_cell_size_m does not apply to mlndt_localize"},
       {base + " --min_points_per_cell=6",
        "--min_points_per_cell does not apply to mlndt_localize"},
       {base + " --division_constant=27", "--division_constant does not apply"},
       {base + " --method=ndt", "this tool runs ML-NDT only"},
       {base + " --backend=simplex", "--backend=simplex: expected ceres"},
-      {base + " --threads=0", "threads"},
+      {base + " --num_threads=0", "threads"},
       {base + " --scan_list=x.txt",
        "give --scans=DIR or --scan_list=FILE, not both"},
       {"--map=" + Quote(kitti.map) +
@@ -443,18 +443,18 @@ TEST(MlndtLocalize, MapThatIsAFolderIsCalledOne) {
 TEST(MlndtLocalize, HelpListsOnlyTheFlagsItAccepts) {
   const ToolRun help = testing::RunTool("mlndt_localize", "--help");
   ASSERT_EQ(help.exit_code, 0);
-  for (const char* refused : {"finest_cell_size",
+  for (const char* refused : {"finest_cell_size_m",
                               "num_layers",
                               "division_constant",
                               "min_points_per_cell",
-                              "min_eigenvalue",
+                              "min_eigenvalue_m2",
                               "min_eigenvalue_ratio",
                               "coarse_weighting",
-                              "ndt_cell_size",
+                              "ndt_cell_size_m",
                               "ndt_outlier_ratio",
                               "ndt_neighbors",
                               "ndt_max_iterations",
-                              "ndt_max_step"}) {
+                              "ndt_max_step_norm"}) {
     EXPECT_EQ(help.out.find(std::string("  --") + refused + "="),
               std::string::npos)
         << refused;
@@ -501,7 +501,7 @@ TEST(MlndtLocalize, LowQualityScansAreCountedAndExitOne) {
   const ToolRun run = testing::RunTool(
       "mlndt_localize",
       "--map=" + Quote(kitti.map) + " --scans=" + Quote(KittiPcd()) +
-          " --max_scans=3 --min_inlier_fraction=1 --retry_yaw_seeds= "
+          " --max_scans=3 --min_inlier_fraction=1 --yaw_seeds_deg= "
           "--plots=false --output_dir=" +
           Quote(out));
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;

@@ -31,7 +31,7 @@ std::string Chain(const std::string& dir) {
   return dir + "/chain.txt";
 }
 
-const char kMapFlags[] = " --min_range=3 --max_range=80 --voxel_size=0.2";
+const char kMapFlags[] = " --min_range_m=3 --max_range_m=80 --voxel_size=0.2";
 
 Trajectory ReadTum(const std::string& path) {
   Trajectory t;

@@ -141,7 +141,7 @@ TEST(MlndtMap, BuildsTheKittiMapFromChainedPoses) {
   const std::string map_path = dir + "/kitti.mlndt";
   const ToolRun run =
       RunMap("--scans=" + Quote(KittiPcd()) + " --poses=" + Quote(poses_path) +
-             " --min_range=3 --max_range=80 --voxel_size=0.2 --output=" +
+             " --min_range_m=3 --max_range_m=80 --voxel_size=0.2 --output=" +
              Quote(map_path) + " --output_json=" + Quote(dir + "/map.json"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("map written to " + map_path), std::string::npos);
@@ -191,7 +191,7 @@ TEST(MlndtMap, TumPosesCameraPosesAndScanLists) {
   ASSERT_TRUE(ReadKittiPoses(kitti, &poses, &error));
   ASSERT_TRUE(WriteTrajectory(
       dir + "/poses.tum", TrajectoryFormat::TUM, Trajectory(poses), &error));
-  const std::string common = " --max_range=60 ";
+  const std::string common = " --max_range_m=60 ";
   ASSERT_EQ(RunMap("--scans=" + Quote(KittiPcd()) + " --poses=" + Quote(kitti) +
                    common + "--output=" + Quote(dir + "/a.mlndt"))
                 .exit_code,
@@ -241,7 +241,7 @@ TEST(MlndtMap, BuildsFromOneCloudAndDescribesAMap) {
   const std::string dir = TestDir();
   const std::string cloud = KittiPcd() + "/000000.pcd";
   const ToolRun run = RunMap("--cloud=" + Quote(cloud) +
-                             " --finest_cell_size=1 --min_points_per_cell=6 "
+                             " --finest_cell_size_m=1 --min_points_per_cell=6 "
                              "--output=" +
                              Quote(dir + "/one.mlndt") +
                              " --output_json=" + Quote(dir + "/one.json"));
@@ -301,7 +301,7 @@ TEST(MlndtMap, RefusesWhatExceedsTheMemoryLimit) {
            " --voxel_size=0.2 --max_memory_gb=0.06",
        "the voxel filter of 991949 points"},
       {"--cloud=" + Quote(KittiPcd() + "/000000.pcd") +
-           " --finest_cell_size=0.1 --max_memory_gb=0.01",
+           " --finest_cell_size_m=0.1 --max_memory_gb=0.01",
        "to build the map"},
   };
   for (const Case& c : cases) {
@@ -316,7 +316,7 @@ TEST(MlndtMap, RefusesWhatExceedsTheMemoryLimit) {
   // have no occupied cell, a map CheckMapUsable refuses.)
   const ToolRun unlimited = RunMap(
       "--cloud=" + Quote(KittiPcd() + "/000000.pcd") +
-      " --finest_cell_size=0.1 --max_memory_gb=0 --output=" + Quote(out));
+      " --finest_cell_size_m=0.1 --max_memory_gb=0 --output=" + Quote(out));
   EXPECT_EQ(unlimited.exit_code, 0) << unlimited.err;
 }
 
@@ -343,8 +343,8 @@ TEST(MlndtMap, RefusesBadFlags) {
        "give --scans=DIR or --scan_list=FILE, not both"},
       {"--cloud=x.pcd --poses=" + Quote(poses) + to,
        "--poses does not apply to --cloud"},
-      {"--cloud=x.pcd --min_range=2" + to,
-       "--min_range does not apply to --cloud"},
+      {"--cloud=x.pcd --min_range_m=2" + to,
+       "--min_range_m does not apply to --cloud"},
       {"--cloud=x.pcd --calib=c.txt" + to, "--calib does not apply to --cloud"},
       {"--cloud=x.pcd --poses_are_camera" + to,
        "--poses_are_camera does not apply to --cloud"},
@@ -353,9 +353,9 @@ TEST(MlndtMap, RefusesBadFlags) {
       {scans + " --calib=" +
            Quote(testing::BundledDataPath("kitti/calib.txt")) + to,
        "--calib converts camera poses: give --poses_are_camera with it"},
-      {scans + " --min_range=-1" + to, "--min_range: invalid option"},
-      {scans + " --min_range=5 --max_range=4" + to,
-       "--max_range: invalid option"},
+      {scans + " --min_range_m=-1" + to, "--min_range_m: invalid option"},
+      {scans + " --min_range_m=5 --max_range_m=4" + to,
+       "--max_range_m: invalid option"},
       {scans + " --voxel_size=-0.1" + to, "--voxel_size must be"},
       {scans + " --voxel_size=1e-5" + to, "--voxel_size must be"},
       {scans + " --max_memory_gb=-1" + to, "--max_memory_gb must be"},
@@ -363,7 +363,7 @@ TEST(MlndtMap, RefusesBadFlags) {
       {scans + " --poses_format=ply" + to,
        "--poses_format=ply: expected auto, kitti or tum"},
       {scans + " --division_constant=1" + to, "--division_constant"},
-      {scans + " --finest_cell_size=-2" + to, "--finest_cell_size"},
+      {scans + " --finest_cell_size_m=-2" + to, "--finest_cell_size_m"},
       {scans + " --min_points_per_cell=2" + to, "--min_points_per_cell"},
       {scans + " --min_eigenvalue_ratio=2" + to, "--min_eigenvalue_ratio"},
       {scans + " --num_layers=3" + to, "--num_layers is ignored"},
@@ -373,7 +373,7 @@ TEST(MlndtMap, RefusesBadFlags) {
       {scans + " --sampling=all" + to,
        "--sampling does not apply to mlndt_map"},
       {scans + " --method=ndt" + to, "--method does not apply to mlndt_map"},
-      {scans + " --threads=0" + to, "--threads must be in [1, 256]"},
+      {scans + " --num_threads=0" + to, "--num_threads must be in [1, 256]"},
       {scans + " --output=/nonexistent/folder/map.mlndt",
        "folder /nonexistent/folder does not exist"},
       {"--scans=/nonexistent --poses=" + Quote(poses) + to,
@@ -426,26 +426,26 @@ TEST(MlndtMap, HelpListsOnlyTheFlagsItAccepts) {
   const std::string map = dir + "/room.mlndt";
   const std::pair<const char*, const char*> refused[] = {
       {"method", "mlndt"},
-      {"ndt_cell_size", "1"},
+      {"ndt_cell_size_m", "1"},
       {"ndt_outlier_ratio", "0.5"},
       {"ndt_neighbors", "direct7"},
       {"ndt_max_iterations", "9"},
-      {"ndt_max_step", "0.1"},
+      {"ndt_max_step_norm", "0.1"},
       {"backend", "lm"},
       {"sampling", "all"},
       {"random_fraction", "0.5"},
-      {"gbs_cell_size", "1"},
+      {"gbs_cell_size_m", "1"},
       {"start_layer", "1"},
       {"iterations_per_layer", "3"},
-      {"max_iterations", "9"},
+      {"max_final_iterations", "9"},
       {"step_tolerance", "0.001"},
       {"coarse_step_tolerance", "0.01"},
       {"max_coarse_point_stride", "2"},
-      {"unmatched", "zero_residual"},
+      {"unmatched_policy", "zero_residual"},
       {"loss", "huber"},
       {"loss_scale", "2"},
-      {"linear_solver", "dense_qr"},
-      {"trust_region", "dogleg"},
+      {"linear_solver_type", "dense_qr"},
+      {"trust_region_strategy_type", "dogleg"},
       {"seed", "3"},
       {"initial_uncertainty", "1,10"},
       {"quality_check", "true"},
@@ -453,7 +453,7 @@ TEST(MlndtMap, HelpListsOnlyTheFlagsItAccepts) {
       {"max_mean_score", "9"},
       {"inlier_gate", "3"},
       {"min_constraint_ratio", "0.1"},
-      {"retry_yaw_seeds", "45"}};
+      {"yaw_seeds_deg", "45"}};
   for (const auto& [flag, value] : refused) {
     EXPECT_EQ(help.out.find(std::string("  --") + flag + "="),
               std::string::npos)

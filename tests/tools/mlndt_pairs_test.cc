@@ -53,7 +53,7 @@ TEST(MlndtPairs, RefusesAStartLayerBeyondTheMap) {
       "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
           " --gt_poses=" +
           Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
-          " --finest_cell_size=0 --num_layers=2 --start_layer=3");
+          " --finest_cell_size_m=0 --num_layers=2 --start_layer=3");
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("--start_layer=3 is out of range"), std::string::npos)
       << run.err;

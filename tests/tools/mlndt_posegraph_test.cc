@@ -63,7 +63,7 @@ TEST(MlndtPosegraph, JointIsNotWorseThanChainedOnKittiFrames0To7) {
       RunPosegraph("--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
                        " --gt_poses=" +
                        Quote(testing::BundledDataPath("kitti/poses_velo.txt")) +
-                       " --threads=2 --output_dir=" + Quote(dir) +
+                       " --num_threads=2 --output_dir=" + Quote(dir) +
                        " --output_json=" + Quote(json_path),
                    dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -143,7 +143,8 @@ TEST(MlndtPosegraph, OdometryFactorsExtraPairsAndOdometryStart) {
   const ToolRun run = RunPosegraph(
       "--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
           " --gt_poses=" + Quote(poses) + " --odometry_poses=" + Quote(poses) +
-          " --init=odometry --odometry_sigma_m=0.1 --odometry_sigma_deg=1"
+          " --init=odometry --odometry_noise_sigma_m=0.1 "
+          "--odometry_noise_sigma_deg=1"
           " --neighbors=1 --pairs=0:7 --information_scale=1 --output_dir=" +
           Quote(dir),
       dir);
@@ -182,7 +183,7 @@ TEST(MlndtPosegraph, UnusableChainedRegistrationsExitOne) {
   }
   const ToolRun run = RunPosegraph(
       "--scans=" + Quote(scans) +
-          " --neighbors=1 --min_inlier_fraction=1 --retry_yaw_seeds= "
+          " --neighbors=1 --min_inlier_fraction=1 --yaw_seeds_deg= "
           "--output_dir=" +
           Quote(dir + "/out"),
       dir);
@@ -233,7 +234,7 @@ TEST(MlndtPosegraph, BadFlagsExitWithTwo) {
            scans + " --init=gt",          // chained or odometry.
            scans + " --information_scale=0",
            scans + " --odometry_poses=" + Quote(short_gt),  // Too few poses.
-           scans + " --odometry_sigma_m=0 --odometry_poses=" +
+           scans + " --odometry_noise_sigma_m=0 --odometry_poses=" +
                Quote(testing::BundledDataPath("kitti/poses_velo.txt")),
        }) {
     SCOPED_TRACE(args);

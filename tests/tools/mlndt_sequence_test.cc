@@ -502,7 +502,7 @@ TEST(MlndtSequence, BadFlagsExitTwo) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--output_dir=" + Quote(dir), "Usage"},
       {kitti + " --step=0", "--step"},
-      {kitti + " --finest_cell_size=0 --num_layers=3 --start_layer=5",
+      {kitti + " --finest_cell_size_m=0 --num_layers=3 --start_layer=5",
        "--start_layer=5 is out of range"},
       {kitti + " --poses_are_camera", "--poses_are_camera needs --calib"},
       {kitti + " --calib=" + Quote(testing::BundledDataPath("kitti/calib.txt")),
@@ -513,7 +513,8 @@ TEST(MlndtSequence, BadFlagsExitTwo) {
       {kitti + " --init=poses:/nonexistent/poses.txt",
        "/nonexistent/poses.txt"},
       {kitti + " --method=ndt --adaptive_start_layer", "adaptive"},
-      {kitti + " --adaptive_fail_rates=0.5,0.1", "adaptive_fail_rates"},
+      {kitti + " --adaptive_fail_rate_thresholds=0.5,0.1",
+       "adaptive_fail_rate_thresholds"},
       {kitti + " --sampling=bogus", "--sampling"},
       {"--scans=/nonexistent --output_dir=" + Quote(dir), "/nonexistent"},
       {"--scans=" + Quote(testing::BundledDataPath("kitti/pcd")) +
@@ -561,7 +562,7 @@ TEST(MlndtSequence, UnusablePairsAreCountedFlaggedAndExitOne) {
   const std::string dir = TestDir();
   const ToolRun run =
       RunSequence(KittiArgs(dir) +
-                  " --max_scans=3 --min_inlier_fraction=1 --retry_yaw_seeds= "
+                  " --max_scans=3 --min_inlier_fraction=1 --yaw_seeds_deg= "
                   "--plots=false");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   EXPECT_NE(run.out.find("verdicts: CONVERGENCE 0, NO_CONVERGENCE 0, "

@@ -211,7 +211,7 @@ TEST(MlndtSuite, FailOnSetsTheExitCode) {
   // The room scans are 40° apart: from the identity the run is wrong.
   const std::string room =
       "--datasets=" + Quote(testing::BundledDataPath("room")) +
-      ":0.1:1 --starts=identity --retry_yaw_seeds=";
+      ":0.1:1 --starts=identity --yaw_seeds_deg=";
   ToolRun run =
       testing::RunTool("mlndt_suite", room + " --fail_on=success:0.5");
   EXPECT_EQ(run.exit_code, 1) << run.err << run.out;
@@ -234,7 +234,7 @@ TEST(MlndtSuite, PlotWritesTheQualityCurves) {
       "mlndt_suite",
       "--datasets=" + Quote(testing::BundledDataPath("koide3")) +
           " --starts=identity,offsets --offsets=yaw:10,150 "
-          "--retry_yaw_seeds= --plot --output_dir=" +
+          "--yaw_seeds_deg= --plot --output_dir=" +
           Quote(dir));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_GT(fs::file_size(dir + "/quality.png"), 1000u);

@@ -1,11 +1,11 @@
 // The registration flags against the option description
-// (tools/common/option_flags.h): every described field of RegistrationOptions
+// (tools/cli/option_flags.h): every described field of RegistrationOptions
 // and NdtOptions has a flag named as the field (the renames below are the
 // only exceptions) with the field's default; no flag of the shared files is
 // undescribed (the tool-specific ones are listed); a flag given lands in its
 // field; a deprecated name works and refuses to be given with the new one.
 
-#include "tools/common/option_flags.h"
+#include "tools/cli/option_flags.h"
 
 #include <gflags/gflags.h>
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@
 
 #include "mlndt/ndt/ndt_registration.h"
 #include "mlndt/registration/registration_options.h"
-#include "tools/common/registration_flags.h"
+#include "tools/cli/registration_flags.h"
 
 namespace mlndt {
 namespace {
@@ -132,11 +132,6 @@ TEST(OptionFlags, NoSharedFlagIsUndescribed) {
   for (const tools::OptionFlag& flag : OptionFlags()) {
     described.insert(flag.name);
   }
-  for (const auto& [alias, name] : tools::FlagAliases()) {
-    EXPECT_EQ(described.count(alias), 0u) << alias;
-    EXPECT_EQ(described.count(name), 1u) << name;
-    described.insert(alias);
-  }
   // Tool-specific, not option fields: the preset, the method and the
   // composite initial uncertainty.
   const std::set<std::string> kToolSpecific = {
@@ -146,10 +141,10 @@ TEST(OptionFlags, NoSharedFlagIsUndescribed) {
   int shared = 0;
   for (const gflags::CommandLineFlagInfo& info : all) {
     const std::string& file = info.filename;
-    if (file.find("tools/common/option_flags.cc") != std::string::npos) {
+    if (file.find("tools/cli/option_flags.cc") != std::string::npos) {
       EXPECT_EQ(described.count(info.name), 1u) << info.name;
       ++shared;
-    } else if (file.find("tools/common/registration_flags.cc") !=
+    } else if (file.find("tools/cli/registration_flags.cc") !=
                std::string::npos) {
       EXPECT_EQ(kToolSpecific.count(info.name), 1u) << info.name;
     }
@@ -225,37 +220,16 @@ TEST(OptionFlags, AGivenFlagSetsItsField) {
   }
 }
 
-TEST(OptionFlags, DeprecatedNamesStillWork) {
-  {
-    gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("threads", "3");
-    gflags::SetCommandLineOption("unmatched", "zero_residual");
-    MatcherOptions options;
-    std::string error;
-    ASSERT_TRUE(tools::MatcherOptionsFromFlags(&options, &error)) << error;
-    EXPECT_EQ(options.mlndt.num_threads, 3);
-    EXPECT_EQ(options.mlndt.objective.unmatched_policy,
-              UnmatchedPolicy::ZERO_RESIDUAL);
-  }
-  {
-    gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("threads", "3");
-    gflags::SetCommandLineOption("num_threads", "2");
-    MatcherOptions options;
-    std::string error;
-    EXPECT_FALSE(tools::MatcherOptionsFromFlags(&options, &error));
-    EXPECT_NE(error.find("--threads and --num_threads"), std::string::npos)
-        << error;
-  }
+TEST(OptionFlags, ARefusalNamesTheFlag) {
   {
     // A refusal names the flag as it was given.
     gflags::FlagSaver saver;
     gflags::SetCommandLineOption("method", "ndt");
-    gflags::SetCommandLineOption("retry_yaw_seeds", "90");
+    gflags::SetCommandLineOption("yaw_seeds_deg", "90");
     MatcherOptions options;
     std::string error;
     EXPECT_FALSE(tools::MatcherOptionsFromFlags(&options, &error));
-    EXPECT_EQ(error, "--retry_yaw_seeds does not apply to --method=ndt");
+    EXPECT_EQ(error, "--yaw_seeds_deg does not apply to --method=ndt");
   }
 }
 

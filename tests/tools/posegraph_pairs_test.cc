@@ -1,6 +1,6 @@
 // ParseScanPairs: mlndt_posegraph --pairs.
 
-#include "tools/common/posegraph_pairs.h"
+#include "tools/cli/posegraph_pairs.h"
 
 #include <gtest/gtest.h>
 

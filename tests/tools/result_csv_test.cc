@@ -1,10 +1,10 @@
-// The CSV made from a result table (tools/common/result_csv.h): a header of
+// The CSV made from a result table (tools/cli/result_csv.h): a header of
 // the flattened field names (nested results as "outer.inner"), the trace
 // left out, one line per result; vectors and matrices as one cell of
 // space-separated numbers, numbers to 17 digits, leading columns first and
 // strings quoted.
 
-#include "tools/common/result_csv.h"
+#include "tools/cli/result_csv.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-// The JSON made from a result table (tools/common/result_json.h): one key
+// The JSON made from a result table (tools/cli/result_json.h): one key
 // per field named as the field, in the table's order; nested results as
 // objects, the trace as an array of objects, matrices as rows; numbers that
 // are not finite as null; `trace` left out on request.
 
-#include "tools/common/result_json.h"
+#include "tools/cli/result_json.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // --start_layer is checked against the map the library builds
-// (tools/common/start_layer_check.h), including LayeredGrid::Build's
+// (tools/cli/start_layer_check.h), including LayeredGrid::Build's
 // coverage rule (LayeredGridOptions::min_covered_fraction): on the bundled
 // KITTI frame 0 thinned to every 40th point (as
 // tests/registration/sparse_reference_test.cc), the 1.2 m rule alone
@@ -8,7 +8,7 @@
 // missing layer before it registers (exit 2, "the reference's map will
 // have"), not after the registration ran.
 
-#include "tools/common/start_layer_check.h"
+#include "tools/cli/start_layer_check.h"
 
 #include <gtest/gtest.h>
 

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "tests/testing/run_tool.h"
+#include "tools/cli/tool_main.h"
 
 namespace mlndt {
 namespace {
@@ -110,9 +111,9 @@ TEST(ToolHandWrittenFlags, EveryHandWrittenFlagIsListedWithItsReason) {
     const testing::ToolRun run = testing::RunTool(tool, "--helpfull");
     // The mains' DEFINE_ flags (gflags names their file as compiled:
     // ../../tools/<tool>.cc through scripts/build.sh's ccache, an absolute
-    // path without it), and the table flags (TableFlags names the file
-    // tools/<tool>.cc).
-    const std::string table_file = "tools/" + tool + ".cc";
+    // path without it; lab/programs/<tool>.cc for a lab program), and the
+    // table flags (TableFlags names the file MainFile(tool)).
+    const std::string table_file = tools::MainFile(tool);
     const std::string main_suffix = "/" + table_file;
     const std::set<std::string> hand_written =
         FlagsFromFile(run.out, [&](const std::string& file) {

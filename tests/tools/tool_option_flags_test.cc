@@ -1,4 +1,4 @@
-// The tools' own option tables against their flags (tools/common/
+// The tools' own option tables against their flags (tools/cli/
 // table_flags.h): every field of every table in ToolTableFlags() (nested
 // structs' fields too) has a flag named as the field's path (or as listed),
 // registered as the tool's, whose --help is the field's FullHelp and whose
@@ -28,15 +28,16 @@
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"
 #include "mlndt/pipeline/pipeline_option_tables.h"
-#include "tools/common/bench_flags.h"
-#include "tools/common/localizer_flags.h"
-#include "tools/common/map_build_flags.h"
-#include "tools/common/odometry_flags.h"
-#include "tools/common/option_flags.h"
-#include "tools/common/pose_graph_flags.h"
-#include "tools/common/sequence_flags.h"
-#include "tools/common/tool_table_flags.h"
-#include "tools/common/trajectory_evaluation_flags.h"
+#include "tools/cli/bench_flags.h"
+#include "tools/cli/localizer_flags.h"
+#include "tools/cli/map_build_flags.h"
+#include "tools/cli/odometry_flags.h"
+#include "tools/cli/option_flags.h"
+#include "tools/cli/pose_graph_flags.h"
+#include "tools/cli/sequence_flags.h"
+#include "tools/cli/tool_main.h"
+#include "tools/cli/tool_table_flags.h"
+#include "tools/cli/trajectory_evaluation_flags.h"
 
 namespace mlndt {
 namespace {
@@ -117,7 +118,7 @@ TEST(ToolOptionFlags, EveryFieldHasItsFlagHelpAndDefault) {
         continue;
       }
       EXPECT_EQ(info.description, field.FullHelp()) << what;
-      EXPECT_EQ(info.filename, "tools/" + flags->tool() + ".cc") << what;
+      EXPECT_EQ(info.filename, tools::MainFile(flags->tool())) << what;
     }
   }
 }
@@ -135,7 +136,7 @@ TEST(ToolOptionFlags, NoFlagOfATableIsUndescribed) {
   for (const auto& [tool, flags] : expected) {
     std::set<std::string> registered;
     for (const gflags::CommandLineFlagInfo& info : all) {
-      if (info.filename == "tools/" + tool + ".cc") {
+      if (info.filename == tools::MainFile(tool)) {
         registered.insert(info.name);
       }
     }
@@ -224,67 +225,61 @@ TEST(ToolOptionFlags, AGivenFlagSetsItsField) {
   }
 }
 
-TEST(ToolOptionFlags, AnOlderNameSetsTheSameField) {
-  int checked = 0;
-  for (const TableFlags* flags : ToolTableFlags()) {
-    for (const auto& [alias, name] : flags->aliases()) {
-      const TableFlags::Field* field = nullptr;
-      for (const TableFlags::Field& f : flags->fields()) {
-        if (flags->FlagOf(f.path) == name) field = &f;
-      }
-      ASSERT_NE(field, nullptr) << "--" << alias << ": no field has --" << name;
-      gflags::CommandLineFlagInfo info;
-      gflags::CommandLineFlagInfo alias_info;
-      ASSERT_TRUE(gflags::GetCommandLineFlagInfo(name.c_str(), &info));
-      ASSERT_TRUE(gflags::GetCommandLineFlagInfo(alias.c_str(), &alias_info))
-          << "--" << alias << " is not registered";
-      EXPECT_EQ(alias_info.type, info.type) << alias;
-      EXPECT_EQ(alias_info.default_value, info.default_value) << alias;
-      ExpectFlagSetsField(*flags, *field, alias);
-      ++checked;
-    }
-  }
-  // mlndt_odometry's 9 older names, mlndt_eval's 3, mlndt_sequence's 3,
-  // mlndt_posegraph's 3, mlndt_bench's 9.
-  EXPECT_GE(checked, 27);
-}
-
-// mlndt_posegraph's --joint_one_way: a bool of the opposite sense, whose
-// default is the field's negated; given, it sets the field to its negation;
-// given with --both_directions, it is refused.
-TEST(ToolOptionFlags, AnInvertedOlderNameSetsTheOppositeValue) {
-  const TableFlags& flags = tools::PoseGraphFlags();
-  ASSERT_EQ(flags.inverted_aliases(),
-            (TableFlags::Names{{"joint_one_way", "both_directions"}}));
-  gflags::CommandLineFlagInfo info;
-  ASSERT_TRUE(gflags::GetCommandLineFlagInfo("joint_one_way", &info));
-  EXPECT_EQ(info.type, "bool");
-  EXPECT_EQ(info.default_value,
-            PoseGraphOptions().both_directions ? "false" : "true");
-  EXPECT_EQ(info.filename, "tools/mlndt_posegraph.cc");
-  std::string error;
-  for (const bool one_way : {true, false}) {
-    gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("joint_one_way", one_way ? "true" : "false");
-    PoseGraphOptions options;
-    options.both_directions = one_way;  // The opposite of what it sets.
-    ASSERT_TRUE(flags.Apply(&options, &error)) << error;
-    EXPECT_EQ(options.both_directions, !one_way);
-  }
-  {
-    gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("joint_one_way", "true");
-    gflags::SetCommandLineOption("both_directions", "true");
-    PoseGraphOptions options;
-    EXPECT_FALSE(flags.Apply(&options, &error));
-    EXPECT_EQ(error, "give --both_directions or --joint_one_way, not both");
-  }
-  {
-    gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("both_directions", "false");
-    PoseGraphOptions options;
-    ASSERT_TRUE(flags.Apply(&options, &error)) << error;
-    EXPECT_FALSE(options.both_directions);
+// Version 0.x dropped the flags' older names (issue 46): none of them is
+// registered, so a tool refuses each as an unknown flag (exit 2).
+TEST(ToolOptionFlags, OlderNamesAreGone) {
+  const char* kDropped[] = {
+      // Shared registration flags.
+      "threads",
+      "unmatched",
+      "gbs_cell_size",
+      "min_eigenvalue",
+      "finest_cell_size",
+      "max_iterations",
+      "linear_solver",
+      "trust_region",
+      "min_range",
+      "max_range",
+      "ndt_cell_size",
+      "ndt_max_step",
+      "retry_yaw_seeds",
+      // mlndt_odometry.
+      "local_map_keyframes",
+      "local_map_radius",
+      "keyframe_distance",
+      "keyframe_angle",
+      "max_uncertainty_m",
+      "max_uncertainty_deg",
+      "confirm",
+      "confirm_fraction",
+      "confirm_last_scan",
+      // mlndt_eval.
+      "max_time_difference",
+      "segment_lengths",
+      "segment_step",
+      // mlndt_posegraph (--joint_one_way was --both_directions=false).
+      "joint_point_blocks",
+      "odometry_sigma_m",
+      "odometry_sigma_deg",
+      "joint_one_way",
+      // mlndt_sequence.
+      "adaptive_max_translation",
+      "adaptive_max_rotation",
+      "adaptive_fail_rates",
+      // mlndt_bench.
+      "compare_pcl",
+      "max_translation_error",
+      "max_rotation_error",
+      "pcl_leaf_size",
+      "pcl_resolution",
+      "pcl_step_size",
+      "pcl_transformation_epsilon",
+      "pcl_max_iterations",
+      "pcl_gicp_max_correspondence_distance"};
+  for (const char* name : kDropped) {
+    gflags::CommandLineFlagInfo info;
+    EXPECT_FALSE(gflags::GetCommandLineFlagInfo(name, &info))
+        << "--" << name << " is still registered (" << info.filename << ")";
   }
 }
 
@@ -317,23 +312,24 @@ TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
   }
   {
     gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("max_uncertainty_deg", "200");
+    gflags::SetCommandLineOption("prediction_max_rotation_deg", "200");
     OdometryOptions odometry;
     EXPECT_FALSE(tools::OdometryFlags().Apply(&odometry, &error));
-    EXPECT_EQ(error,
-              "--max_uncertainty_deg must be in [0, 180] (deg), not 200");
-    gflags::SetCommandLineOption("max_uncertainty_deg", "20");
+    EXPECT_EQ(
+        error,
+        "--prediction_max_rotation_deg must be in [0, 180] (deg), not 200");
+    gflags::SetCommandLineOption("prediction_max_rotation_deg", "20");
     ASSERT_TRUE(tools::OdometryFlags().Apply(&odometry, &error)) << error;
     EXPECT_EQ(odometry.prediction.max_rotation_deg, 20.0);
   }
   {
     gflags::FlagSaver saver;
-    gflags::SetCommandLineOption("max_time_difference", "0");
+    gflags::SetCommandLineOption("max_time_difference_s", "0");
     TrajectoryEvaluationOptions evaluation;
     EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
-    EXPECT_EQ(error, "--max_time_difference must be > 0 (s), not 0");
+    EXPECT_EQ(error, "--max_time_difference_s must be > 0 (s), not 0");
     gflags::SetCommandLineOption("alignment", "affine");
-    gflags::SetCommandLineOption("max_time_difference", "0.1");
+    gflags::SetCommandLineOption("max_time_difference_s", "0.1");
     EXPECT_FALSE(tools::TrajectoryEvaluationFlags().Apply(&evaluation, &error));
     EXPECT_EQ(error,
               "--alignment=affine: expected se3, sim3, first_pose or none");
@@ -344,10 +340,10 @@ TEST(ToolOptionFlags, ValuesOutOfRangeNameTheFlag) {
     SequenceOptions sequence;
     EXPECT_FALSE(tools::SequenceFlags().Apply(&sequence, &error));
     EXPECT_EQ(error, "--step must be >= 1, not 0");
-    gflags::SetCommandLineOption("pcl_resolution", "0");
+    gflags::SetCommandLineOption("pcl_ndt_resolution_m", "0");
     BenchOptions bench;
     EXPECT_FALSE(tools::BenchFlags().Apply(&bench, &error));
-    EXPECT_EQ(error, "--pcl_resolution must be in (0, 1e+09] (m), not 0");
+    EXPECT_EQ(error, "--pcl_ndt_resolution_m must be in (0, 1e+09] (m), not 0");
   }
 }
 

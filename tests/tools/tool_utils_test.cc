@@ -1,4 +1,4 @@
-// The tools' shared helpers (tools/common/tool_utils.h): number lists from
+// The tools' shared helpers (tools/cli/tool_utils.h): number lists from
 // flags and atomic output files, with end-to-end checks on mlndt_align: a
 // malformed list, a full disk and a symbolic link as --output_json are clear
 // errors with exit code 1, and an earlier output survives them.
@@ -17,7 +17,7 @@
 #include "tests/testing/scratch_dir.h"
 #include "tests/testing/small_file_system.h"
 #include "tests/testing/test_data.h"
-#include "tools/common/list_flags.h"
+#include "tools/cli/list_flags.h"
 
 namespace mlndt {
 namespace {

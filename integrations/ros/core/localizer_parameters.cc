@@ -2,9 +2,9 @@
 
 #include "integrations/ros/core/registration_parameters.h"
 #include "mlndt/pipeline/pipeline_option_tables.h"
-#include "tools/common/localizer_flags.h"
-#include "tools/common/map_inputs.h"
-#include "tools/common/option_flags.h"
+#include "tools/cli/localizer_flags.h"
+#include "tools/cli/map_inputs.h"
+#include "tools/cli/option_flags.h"
 
 namespace mlndt {
 namespace ros_core {

@@ -3,7 +3,7 @@
 // The localiser node's parameters, named and read as mlndt_localize's
 // flags: ~map (the map file, --map), ~initial_guess (tx,ty,tz,alpha,beta,
 // gamma in m and deg, R = Rx Ry Rz; --initial_guess), ~motion_model
-// (LocalizerOwnOptionsTable, tools/common/localizer_flags.h), ~preset,
+// (LocalizerOwnOptionsTable, tools/cli/localizer_flags.h), ~preset,
 // ~initial_uncertainty and the registration's ML-NDT flags but the map's
 // (the map file fixes the cells: ~finest_cell_size_m and the other grid
 // parameters are refused, as the tool refuses their flags), the node's

@@ -2,7 +2,7 @@
 
 #include "integrations/ros/core/registration_parameters.h"
 #include "mlndt/odometry/odometry_option_tables.h"
-#include "tools/common/odometry_flags.h"
+#include "tools/cli/odometry_flags.h"
 
 namespace mlndt {
 namespace ros_core {

@@ -1,7 +1,7 @@
 #pragma once
 
 // The odometry node's parameters, named and read as mlndt_odometry's
-// flags: OdometryOptions' own fields (tools/common/odometry_flags.h:
+// flags: OdometryOptions' own fields (tools/cli/odometry_flags.h:
 // ~local_map_max_keyframes, ~gate_factor, ~confirmation_enabled, ...), the
 // registration's ML-NDT flags over OdometryRegistrationOptions()
 // (registration_parameters.h; the grid flags shape the local map, as

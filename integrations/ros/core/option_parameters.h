@@ -2,8 +2,8 @@
 
 // A node's parameters made from option tables (mlndt/common/option_table.h)
 // under the tools' flag names: a parameter is named as the flag that sets
-// the same field (tools/common/option_flags.h for the registration's
-// fields, tools/common/table_flags.h for a tool's own table), so
+// the same field (tools/cli/option_flags.h for the registration's
+// fields, tools/cli/table_flags.h for a tool's own table), so
 // `rosparam set ~gate_factor 4` means what `mlndt_odometry --gate_factor=4`
 // means. Nothing is listed by hand: the parameters are the tables' fields.
 //

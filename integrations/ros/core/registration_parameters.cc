@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "tools/common/list_flags.h"
-#include "tools/common/option_flags.h"
+#include "tools/cli/list_flags.h"
+#include "tools/cli/option_flags.h"
 
 namespace mlndt {
 namespace ros_core {

@@ -1,7 +1,7 @@
 #pragma once
 
 // The registration's parameters of a node, as mlndt_odometry and
-// mlndt_localize take them as flags (tools/common/registration_flags.h):
+// mlndt_localize take them as flags (tools/cli/registration_flags.h):
 // ~preset (default | paper) first, then one parameter per ML-NDT flag made
 // from RegistrationOptionsTable (option_flags.h names them: ~sampling,
 // ~backend, ~newton_*, ~lm_*, ~finest_cell_size_m, ...), and

@@ -71,8 +71,8 @@ def test_evaluation_matches_mlndt_eval(tmp_path, case):
         f"--estimate={estimate_path}",
         f"--alignment={alignment}",
         "--delta=2",
-        "--segment_lengths=2,4",
-        "--segment_step=1",
+        "--segments_lengths_m=2,4",
+        "--segments_first_frame_step=1",
         f"--output_json={output}",
     )
     assert completed.returncode == 0, completed.stderr

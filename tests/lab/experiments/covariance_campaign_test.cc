@@ -48,7 +48,7 @@ TEST(RunCovariancePair, KittiPairFromPerturbedStarts) {
   ASSERT_EQ(pair.runs.size(), 4u);
   for (const StartResult& run : pair.runs) {
     // Within a few decimetres of the ground truth (KITTI's poses are not
-    // exact for the scans: docs in tools/mlndt_covariance.cc).
+    // exact for the scans: docs in lab/programs/mlndt_covariance.cc).
     EXPECT_LT((run.xi.head<3>() - pair.reference_xi.head<3>()).norm(), 0.5);
     EXPECT_GT(run.covariance.trace(), 0.0);
   }

@@ -5,7 +5,7 @@
 
 #include "integrations/ros/core/localizer_parameters.h"
 #include "integrations/ros/core/odometry_parameters.h"
-#include "tools/common/odometry_flags.h"
+#include "tools/cli/odometry_flags.h"
 
 namespace mlndt {
 namespace ros_core {

@@ -1,0 +1,270 @@
+#include "tools/cli/odometry_output.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "lab/eval/statistics.h"
+#include "lab/eval/trajectory_io.h"
+#include "lab/report/gnuplot.h"
+#include "lab/report/progress.h"
+#include "lab/report/text_format.h"
+#include "mlndt/common/atomic_file.h"
+#include "mlndt/common/pose.h"
+#include "mlndt/odometry/run_odometry.h"
+#include "tools/cli/result_csv.h"
+#include "tools/cli/result_json.h"
+#include "tools/cli/tool_utils.h"
+
+namespace mlndt {
+namespace tools {
+namespace {
+
+// The scans' names, one per result.
+CsvColumn FileColumn(const ScanInput& input,
+                     const std::vector<OdometryResult>& results) {
+  CsvColumn column{"file", {}};
+  for (const OdometryResult& r : results) {
+    column.cells.push_back(input.name(r.index));
+  }
+  return column;
+}
+
+// scans.json: the tool's header and one object per scan, the scan's name
+// and every field of OdometryResultTable but the registration's trace (as
+// in scans.csv).
+Json OdometryScansJson(const ScanInput& input,
+                       const std::vector<OdometryResult>& results) {
+  const CsvColumn file = FileColumn(input, results);
+  Json scans = Json::array();
+  for (size_t k = 0; k < results.size(); ++k) {
+    Json scan = ResultJsonOf(OdometryResultTable(), results[k]);
+    scan["registration"].erase("trace");
+    scan["file"] = file.cells[k];
+    scans.push_back(std::move(scan));
+  }
+  Json json = ToolJson("mlndt_odometry");
+  json["scans"] = std::move(scans);
+  return json;
+}
+
+// The progress line's detail of a scan: name, verdict, start layer,
+// uncertainty, time.
+std::string OdometryProgressDetail(const ScanInput& input,
+                                   const OdometryResult& r) {
+  char detail[200];
+  std::snprintf(detail,
+                sizeof(detail),
+                "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
+                input.name(r.index).c_str(),
+                TerminationTypeToString(r.termination_type),
+                r.fallback ? " (prediction used)" : "",
+                r.registration.start_layer,
+                r.uncertainty.translation_m,
+                r.uncertainty.rotation_deg,
+                r.total_time_s * 1e3);
+  return detail;
+}
+
+}  // namespace
+
+bool WriteOdometryFiles(const std::string& dir,
+                        const ScanInput& input,
+                        const std::vector<OdometryResult>& results,
+                        std::string* error) {
+  Trajectory trajectory;
+  for (const OdometryResult& r : results) {
+    if (!trajectory.TryAdd(r.stamp_s, r.world_from_sensor, error)) {
+      *error = "scan " + input.name(r.index) + ": " + *error;
+      return false;
+    }
+  }
+  return WriteTrajectory(dir + "/trajectory_kitti.txt",
+                         TrajectoryFormat::KITTI,
+                         trajectory,
+                         error) &&
+         WriteTrajectory(dir + "/trajectory_tum.txt",
+                         TrajectoryFormat::TUM,
+                         trajectory,
+                         input.TumComment(),
+                         error) &&
+         WriteFileAtomically(
+             dir + "/scans.csv",
+             ResultCsvOf(
+                 OdometryResultTable(), results, {FileColumn(input, results)}),
+             error) &&
+         WriteJsonFile(
+             dir + "/scans.json", OdometryScansJson(input, results), error);
+}
+
+Json OdometrySummaryJson(const OdometrySummary& summary,
+                         const std::vector<OdometryResult>& results,
+                         const OdometryMetrics* metrics) {
+  Json json = ToolJson("mlndt_odometry");
+  json["scans"] = summary.scans;
+  json["verdicts"] = {{"CONVERGENCE", summary.convergence},
+                      {"NO_CONVERGENCE", summary.no_convergence},
+                      {"LOW_QUALITY", summary.low_quality},
+                      {"DEGENERATE", summary.degenerate},
+                      {"FAILURE", summary.failure}};
+  json["fallbacks"] = summary.fallbacks;
+  json["keyframes"] = summary.keyframes;
+  json["recovery"] = {
+      {"searched", summary.searched},
+      {"recovered", summary.recovered},
+      {"interpolated", summary.interpolated},
+      {"extrapolated", summary.fallbacks - summary.interpolated}};
+  std::vector<double> total_ms;
+  for (const OdometryResult& r : results)
+    total_ms.push_back(r.total_time_s * 1e3);
+  json["time_per_scan_ms"] = StatsJson(ComputeStats(total_ms));
+  if (metrics == nullptr) return json;
+  Json lengths = Json::array();
+  for (const KittiLengthErrors& l : metrics->segments.lengths) {
+    lengths.push_back(
+        {{"length_m", Number(l.length_m)},
+         {"segments", l.num_segments},
+         {"translation_percent", Number(l.translation_error_percent)},
+         {"rotation_deg_per_m", Number(l.rotation_error_deg_per_m)}});
+  }
+  json["metrics"] = {
+      {"ate_se3_rmse_m", Number(metrics->ate.rmse_m)},
+      {"ate_se3_max_m", Number(metrics->ate.errors.max)},
+      {"rpe_delta_scans", metrics->rpe_delta},
+      {"rpe_translation_rmse_m", Number(metrics->rpe.translation_rmse_m)},
+      {"rpe_rotation_rmse_deg", Number(metrics->rpe.rotation_rmse_deg)},
+      {"segments", lengths}};
+  return json;
+}
+
+void PrintOdometrySummary(const OdometrySummary& summary,
+                          const std::vector<OdometryResult>& results,
+                          const OdometryMetrics* metrics) {
+  std::vector<double> total_ms;
+  for (const OdometryResult& r : results)
+    total_ms.push_back(r.total_time_s * 1e3);
+  const Stats t = ComputeStats(total_ms);
+  std::printf(
+      "scans: %zu; CONVERGENCE %zu, NO_CONVERGENCE %zu, LOW_QUALITY %zu, "
+      "DEGENERATE %zu, FAILURE %zu; keyframes %zu\nnot registered from the "
+      "prediction: searched %zu, recovered %zu; without a registered pose "
+      "(fallback) %zu: interpolated %zu, extrapolated %zu\ntime per scan "
+      "[ms]: mean %.1f, median %.1f, max %.1f\n",
+      summary.scans,
+      summary.convergence,
+      summary.no_convergence,
+      summary.low_quality,
+      summary.degenerate,
+      summary.failure,
+      summary.keyframes,
+      summary.searched,
+      summary.recovered,
+      summary.fallbacks,
+      summary.interpolated,
+      summary.fallbacks - summary.interpolated,
+      t.mean,
+      t.median,
+      t.max);
+  if (metrics == nullptr) return;
+  std::printf("ATE (SE3-aligned): rmse %.3f m, max %.3f m\n",
+              metrics->ate.rmse_m,
+              metrics->ate.errors.max);
+  std::printf(
+      "RPE over %d scans%s: translation rmse %.3f m, rotation rmse %.3f "
+      "deg\n",
+      metrics->rpe_delta,
+      metrics->rpe_delta == metrics->rpe_delta_asked
+          ? ""
+          : (" (--rpe_delta=" + std::to_string(metrics->rpe_delta_asked) +
+             " is longer than the run)")
+                .c_str(),
+      metrics->rpe.translation_rmse_m,
+      metrics->rpe.rotation_rmse_deg);
+  for (const KittiLengthErrors& l : metrics->segments.lengths) {
+    std::printf(
+        "KITTI segments of %.0f m (%zu): translation %.2f %%, rotation "
+        "%.4f deg/m\n",
+        l.length_m,
+        l.num_segments,
+        l.translation_error_percent,
+        l.rotation_error_deg_per_m);
+  }
+}
+
+bool WriteOdometryPlot(const std::string& gnuplot,
+                       const std::string& dir,
+                       const std::vector<OdometryResult>& results,
+                       const std::vector<Isometry3d>& reference,
+                       std::string* error) {
+  const std::string data_dir = dir + "/plot_data";
+  std::filesystem::create_directories(data_dir);
+  std::string estimate, fallbacks, truth;
+  for (const OdometryResult& r : results) {
+    const Vector3d& t = r.world_from_sensor.translation();
+    const std::string line = Num(t.x()) + " " + Num(t.y()) + "\n";
+    estimate += line;
+    if (r.fallback) fallbacks += line;
+  }
+  if (!reference.empty()) {
+    const Isometry3d first_inverse = reference.front().inverse();
+    for (size_t k = 0; k < results.size() && k < reference.size(); ++k) {
+      const Vector3d t = (first_inverse * reference[k]).translation();
+      truth += Num(t.x()) + " " + Num(t.y()) + "\n";
+    }
+  }
+  if (fallbacks.empty()) fallbacks = "NaN NaN\n";
+  if (!WriteFileAtomically(data_dir + "/estimate.dat", estimate, error) ||
+      !WriteFileAtomically(data_dir + "/fallbacks.dat", fallbacks, error) ||
+      (!truth.empty() &&
+       !WriteFileAtomically(data_dir + "/reference.dat", truth, error))) {
+    return false;
+  }
+  const std::string png = dir + "/trajectory_xy.png";
+  std::string script = GnuplotPngHeader(900, 700) + GnuplotSetOutput(png) +
+                       "set size ratio -1\nset xlabel 'x [m]'\n"
+                       "set ylabel 'y [m]'\nset title 'mlndt_odometry: top "
+                       "view (first scan frame)' noenhanced\nplot " +
+                       GnuplotQuote(data_dir + "/estimate.dat") +
+                       " with linespoints pt 7 ps 0.4 title 'odometry', " +
+                       GnuplotQuote(data_dir + "/fallbacks.dat") +
+                       " with points pt 6 ps 1.5 lc rgb 'red' title "
+                       "'prediction used (fallback)'";
+  if (!truth.empty()) {
+    script += ", " + GnuplotQuote(data_dir + "/reference.dat") +
+              " with lines lc rgb 'black' title 'reference'";
+  }
+  script += "\n";
+  return RunGnuplot(
+      gnuplot, data_dir + "/trajectory_xy.gp", script, {png}, error);
+}
+
+bool RunOdometryWithProgress(const OdometryOptions& options,
+                             ScanInput* input,
+                             std::vector<OdometryResult>* results,
+                             OdometrySummary* summary,
+                             std::string* error) {
+  Progress progress("mlndt_odometry", input->size());
+  const OdometryScanLoader load = [&](size_t i,
+                                      PointCloud* cloud,
+                                      std::vector<double>* times,
+                                      double* stamp_s,
+                                      std::string* e) {
+    if (!input->Load(i, cloud, times, e)) return false;
+    *stamp_s = input->StampOf(i);
+    return true;
+  };
+  const bool ok = RunOdometry(
+      options,
+      input->size(),
+      load,
+      [&](const OdometryResult& r) {
+        progress.Update(r.index + 1, OdometryProgressDetail(*input, r));
+      },
+      results,
+      summary,
+      error);
+  progress.Finish();
+  return ok;
+}
+
+}  // namespace tools
+}  // namespace mlndt
