@@ -9,11 +9,6 @@ int MatcherNumThreads(const MatcherOptions& options) {
                                        : options.mlndt.num_threads;
 }
 
-const RangeFilterOptions& MatcherRangeFilter(const MatcherOptions& options) {
-  return options.method == Method::NDT ? options.ndt.range_filter
-                                       : options.mlndt.range_filter;
-}
-
 bool RegisterPair(const MatcherOptions& options,
                   ScanStore* store,
                   size_t reference,
@@ -30,9 +25,7 @@ bool RegisterPair(const MatcherOptions& options,
   *times = PairTimes();
   const PointCloud* input_cloud = store->Cloud(input, error);
   if (input_cloud == nullptr) return false;
-  const RangeFilterOptions& range_filter = MatcherRangeFilter(options);
-  const PointCloud* reference_cloud =
-      store->ReferenceCloud(reference, range_filter, error);
+  const PointCloud* reference_cloud = store->Cloud(reference, error);
   if (reference_cloud == nullptr) return false;
   LayeredGridOptions grid_options;
   if (!MatcherGridOptions(options, *reference_cloud, &grid_options, error)) {
@@ -41,7 +34,6 @@ bool RegisterPair(const MatcherOptions& options,
   }
   double build_time_s = 0.0;
   const LayeredGrid* map = store->Map(reference,
-                                      range_filter,
                                       grid_options,
                                       MatcherNumThreads(options),
                                       &build_time_s,

@@ -25,16 +25,10 @@ struct PairTimes {
 // The threads the chosen method registers with (and builds its maps with).
 int MatcherNumThreads(const MatcherOptions& options);
 
-// The range filter of the chosen method: what it drops from the reference
-// before its map is built, as mlndt::Register and RegisterNdt do.
-const RangeFilterOptions& MatcherRangeFilter(const MatcherOptions& options);
-
 // Registers scan `input` onto scan `reference` with the chosen method, on
-// the store's map of the reference (its points that MatcherRangeFilter
-// keeps, MatcherGridOptions, built with the method's threads): the map
-// mlndt::Register builds from the same clouds. False with *error only when a
-// scan cannot be read or its map cannot be built; a registration FAILURE is
-// reported in *summary.
+// the store's map of the reference (MatcherGridOptions, built with the
+// method's threads). False with *error only when a scan cannot be read or
+// its map cannot be built; a registration FAILURE is reported in *summary.
 bool RegisterPair(const MatcherOptions& options,
                   ScanStore* store,
                   size_t reference,

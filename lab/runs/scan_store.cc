@@ -11,16 +11,12 @@
 namespace mlndt {
 
 ScanStore::ScanStore(std::vector<std::string> paths)
-    : paths_(std::move(paths)),
-      clouds_(paths_.size()),
-      filtered_(paths_.size()),
-      maps_(paths_.size()) {}
+    : paths_(std::move(paths)), clouds_(paths_.size()), maps_(paths_.size()) {}
 
 ScanStore::ScanStore(std::vector<std::string> names, ScanLoader load)
     : paths_(std::move(names)),
       load_(std::move(load)),
       clouds_(paths_.size()),
-      filtered_(paths_.size()),
       maps_(paths_.size()) {}
 
 std::string ScanStore::file_name(size_t i) const {
@@ -44,29 +40,7 @@ const PointCloud* ScanStore::Cloud(size_t i, std::string* error) {
   return clouds_[i].get();
 }
 
-const PointCloud* ScanStore::ReferenceCloud(
-    size_t i, const RangeFilterOptions& range_filter, std::string* error) {
-  FilteredCloud& filtered = filtered_.at(i);
-  if (filtered.cloud != nullptr && filtered.range_filter == range_filter) {
-    return filtered.cloud.get();
-  }
-  const PointCloud* cloud = Cloud(i, error);
-  if (cloud == nullptr) return nullptr;
-  if (!range_filter.IsValid(error)) return nullptr;
-  RangeFilterSummary summary;
-  auto kept = std::make_unique<PointCloud>(
-      FilterByRange(range_filter, *cloud, &summary));
-  if (kept->empty()) {
-    *error = paths_[i] + ": the range filter dropped every point: " +
-             DescribeDroppedPoints(range_filter, summary);
-    return nullptr;
-  }
-  filtered = FilteredCloud{range_filter, std::move(kept)};
-  return filtered.cloud.get();
-}
-
 const LayeredGrid* ScanStore::Map(size_t i,
-                                  const RangeFilterOptions& range_filter,
                                   const LayeredGridOptions& options,
                                   int num_threads,
                                   double* build_time_s,
@@ -77,11 +51,11 @@ const LayeredGrid* ScanStore::Map(size_t i,
   std::vector<CachedMap>& cached = maps_.at(i);
   const auto found =
       std::find_if(cached.begin(), cached.end(), [&](const CachedMap& entry) {
-        return entry.range_filter == range_filter && entry.options == options;
+        return entry.first == options;
       });
-  if (found != cached.end()) return found->map.get();
+  if (found != cached.end()) return found->second.get();
 
-  const PointCloud* cloud = ReferenceCloud(i, range_filter, error);
+  const PointCloud* cloud = Cloud(i, error);
   if (cloud == nullptr) return nullptr;
   const double start = NowSeconds();
   auto grid = std::make_unique<LayeredGrid>();
@@ -91,14 +65,13 @@ const LayeredGrid* ScanStore::Map(size_t i,
   }
   *build_time_s = NowSeconds() - start;
   ++num_maps_built_;
-  cached.push_back(CachedMap{range_filter, options, std::move(grid)});
-  return cached.back().map.get();
+  cached.emplace_back(options, std::move(grid));
+  return cached.back().second.get();
 }
 
 void ScanStore::ReleaseBefore(size_t first) {
   for (size_t i = 0; i < std::min(first, paths_.size()); ++i) {
     clouds_[i].reset();
-    filtered_[i] = FilteredCloud();
     maps_[i].clear();
   }
 }

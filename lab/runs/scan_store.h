@@ -4,17 +4,12 @@
 // scan's reference map once per set of map options. Listing the scans and
 // reading ground-truth poses are in lab/eval/dataset.h.
 //
-// A reference map is built as mlndt::Register builds it (registration.h):
-// from the scan's points that its range filter keeps, so that a pair gives
-// the same answer in the lab as in mlndt_align and mlndt.register.
-//
 // Map reuse follows ML-NDT Section 4.3: in a sequence the input scan at t_i
 // is the reference at t_{i+1}, so its map is built once and then reused. The
 // store also reuses maps across repeated runs on the same scans (experiments
 // run many configurations over the same pairs): its cache holds one map per
-// (scan, RangeFilterOptions, LayeredGridOptions), options compared with
-// operator== (range_filter.h, layered_grid.h), and builds a new map for
-// options that differ.
+// (scan, LayeredGridOptions), options compared with operator==
+// (layered_grid.h), and builds a new map for options that differ.
 
 #include <memory>
 #include <string>
@@ -22,7 +17,6 @@
 #include <vector>
 
 #include "mlndt/cloud/point_cloud.h"
-#include "mlndt/cloud/range_filter.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/pipeline/localizer.h"
 
@@ -46,21 +40,12 @@ class ScanStore {
   // The cloud of scan i; null with *error when it cannot be read or is empty.
   const PointCloud* Cloud(size_t i, std::string* error);
 
-  // The points of scan i that `range_filter` keeps (the reference cloud a
-  // map is built from); null with *error when the scan cannot be read or the
-  // filter drops every point. Held until the next call with other options.
-  const PointCloud* ReferenceCloud(size_t i,
-                                   const RangeFilterOptions& range_filter,
-                                   std::string* error);
-
-  // The layered map of ReferenceCloud(i, range_filter) built with `options`
-  // on `num_threads` threads (>= 1; the map does not depend on it, see
-  // LayeredGrid::Build).
+  // The layered map of scan i built with `options` on `num_threads` threads
+  // (>= 1; the map does not depend on it, see LayeredGrid::Build).
   // *build_time_s is the time spent building it in this call: 0 when the map
   // was built before. Null with *error when the scan cannot be read or the
   // map cannot be built.
   const LayeredGrid* Map(size_t i,
-                         const RangeFilterOptions& range_filter,
                          const LayeredGridOptions& options,
                          int num_threads,
                          double* build_time_s,
@@ -77,20 +62,12 @@ class ScanStore {
   size_t num_maps_built() const { return num_maps_built_; }
 
  private:
-  struct CachedMap {
-    RangeFilterOptions range_filter;
-    LayeredGridOptions options;
-    std::unique_ptr<const LayeredGrid> map;
-  };
-  struct FilteredCloud {
-    RangeFilterOptions range_filter;
-    std::unique_ptr<const PointCloud> cloud;
-  };
+  using CachedMap =
+      std::pair<LayeredGridOptions, std::unique_ptr<const LayeredGrid>>;
 
   std::vector<std::string> paths_;
   ScanLoader load_;  // Empty: read paths_ with ReadPointCloud.
   std::vector<std::unique_ptr<const PointCloud>> clouds_;
-  std::vector<FilteredCloud> filtered_;       // Per scan.
   std::vector<std::vector<CachedMap>> maps_;  // Per scan.
   size_t num_maps_built_ = 0;
 };

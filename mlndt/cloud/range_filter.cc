@@ -92,11 +92,6 @@ const OptionTable& RangeFilterOptionsTable() {
   return table;
 }
 
-bool operator==(const RangeFilterOptions& a, const RangeFilterOptions& b) {
-  return a.min_range_m == b.min_range_m && a.max_range_m == b.max_range_m &&
-         a.saturated_range_fraction == b.saturated_range_fraction;
-}
-
 bool RangeFilterOptions::IsValid(std::string* error) const {
   if (!RangeFilterOptionsTable().Check(*this, error)) return false;
   if (max_range_m != 0.0) MLNDT_OPTION_IN_RANGE(max_range_m, min_range_m, 1e6);

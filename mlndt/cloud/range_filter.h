@@ -32,9 +32,6 @@ struct RangeFilterOptions {
   bool IsValid(std::string* error) const;
 };
 
-// Field by field, as LayeredGridOptions (a map cache's key).
-bool operator==(const RangeFilterOptions& a, const RangeFilterOptions& b);
-
 // RangeFilterOptions's fields: name, unit, valid range and help
 // (option_table.h).
 const OptionTable& RangeFilterOptionsTable();

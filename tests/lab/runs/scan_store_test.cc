@@ -36,12 +36,7 @@ TEST(ScanStore, UnreadableScanIsAnErrorNamingTheFile) {
   EXPECT_EQ(store.Cloud(0, &error), nullptr);
   EXPECT_NE(error.find("/nonexistent/000000.pcd"), std::string::npos);
   double build_time_s = -1.0;
-  EXPECT_EQ(store.Map(0,
-                      RangeFilterOptions(),
-                      LayeredGridOptions(),
-                      1,
-                      &build_time_s,
-                      &error),
+  EXPECT_EQ(store.Map(0, LayeredGridOptions(), 1, &build_time_s, &error),
             nullptr);
   EXPECT_EQ(store.NumMaps(0), 0u);
 }
@@ -51,16 +46,14 @@ TEST(ScanStore, BuildsOncePerScanAndOptionsAndRebuildsForOtherOptions) {
   std::string error;
   double build_time_s = -1.0;
   const LayeredGridOptions options;
-  const LayeredGrid* map =
-      store.Map(0, RangeFilterOptions(), options, 1, &build_time_s, &error);
+  const LayeredGrid* map = store.Map(0, options, 1, &build_time_s, &error);
   ASSERT_NE(map, nullptr) << error;
   EXPECT_GT(build_time_s, 0.0);
   EXPECT_EQ(store.num_maps_built(), 1u);
 
   // Equal options (another object, other threads): the same map, no build.
   LayeredGridOptions same = options;
-  EXPECT_EQ(store.Map(0, RangeFilterOptions(), same, 2, &build_time_s, &error),
-            map);
+  EXPECT_EQ(store.Map(0, same, 2, &build_time_s, &error), map);
   EXPECT_EQ(build_time_s, 0.0);
   EXPECT_EQ(store.num_maps_built(), 1u);
 
@@ -68,8 +61,7 @@ TEST(ScanStore, BuildsOncePerScanAndOptionsAndRebuildsForOtherOptions) {
   LayeredGridOptions coarser = options;
   coarser.finest_cell_size_m = 4.0;
   ASSERT_NE(coarser, options);
-  const LayeredGrid* other =
-      store.Map(0, RangeFilterOptions(), coarser, 1, &build_time_s, &error);
+  const LayeredGrid* other = store.Map(0, coarser, 1, &build_time_s, &error);
   ASSERT_NE(other, nullptr) << error;
   EXPECT_NE(other, map);
   EXPECT_GT(build_time_s, 0.0);
@@ -78,12 +70,8 @@ TEST(ScanStore, BuildsOncePerScanAndOptionsAndRebuildsForOtherOptions) {
   EXPECT_EQ(other->options(), coarser);
 
   // Both stay cached.
-  EXPECT_EQ(
-      store.Map(0, RangeFilterOptions(), options, 1, &build_time_s, &error),
-      map);
-  EXPECT_EQ(
-      store.Map(0, RangeFilterOptions(), coarser, 1, &build_time_s, &error),
-      other);
+  EXPECT_EQ(store.Map(0, options, 1, &build_time_s, &error), map);
+  EXPECT_EQ(store.Map(0, coarser, 1, &build_time_s, &error), other);
   EXPECT_EQ(store.num_maps_built(), 2u);
 }
 
@@ -93,9 +81,7 @@ TEST(ScanStore, FailedBuildIsNotCached) {
   invalid.division_constant = 1;
   std::string error;
   double build_time_s = -1.0;
-  EXPECT_EQ(
-      store.Map(1, RangeFilterOptions(), invalid, 1, &build_time_s, &error),
-      nullptr);
+  EXPECT_EQ(store.Map(1, invalid, 1, &build_time_s, &error), nullptr);
   EXPECT_NE(error.find("000001.pcd: map: "), std::string::npos) << error;
   EXPECT_EQ(store.NumMaps(1), 0u);
   EXPECT_EQ(store.num_maps_built(), 0u);
@@ -106,12 +92,7 @@ TEST(ScanStore, ReleaseBeforeFreesEarlierScansOnly) {
   std::string error;
   double build_time_s = 0.0;
   for (size_t i = 0; i < 3; ++i) {
-    ASSERT_NE(store.Map(i,
-                        RangeFilterOptions(),
-                        LayeredGridOptions(),
-                        1,
-                        &build_time_s,
-                        &error),
+    ASSERT_NE(store.Map(i, LayeredGridOptions(), 1, &build_time_s, &error),
               nullptr)
         << error;
   }
@@ -123,12 +104,7 @@ TEST(ScanStore, ReleaseBeforeFreesEarlierScansOnly) {
   EXPECT_TRUE(store.HasCloud(2));
   EXPECT_EQ(store.NumMaps(2), 1u);
   // A freed scan is read and built again on demand.
-  ASSERT_NE(store.Map(0,
-                      RangeFilterOptions(),
-                      LayeredGridOptions(),
-                      1,
-                      &build_time_s,
-                      &error),
+  ASSERT_NE(store.Map(0, LayeredGridOptions(), 1, &build_time_s, &error),
             nullptr);
   EXPECT_EQ(store.num_maps_built(), 4u);
   store.ReleaseBefore(100);  // Past the end: everything.
