@@ -109,8 +109,15 @@ bool CheckLayout(const PointCloud2View& message,
     }
   }
   const uint64_t row = uint64_t{message.width} * message.point_step;
-  if (message.row_step < row ||
-      uint64_t{message.row_step} * message.height > message.data_size) {
+  if (message.row_step < row) {
+    *error = "row_step " + std::to_string(message.row_step) +
+             " is less than width x point_step (" +
+             std::to_string(message.width) + " x " +
+             std::to_string(message.point_step) + " = " + std::to_string(row) +
+             ")";
+    return false;
+  }
+  if (uint64_t{message.row_step} * message.height > message.data_size) {
     *error = "data holds " + std::to_string(message.data_size) +
              " bytes, fewer than height x row_step (" +
              std::to_string(message.height) + " x " +

@@ -428,6 +428,7 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
                           estimate->cloud_bytes,
                           estimate->build_peak_bytes,
                           limit);
+    estimate->exceeds_limit = true;
     return false;
   }
   if (!CountLayerCells(options,
@@ -438,6 +439,7 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
                        budget,
                        estimate,
                        error)) {
+    estimate->exceeds_limit = true;  // Only the budget stops the count.
     return false;
   }
   estimate->map_bytes =
@@ -453,6 +455,7 @@ bool EstimateMapMemory(const LayeredGridOptions& options,
                           estimate->cloud_bytes,
                           estimate->build_peak_bytes,
                           limit);
+    estimate->exceeds_limit = true;
     return false;
   }
   return true;

@@ -54,6 +54,9 @@ struct MapMemoryEstimate {
   // True when every layer was counted (false when a limit stopped it
   // before; the byte fields then hold the lower bound that was exceeded).
   bool complete = false;
+  // True when the estimate was refused because the build would exceed the
+  // limit (false when it was refused for the cloud or the options).
+  bool exceeds_limit = false;
 
   // The cloud plus the build's peak: what the process needs to build.
   size_t total_bytes() const { return cloud_bytes + build_peak_bytes; }

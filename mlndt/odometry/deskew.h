@@ -17,11 +17,14 @@
 namespace mlndt {
 
 // Moves the points of *cloud in place; `point_times_s` holds one time per
-// point, relative to the stamp. False with *error when the sizes differ or
-// a time is not finite (the cloud is then unchanged).
+// point, relative to the stamp. A point whose time is not finite cannot be
+// placed in the stamp's frame: it is removed, and *removed (when given)
+// counts such points. False with *error when the sizes differ (the cloud is
+// then unchanged).
 bool DeskewScan(const Vector6d& velocity,
                 const std::vector<double>& point_times_s,
                 PointCloud* cloud,
-                std::string* error);
+                std::string* error,
+                size_t* removed = nullptr);
 
 }  // namespace mlndt

@@ -399,9 +399,15 @@ bool Odometry::Process(const OdometryScan& scan,
   PointCloud cloud = *scan.cloud;
   const bool has_times =
       scan.point_times_s != nullptr && !scan.point_times_s->empty();
+  size_t untimed = 0;
   if (options_.deskew && has_times && predictor_.num_poses() >= 2) {
-    if (!DeskewScan(predictor_.Velocity(), *scan.point_times_s, &cloud, error))
+    if (!DeskewScan(predictor_.Velocity(),
+                    *scan.point_times_s,
+                    &cloud,
+                    error,
+                    &untimed)) {
       return false;
+    }
     result->deskewed = true;
   }
   if (local_map_.empty()) {
@@ -420,6 +426,11 @@ bool Odometry::Process(const OdometryScan& scan,
     if (result->termination_type != TerminationType::CONVERGENCE) {
       Search(cloud, result);
     }
+  }
+  if (untimed > 0) {
+    AppendMessage(std::to_string(untimed) +
+                      " point(s) without a finite time removed by deskewing",
+                  &result->message);
   }
   result->fallback = result->termination_type != TerminationType::CONVERGENCE;
   if (result->fallback) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "mlndt/common/enum_table.h"
+#include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/pipeline/pipeline_option_tables.h"
 
@@ -30,7 +31,7 @@ bool StringToMotionModel(std::string value, MotionModel* model) {
 bool LocalizerOptions::IsValid(std::string* error) const {
   return registration.IsValid(error) &&
          LocalizerOwnOptionsTable().Check(*this, error) &&
-         prior_check.IsValid(error);
+         prior_check.IsValid(error) && adaptive_uncertainty.IsValid(error);
 }
 
 namespace {
@@ -70,6 +71,20 @@ InitialGuessUncertainty Localizer::PredictionPrior() const {
   const bool from_guess = num_localized_ == 0 || !any_usable_;
   double t = from_guess ? o.guess_translation_m : o.prediction_translation_m;
   double r = from_guess ? o.guess_rotation_deg : o.prediction_rotation_deg;
+  if (AdaptsPrior()) {
+    AdaptiveUncertainty(&t, &r);
+    if (num_lost_ == 0) return Prior(t, r);
+    // After g lost scans the prediction is the last usable pose: the g + 1
+    // steps' motion (the last one's) and their model errors are not
+    // predicted.
+    const double steps = static_cast<double>(num_lost_ + 1);
+    const Eigen::AngleAxisd turn(last_motion_.linear());
+    t = std::min(steps * (t + last_motion_.translation().norm()),
+                 std::max(t, o.max_lost_translation_m));
+    r = std::min(steps * (r + turn.angle() * kRadToDeg),
+                 std::max(r, o.max_lost_rotation_deg));
+    return Prior(t, std::min(r, 180.0));
+  }
   // A prior not stated stays not stated over a gap.
   if (num_lost_ > 0 && (t > 0.0 || r > 0.0)) {
     const double gap = static_cast<double>(num_lost_);
@@ -81,8 +96,51 @@ InitialGuessUncertainty Localizer::PredictionPrior() const {
   return Prior(t, std::min(r, 180.0));
 }
 
+bool Localizer::AdaptsPrior() const {
+  const LocalizerOptions& o = options_;
+  return num_localized_ > 0 && any_usable_ && o.adapt_prediction_uncertainty &&
+         o.prediction_translation_m == 0.0 && o.prediction_rotation_deg == 0.0;
+}
+
+void Localizer::AdaptiveUncertainty(double* translation_m,
+                                    double* rotation_deg) const {
+  const MotionPredictionOptions& o = options_.adaptive_uncertainty;
+  *translation_m = o.max_translation_m;
+  *rotation_deg = o.max_rotation_deg;
+  if (errors_.empty()) return;
+  double t = 0.0, r = 0.0;
+  for (const PredictionUncertainty& e : errors_) {
+    t = std::max(t, e.translation_m);
+    r = std::max(r, e.rotation_deg);
+  }
+  *translation_m =
+      std::clamp(t * o.factor, o.min_translation_m, o.max_translation_m);
+  *rotation_deg =
+      std::clamp(r * o.factor, o.min_rotation_deg, o.max_rotation_deg);
+}
+
+void Localizer::AddPredictionError(const Isometry3d& predicted,
+                                   const Isometry3d& estimate) {
+  errors_.push_back({TranslationErrorM(predicted, estimate),
+                     RotationErrorRad(predicted, estimate) * kRadToDeg});
+  const size_t window =
+      static_cast<size_t>(options_.adaptive_uncertainty.window);
+  while (errors_.size() > window) errors_.pop_front();
+}
+
 void Localizer::Localize(const PointCloud& scan, LocalizationResult* result) {
-  LocalizeWithin(scan, PredictNext(), PredictionPrior(), result);
+  // A prediction from the last scan, usable, measures the model's error.
+  const bool from_last_scan = any_usable_ && num_lost_ == 0;
+  // The fit rule (localization_prior.h) is for a prior the caller states: a
+  // start that may lie where a rival minimum fits. A prior taken from the
+  // prediction's own recent errors is checked without it: a scan that sees
+  // beyond the map (a map of fewer scans than the run) fits less of it.
+  PriorCheckOptions check = options_.prior_check;
+  if (AdaptsPrior()) check.min_fit_ratio = 0.0;
+  LocalizeWithin(scan, PredictNext(), PredictionPrior(), check, result);
+  if (from_last_scan && result->IsSolutionUsable()) {
+    AddPredictionError(result->predicted_map_from_scan, result->map_from_scan);
+  }
 }
 
 void Localizer::LocalizeFrom(const PointCloud& scan,
@@ -92,23 +150,19 @@ void Localizer::LocalizeFrom(const PointCloud& scan,
       scan,
       guess,
       Prior(options_.guess_translation_m, options_.guess_rotation_deg),
+      options_.prior_check,
       result);
 }
 
 void Localizer::LocalizeWithin(const PointCloud& scan,
                                const Isometry3d& guess,
                                const InitialGuessUncertainty& prior,
+                               const PriorCheckOptions& check,
                                LocalizationResult* result) {
   CHECK(result != nullptr);
   RegistrationSummary& s = result->registration;
-  RegisterWithinPrior(options_.prior_check,
-                      options_.registration,
-                      map_,
-                      scan,
-                      guess,
-                      prior,
-                      &s,
-                      nullptr);
+  RegisterWithinPrior(
+      check, options_.registration, map_, scan, guess, prior, &s, nullptr);
 
   result->index = num_localized_;
   result->predicted_map_from_scan = guess;

@@ -29,6 +29,7 @@
 // time: the map and the current scan are the only clouds held.
 
 #include <cstddef>
+#include <deque>
 #include <functional>
 #include <string>
 #include <vector>
@@ -36,6 +37,7 @@
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/odometry/motion_prediction.h"
 #include "mlndt/pipeline/localization_prior.h"
 #include "mlndt/registration/registration.h"
 
@@ -55,6 +57,16 @@ const char* MotionModelToString(MotionModel model);
 // Case-insensitive: "constant_pose", "constant_velocity".
 bool StringToMotionModel(std::string value, MotionModel* model);
 
+// The odometry's prediction model with its gate as the factor: the
+// localiser's prior is both where it searches and what it accepts, as the
+// odometry's gate is: gate_factor 3 x the uncertainty's factor 2 = 6 times
+// the largest recent error (odometry_options.h).
+inline MotionPredictionOptions LocalizerAdaptiveUncertainty() {
+  MotionPredictionOptions options;
+  options.factor = 6.0;
+  return options;
+}
+
 struct LocalizerOptions {
   // The registration of each scan onto the map; `registration.grid` does not
   // apply (the map is built beforehand).
@@ -71,6 +83,13 @@ struct LocalizerOptions {
   // of 15 deg): the caller states it (docs/maps.md).
   double prediction_translation_m = 0.0;
   double prediction_rotation_deg = 0.0;
+  // With the prediction's uncertainty not stated: true takes it from the
+  // prediction's recent errors, as the odometry does (motion_prediction.h):
+  // `factor` x the largest of the last `window` differences between a
+  // prediction and its usable result, within the bounds, and the maximum
+  // before any is known. False leaves it not stated.
+  bool adapt_prediction_uncertainty = true;
+  MotionPredictionOptions adaptive_uncertainty = LocalizerAdaptiveUncertainty();
   // Added to the prediction's (or the first guess's) uncertainty per
   // unusable scan since the last usable one [m], [deg], up to the maxima
   // below; an uncertainty not stated stays not stated.
@@ -139,11 +158,22 @@ class Localizer {
   // Unusable scans since the last usable one (or since the start).
   size_t num_lost_ = 0;
   bool any_usable_ = false;
+  // The recent prediction errors (adapt_prediction_uncertainty).
+  std::deque<PredictionUncertainty> errors_;
+
+  // The uncertainty of a prediction from its recent errors.
+  void AdaptiveUncertainty(double* translation_m, double* rotation_deg) const;
+  void AddPredictionError(const Isometry3d& predicted,
+                          const Isometry3d& estimate);
 
   void LocalizeWithin(const PointCloud& scan,
                       const Isometry3d& guess,
                       const InitialGuessUncertainty& prior,
+                      const PriorCheckOptions& check,
                       LocalizationResult* result);
+  // The prediction's prior comes from its recent errors (not stated, not
+  // the first guess's).
+  bool AdaptsPrior() const;
 };
 
 // Loads scan `index` (in its sensor frame) into *scan; false with *error.

@@ -1,5 +1,6 @@
 #include "mlndt/pipeline/pipeline_option_tables.h"
 
+#include "mlndt/odometry/odometry_option_tables.h"
 #include "mlndt/pipeline/localizer.h"
 #include "mlndt/pipeline/map_builder.h"
 
@@ -103,6 +104,17 @@ const OptionTable& LocalizerOwnOptionsTable() {
                   "deg",
                   Closed(0.0, 180.0),
                   "The same in rotation.")
+          .Bool("adapt_prediction_uncertainty",
+                &S::adapt_prediction_uncertainty,
+                "With prediction_translation_m and prediction_rotation_deg "
+                "0: the prediction's uncertainty from its recent errors "
+                "(adaptive_uncertainty_*, as the odometry's); false: not "
+                "stated.")
+          .Struct("adaptive_uncertainty",
+                  &S::adaptive_uncertainty,
+                  MotionPredictionOptionsTable(),
+                  "The prediction's uncertainty from its recent errors "
+                  "(motion_prediction.h).")
           .Double("lost_translation_m_per_scan",
                   &S::lost_translation_m_per_scan,
                   "m",

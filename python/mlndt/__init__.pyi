@@ -299,6 +299,7 @@ class LayeredMap:
     def build(
         points: PointsLike,
         num_threads: int = 1,
+        max_memory_gb: float = 8.0,
         *,
         preset: Preset = "default",
         division_constant: int = ...,

@@ -14,6 +14,7 @@
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/grid/map_check.h"
+#include "mlndt/grid/map_memory.h"
 #include "python/src/arrays.h"
 #include "python/src/errors.h"
 #include "python/src/module.h"
@@ -23,8 +24,29 @@
 namespace mlndt {
 namespace python {
 
+namespace {
+
+// The map's memory, estimated before anything large is allocated
+// (grid/map_memory.h), as mlndt_map does. Called without the GIL: false
+// with *error when the cloud needs more than the limit (*over_limit) or is
+// refused (as Build would refuse it).
+bool CheckBuildMemory(const LayeredGridOptions& options,
+                      const PointCloud& cloud,
+                      double max_memory_gb,
+                      bool* over_limit,
+                      std::string* error) {
+  const size_t limit = static_cast<size_t>(max_memory_gb * 1e9);
+  MapMemoryEstimate estimate;
+  if (EstimateMapMemory(options, cloud, limit, &estimate, error)) return true;
+  *over_limit = estimate.exceeds_limit;
+  return false;
+}
+
+}  // namespace
+
 LayeredMap LayeredMap::Build(const py::object& points,
                              int num_threads,
+                             double max_memory_gb,
                              const py::kwargs& kwargs) {
   const LayeredGridOptions options = LayeredGridOptionsFromPython(kwargs);
   if (num_threads < 1 || num_threads > 256) {
@@ -32,11 +54,29 @@ LayeredMap LayeredMap::Build(const py::object& points,
         "invalid option: num_threads = " + std::to_string(num_threads) +
         "; it must be in [1, 256]");
   }
+  if (!(max_memory_gb >= 0.0 && max_memory_gb <= 1e6)) {
+    throw py::value_error(
+        "invalid option: max_memory_gb = " + std::to_string(max_memory_gb) +
+        "; it must be in [0, 1e6] (0 = no limit)");
+  }
   const PointCloud cloud = PointsFromPython(points, "points", false);
   auto grid = std::make_shared<LayeredGrid>();
   std::string error;
   bool ok = false;
+  bool over_limit = false;
   {
+    py::gil_scoped_release release;
+    ok = CheckBuildMemory(options, cloud, max_memory_gb, &over_limit, &error);
+  }
+  if (over_limit) {
+    PyErr_SetString(PyExc_MemoryError,
+                    ("LayeredMap.build: " + error +
+                     " (max_memory_gb; 0 = no "
+                     "limit)")
+                        .c_str());
+    throw py::error_already_set();
+  }
+  if (ok) {
     py::gil_scoped_release release;
     ok = LayeredGrid::Build(options, cloud, num_threads, grid.get(), &error);
   }
@@ -160,9 +200,14 @@ void DefineMapCalls(py::class_<LayeredMap>& map_class) {
           &LayeredMap::Build,
           py::arg("points"),
           py::arg("num_threads") = 1,
-          ("build(points, num_threads=1, **grid_options) -> LayeredMap\n\n"
+          py::arg("max_memory_gb") = 8.0,
+          ("build(points, num_threads=1, max_memory_gb=8.0, **grid_options) "
+           "-> LayeredMap\n\n"
            "Builds the map of an (N, 3) array (LayeredGrid::Build; the GIL "
            "is released).\n"
+           "max_memory_gb: the build's memory is estimated first "
+           "(mlndt_map's --max_memory_gb);\nover it, MemoryError names what "
+           "it needs, before anything large is allocated\n(0 = no limit).\n"
            "No range filter: register(reference, input) also drops the "
            "reference's\nreturns at the sensor first; for the same map "
            "build from filter_range(points).\n"

@@ -24,6 +24,7 @@ class LayeredMap {
 
   static LayeredMap Build(const py::object& points,
                           int num_threads,
+                          double max_memory_gb,
                           const py::kwargs& kwargs);
   static LayeredMap Load(const py::object& path_like);
   void Save(const py::object& path_like) const;

@@ -169,7 +169,13 @@ std::vector<OdometryResult> RunOdometryPython(const py::iterable& scan_items,
   for (size_t k = 0; k < n; ++k) stamps[k] = static_cast<double>(k);
   const py::list stamp_list = ListOf(stamps_arg, "stamps", n);
   for (size_t k = 0; k < stamp_list.size(); ++k) {
-    stamps[k] = py::cast<double>(stamp_list[k]);
+    try {
+      stamps[k] = py::cast<double>(stamp_list[k]);
+    } catch (const py::cast_error&) {
+      throw py::type_error("stamps[" + std::to_string(k) +
+                           "]: expected a number of seconds, got " +
+                           std::string(py::repr(stamp_list[k])));
+    }
   }
   const py::list times = ListOf(times_arg, "point_times", n);
   const OdometryScanLoader load = [&](size_t k,

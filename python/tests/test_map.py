@@ -154,6 +154,18 @@ def test_load_and_save_errors(tmp_path, reference_map):
         reference_map.save(42)
 
 
+def test_build_refuses_a_map_over_its_memory_limit(koide3):
+    """The build's memory is estimated first, as mlndt_map's --max_memory_gb:
+    over the limit a MemoryError names the amounts; 0 is no limit."""
+    points = koide3[0]
+    with pytest.raises(MemoryError, match=r"LayeredMap.build: .*exceeds the memory limit of 1.0 kB"):
+        mlndt.LayeredMap.build(points, max_memory_gb=1e-6)
+    with pytest.raises(ValueError, match=r"max_memory_gb"):
+        mlndt.LayeredMap.build(points, max_memory_gb=-1.0)
+    assert mlndt.LayeredMap.build(points, max_memory_gb=0).num_layers == \
+        mlndt.LayeredMap.build(points).num_layers
+
+
 def test_build_refuses_a_map_that_cannot_be_used(koide3, tmp_path):
     """Issue 27 item 3: a 1e300 point (the map's cells would be infinite) or
     too few points for one cell give no map, instead of one save writes and

@@ -171,6 +171,8 @@ def test_bad_scans_and_stamps_raise_naming_them(tmp_path):
         mlndt.run_odometry([scan, np.zeros((4, 2))])
     with pytest.raises(ValueError, match="stamps: 1 entries for 2 scans"):
         mlndt.run_odometry(KITTI_SCANS[:2], stamps=[0.0])
+    with pytest.raises(TypeError, match=r"stamps\[0\]: expected a number of seconds, got '1.0'"):
+        mlndt.run_odometry(KITTI_SCANS[:2], stamps=["1.0", "2.0"])
     with pytest.raises(ValueError, match=r"point_times\[0\]: expected one time per point"):
         mlndt.run_odometry([scan, scan], point_times=[np.zeros(3), None])
     with pytest.raises(ValueError, match="at least 2 scans"):
@@ -180,6 +182,16 @@ def test_bad_scans_and_stamps_raise_naming_them(tmp_path):
     with pytest.raises(ValueError, match="process: .*stamp"):
         odometry.process(scan, 1.0)
     assert odometry.num_processed == 1  # The refused scan left no trace.
+
+
+def test_point_times_that_are_not_finite_flag_the_scan_not_the_run():
+    scans = [mlndt.read_cloud(path) for path in KITTI_SCANS[:3]]
+    times = [np.zeros(len(scan)) for scan in scans]
+    times[2][:] = np.nan
+    results = mlndt.run_odometry(scans, stamps=[0.0, 0.1, 0.2], point_times=times)
+    assert [r.termination_type for r in results[:2]] == ["CONVERGENCE"] * 2
+    assert results[2].termination_type == "FAILURE"
+    assert "without a finite time removed" in results[2].message
 
 
 def test_help_lists_the_odometry_options():

@@ -149,7 +149,7 @@ def test_help_shows_parameters_and_every_option():
     map_register = pydoc.render_doc(mlndt.LayeredMap.register, renderer=pydoc.plaintext)
     assert "register(input, initial=None, initial_uncertainty=None, **options)" in map_register
     build = pydoc.render_doc(mlndt.LayeredMap.build, renderer=pydoc.plaintext)
-    assert "build(points, num_threads=1, **grid_options)" in build and "min_points_per_cell: int" in build
+    assert "build(points, num_threads=1, max_memory_gb=8.0, **grid_options)" in build and "min_points_per_cell: int" in build
     for name in mlndt.__all__:
         assert getattr(mlndt, name).__doc__, name
 

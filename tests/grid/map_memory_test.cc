@@ -145,6 +145,7 @@ TEST(EstimateMapMemory, RefusesWhatExceedsTheLimit) {
   EXPECT_FALSE(EstimateMapMemory(
       LayeredGridOptions(), street, full.cloud_bytes, &estimate, &error));
   EXPECT_FALSE(estimate.complete);
+  EXPECT_TRUE(estimate.exceeds_limit);
   EXPECT_NE(error.find("the map's geometry alone"), std::string::npos) << error;
   EXPECT_NE(error.find("exceeds the memory limit of"), std::string::npos)
       << error;
@@ -152,6 +153,7 @@ TEST(EstimateMapMemory, RefusesWhatExceedsTheLimit) {
   EXPECT_FALSE(EstimateMapMemory(
       LayeredGridOptions(), street, full.total_bytes() - 1, &estimate, &error));
   EXPECT_TRUE(estimate.complete);
+  EXPECT_TRUE(estimate.exceeds_limit);
   EXPECT_NE(error.find("the map of 5 layers"), std::string::npos) << error;
   EXPECT_NE(error.find(FormatBytes(double(full.total_bytes() - 1))),
             std::string::npos)
@@ -169,6 +171,7 @@ TEST(EstimateMapMemory, RefusesWhenCountingAloneWouldExceedTheLimit) {
   std::string error;
   const size_t limit = cloud.points().capacity() * 24 + 200000 * 12 + 100000;
   EXPECT_FALSE(EstimateMapMemory(options, cloud, limit, &estimate, &error));
+  EXPECT_TRUE(estimate.exceeds_limit);
   EXPECT_NE(error.find("counting the cells"), std::string::npos) << error;
 }
 
@@ -196,6 +199,10 @@ TEST(EstimateMapMemory, RefusesWhatBuildRefuses) {
   EXPECT_FALSE(EstimateMapMemory(
       invalid, testing::StreetScene(1000, 0.02, 1), 0, &estimate, &error));
   EXPECT_NE(error.find("division_constant"), std::string::npos) << error;
+  // Refused for the cloud or the options, not for memory, even with a limit.
+  EXPECT_FALSE(EstimateMapMemory(
+      LayeredGridOptions(), same, size_t{1000}, &estimate, &error));
+  EXPECT_FALSE(estimate.exceeds_limit);
 }
 
 TEST(FormatBytes, Units) {

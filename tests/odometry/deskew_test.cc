@@ -46,8 +46,26 @@ TEST(DeskewScan, RefusesTimesThatDoNotMatchThePoints) {
   std::string error;
   EXPECT_FALSE(DeskewScan(Vector6d::Ones(), {0.0}, &cloud, &error));
   EXPECT_EQ(error, "deskew: 1 point times for 2 points");
-  EXPECT_FALSE(DeskewScan(Vector6d::Ones(), {0.0, NAN}, &cloud, &error));
   EXPECT_EQ(cloud[1], Eigen::Vector3d(4, 5, 6));
+}
+
+// A point without a finite time (a driver's marker, a corrupt field) cannot
+// be moved to the stamp's frame: it is removed and counted, the others are
+// deskewed.
+TEST(DeskewScan, RemovesPointsWithoutAFiniteTime) {
+  PointCloud cloud({Eigen::Vector3d(1, 2, 3),
+                    Eigen::Vector3d(4, 5, 6),
+                    Eigen::Vector3d(7, 8, 9)});
+  Vector6d velocity = Vector6d::Zero();
+  velocity(0) = 10.0;  // 10 m/s along x.
+  std::string error;
+  size_t removed = 0;
+  ASSERT_TRUE(
+      DeskewScan(velocity, {0.1, NAN, INFINITY}, &cloud, &error, &removed))
+      << error;
+  EXPECT_EQ(removed, 2u);
+  ASSERT_EQ(cloud.size(), 1u);
+  EXPECT_TRUE(cloud[0].isApprox(Eigen::Vector3d(2, 2, 3)));
 }
 
 }  // namespace

@@ -272,6 +272,38 @@ TEST(Odometry, ScansAfterAGapRegisterOntoTheMapThatKeptWhatItKnew) {
   EXPECT_GE(results[6].map_keyframes, results[2].map_keyframes);
 }
 
+// Point times that are not finite do not stop the run: a scan with some is
+// deskewed without those points, one with none finite is a scan without
+// points (FAILURE, flagged), and the next scan registers again.
+TEST(Odometry, PointsWithoutAFiniteTimeAreRemovedNotFatal) {
+  Odometry odometry{OdometryOptions()};
+  std::vector<OdometryResult> results(6);
+  std::string error;
+  for (size_t k = 0; k < results.size(); ++k) {
+    PointCloud cloud;
+    ASSERT_TRUE(ReadPointCloud(KittiScan(k), &cloud, nullptr, &error)) << error;
+    std::vector<double> times(cloud.size(), 0.0);
+    if (k == 3) {
+      for (size_t i = 0; i < times.size(); i += 10) times[i] = NAN;
+    }
+    if (k == 4) times.assign(cloud.size(), NAN);
+    ASSERT_TRUE(odometry.Process(
+        {0.1 * static_cast<double>(k), &cloud, &times}, &results[k], &error))
+        << "scan " << k << ": " << error;
+  }
+  EXPECT_EQ(results[3].termination_type, TerminationType::CONVERGENCE)
+      << results[3].message;
+  EXPECT_NE(results[3].message.find("without a finite time removed"),
+            std::string::npos)
+      << results[3].message;
+  EXPECT_EQ(results[4].termination_type, TerminationType::FAILURE);
+  EXPECT_TRUE(results[4].fallback);
+  EXPECT_EQ(results[5].termination_type, TerminationType::CONVERGENCE)
+      << results[5].message;
+  const std::vector<Isometry3d> chain = ReferenceChain(6);
+  EXPECT_LT(TranslationErrorM(results[5].world_from_sensor, chain[5]), 0.1);
+}
+
 TEST(Odometry, RefusesStampsThatDoNotIncreaseAndAnEmptyFirstScan) {
   Odometry odometry{OdometryOptions()};
   PointCloud cloud;

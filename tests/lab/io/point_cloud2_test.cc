@@ -163,6 +163,18 @@ TEST(DecodePointCloud2, RefusesWhatItCannotReadAndLeavesTheScan) {
   short_rows.view.row_step = 40;  // < width x point_step.
   EXPECT_FALSE(DecodePointCloud2(short_rows.view, &scan, &error));
   EXPECT_EQ(scan.frame_id, "untouched");
+  // A huge width (a corrupt header) names width and point_step, not the
+  // data's size.
+  EXPECT_NE(error.find("row_step 40 is less than width x point_step (4 x 12 "
+                       "= 48)"),
+            std::string::npos)
+      << error;
+  Message huge_width(xyz, 1, 4, 12, 0);
+  huge_width.view.width = 4000000000u;
+  EXPECT_FALSE(DecodePointCloud2(huge_width.view, &scan, &error));
+  EXPECT_NE(error.find("width x point_step (4000000000 x 12"),
+            std::string::npos)
+      << error;
 }
 
 }  // namespace
