@@ -17,13 +17,14 @@ std::string SharedDataDir() {
 }
 
 std::string ToolPath(const std::string& name) {
-  const char* dir = std::getenv("MLNDT_TOOLS_DIR");
-  const std::string tool =
-      std::string(dir != nullptr ? dir : MLNDT_TOOLS_DIR) + "/" + name;
-  if (std::filesystem::exists(tool)) return tool;
+  // The lab's programs first: a build folder from before they moved out of
+  // tools/ still holds stale copies there.
   const char* lab = std::getenv("MLNDT_LAB_PROGRAMS_DIR");
-  return std::string(lab != nullptr ? lab : MLNDT_LAB_PROGRAMS_DIR) + "/" +
-         name;
+  const std::string program =
+      std::string(lab != nullptr ? lab : MLNDT_LAB_PROGRAMS_DIR) + "/" + name;
+  if (std::filesystem::exists(program)) return program;
+  const char* dir = std::getenv("MLNDT_TOOLS_DIR");
+  return std::string(dir != nullptr ? dir : MLNDT_TOOLS_DIR) + "/" + name;
 }
 
 }  // namespace testing

@@ -17,10 +17,10 @@ std::string BundledDataPath(const std::string& relative);
 // The folder named by MLNDT_DATA_DIR, or "" when it is unset or missing.
 std::string SharedDataDir();
 
-// Absolute path of a built tool (e.g. "mlndt_info", in build/tools/, or
-// MLNDT_TOOLS_DIR when set) or, when there is no such tool, of the lab's
-// program of that name (e.g. "mlndt_suite", in build/lab/programs/, or
-// MLNDT_LAB_PROGRAMS_DIR when set).
+// Absolute path of the lab's program of that name (e.g. "mlndt_suite", in
+// build/lab/programs/, or MLNDT_LAB_PROGRAMS_DIR when set) or, when there is
+// no such program, of the built tool (e.g. "mlndt_info", in build/tools/, or
+// MLNDT_TOOLS_DIR when set).
 std::string ToolPath(const std::string& name);
 
 }  // namespace testing
