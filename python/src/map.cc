@@ -13,8 +13,7 @@
 
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/layered_grid.h"
-#include "mlndt/grid/map_check.h"
-#include "mlndt/grid/map_memory.h"
+#include "mlndt/pipeline/map_builder.h"
 #include "python/src/arrays.h"
 #include "python/src/errors.h"
 #include "python/src/module.h"
@@ -23,26 +22,6 @@
 
 namespace mlndt {
 namespace python {
-
-namespace {
-
-// The map's memory, estimated before anything large is allocated
-// (grid/map_memory.h), as mlndt_map does. Called without the GIL: false
-// with *error when the cloud needs more than the limit (*over_limit) or is
-// refused (as Build would refuse it).
-bool CheckBuildMemory(const LayeredGridOptions& options,
-                      const PointCloud& cloud,
-                      double max_memory_gb,
-                      bool* over_limit,
-                      std::string* error) {
-  const size_t limit = static_cast<size_t>(max_memory_gb * 1e9);
-  MapMemoryEstimate estimate;
-  if (EstimateMapMemory(options, cloud, limit, &estimate, error)) return true;
-  *over_limit = estimate.exceeds_limit;
-  return false;
-}
-
-}  // namespace
 
 LayeredMap LayeredMap::Build(const py::object& points,
                              int num_threads,
@@ -59,32 +38,30 @@ LayeredMap LayeredMap::Build(const py::object& points,
         "invalid option: max_memory_gb = " + std::to_string(max_memory_gb) +
         "; it must be in [0, 1e6] (0 = no limit)");
   }
-  const PointCloud cloud = PointsFromPython(points, "points", false);
+  // The library's map build from one cloud (pipeline/map_builder.h), as
+  // mlndt_map builds: the memory estimated before anything large is
+  // allocated, the map refused when it cannot be used (0 occupied cells,
+  // coordinates beyond 1e8 m); no range or voxel filter.
+  MapBuildOptions build;
+  build.grid = options;
+  build.max_memory_bytes = static_cast<size_t>(max_memory_gb * 1e9);
+  build.num_threads = num_threads;
+  PointCloud cloud = PointsFromPython(points, "points", false);
   auto grid = std::make_shared<LayeredGrid>();
+  MapBuildSummary summary;
   std::string error;
   bool ok = false;
-  bool over_limit = false;
   {
     py::gil_scoped_release release;
-    ok = CheckBuildMemory(options, cloud, max_memory_gb, &over_limit, &error);
+    ok = BuildMapFromCloud(
+        build, std::move(cloud), grid.get(), &summary, &error);
   }
-  if (over_limit) {
-    PyErr_SetString(PyExc_MemoryError,
-                    ("LayeredMap.build: " + error +
-                     " (max_memory_gb; 0 = no "
-                     "limit)")
-                        .c_str());
+  if (!ok && summary.memory.exceeds_limit) {
+    PyErr_SetString(
+        PyExc_MemoryError,
+        ("LayeredMap.build: " + error + " (max_memory_gb; 0 = no limit)")
+            .c_str());
     throw py::error_already_set();
-  }
-  if (ok) {
-    py::gil_scoped_release release;
-    ok = LayeredGrid::Build(options, cloud, num_threads, grid.get(), &error);
-  }
-  // The library's map check: a map with 0 cells or of absurd size (a 1e300
-  // point) is refused here, not saved and refused by load.
-  if (ok && !CheckMapUsable(*grid, &error)) {
-    error = "the map is not usable: " + error;
-    ok = false;
   }
   if (!ok) throw py::value_error("LayeredMap.build: " + error);
   return LayeredMap(std::move(grid));
