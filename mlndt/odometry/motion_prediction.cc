@@ -56,24 +56,32 @@ Isometry3d MotionPredictor::DeadReckon(double stamp_s) const {
   return last_pose_ * TwistToMotion(velocity_ * dt);
 }
 
+PredictionUncertainty OneStepUncertainty(
+    const MotionPredictionOptions& options,
+    const std::deque<PredictionUncertainty>& errors) {
+  if (errors.empty()) {
+    return {options.max_translation_m, options.max_rotation_deg};
+  }
+  double t = 0.0, r = 0.0;
+  for (const PredictionUncertainty& e : errors) {
+    t = std::max(t, e.translation_m);
+    r = std::max(r, e.rotation_deg);
+  }
+  return {std::max(t * options.factor, options.min_translation_m),
+          std::max(r * options.factor, options.min_rotation_deg)};
+}
+
 PredictionUncertainty MotionPredictor::Uncertainty() const {
   PredictionUncertainty u{options_.max_translation_m,
                           options_.max_rotation_deg};
   if (num_poses_ < 2 || errors_.empty()) return u;
-  double t = 0.0, r = 0.0;
-  for (const PredictionUncertainty& e : errors_) {
-    t = std::max(t, e.translation_m);
-    r = std::max(r, e.rotation_deg);
-  }
   // One step's uncertainty, times the steps since the last pose, within
   // the bounds times those steps.
+  const PredictionUncertainty step = OneStepUncertainty(options_, errors_);
   const double gap = 1.0 + static_cast<double>(skipped_);
   u.translation_m =
-      std::min(std::max(t * options_.factor, options_.min_translation_m) * gap,
-               options_.max_translation_m);
-  u.rotation_deg =
-      std::min(std::max(r * options_.factor, options_.min_rotation_deg) * gap,
-               options_.max_rotation_deg);
+      std::min(step.translation_m * gap, options_.max_translation_m);
+  u.rotation_deg = std::min(step.rotation_deg * gap, options_.max_rotation_deg);
   return u;
 }
 

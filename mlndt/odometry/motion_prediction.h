@@ -41,6 +41,14 @@ struct PredictionUncertainty {
   double rotation_deg = 0.0;
 };
 
+// The uncertainty of a one-step prediction from its recent model errors:
+// their largest times options.factor, at least the lower bounds (not yet
+// capped by the upper ones, so that a caller can scale it over a gap
+// first); the upper bounds when no error is known.
+PredictionUncertainty OneStepUncertainty(
+    const MotionPredictionOptions& options,
+    const std::deque<PredictionUncertainty>& errors);
+
 class MotionPredictor {
  public:
   explicit MotionPredictor(const MotionPredictionOptions& options);

@@ -105,18 +105,9 @@ bool Localizer::AdaptsPrior() const {
 void Localizer::AdaptiveUncertainty(double* translation_m,
                                     double* rotation_deg) const {
   const MotionPredictionOptions& o = options_.adaptive_uncertainty;
-  *translation_m = o.max_translation_m;
-  *rotation_deg = o.max_rotation_deg;
-  if (errors_.empty()) return;
-  double t = 0.0, r = 0.0;
-  for (const PredictionUncertainty& e : errors_) {
-    t = std::max(t, e.translation_m);
-    r = std::max(r, e.rotation_deg);
-  }
-  *translation_m =
-      std::clamp(t * o.factor, o.min_translation_m, o.max_translation_m);
-  *rotation_deg =
-      std::clamp(r * o.factor, o.min_rotation_deg, o.max_rotation_deg);
+  const PredictionUncertainty u = OneStepUncertainty(o, errors_);
+  *translation_m = std::min(u.translation_m, o.max_translation_m);
+  *rotation_deg = std::min(u.rotation_deg, o.max_rotation_deg);
 }
 
 void Localizer::AddPredictionError(const Isometry3d& predicted,
