@@ -1,6 +1,5 @@
 #include "mlndt/odometry/confirm_pose.h"
 
-#include <limits>
 #include <sstream>
 
 #include "mlndt/common/internal/check_option.h"
@@ -48,15 +47,14 @@ Isometry3d ConfirmationStart(const PredictionUncertainty& uncertainty,
 namespace {
 
 // The second run returned to the pose when it ended within the
-// prediction's smallest uncertainty of it (each bound): any minimum farther
-// away rivals the pose, whatever its fit.
-RivalMinimaOptions ReturnedWithin(const MotionPredictionOptions& prediction) {
-  RivalMinimaOptions options;
-  options.separation.cell_size_m = prediction.min_translation_m;
-  options.separation.max_cells = 1.0;
-  options.separation.max_rotation_deg = prediction.min_rotation_deg;
-  options.as_well_margin = std::numeric_limits<double>::infinity();
-  return options;
+// prediction's smallest uncertainty of it (each bound): a minimum farther
+// away is distinct (rival_minima.h) and rivals the pose, whatever its fit.
+MinimaSeparation ReturnedWithin(const MotionPredictionOptions& prediction) {
+  MinimaSeparation separation;
+  separation.cell_size_m = prediction.min_translation_m;
+  separation.max_cells = 1.0;
+  separation.max_rotation_deg = prediction.min_rotation_deg;
+  return separation;
 }
 
 }  // namespace
@@ -81,13 +79,8 @@ Confirmation ConfirmPose(const RegistrationOptions& options,
       TranslationErrorM(pose, summary.reference_from_input);
   confirmation.distance_deg =
       RotationErrorRad(pose, summary.reference_from_input) * kRadToDeg;
-  // Returned: the run ended in no minimum distinct from the pose
-  // (rival_minima.h; every distinct one rivals it).
-  const bool returned = !FindRivalMinimum(ReturnedWithin(prediction),
-                                          {pose, summary.reference_from_input},
-                                          0,
-                                          [](size_t) { return 0.0; })
-                             .found();
+  const bool returned = !DistinctMinima(
+      ReturnedWithin(prediction), pose, summary.reference_from_input);
   // The question is where the second run ends, not its own verdict (the
   // first run's quality check already passed at the pose): only a FAILURE
   // has no pose to compare.

@@ -26,8 +26,8 @@
 //    gives: the registration's fit is the inlier gain's z-score against the
 //    result (a difference of inliers over the square root of those that
 //    changed, so density-independent), the localiser's the inlier fraction;
-//    the odometry asks only whether the run returned, so every distinct
-//    minimum rivals the pose (+infinity);
+//    the odometry asks only whether the run returned, so any distinct
+//    minimum rivals the pose: it calls DistinctMinima alone;
 //  - the starts: along the flattest direction for the registration
 //    (the constraint probe found it flat, so a rival lies along it), beyond
 //    the pose along the correction for the odometry (a slide along a weak
