@@ -123,7 +123,8 @@ bool CheckFlags(LocalizerOptions* options,
   // --motion_model (LocalizerOwnOptionsTable).
   if (!tools::LocalizerFlags().Apply(options, error)) return false;
   if (!tools::RefuseMapFlags(kTool, error) ||
-      !tools::RegistrationOptionsFromFlags(&options->registration, error)) {
+      !tools::RegistrationOptionsFromFlags(
+          LocalizerRegistrationOptions(), &options->registration, error)) {
     return false;
   }
   if (!options->IsValid(error)) return false;
@@ -232,6 +233,7 @@ int Run() {
 }  // namespace mlndt
 
 int main(int argc, char** argv) {
+  mlndt::tools::ShowRegistrationDefaults(mlndt::LocalizerRegistrationOptions());
   const char* usage =
       "Registers every scan of a folder onto a saved map (mlndt_map).\n"
       "  mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT "

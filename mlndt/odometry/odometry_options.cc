@@ -9,6 +9,7 @@ RegistrationOptions OdometryRegistrationOptions() {
   options.quality_check.max_flatness = 0.8;
   options.retry.weak_direction_rounds = 0;
   options.quality_check.max_mean_score = 11.0;
+  options.quality_check.min_localizability = 0.0;
   return options;
 }
 

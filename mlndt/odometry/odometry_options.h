@@ -29,6 +29,11 @@ namespace mlndt {
 //    little; a local map of several keyframes overlaps the scan widely, so
 //    the mean counts the scan's own points, and a poor one, a slide onto a
 //    shifted copy of the place, is refused).
+//  - quality_check.min_localizability = 0: no localizability test (the
+//    library has it on). The odometry holds a pose to its prediction (the
+//    gate, the confirmation), which also holds a direction the surfaces
+//    leave free; flagging those scans as well restarts the chain of
+//    predictions more often (docs/odometry.md gives the measurement).
 RegistrationOptions OdometryRegistrationOptions();
 
 struct OdometryOptions {

@@ -67,10 +67,17 @@ inline MotionPredictionOptions LocalizerAdaptiveUncertainty() {
   return options;
 }
 
+// The localiser's registration defaults: the library's, without the
+// localizability test (quality_check.min_localizability 0). The localiser
+// accepts a pose only within its prior (localization_prior.h), which holds a
+// direction the surfaces leave free; flagging such scans as well breaks the
+// chain of predictions (docs/maps.md gives the measurement).
+RegistrationOptions LocalizerRegistrationOptions();
+
 struct LocalizerOptions {
   // The registration of each scan onto the map; `registration.grid` does not
   // apply (the map is built beforehand).
-  RegistrationOptions registration;
+  RegistrationOptions registration = LocalizerRegistrationOptions();
   MotionModel motion_model = MotionModel::CONSTANT_VELOCITY;
   // How far the first scan's guess, and every guess given per scan
   // (Localizer::LocalizeFrom's callers), may be from the truth [m], [deg];

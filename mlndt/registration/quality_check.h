@@ -75,10 +75,9 @@ struct QualityCheckOptions {
   // constrain a direction of the pose through their normal
   // (Localizability, localizability.h): the surfaces the points lie on
   // leave that direction free (a corridor's axis, a wall's plane), whatever
-  // the point density. Off by default: at 0.02 it also flags right
-  // results of cropped car scans (tests/registration/weak_geometry_test.cc;
-  // docs/trust.md). In [0, 1); 0 = off.
-  double min_localizability = 0.0;
+  // the point density. Judged on the chosen minimum, after the searches
+  // for it (attempts.h, step 6). In [0, 1); 0 = off.
+  double min_localizability = 0.02;
   // DEGENERATE when moving the pose by one last-layer cell edge along one of
   // its weak directions keeps more than `max_flatness` of the inliers both
   // ways, and the net loss is below `min_probe_evidence` standard deviations

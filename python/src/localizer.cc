@@ -70,7 +70,8 @@ class PyLocalizer {
     options.registration = RegistrationOptionsFromPython(
         py::reinterpret_borrow<py::kwargs>(registration),
         initial_uncertainty,
-        true);
+        true,
+        LocalizerRegistrationOptions());
     std::string error;
     if (!options.IsValid(&error)) throw py::value_error(error);
     const Isometry3d first =

@@ -4,6 +4,7 @@
 
 #include "mlndt/ndt/ndt_registration.h"
 #include "mlndt/odometry/odometry_options.h"
+#include "mlndt/pipeline/localizer.h"
 #include "mlndt/registration/registration_options.h"
 #include "tools/cli/option_flags.h"
 #include "tools/cli/tool_table_flags.h"
@@ -51,7 +52,8 @@ std::string ToolDefaultsNote(const OptionFlag& flag) {
   const struct {
     const char* tool;
     RegistrationOptions options;
-  } presets[] = {{"mlndt_odometry", OdometryRegistrationOptions()}};
+  } presets[] = {{"mlndt_odometry", OdometryRegistrationOptions()},
+                 {"mlndt_localize", LocalizerRegistrationOptions()}};
   const OptionTable& table = RegistrationOptionsTable();
   std::string note;
   for (const auto& preset : presets) {

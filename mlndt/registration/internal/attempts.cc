@@ -34,7 +34,7 @@ struct Context {
   const Vector6d& initial_local;
   double start_time_s;
   AttemptsCost* cost;
-  // Every solution a run converged to, for the last check (step 6).
+  // Every solution a run converged to, for the last check (step 7).
   std::vector<Vector6d>* minima;
 };
 
@@ -561,7 +561,7 @@ Vector6d ScaledDifference(const Isometry3d& a,
   return d;
 }
 
-// Step 6 above: a converged result is DEGENERATE when a distinct minimum
+// Step 7 above: a converged result is DEGENERATE when a distinct minimum
 // that a run converged to fits as well (FindRivalMinimum): the data do not
 // decide between the two. The direction from the result to it is named,
 // and unbounded in the covariance.
@@ -600,6 +600,28 @@ void FlagRivalMinimum(const Context& c, Attempt* best) {
       apart + " away (" + DescribeDirection(d) + ") with about as many inliers";
 }
 
+// Step 6 above: a usable result is DEGENERATE when the surfaces its
+// inliers lie on leave a translation free (localizability.h; `check`'s
+// min_localizability). Judged once, on the chosen minimum: the searches of
+// steps 2-5 look for the best minimum, and whether the geometry pins it
+// down is a property of that minimum, not of the starts on the way.
+void FlagUnlocalizable(const Context& c,
+                       const QualityCheckOptions& check,
+                       Attempt* best) {
+  if (!best->usable() || !(check.min_localizability > 0.0)) return;
+  Judgement judgement = JudgeSolution(check,
+                                      best->schedule.termination_type,
+                                      c.problem.last(),
+                                      c.problem.points,
+                                      best->xi_local,
+                                      c.options.objective,
+                                      c.problem.rms_range_m);
+  if (judgement.verdict != TerminationType::DEGENERATE) return;
+  best->constraints = std::move(judgement.constraints);
+  best->verdict = judgement.verdict;
+  best->verdict_message = std::move(judgement.message);
+}
+
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
 Vector6d TurnedGuess(const Vector6d& guess, double yaw_deg) {
   Isometry3d turned = PoseVectorToIsometry(guess);
@@ -617,7 +639,11 @@ Attempt SolveAttempts(const RegistrationOptions& options,
                       double start_time_s,
                       AttemptsCost* cost) {
   std::vector<Vector6d> minima;
-  const Context c{options, problem, initial_local, start_time_s, cost, &minima};
+  // Steps 1-5 judge each run without the localizability test (step 6).
+  RegistrationOptions searching = options;
+  searching.quality_check.min_localizability = 0.0;
+  const Context c{
+      searching, problem, initial_local, start_time_s, cost, &minima};
   const int n = problem.map.num_layers();
   const int start = StartLayer(c);
   Attempt best = Solve(c, start, initial_local);
@@ -636,6 +662,7 @@ Attempt SolveAttempts(const RegistrationOptions& options,
     CheckPatternMinimum(c, &turned);
     KeepBetter(std::move(turned), &best);
   }
+  FlagUnlocalizable(c, options.quality_check, &best);
   FlagRivalMinimum(c, &best);
   return best;
 }

@@ -38,7 +38,14 @@
 //     from the guess turned about the input's centroid by each yaw seed
 //     (retry), each checked as in 4; the best verdict wins, then the most
 //     inliers;
-//  6. FlagRivalMinimum: a converged result is DEGENERATE when a minimum any
+//  6. FlagUnlocalizable: steps 1-5 judge their runs without the
+//     localizability test; the chosen result is judged with it
+//     (quality_check.min_localizability): DEGENERATE when fewer than that
+//     share of its inliers on planar cells constrain a translation through
+//     their normal (localizability.h). Whether the surfaces pin the pose
+//     down is a property of the minimum found, so it does not cut short
+//     the searches for the better minimum;
+//  7. FlagRivalMinimum: a converged result is DEGENERATE when a minimum any
 //     of these runs converged to is distinct (more than half a last-layer
 //     cell away) and fits as well (not clearly fewer inliers:
 //     InlierGainEvidence >= -1); the direction to it is unbounded in the
@@ -98,7 +105,7 @@ struct AttemptsCost {
   int64_t point_iterations = 0;
 };
 
-// Runs 1-6 above.
+// Runs 1-7 above.
 Attempt SolveAttempts(const RegistrationOptions& options,
                       const Problem& problem,
                       const Vector6d& initial_local,
