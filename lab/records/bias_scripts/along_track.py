@@ -7,7 +7,7 @@ For every right run on a constrained pair: the signed error along the true
 motion, (t_estimate - t_true) . t_true / |t_true|, divided by |t_true|
 (mlndt_suite's along_track_error_m over the motion length). Prints per
 sensor x scene x start (and all starts) n, mean +- standard error [% of the
-motion] and the mean motion [m]; one block per runs.csv (a label is its
+motion], the standard deviation and the mean motion [m]; one block per runs.csv (a label is its
 parent folder's name).
 """
 import collections
@@ -36,8 +36,8 @@ def stats(values):
     if n == 0:
         return "n=  0"
     mean = sum(values) / n
-    se = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1) / n) if n > 1 else float("nan")
-    return "n=%3d  %+.3f +- %.3f %%" % (n, mean, se)
+    sd = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1)) if n > 1 else float("nan")
+    return "n=%3d  %+.3f +- %.3f %% (sd %.3f)" % (n, mean, sd / math.sqrt(n), sd)
 
 
 def main():
