@@ -150,9 +150,10 @@ def contract_row(key, runs, prior_runs):
     beyond_conv = sum(1 for r in beyond if r["termination"] == "CONVERGENCE")
     beyond_rms = "-" if not fixed_right else str(sum(
         1 for t, a in zip(err_t, err_r) if t > 3 * rms_t or a > 3 * rms_r))
-    return "| %-8s | %-10s | %4d | %3d | %3d | %4s | %7.2f | %6.3f | %7.2f | %6.3f |" % (
+    text = "| %-8s | %-10s | %4d | %3d | %3d | %4s | %7.2f | %6.3f | %7.2f | %6.3f |" % (
         key[0], key[1], len(prior_runs), len(beyond), beyond_conv, beyond_rms,
         100 * max(err_t), max(err_r), rms_t * 100, rms_r)
+    return text, len(beyond), beyond_conv
 
 def print_contract():
     rows, total, beyond, beyond_conv = [], 0, 0, 0
@@ -160,9 +161,9 @@ def print_contract():
         prior_runs = [r for r in cells[key] if r["start_kind"] == "prior"
                       and r["uncertainty_m"] not in ("", "nan", "inf")]
         if prior_runs:
-            rows.append(contract_row(key, cells[key], prior_runs))
-            fields = rows[-1].split("|")
-            total, beyond, beyond_conv = total + len(prior_runs), beyond + int(fields[4]), beyond_conv + int(fields[5])
+            text, n_beyond, n_conv = contract_row(key, cells[key], prior_runs)
+            rows.append(text)
+            total, beyond, beyond_conv = total + len(prior_runs), beyond + n_beyond, beyond_conv + n_conv
     if not rows:
         return
     print("prior contract: starts at the truth with --prior_uncertainty; beyond prior = ends farther from the")
