@@ -47,6 +47,9 @@ DEFINE_bool(motion_within_scan, false,
 DEFINE_string(car_step_m, "", "car: min,max step between scans [m] (default 1,2)");
 DEFINE_double(range_sigma_m, -1.0, "When >= 0, replaces every sensor's range noise sigma [m]");
 DEFINE_double(dropout, -1.0, "When >= 0, replaces every sensor's dropout probability");
+DEFINE_double(beam_offset_deg, 0.0,
+              "Diagnostic: when > 0, a spinning sensor's elevations shift in each scan by a "
+              "draw in [-this, this] [deg], so two scans' rings do not coincide; in [0, 10]");
 DEFINE_int32(threads, 2, "Data sets made at once, in [1, 64]");
 // clang-format on
 
@@ -117,6 +120,7 @@ bool PlanFromFlags(std::vector<SimulationOptions>* plan, std::string* error) {
   base.motion_within_scan = FLAGS_motion_within_scan;
   base.range_sigma_m = FLAGS_range_sigma_m;
   base.dropout_probability = FLAGS_dropout;
+  base.beam_offset_deg = FLAGS_beam_offset_deg;
   plan->clear();
   for (const uint64_t seed : seeds) {
     for (const std::string& scene : scenes) {

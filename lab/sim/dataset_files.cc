@@ -196,6 +196,7 @@ std::string SimulationJson(const SimDataset& dataset) {
                  {"free_translations_world", free_world}}},
                {"trajectory", TrajectoryJson(o)},
                {"motion_within_scan", o.motion_within_scan},
+               {"beam_offset_deg", o.beam_offset_deg},
                {"steps", o.steps},
                {"constraints",
                 {{"tolerance_m", c.tolerance_m},

@@ -26,6 +26,25 @@ bool MakeTrajectory(const SimulationOptions& options,
       options.handheld, scene.path, options.num_scans, seed, trajectory, error);
 }
 
+// The rays of scan k: the sensor's, with a spinning sensor's elevations
+// shifted by the scan's own draw when options.beam_offset_deg > 0.
+std::vector<SensorRay> ScanRays(const SimDataset& dataset, size_t k) {
+  const SimulationOptions& options = dataset.options;
+  const double stamp_s = dataset.trajectory.stamps_s[k];
+  if (options.beam_offset_deg <= 0.0 ||
+      dataset.sensor.pattern != ScanPattern::SPINNING) {
+    return SensorRays(dataset.sensor, stamp_s);
+  }
+  SimRandom random(options.seed, "beams:" + dataset.sensor.name, k);
+  const double offset_deg =
+      random.Uniform(-options.beam_offset_deg, options.beam_offset_deg);
+  SensorModel shifted = dataset.sensor;
+  for (double& angle_deg : shifted.spinning.vertical_angles_deg) {
+    angle_deg += offset_deg;
+  }
+  return SensorRays(shifted, stamp_s);
+}
+
 bool RenderScans(const RayCaster& caster,
                  SimDataset* dataset,
                  std::string* error) {
@@ -38,12 +57,8 @@ bool RenderScans(const RayCaster& caster,
     const uint64_t seed =
         DeriveSeed(dataset->options.seed, "scan:" + dataset->sensor.name, k);
     SimScan scan;
-    RenderScan(caster,
-               dataset->sensor,
-               SensorRays(dataset->sensor, trajectory.stamps_s[k]),
-               motion,
-               seed,
-               &scan);
+    RenderScan(
+        caster, dataset->sensor, ScanRays(*dataset, k), motion, seed, &scan);
     if (scan.points.empty()) {
       *error = "scan " + std::to_string(k) + " of " +
                SimulationName(dataset->options) + " has no point";

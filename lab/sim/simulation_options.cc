@@ -47,6 +47,10 @@ bool SimulationOptions::IsValid(std::string* error) const {
     *error = "constraints: tolerances, visibility_m and max_points must be > 0";
     return false;
   }
+  if (!(beam_offset_deg >= 0.0 && beam_offset_deg <= 10.0)) {
+    *error = "beam_offset_deg must be in [0, 10]";
+    return false;
+  }
   return car.IsValid(error) && handheld.IsValid(error);
 }
 

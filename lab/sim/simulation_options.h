@@ -43,6 +43,11 @@ struct SimulationOptions {
   // probability.
   double range_sigma_m = -1.0;
   double dropout_probability = -1.0;
+  // Diagnostic (lab/records/bias.md): when > 0, a spinning sensor's laser
+  // elevations are shifted in each scan by its own draw, uniform in
+  // [-beam_offset_deg, +beam_offset_deg], so the rings of two scans do not
+  // coincide (a real sensor's do); in [0, 10] [deg]. 0 for no shift.
+  double beam_offset_deg = 0.0;
   CarTrajectoryOptions car;
   HandheldTrajectoryOptions handheld;
   PairConstraintOptions constraints;

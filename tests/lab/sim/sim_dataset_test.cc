@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -165,6 +166,45 @@ TEST(SimDataset, RefusesAFolderThatIsNotASimulatedSet) {
   EXPECT_EQ(ReadBytes(dir + "/notes.txt"), "keep me");
 }
 
+// Elevation of every point of laser `channel` in scan `k` [deg].
+std::vector<double> ChannelElevationsDeg(const SimDataset& dataset,
+                                         size_t k,
+                                         int channel) {
+  std::vector<double> elevations;
+  const SimScan& scan = dataset.scans.at(k);
+  for (size_t i = 0; i < scan.points.size(); ++i) {
+    if (scan.channels[i] != channel) continue;
+    const Vector3d& p = scan.points[i];
+    elevations.push_back(std::atan2(p.z(), p.head<2>().norm()) * 180.0 / M_PI);
+  }
+  return elevations;
+}
+
+TEST(SimDataset, BeamOffsetShiftsEachScansRingsAndNothingElse) {
+  SimulationOptions options = Small("vlp16", "street", 2);
+  SimDataset plain, shifted;
+  std::string error;
+  ASSERT_TRUE(MakeSimDataset(options, &plain, &error)) << error;
+  options.beam_offset_deg = 1.0;
+  ASSERT_TRUE(MakeSimDataset(options, &shifted, &error)) << error;
+  std::vector<double> offsets_deg;
+  for (size_t k = 0; k < plain.scans.size(); ++k) {
+    EXPECT_TRUE(shifted.trajectory.world_from_sensor[k].isApprox(
+        plain.trajectory.world_from_sensor[k], 0.0));
+    // The VLP-16's lowest laser is at -15 deg; the noise is along the ray.
+    for (const double e : ChannelElevationsDeg(plain, k, 0)) {
+      ASSERT_NEAR(e, -15.0, 1e-6);
+    }
+    const std::vector<double> e = ChannelElevationsDeg(shifted, k, 0);
+    ASSERT_FALSE(e.empty());
+    for (const double v : e) ASSERT_NEAR(v, e.front(), 1e-6);
+    offsets_deg.push_back(e.front() + 15.0);
+    EXPECT_LE(std::abs(offsets_deg.back()), 1.0);
+    EXPECT_GT(std::abs(offsets_deg.back()), 1e-6);
+  }
+  EXPECT_GT(std::abs(offsets_deg[0] - offsets_deg[1]), 1e-6);
+}
+
 TEST(SimDataset, BadOptionsAreRefused) {
   SimDataset dataset;
   std::string error;
@@ -180,6 +220,10 @@ TEST(SimDataset, BadOptionsAreRefused) {
   options = Small("vlp16", "street", 1);
   options.trajectory = "bicycle";
   EXPECT_FALSE(MakeSimDataset(options, &dataset, &error));
+  options = Small("vlp16", "street", 1);
+  options.beam_offset_deg = 11.0;
+  EXPECT_FALSE(MakeSimDataset(options, &dataset, &error));
+  EXPECT_NE(error.find("beam_offset_deg"), std::string::npos);
 }
 
 }  // namespace
