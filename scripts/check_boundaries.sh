@@ -31,15 +31,21 @@ forbid() {
 forbid mlndt 'lab/|tools/' "the lab or the tools (mlndt <- lab <- tools)"
 # The library's layers: "name folders... [DEPENDS layers...]" per line.
 declare -A layer_folders layer_depends
+layers=()
 while read -r name rest; do
+  layers+=("$name")
   layer_folders[$name]="${rest%% DEPENDS*}"
   [[ $rest == *" DEPENDS "* ]] && layer_depends[$name]="${rest#* DEPENDS }"
 done < <(sed -nE 's/^mlndt_add_layer\(([a-z_]+) FOLDERS (.*)\)$/\1 \2/p' CMakeLists.txt)
-for name in "${!layer_folders[@]}"; do
+if ((${#layers[@]} == 0)); then
+  echo "check_boundaries: no mlndt_add_layer(NAME FOLDERS ...) line in CMakeLists.txt" >&2
+  status=1
+fi
+for name in "${layers[@]}"; do
   allowed=" ${layer_folders[$name]} "
   for below in ${layer_depends[$name]:-}; do allowed+="${layer_folders[$below]} "; done
   above=()
-  for other in "${!layer_folders[@]}"; do
+  for other in "${layers[@]}"; do
     for folder in ${layer_folders[$other]}; do
       [[ $allowed == *" $folder "* ]] || above+=("$folder")
     done
@@ -74,6 +80,6 @@ if [[ -n $hits ]]; then
 fi
 
 if ((status == 0)); then
-  echo "check_boundaries: mlndt's layers (${!layer_folders[*]}), mlndt <- lab <- tools, python/ -> mlndt, lab/python -> lab: ok"
+  echo "check_boundaries: mlndt's layers ${layers[*]}, mlndt <- lab <- tools, python/ -> mlndt, lab/python -> lab: ok"
 fi
 exit $status
