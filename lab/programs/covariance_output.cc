@@ -7,7 +7,7 @@
 #include "tools/cli/list_flags.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 namespace {
 
 // Translation [m] and angles [deg] of a pose-vector quantity, for printing.
@@ -18,21 +18,21 @@ std::vector<double> InDegrees(const Vector6d& v) {
 
 }  // namespace
 
-Json ConsistencyJson(const Consistency& c) {
+tools::Json ConsistencyJson(const Consistency& c) {
   const auto numbers = [](const std::vector<double>& values) {
-    Json array = Json::array();
-    for (const double v : values) array.push_back(Number(v));
+    tools::Json array = tools::Json::array();
+    for (const double v : values) array.push_back(tools::Number(v));
     return array;
   };
   return {{"runs", c.runs},
-          {"nees_about_mean", Number(c.nees_mean)},
-          {"nees_about_mean_expected", Number(c.nees_mean_expected)},
-          {"k_spread", Number(c.k_spread())},
-          {"nees_about_reference", Number(c.nees_reference)},
-          {"k_reference", Number(c.k_reference())},
-          {"sigma2", Number(c.sigma2)},
-          {"k_spread_sigma2", Number(c.k_spread_sigma2())},
-          {"k_reference_sigma2", Number(c.k_reference_sigma2())},
+          {"nees_about_mean", tools::Number(c.nees_mean)},
+          {"nees_about_mean_expected", tools::Number(c.nees_mean_expected)},
+          {"k_spread", tools::Number(c.k_spread())},
+          {"nees_about_reference", tools::Number(c.nees_reference)},
+          {"k_reference", tools::Number(c.k_reference())},
+          {"sigma2", tools::Number(c.sigma2)},
+          {"k_spread_sigma2", tools::Number(c.k_spread_sigma2())},
+          {"k_reference_sigma2", tools::Number(c.k_reference_sigma2())},
           {"spread_std_m_deg", numbers(InDegrees(c.spread_std))},
           {"predicted_std_m_deg", numbers(InDegrees(c.predicted_std))},
           {"bias_m_deg", numbers(InDegrees(c.bias))}};
@@ -80,7 +80,7 @@ void PrintRow(const std::string& label, const Consistency& c) {
 bool ParseCovarianceDatasets(const std::string& text,
                              std::vector<std::string>* datasets,
                              std::string* error) {
-  if (!SplitList(text, datasets)) {
+  if (!tools::SplitList(text, datasets)) {
     *error = "--datasets: expected a comma-separated list of kitti, koide3";
     return false;
   }
@@ -123,8 +123,8 @@ void AppendCovarianceCsvRow(const PairRuns& pair,
 
 void ReportConsistency(const std::vector<std::string>& datasets,
                        const std::vector<PairRuns>& pairs,
-                       Json* json) {
-  Json pair_list = Json::array();
+                       tools::Json* json) {
+  tools::Json pair_list = tools::Json::array();
   for (const std::string& dataset : datasets) {
     Consistency pooled;
     int failures = 0, outliers = 0;
@@ -153,5 +153,5 @@ void ReportConsistency(const std::vector<std::string>& datasets,
   (*json)["pairs"] = pair_list;
 }
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

@@ -13,10 +13,10 @@
 #include "tools/cli/json_output.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 
 // The consistency as JSON, standard deviations in m and deg.
-Json ConsistencyJson(const Consistency& c);
+tools::Json ConsistencyJson(const Consistency& c);
 
 // Three lines of the stdout report, headed by `label`.
 void PrintRow(const std::string& label, const Consistency& c);
@@ -42,7 +42,7 @@ void AppendCovarianceCsvRow(const PairRuns& pair,
 // them to *json ("pairs", and one member per data set).
 void ReportConsistency(const std::vector<std::string>& datasets,
                        const std::vector<PairRuns>& pairs,
-                       Json* json);
+                       tools::Json* json);
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

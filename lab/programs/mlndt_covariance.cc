@@ -101,7 +101,7 @@ bool RunPair(const RegistrationOptions& options,
                                    std::to_string(k + 1) + " " +
                                    TerminationTypeToString(s.termination_type));
     if (campaign->csv != nullptr) {
-      tools::AppendCovarianceCsvRow(*pair, k, s, usable, campaign->csv);
+      lab::AppendCovarianceCsvRow(*pair, k, s, usable, campaign->csv);
     }
   };
   return RunCovariancePair(settings,
@@ -183,18 +183,18 @@ int Main() {
   if (!tools::RegistrationOptionsFromFlags(&options, &error))
     return tools::Refuse(kTool, error);
   std::vector<std::string> datasets;
-  if (!tools::ParseCovarianceDatasets(FLAGS_datasets, &datasets, &error) ||
+  if (!lab::ParseCovarianceDatasets(FLAGS_datasets, &datasets, &error) ||
       !tools::CheckOutputFile("output_json", FLAGS_output_json, &error) ||
       !tools::CheckOutputFile("output_csv", FLAGS_output_csv, &error)) {
     return tools::Refuse(kTool, error);
   }
   std::ostringstream csv;
   if (!FLAGS_output_csv.empty()) {
-    csv << tools::CovarianceCsvHeader();
+    csv << lab::CovarianceCsvHeader();
   }
   std::mt19937_64 rng(FLAGS_perturbation_seed);
   Progress progress("mlndt_covariance",
-                    tools::CovarianceRegistrations(datasets, FLAGS_starts));
+                    lab::CovarianceRegistrations(datasets, FLAGS_starts));
   Campaign campaign{&rng, FLAGS_output_csv.empty() ? nullptr : &csv, &progress};
   std::vector<PairRuns> pairs;
   for (const std::string& dataset : datasets) {
@@ -214,7 +214,7 @@ int Main() {
   json["max_translation_m"] = FLAGS_max_translation;
   json["max_rotation_deg"] = FLAGS_max_rotation;
   json["vary_sampling_seed"] = FLAGS_vary_sampling_seed;
-  tools::ReportConsistency(datasets, pairs, &json);
+  lab::ReportConsistency(datasets, pairs, &json);
   if (!FLAGS_output_json.empty() &&
       !tools::WriteJsonFile(FLAGS_output_json, json, &error)) {
     return tools::Fail(kTool, error);

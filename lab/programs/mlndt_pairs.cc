@@ -128,20 +128,20 @@ int Run() {
       return tools::Refuse(kTool, error);
   }
   std::ostringstream csv;
-  if (!FLAGS_output_csv.empty()) csv << tools::PairsCsvHeader();
-  tools::PrintPairsHeader();
+  if (!FLAGS_output_csv.empty()) csv << lab::PairsCsvHeader();
+  lab::PrintPairsHeader();
   GapPairsOptions pairs;
   pairs.gaps = gaps;
   pairs.perturbations = perturbations;
   pairs.max_translation_error_m = FLAGS_max_translation_error;
   pairs.max_rotation_error_deg = FLAGS_max_rotation_error;
-  tools::PairsTally tally;
+  lab::PairsTally tally;
   RunGapPairs(pairs, options, scans, poses, [&](const GapPairRun& run) {
     tally.Add(run);
-    tools::PrintPairRow(run);
-    if (!FLAGS_output_csv.empty()) tools::AppendPairCsvRow(run, &csv);
+    lab::PrintPairRow(run);
+    if (!FLAGS_output_csv.empty()) lab::AppendPairCsvRow(run, &csv);
   });
-  tools::PrintPairsTally(tally);
+  lab::PrintPairsTally(tally);
   if (!FLAGS_output_csv.empty() &&
       !WriteFileAtomically(FLAGS_output_csv, csv.str(), &error)) {
     return tools::Fail(kTool, error);

@@ -210,15 +210,15 @@ int Run() {
                              FLAGS_motion,
                              FLAGS_repetitions)
                   .c_str());
-  tools::PrintScalingTable(results);
-  const std::vector<double> slopes = tools::PrintScalingSlopes(sizes, results);
+  lab::PrintScalingTable(results);
+  const std::vector<double> slopes = lab::PrintScalingSlopes(sizes, results);
   if (!FLAGS_output_dir.empty()) {
     const int code = WriteOutputs(options, results, slopes, gnuplot_ok);
     if (code != 0) return code;
   }
   for (const SizeResult& r : results) {
     if (!r.ok) {
-      tools::PrintBrokenSolves(
+      lab::PrintBrokenSolves(
           results, FLAGS_max_translation_error, FLAGS_max_rotation_error);
       return tools::Fail(kTool,
                          "the solve did not recover --motion at every size: "

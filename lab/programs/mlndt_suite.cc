@@ -92,31 +92,31 @@ struct SuiteConfig {
 };
 
 bool ParseStarts(SuitePlanOptions* plan, std::string* error) {
-  if (!tools::ParseStartList(FLAGS_starts, &plan->starts, error)) {
+  if (!lab::ParseStartList(FLAGS_starts, &plan->starts, error)) {
     return false;
   }
-  if (tools::HasStart(*plan, StartKind::OFFSETS) &&
+  if (lab::HasStart(*plan, StartKind::OFFSETS) &&
       !ParseStartOffsets(FLAGS_offsets, &plan->offsets, error)) {
     *error = "--offsets: " + *error;
     return false;
   }
-  return tools::RefuseUnusedStartFlags(*plan, FLAGS_prior_uncertainty, error);
+  return lab::RefuseUnusedStartFlags(*plan, FLAGS_prior_uncertainty, error);
 }
 
 // The numeric plan flags, each checked under its own name.
 bool ParseNumbers(SuitePlanOptions* plan, std::string* error) {
   StartUncertainty& prior = plan->prior_uncertainty;
-  if (!tools::ParseBound("perturb",
-                         FLAGS_perturb,
-                         &plan->perturb_translation_m,
-                         &plan->perturb_rotation_deg,
-                         error) ||
+  if (!lab::ParseBound("perturb",
+                       FLAGS_perturb,
+                       &plan->perturb_translation_m,
+                       &plan->perturb_rotation_deg,
+                       error) ||
       (!FLAGS_prior_uncertainty.empty() &&
-       !tools::ParseBound("prior_uncertainty",
-                          FLAGS_prior_uncertainty,
-                          &prior.translation_m,
-                          &prior.rotation_deg,
-                          error))) {
+       !lab::ParseBound("prior_uncertainty",
+                        FLAGS_prior_uncertainty,
+                        &prior.translation_m,
+                        &prior.rotation_deg,
+                        error))) {
     return false;
   }
   prior.given = !FLAGS_prior_uncertainty.empty();
@@ -126,7 +126,7 @@ bool ParseNumbers(SuitePlanOptions* plan, std::string* error) {
     return false;
   }
   plan->steps.assign(steps.begin(), steps.end());
-  return tools::CheckSuitePlanBounds(*plan, error) &&
+  return lab::CheckSuitePlanBounds(*plan, error) &&
          tools::SuitePlanFlags().Apply(plan, error);
 }
 
@@ -144,15 +144,15 @@ bool ParseConfig(SuiteConfig* config, std::string* error) {
     *error = "--datasets is required (DIR[:tol_m:tol_deg],...)";
     return false;
   }
-  if (!tools::ParseSuiteDatasets(
+  if (!lab::ParseSuiteDatasets(
           FLAGS_datasets, FLAGS_data_dir, &config->datasets, error) ||
       !ParsePlan(&config->plan, error) ||
       !tools::MatcherOptionsFromFlags(&config->matcher, error) ||
-      !tools::CheckSuiteOutputFlags(FLAGS_reach_share,
-                                    FLAGS_plot,
-                                    FLAGS_output_dir,
-                                    FLAGS_gnuplot,
-                                    error)) {
+      !lab::CheckSuiteOutputFlags(FLAGS_reach_share,
+                                  FLAGS_plot,
+                                  FLAGS_output_dir,
+                                  FLAGS_gnuplot,
+                                  error)) {
     return false;
   }
   if (config->matcher.method == Method::NDT &&
@@ -173,8 +173,7 @@ int Run() {
   std::string error;
   if (!ParseConfig(&config, &error)) return tools::Refuse(kTool, error);
   std::vector<LoadedSuiteDataset> loaded;
-  if (!tools::LoadSuiteDatasets(
-          config.datasets, config.plan, &loaded, &error)) {
+  if (!lab::LoadSuiteDatasets(config.datasets, config.plan, &loaded, &error)) {
     return tools::Refuse(kTool, error);
   }
   if (!FLAGS_output_dir.empty() &&
@@ -195,7 +194,7 @@ int Run() {
   size_t runs = 0;
   const SuiteScore score =
       ScoreLoadedSuite(loaded, results, config.plan, FLAGS_reach_share, &runs);
-  tools::SuiteRunInfo info;
+  lab::SuiteRunInfo info;
   info.method = MethodToString(config.matcher.method);
   info.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -206,7 +205,7 @@ int Run() {
   const bool mlndt = config.matcher.method == Method::MLNDT &&
                      config.matcher.mlndt.quality_check.enabled;
   if (!FLAGS_output_dir.empty() &&
-      !tools::WriteSuiteOutputs(
+      !lab::WriteSuiteOutputs(
           FLAGS_output_dir,
           loaded,
           results,

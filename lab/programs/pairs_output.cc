@@ -6,7 +6,7 @@
 #include "lab/eval/statistics.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 
 void PairsTally::Add(const GapPairRun& run) {
   ++total;
@@ -64,5 +64,5 @@ void PrintPairsTally(const PairsTally& tally) {
   std::printf("verdicts: %s\n", tally.verdicts.Line().c_str());
 }
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

@@ -10,7 +10,7 @@
 #include "lab/experiments/gap_pairs.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 
 // The totals of a run so far: counts, times and verdicts.
 struct PairsTally {
@@ -32,5 +32,5 @@ void AppendPairCsvRow(const GapPairRun& run, std::ostringstream* csv);
 // "success: s / n (p %), median time t ms" and the verdicts line.
 void PrintPairsTally(const PairsTally& tally);
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

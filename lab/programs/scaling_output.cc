@@ -7,7 +7,7 @@
 #include "lab/experiments/scaling_report.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 
 void PrintScalingTable(const std::vector<SizeResult>& results) {
   std::printf("%s", ScalingTableText(results).c_str());
@@ -29,5 +29,5 @@ void PrintBrokenSolves(const std::vector<SizeResult>& results,
   }
 }
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

@@ -9,7 +9,7 @@
 #include "lab/experiments/scaling_measure.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 
 // The markdown table of the sizes on stdout.
 void PrintScalingTable(const std::vector<SizeResult>& results);
@@ -25,5 +25,5 @@ void PrintBrokenSolves(const std::vector<SizeResult>& results,
                        double max_translation_error_m,
                        double max_rotation_error_deg);
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

@@ -9,7 +9,7 @@
 #include "tools/cli/list_flags.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 namespace {
 
 namespace fs = std::filesystem;
@@ -26,8 +26,9 @@ bool ParseDataset(const std::string& item,
     const std::string rest = item.substr(colon + 1);
     std::string numbers = rest;
     for (char& c : numbers) c = c == ':' ? ',' : c;
-    if (!ParseNumberList(numbers, &tolerances) || tolerances.size() != 2 ||
-        !(tolerances[0] > 0.0) || !(tolerances[1] > 0.0)) {
+    if (!tools::ParseNumberList(numbers, &tolerances) ||
+        tolerances.size() != 2 || !(tolerances[0] > 0.0) ||
+        !(tolerances[1] > 0.0)) {
       *error = "--datasets item '" + item +
                "': expected DIR or DIR:tol_m:tol_deg with tolerances > 0";
       return false;
@@ -60,7 +61,7 @@ bool ParseSuiteDatasets(const std::string& text,
     return false;
   }
   std::vector<std::string> items;
-  if (!SplitList(text, &items)) {
+  if (!tools::SplitList(text, &items)) {
     *error = "--datasets='" + text +
              "': expected DIR[:tol_m:tol_deg],... (no empty item)";
     return false;
@@ -95,10 +96,10 @@ bool RefuseUnusedStartFlags(const SuitePlanOptions& plan,
   for (const auto& [kind, names] : flags) {
     const std::string reason =
         std::string("needs ") + StartKindToString(kind) + " in --starts";
-    if (!HasStart(plan, kind) && !RefuseGivenFlags(names, reason, error))
+    if (!HasStart(plan, kind) && !tools::RefuseGivenFlags(names, reason, error))
       return false;
   }
-  if (FlagGiven("initial_uncertainty") &&
+  if (tools::FlagGiven("initial_uncertainty") &&
       (HasStart(plan, StartKind::PERTURBED) || !prior_uncertainty.empty())) {
     *error =
         "--initial_uncertainty would be overridden by the start's own (the "
@@ -114,7 +115,7 @@ bool ParseBound(const char* flag,
                 double* rotation_deg,
                 std::string* error) {
   std::vector<double> v;
-  if (!ParseNumberList(text, &v) || v.size() != 2) {
+  if (!tools::ParseNumberList(text, &v) || v.size() != 2) {
     *error = std::string("--") + flag + "=" + text +
              ": expected translation_m,rotation_deg";
     return false;
@@ -173,7 +174,7 @@ bool CheckSuiteOutputFlags(double reach_share,
     *error = "--plot needs --output_dir";
     return false;
   }
-  if (!plot && !RefuseGivenFlags({"gnuplot"}, "needs --plot", error)) {
+  if (!plot && !tools::RefuseGivenFlags({"gnuplot"}, "needs --plot", error)) {
     return false;
   }
   if (plot && !GnuplotAvailable(gnuplot)) {
@@ -189,7 +190,7 @@ bool ParseStartList(const std::string& text,
                     std::string* error) {
   std::vector<std::string> items;
   starts->clear();
-  if (!SplitList(text, &items)) {
+  if (!tools::SplitList(text, &items)) {
     *error = "--starts='" + text + "': expected a comma-separated list";
     return false;
   }
@@ -206,5 +207,5 @@ bool ParseStartList(const std::string& text,
   return true;
 }
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

@@ -12,7 +12,7 @@
 #include "lab/eval/suite_plan.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 
 // Parses "DIR[:tol_m:tol_deg],..." (the default tolerance is
 // SuccessCriterion's). A relative DIR is taken inside `data_dir` when that
@@ -66,5 +66,5 @@ bool ParseStartList(const std::string& text,
                     std::vector<StartKind>* starts,
                     std::string* error);
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

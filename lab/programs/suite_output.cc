@@ -13,7 +13,7 @@
 #include "mlndt/common/pose.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 namespace {
 
 std::string CsvRow(const LoadedSuiteDataset& dataset,
@@ -69,8 +69,8 @@ std::string CsvRow(const LoadedSuiteDataset& dataset,
   return line + "\n";
 }
 
-Json ConfusionJson(const ConfusionTable& c) {
-  Json counts = Json::object();
+tools::Json ConfusionJson(const ConfusionTable& c) {
+  tools::Json counts = tools::Json::object();
   for (const TerminationType type : c.types) {
     counts[TerminationTypeToString(type)] = {{"right", c.Count(true, type)},
                                              {"wrong", c.Count(false, type)}};
@@ -78,15 +78,15 @@ Json ConfusionJson(const ConfusionTable& c) {
   return {{"counts", counts},
           {"runs", c.total()},
           {"right", c.total_right()},
-          {"success", Number(c.Success())},
-          {"precision", Number(c.Precision())},
-          {"recall", Number(c.Recall())},
-          {"usable_precision", Number(c.UsablePrecision())},
-          {"usable_recall", Number(c.UsableRecall())}};
+          {"success", tools::Number(c.Success())},
+          {"precision", tools::Number(c.Precision())},
+          {"recall", tools::Number(c.Recall())},
+          {"usable_precision", tools::Number(c.UsablePrecision())},
+          {"usable_recall", tools::Number(c.UsableRecall())}};
 }
 
-Json StartsJson(const SuiteScore& score) {
-  Json rows = Json::array();
+tools::Json StartsJson(const SuiteScore& score) {
+  tools::Json rows = tools::Json::array();
   for (const SuiteStartRow& r : score.by_start) {
     rows.push_back({{"dataset", score.datasets.at(r.dataset)},
                     {"start", StartKindToString(r.kind)},
@@ -99,29 +99,29 @@ Json StartsJson(const SuiteScore& score) {
   return rows;
 }
 
-Json AccuracyJson(const SuiteScore& score) {
-  Json rows = Json::array();
+tools::Json AccuracyJson(const SuiteScore& score) {
+  tools::Json rows = tools::Json::array();
   for (const SuiteAccuracyRow& r : score.accuracy) {
     rows.push_back({{"dataset", score.datasets.at(r.dataset)},
                     {"start", StartKindToString(r.kind)},
                     {"right", r.right},
-                    {"rms_translation_m", Number(r.rms_translation_m)},
-                    {"mean_along_track_m", Number(r.mean_along_track_m)},
-                    {"rms_rotation_deg", Number(r.rms_rotation_deg)},
-                    {"median_time_ms", Number(r.median_time_ms)}});
+                    {"rms_translation_m", tools::Number(r.rms_translation_m)},
+                    {"mean_along_track_m", tools::Number(r.mean_along_track_m)},
+                    {"rms_rotation_deg", tools::Number(r.rms_rotation_deg)},
+                    {"median_time_ms", tools::Number(r.median_time_ms)}});
   }
   return rows;
 }
 
-Json ShareJson(const SuiteShare& share) {
+tools::Json ShareJson(const SuiteShare& share) {
   return {{"runs", share.runs}, {"right", share.right}};
 }
 
-Json ReachJson(const SuiteScore& score) {
-  Json rows = Json::array();
+tools::Json ReachJson(const SuiteScore& score) {
+  tools::Json rows = tools::Json::array();
   for (const SuiteReachRow& r : score.reach) {
     const StartOffset& offset = score.offsets.at(size_t(r.offset_index));
-    Json per_dataset = Json::object();
+    tools::Json per_dataset = tools::Json::object();
     for (size_t d = 0; d < r.per_dataset.size(); ++d) {
       per_dataset[score.datasets[d]] = ShareJson(r.per_dataset[d]);
     }
@@ -131,13 +131,13 @@ Json ReachJson(const SuiteScore& score) {
                     {"all", ShareJson(r.all)}});
   }
   // The label of the reach: "none" (-1), null (not measured) or an offset.
-  const auto label = [&](int reach) -> Json {
-    if (reach < 0) return reach == -1 ? Json("none") : Json();
+  const auto label = [&](int reach) -> tools::Json {
+    if (reach < 0) return reach == -1 ? tools::Json("none") : tools::Json();
     return score.offsets.at(size_t(reach)).label;
   };
-  Json families = Json::array();
+  tools::Json families = tools::Json::array();
   for (const SuiteFamilyReach& f : score.family_reach) {
-    Json per_dataset = Json::object();
+    tools::Json per_dataset = tools::Json::object();
     for (size_t d = 0; d < f.per_dataset.size(); ++d) {
       per_dataset[score.datasets[d]] = label(f.per_dataset[d]);
     }
@@ -145,7 +145,7 @@ Json ReachJson(const SuiteScore& score) {
                         {"datasets", per_dataset},
                         {"all", label(f.all)}});
   }
-  return {{"share", Number(score.reach_share)},
+  return {{"share", tools::Number(score.reach_share)},
           {"offsets", rows},
           {"families", families}};
 }
@@ -179,10 +179,11 @@ bool WriteSuiteRunsCsv(const std::string& path,
   return WriteFileAtomically(path, out.str(), error);
 }
 
-Json SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info) {
-  Json json = ToolJson("mlndt_suite");
+tools::Json SuiteSummaryJson(const SuiteScore& score,
+                             const SuiteRunInfo& info) {
+  tools::Json json = tools::ToolJson("mlndt_suite");
   json["method"] = info.method;
-  json["time_ms"] = {{"total", Number(info.wall_time_s * 1e3)}};
+  json["time_ms"] = {{"total", tools::Number(info.wall_time_s * 1e3)}};
   json["datasets"] = score.datasets;
   json["confusion"] = ConfusionJson(score.confusion);
   json["by_start"] = StartsJson(score);
@@ -202,7 +203,7 @@ bool WriteSuiteOutputs(const std::string& dir,
                        const QualityCheckOptions* quality_check,
                        std::string* error) {
   if (!WriteSuiteRunsCsv(dir + "/runs.csv", loaded, results, error) ||
-      !WriteJsonFile(
+      !tools::WriteJsonFile(
           dir + "/summary.json", SuiteSummaryJson(score, info), error)) {
     return false;
   }
@@ -218,5 +219,5 @@ bool WriteSuiteOutputs(const std::string& dir,
   return true;
 }
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

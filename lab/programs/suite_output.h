@@ -13,7 +13,7 @@
 #include "tools/cli/json_output.h"
 
 namespace mlndt {
-namespace tools {
+namespace lab {
 
 // The header of runs.csv (its columns, in order).
 std::string SuiteRunsCsvHeader();
@@ -34,7 +34,7 @@ struct SuiteRunInfo {
 
 // summary.json (docs/json_schema.md, "mlndt_suite"): the schema header, then
 // the scored tables.
-Json SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info);
+tools::Json SuiteSummaryJson(const SuiteScore& score, const SuiteRunInfo& info);
 
 // runs.csv and summary.json into `dir`, with `plot` quality.png
 // (WriteSuiteQualityPlot, lab/report/suite_quality_plot.h; `quality_check`
@@ -50,5 +50,5 @@ bool WriteSuiteOutputs(const std::string& dir,
                        const QualityCheckOptions* quality_check,
                        std::string* error);
 
-}  // namespace tools
+}  // namespace lab
 }  // namespace mlndt

@@ -134,16 +134,11 @@ void ExitOnBadFlags(const std::string& tool, int argc, char** argv) {
 
 // Whose program `tool` is: true for the lab's programs (lab/programs/,
 // built but not installed), false for the product's tools (tools/,
-// installed).
+// installed). MLNDT_LAB_DRIVERS: their names, separated by spaces
+// (lab/programs/CMakeLists.txt's list, the only one).
 bool IsLabProgram(const std::string& tool) {
-  static const std::set<std::string> kLabPrograms = {"mlndt_suite",
-                                                     "mlndt_bench",
-                                                     "mlndt_experiments",
-                                                     "mlndt_scaling",
-                                                     "mlndt_covariance",
-                                                     "mlndt_gt_check",
-                                                     "mlndt_pairs"};
-  return kLabPrograms.count(tool) > 0;
+  const std::string names = std::string(" ") + MLNDT_LAB_DRIVERS + " ";
+  return names.find(" " + tool + " ") != std::string::npos;
 }
 
 // "mlndt <PROJECT_VERSION>".
