@@ -37,8 +37,9 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/layered_grid.h"
-#include "tools/cli/grid_flags.h"
+#include "tools/cli/flag_utils.h"
 #include "tools/cli/json_output.h"
+#include "tools/cli/option_flags.h"
 #include "tools/cli/tool_main.h"
 
 DEFINE_bool(layers,
@@ -54,16 +55,64 @@ void PrintError(const std::string& message) {
   std::cerr << kToolName << ": " << message << std::endl;
 }
 
+bool IsGridFlag(const tools::OptionFlag& flag) {
+  return flag.mlndt_path.rfind("grid.", 0) == 0;
+}
+
+// The shared flags of LayeredGridOptions' fields (`grid`), or of every
+// other option (hidden from --help and refused).
+std::vector<std::string> SharedFlags(bool grid) {
+  std::vector<std::string> flags;
+  for (const tools::OptionFlag& flag : tools::OptionFlags()) {
+    if (IsGridFlag(flag) == grid) flags.push_back(flag.name);
+  }
+  return flags;
+}
+
+// Makes `base` the grid flags' defaults (their --help shows them).
+void SetGridFlagDefaults(const LayeredGridOptions& base) {
+  for (const tools::OptionFlag& flag : tools::OptionFlags()) {
+    if (!IsGridFlag(flag)) continue;
+    const void* owner = nullptr;
+    const OptionField* field = LayeredGridOptionsTable().FindPath(
+        flag.mlndt_path.substr(std::string("grid.").size()), &base, &owner);
+    gflags::SetCommandLineOptionWithMode(flag.name.c_str(),
+                                         field->Format(owner).c_str(),
+                                         gflags::SET_FLAGS_DEFAULT);
+  }
+}
+
 // Map options (the paper's, n = 4) from the shared grid flags given;
-// false with *error for bad or contradictory flags.
-bool GridOptionsFromFlags(LayeredGridOptions* options, std::string* error) {
-  if (!FLAGS_layers && tools::GridFlagsGiven()) {
-    *error =
-        "--num_layers, --division_constant, --finest_cell_size_m, "
-        "--min_points_per_cell and the other map flags need --layers";
+// false with *error for bad or contradictory flags, or any other shared
+// flag.
+bool GridOptionsFromFlags(LayeredGridOptions* grid, std::string* error) {
+  for (const std::string& flag : SharedFlags(/*grid=*/true)) {
+    if (!FLAGS_layers && tools::FlagGiven(flag)) {
+      *error =
+          "--num_layers, --division_constant, --finest_cell_size_m, "
+          "--min_points_per_cell and the other map flags need --layers";
+      return false;
+    }
+  }
+  if (!tools::RefuseGivenFlags(SharedFlags(/*grid=*/false),
+                               std::string("does not apply to ") + kToolName +
+                                   " (it reads only the map's flags)",
+                               error) ||
+      !tools::ApplyGivenFlags(
+          LayeredGridOptionsTable(), "grid.", false, grid, error)) {
     return false;
   }
-  return tools::ApplyGridFlags(kToolName, options, error);
+  if (tools::FlagGiven("num_layers") && grid->finest_cell_size_m > 0.0) {
+    *error = "give --num_layers or " +
+             tools::GivenFlagName("finest_cell_size_m") + ", not both";
+    return false;
+  }
+  std::string why;
+  if (!grid->IsValid(&why)) {
+    *error = "invalid map options: " + why;
+    return false;
+  }
+  return true;
 }
 
 tools::Json PointJson(const Eigen::Vector3d& point) {
@@ -162,8 +211,8 @@ int main(int argc, char** argv) {
       "Exit 2 when a FILE is missing or cannot be opened (before any is "
       "described), 1 when one cannot be parsed or its map cannot be built "
       "(the others are still described).";
-  mlndt::tools::HideFlagsFromHelp(mlndt::tools::NonGridFlags());
-  mlndt::tools::SetGridFlagDefaults(mlndt::PaperLayeredGridOptions());
+  mlndt::tools::HideFlagsFromHelp(mlndt::SharedFlags(/*grid=*/false));
+  mlndt::SetGridFlagDefaults(mlndt::PaperLayeredGridOptions());
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

@@ -10,37 +10,23 @@
 //                  [--motion_model=constant_velocity|constant_pose]
 //                  [--plots=false] [any registration flag of mlndt_align]
 //
-// The first scan starts from --initial_guess (metres and degrees, R = Rx Ry
-// Rz), --initial_matrix (12 numbers, row-major 3x4) or the first pose of
-// --initial_poses (KITTI or TUM; with --poses_are_camera --calib KITTI camera
-// poses), else the identity; map_from_scan. Each next scan starts from the
-// previous pose moved by the last relative motion (constant velocity), after
-// an unusable scan from the last usable pose, its uncertainty grown
-// (Localizer in mlndt/pipeline/localizer.h). With --guesses=FILE (TUM) every
-// scan starts from its own guess, matched by stamp (localize_guesses.h). The
-// map and the current scan are the only clouds in memory.
-//
-// Scans come from a folder, a --scan_list or a ROS 1 bag's PointCloud2
-// topic (tools/cli/scan_input.h).
+// The first scan starts from --initial_guess (m, deg, R = Rx Ry Rz),
+// --initial_matrix (row-major 3x4) or the first pose of --initial_poses,
+// else the identity (map_from_scan); each next one from the prediction
+// (Localizer, mlndt/pipeline/localizer.h). With --guesses=FILE (TUM) every
+// scan starts from its own guess, matched by stamp (localize_guesses.h).
 //
 // Writes into --output_dir: trajectory_kitti.txt and trajectory_tum.txt
-// (map_from_scan of every scan; TUM time stamps are the bag's header stamps
-// or the --times file's, else the scan indices, as the file's first line
-// says),
-// scans.csv and scans.json (per scan: every field of LocalizationResult and
-// its registration's summary, from LocalizationResultTable), summary.json,
-// and with --plots (default) the top view trajectory_xy.png of the map's
-// finest cells (subsampled to --plot_max_cells) and the trajectory
-// (gnuplot; data and script in plot_data/). The summary counts the scans by
-// verdict (CONVERGENCE, NO_CONVERGENCE, LOW_QUALITY, DEGENERATE, FAILURE);
-// only CONVERGENCE and NO_CONVERGENCE are usable (IsUsableTermination), the
-// others keep their prediction as their pose.
+// (map_from_scan; TUM stamps as the file's first line says), scans.csv and
+// scans.json (LocalizationResultTable), summary.json, and with --plots
+// (default) the top view trajectory_xy.png of the map's finest cells
+// (subsampled to --plot_max_cells) and the trajectory (gnuplot; data and
+// script in plot_data/). The summary counts the scans by verdict; a scan
+// whose verdict is not usable (IsUsableTermination) keeps its prediction.
 //
-// Exit codes: 2 on a bad flag or input refused before any work; 1 when any
-// scan's result is not usable (every file is still written), a scan cannot
-// be read, an output cannot be written, or plots were requested but
-// gnuplot is missing (the other files are still written); 0 when every
-// scan has a usable pose.
+// Exit codes: 2 on input refused before any work; 1 when a scan's result
+// is not usable, a scan cannot be read, an output cannot be written or
+// gnuplot is missing for --plots (the other files are still written).
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -57,6 +43,7 @@
 #include "tools/cli/output_files.h"
 #include "tools/cli/output_set.h"
 #include "tools/cli/pose_flags.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/scan_input.h"
 #include "tools/cli/tool_main.h"
@@ -87,9 +74,12 @@ namespace {
 
 constexpr char kTool[] = "mlndt_localize";
 
-// Every flag is checked here, before the map or any scan is read.
+// Every flag is checked and the guesses read here, before the map or any
+// scan is read.
 bool CheckFlags(LocalizerOptions* options,
                 tools::ScanInput* input,
+                Isometry3d* first_guess,
+                std::vector<Isometry3d>* guesses,
                 std::string* error) {
   if (FLAGS_map.empty() || FLAGS_output_dir.empty() ||
       (FLAGS_scans.empty() && FLAGS_scan_list.empty() && FLAGS_bag.empty())) {
@@ -135,7 +125,18 @@ bool CheckFlags(LocalizerOptions* options,
              static_cast<size_t>(FLAGS_max_scans),
              input,
              error) &&
-         input->ReadBagStamps(error);
+         input->ReadBagStamps(error) &&
+         tools::InitialGuessesFromFlags({FLAGS_initial_guess,
+                                         FLAGS_initial_matrix,
+                                         FLAGS_initial_poses,
+                                         FLAGS_initial_poses_format,
+                                         FLAGS_calib},
+                                        FLAGS_guesses,
+                                        FLAGS_guesses_max_time_difference_s,
+                                        *input,
+                                        first_guess,
+                                        guesses,
+                                        error);
 }
 
 // trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
@@ -156,23 +157,11 @@ int Run() {
   LocalizerOptions options;
   tools::ScanInput input;
   std::string error;
-  if (!CheckFlags(&options, &input, &error)) return tools::Refuse(kTool, error);
-  const std::vector<std::string>& paths = input.names();
   Isometry3d first_guess;
   std::vector<Isometry3d> guesses;
-  if (!tools::InitialGuessesFromFlags({FLAGS_initial_guess,
-                                       FLAGS_initial_matrix,
-                                       FLAGS_initial_poses,
-                                       FLAGS_initial_poses_format,
-                                       FLAGS_calib},
-                                      FLAGS_guesses,
-                                      FLAGS_guesses_max_time_difference_s,
-                                      input,
-                                      &first_guess,
-                                      &guesses,
-                                      &error)) {
+  if (!CheckFlags(&options, &input, &first_guess, &guesses, &error))
     return tools::Refuse(kTool, error);
-  }
+  const std::vector<std::string>& paths = input.names();
   LayeredGrid map;
   if (!tools::LoadLocalizationMap(FLAGS_map, options, &map, &error)) {
     return tools::Refuse(kTool, error);
@@ -193,9 +182,23 @@ int Run() {
 
   tools::PrintMapLine(FLAGS_map, map);
 
+  // Each scan from the prediction, or with --guesses from its own guess.
+  tools::ProgressPrinter progress(kTool, paths);
   std::vector<LocalizationResult> results;
-  const bool ok = tools::LocalizeScansWithProgress(
-      options, map, first_guess, guesses, &input, &results, &error);
+  const ScanLoader load = input.Loader();
+  const bool ok =
+      guesses.empty()
+          ? LocalizeScans(options,
+                          map,
+                          first_guess,
+                          paths.size(),
+                          load,
+                          &progress,
+                          &results,
+                          &error)
+          : LocalizeScansFromGuesses(
+                options, map, guesses, load, &progress, &results, &error);
+  progress.Finish();
   if (!ok) return tools::Fail(kTool, error);
 
   if (!tools::WriteLocalizationFiles(

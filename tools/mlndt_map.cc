@@ -54,6 +54,7 @@
 #include "tools/cli/map_output.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/pose_flags.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/scan_input.h"
 #include "tools/cli/tool_main.h"
@@ -173,10 +174,17 @@ int Build() {
                                   &error)) {
       return tools::Refuse(kTool, error);
     }
-    if (!tools::BuildMapWithProgress(
-            options, &input, poses, &map, &summary, &error)) {
-      return tools::Fail(kTool, error);
-    }
+    tools::ProgressPrinter progress(kTool, input.names());
+    const bool built = BuildMapFromScans(options,
+                                         input.names(),
+                                         input.Loader(/*allow_empty=*/true),
+                                         poses,
+                                         &progress,
+                                         &map,
+                                         &summary,
+                                         &error);
+    progress.Finish();
+    if (!built) return tools::Fail(kTool, error);
     tools::WarnScansWithoutPoints(input, summary);
   }
   if (!SaveLayeredGrid(FLAGS_output, map, &error))

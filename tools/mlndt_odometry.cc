@@ -38,7 +38,6 @@
 
 #include "lab/eval/dataset.h"
 #include "lab/report/gnuplot.h"
-#include "lab/report/progress.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/list_flags.h"
 #include "tools/cli/odometry_flags.h"
@@ -46,6 +45,7 @@
 #include "tools/cli/output_files.h"
 #include "tools/cli/output_set.h"
 #include "tools/cli/pose_flags.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/scan_input.h"
 #include "tools/cli/start_layer_check.h"
@@ -178,8 +178,15 @@ int Run() {
 
   std::vector<OdometryResult> results;
   OdometrySummary summary;
-  const bool ok = tools::RunOdometryWithProgress(
-      options, &input, &results, &summary, &error);
+  tools::ProgressPrinter progress(kTool, input.names());
+  const bool ok = RunOdometry(options,
+                              input.size(),
+                              input.StampedLoader(),
+                              &progress,
+                              &results,
+                              &summary,
+                              &error);
+  progress.Finish();
   if (!ok) return tools::Fail(kTool, error);
 
   OdometryMetrics metrics;

@@ -30,7 +30,6 @@
 #include <vector>
 
 #include "lab/eval/dataset.h"
-#include "lab/report/progress.h"
 #include "lab/runs/pose_graph.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/json_output.h"
@@ -39,6 +38,7 @@
 #include "tools/cli/pose_graph_flags.h"
 #include "tools/cli/posegraph_output.h"
 #include "tools/cli/posegraph_pairs.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/start_layer_check.h"
 #include "tools/cli/tool_main.h"
@@ -153,16 +153,8 @@ int Run() {
   std::string error;
   if (!PrepareRun(&options, &paths, &truth, &error)) return Refuse(error);
 
-  const size_t cap = static_cast<size_t>(options.max_iterations);
-  Progress progress("mlndt_posegraph joint",
-                    static_cast<size_t>(options.joint_layers) * cap);
-  options.on_iteration =
-      [&](const std::string& stage, int iteration, double cost) {
-        const size_t before =
-            stage == "layer n-0" && options.joint_layers == 2 ? cap : 0;
-        progress.Update(before + static_cast<size_t>(iteration),
-                        stage + " cost " + std::to_string(cost));
-      };
+  tools::ProgressPrinter progress("mlndt_posegraph joint");
+  options.progress = &progress;
   PoseGraphSummary summary;
   const bool ok = RunPoseGraph(options, paths, &summary, &error);
   progress.Finish();

@@ -3,20 +3,14 @@
 // reports per-pair errors and totals in the layout of the paper's Tables 2-4.
 //
 //   mlndt_sequence (--scans=DIR [--times=FILE] | --bag=FILE --topic=NAME)
-//                  --output_dir=OUT [--gt_poses=poses.txt
-//   [--poses_are_camera --calib=calib.txt]]
-//                  [--step=1]
-//                  [--init=zero|gt_fraction:c|constant_velocity|poses:FILE]
+//                  --output_dir=OUT [--gt_poses=poses.txt [--calib=...]]
+//                  [--step=1] [--init=zero|gt_fraction:c|...]
 //                  [--adaptive_start_layer] [any mlndt_align registration flag]
 //
-// Scans are the point-cloud files in DIR (by extension), sorted by file
-// name; pose and calibration files given on the command line are left out
-// even when they sit in DIR. Or the sensor_msgs/PointCloud2 messages of
-// --topic in the ROS 1 bag --bag, in bag order (tools/cli/scan_input.h).
-// Ground-truth poses are KITTI lines, one per scan, world_from_scan in the
-// scans' own frame; with --poses_are_camera
-// --calib they are KITTI camera poses and are converted with the Tr line
-// (V = Tr^-1 P Tr; pose_flags.h). --calib applies to --init=poses:FILE too.
+// Scans: the point-cloud files in DIR by name, or a bag's --topic
+// (tools/cli/scan_input.h). Ground truth: KITTI lines, world_from_scan per
+// scan; with --poses_are_camera --calib KITTI camera poses, converted with
+// the Tr line (pose_flags.h), as for --init=poses:FILE.
 //
 // Initial guesses (reference_from_input):
 //   zero               identity (the paper's Z_i = 0),
@@ -25,48 +19,44 @@
 //   constant_velocity  the previous pair's estimate (identity for the first),
 //   poses:FILE         P_i^-1 P_{i+step} from a KITTI pose file (odometry).
 //
-// Each scan's map is built once, when the scan first becomes the reference,
-// and registration runs on the prebuilt map (Section 4.3); the map time is
-// reported separately (time_map_ms) and counted in the pair that built it.
-// --method=ndt builds its own single grid per pair (no prebuilt-grid API).
+// Each scan's map is built once, when it first becomes the reference
+// (Section 4.3; time_map_ms counts it in that pair); --method=ndt builds its
+// own single grid per pair.
 //
-// --adaptive_start_layer: the paper's proposal (end of Section 5.3), defined
-// with its flags in lab/runs/adaptive_start_layer.h and
-// tools/cli/adaptive_start_layer_flags.h.
+// --adaptive_start_layer: the paper's proposal (end of Section 5.3;
+// lab/runs/adaptive_start_layer.h, tools/cli/adaptive_start_layer_flags.h).
 //
 // Writes into --output_dir: pairs.csv, summary.json, trace.csv,
-// trajectory.txt (chained estimates of scans 0, step, 2 step, ...; KITTI
-// format, first pose identity), trajectory_tum.txt (the same, stamped with
-// the bag's header stamps or --times, else the scan indices, as its header
-// line says), gt_trajectory.txt (same scans, from the
-// ground truth), and with --plots the PNGs errors_translation,
-// errors_rotation, trajectory_xy and score_vs_iteration (gnuplot; data and
-// scripts in plot_data/). Pairs are counted by verdict (summary.json
-// "terminations", the printed "verdicts:" line); a pair whose result is not
-// usable (LOW_QUALITY, DEGENERATE, FAILURE) keeps its --init guess as its
-// estimate, chained into trajectory.txt, and is flagged in pairs.csv
-// (usable 0, estimate_source guess) and summary.json (unusable_pair_list).
+// trajectory.txt (chained estimates of scans 0, step, 2 step, ...; KITTI,
+// first pose identity), trajectory_tum.txt (the same, stamped as its header
+// line says), gt_trajectory.txt (from the ground truth), and with --plots
+// the PNGs errors_translation, errors_rotation, trajectory_xy and
+// score_vs_iteration (gnuplot; data and scripts in plot_data/). Pairs are
+// counted by verdict (summary.json "terminations", the printed "verdicts:"
+// line); a pair whose result is not usable (LOW_QUALITY, DEGENERATE,
+// FAILURE) keeps its --init guess as its estimate, chained into
+// trajectory.txt, and is flagged in pairs.csv and summary.json.
 //
-// Exit codes: 2 on bad flags or input refused before any work; 1 when any
-// pair's result is not usable (every file is still written), data cannot be
-// read, or plots were requested but gnuplot is missing (the other files are
-// still written); 0 when every pair is usable.
+// Exit codes: 2 on input refused before any work; 1 when a pair's result
+// is not usable, data cannot be read or gnuplot is missing for --plots (the
+// other files are still written).
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
 #include "lab/report/gnuplot.h"
+#include "lab/report/sequence_plots.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/output_set.h"
 #include "tools/cli/pose_flags.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/scan_input.h"
 #include "tools/cli/sequence_flags.h"
 #include "tools/cli/sequence_inputs.h"
 #include "tools/cli/sequence_output.h"
-#include "tools/cli/sequence_plot_list.h"
 #include "tools/cli/start_layer_check.h"
 #include "tools/cli/tool_main.h"
 
@@ -147,16 +137,21 @@ int WriteOutputs(const SequenceOptions& options,
   }
   tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
   std::string plot_error;
+  std::vector<std::string> pngs;
   bool plotted = false;
   if (FLAGS_plots && !gnuplot_ok) {
     plot_error = PlotSkippedMessage(FLAGS_gnuplot, "plots");
   } else if (FLAGS_plots) {
-    plotted = tools::WriteSequencePlotsAndList(FLAGS_gnuplot,
-                                               FLAGS_output_dir,
-                                               results,
-                                               options.step,
-                                               FLAGS_trace_plot_pairs,
-                                               &plot_error);
+    plotted = WriteSequencePlots(FLAGS_gnuplot,
+                                 FLAGS_output_dir,
+                                 results,
+                                 options.step,
+                                 FLAGS_trace_plot_pairs,
+                                 &pngs,
+                                 &plot_error);
+    std::string list;  // "plots: a.png, b.png, ..." on stdout.
+    for (const std::string& p : pngs) list += (list.empty() ? "" : ", ") + p;
+    if (plotted) std::printf("plots: %s\n", list.c_str());
   }
   std::vector<std::string> files;
   for (const std::string& file :
@@ -213,8 +208,15 @@ int Run() {
   ScanStore store = input.from_bag() ? ScanStore(input.names(), input.Loader())
                                      : ScanStore(input.paths());
   std::vector<PairResult> results;
-  const bool ok = tools::RunSequenceWithProgress(
-      options, &store, truth, odometry, &results, &error);
+  tools::ProgressPrinter progress(kTool);
+  const bool ok = RunSequence(options,
+                              &store,
+                              truth.empty() ? nullptr : &truth,
+                              odometry.empty() ? nullptr : &odometry,
+                              &progress,
+                              &results,
+                              &error);
+  progress.Finish();
   if (!ok) return tools::Fail(kTool, error);
   const int written =
       WriteOutputs(options, input, store, results, truth, gnuplot_ok);

@@ -5,7 +5,7 @@
 // ComputeAte with FIRST_POSE) and the mean relative pose error of
 // consecutive scans (ComputeRpe, delta 1), see lab/eval/trajectory_metrics.h.
 // The tool writes them for the initial and the jointly refined trajectory
-// (tools/cli/posegraph_metrics_json.h).
+// (tools/cli/posegraph_output.cc).
 
 #include <string>
 #include <vector>

@@ -1,10 +1,9 @@
 #include "lab/experiments/run_batch.h"
 
-#include <chrono>
 #include <sstream>
 
 #include "lab/experiments/paper_axes.h"
-#include "lab/report/progress.h"
+#include "lab/report/chained_progress.h"
 #include "lab/report/text_format.h"
 #include "lab/runs/suite_runner.h"
 #include "mlndt/common/pose.h"
@@ -33,6 +32,32 @@ SuiteRun BaseRun(size_t dataset,
   run.input_index = p.input_index;
   run.reference_from_input = p.reference_from_input;
   return run;
+}
+
+// The record of one run of `job` on `set`.
+RunRecord MakeRecord(const Job& job,
+                     const ExperimentDataset& set,
+                     const SuiteRun& run,
+                     const SuiteRunResult& r) {
+  RunRecord record;
+  record.experiment = job.experiment;
+  record.dataset = set.name;
+  record.config = job.config.key;
+  record.pair = run.pair_key;
+  record.start = run.start;
+  record.offset_index = run.offset_index;
+  record.parameter = job.parameter;
+  record.termination = r.outcome.termination;
+  record.right = r.outcome.right;
+  record.translation_m = r.outcome.error.translation_m;
+  record.rotation_deg = r.outcome.error.rotation_deg();
+  record.paper_right = record.translation_m < kPaperSuccessTranslationM;
+  record.diverged =
+      !(record.translation_m <= 1.0) || !(record.rotation_deg <= 15.0);
+  record.paper_error = PaperAxesError(run.reference_from_input, r.estimate);
+  record.time_ms = r.outcome.time_ms;
+  record.iterations = r.iterations;
+  return record;
 }
 
 }  // namespace
@@ -88,56 +113,30 @@ SuiteRun ScaledStart(size_t dataset,
 
 bool RunJobs(const std::vector<ExperimentDataset>& datasets,
              const std::vector<Job>& jobs,
+             ProgressCallback* progress,
              std::vector<RunRecord>* records,
              std::string* error) {
-  size_t total = 0, done = 0;
+  size_t total = 0;
   for (const Job& job : jobs) total += job.runs.size();
-  Progress progress("mlndt_experiments", total);
-  const auto start = std::chrono::steady_clock::now();
+  ChainedProgress chained(progress, total);
   for (const Job& job : jobs) {
     const ExperimentDataset& set = datasets.at(job.dataset);
-    const auto callback = [&](const SuiteRun& run, const SuiteRunResult& r) {
-      RunRecord record;
-      record.experiment = job.experiment;
-      record.dataset = set.name;
-      record.config = job.config.key;
-      record.pair = run.pair_key;
-      record.start = run.start;
-      record.offset_index = run.offset_index;
-      record.parameter = job.parameter;
-      record.termination = r.outcome.termination;
-      record.right = r.outcome.right;
-      record.translation_m = r.outcome.error.translation_m;
-      record.rotation_deg = r.outcome.error.rotation_deg();
-      record.paper_right = record.translation_m < kPaperSuccessTranslationM;
-      record.diverged =
-          !(record.translation_m <= 1.0) || !(record.rotation_deg <= 15.0);
-      record.paper_error = PaperAxesError(run.reference_from_input, r.estimate);
-      record.time_ms = r.outcome.time_ms;
-      record.iterations = r.iterations;
-      records->push_back(record);
-      ++done;
-      const double elapsed = std::chrono::duration<double>(
-                                 std::chrono::steady_clock::now() - start)
-                                 .count();
-      progress.Update(done,
-                      job.experiment + " " + set.name + " " + job.config.key +
-                          ", elapsed " + FormatDuration(elapsed) + ", ETA " +
-                          FormatDuration(elapsed / done * (total - done)));
-    };
+    chained.Next(job.experiment + " " + set.name + " " + job.config.key);
     std::vector<SuiteRunResult> results;
     if (!RunSuiteDataset(job.config.options,
                          set.criterion,
                          set.scan_paths,
                          job.runs,
-                         callback,
+                         &chained,
                          &results,
                          error)) {
       *error = set.name + ": " + *error;
       return false;
     }
+    for (size_t k = 0; k < results.size(); ++k) {
+      records->push_back(MakeRecord(job, set, job.runs[k], results[k]));
+    }
   }
-  progress.Finish();
   return true;
 }
 

@@ -11,6 +11,7 @@
 #include "lab/eval/suite_plan.h"
 #include "lab/experiments/configurations.h"
 #include "lab/experiments/datasets.h"
+#include "mlndt/common/progress.h"
 #include "mlndt/common/types.h"
 
 namespace mlndt {
@@ -66,11 +67,13 @@ SuiteRun ScaledStart(size_t dataset,
                      const std::string& pair,
                      double c);
 
-// Runs every job in order, appending one record per run. Progress: one bar
-// over all runs with elapsed time and ETA. False with *error naming the data
-// set when a scan cannot be read.
+// Runs every job in order, appending one record per run. `progress` (may be
+// null, not owned) hears of every run, numbered across the jobs, its status
+// led by the job's experiment, data set and configuration. False with *error
+// naming the data set when a scan cannot be read.
 bool RunJobs(const std::vector<ExperimentDataset>& datasets,
              const std::vector<Job>& jobs,
+             ProgressCallback* progress,
              std::vector<RunRecord>* records,
              std::string* error);
 

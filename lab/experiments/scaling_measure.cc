@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "lab/eval/statistics.h"
-#include "lab/report/progress.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/sampling/point_sampler.h"
@@ -92,9 +91,9 @@ bool MeasureSizes(const ScalingSettings& settings,
                   const PointCloud& merged,
                   const std::vector<size_t>& sizes,
                   const Isometry3d& reference_from_input,
+                  ProgressCallback* progress,
                   std::vector<SizeResult>* results,
                   std::string* error) {
-  Progress progress("mlndt_scaling", sizes.size());
   results->assign(sizes.size(), SizeResult());
   for (size_t k = 0; k < sizes.size(); ++k) {
     if (!MeasureSize(settings,
@@ -104,14 +103,15 @@ bool MeasureSizes(const ScalingSettings& settings,
                      reference_from_input,
                      &(*results)[k],
                      error)) {
-      progress.Finish();
       return false;
     }
-    progress.Update(k + 1,
+    ReportProgress(progress,
+                   {k,
+                    k + 1,
+                    sizes.size(),
                     "N = " + std::to_string(sizes[k]) + ", total " +
-                        Fmt((*results)[k].total_ms, 1) + " ms");
+                        Fmt((*results)[k].total_ms, 1) + " ms"});
   }
-  progress.Finish();
   return true;
 }
 

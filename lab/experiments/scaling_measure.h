@@ -10,6 +10,7 @@
 
 #include "lab/runs/matcher.h"
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/common/progress.h"
 
 namespace mlndt {
 
@@ -50,12 +51,14 @@ bool MeasureSize(const ScalingSettings& settings,
                  SizeResult* result,
                  std::string* error);
 
-// MeasureSize of every size in turn, with a progress line.
+// MeasureSize of every size in turn; `progress` (may be null, not owned)
+// hears of each size.
 bool MeasureSizes(const ScalingSettings& settings,
                   const MatcherOptions& options,
                   const PointCloud& merged,
                   const std::vector<size_t>& sizes,
                   const Isometry3d& reference_from_input,
+                  ProgressCallback* progress,
                   std::vector<SizeResult>* results,
                   std::string* error);
 

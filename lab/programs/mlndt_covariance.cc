@@ -40,12 +40,12 @@
 
 #include "lab/experiments/covariance_campaign.h"
 #include "lab/programs/covariance_output.h"
-#include "lab/report/progress.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/atomic_file.h"
 #include "tools/cli/json_output.h"
 #include "tools/cli/matrix_text.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/tool_main.h"
 
@@ -75,7 +75,8 @@ constexpr char kTool[] = "mlndt_covariance";
 struct Campaign {
   std::mt19937_64* rng;
   std::ostringstream* csv;  // nullptr without --output_csv.
-  Progress* progress;
+  tools::ProgressPrinter* progress;
+  size_t total = 0;  // Registrations in the run.
   size_t done = 0;
 };
 
@@ -96,10 +97,13 @@ bool RunPair(const RegistrationOptions& options,
   settings.outlier_translation_m = FLAGS_outlier_translation;
   settings.outlier_rotation_deg = FLAGS_outlier_rotation;
   const auto on_run = [&](int k, const RegistrationSummary& s, bool usable) {
-    campaign->progress->Update(++campaign->done,
-                               pair->dataset + " " + pair->name + " start " +
-                                   std::to_string(k + 1) + " " +
-                                   TerminationTypeToString(s.termination_type));
+    ++campaign->done;
+    (*campaign->progress)({campaign->done - 1,
+                           campaign->done,
+                           campaign->total,
+                           pair->dataset + " " + pair->name + " start " +
+                               std::to_string(k + 1) + " " +
+                               TerminationTypeToString(s.termination_type)});
     if (campaign->csv != nullptr) {
       lab::AppendCovarianceCsvRow(*pair, k, s, usable, campaign->csv);
     }
@@ -193,9 +197,11 @@ int Main() {
     csv << lab::CovarianceCsvHeader();
   }
   std::mt19937_64 rng(FLAGS_perturbation_seed);
-  Progress progress("mlndt_covariance",
-                    lab::CovarianceRegistrations(datasets, FLAGS_starts));
-  Campaign campaign{&rng, FLAGS_output_csv.empty() ? nullptr : &csv, &progress};
+  tools::ProgressPrinter progress(kTool);
+  Campaign campaign{&rng,
+                    FLAGS_output_csv.empty() ? nullptr : &csv,
+                    &progress,
+                    lab::CovarianceRegistrations(datasets, FLAGS_starts)};
   std::vector<PairRuns> pairs;
   for (const std::string& dataset : datasets) {
     const bool ok = dataset == "kitti"

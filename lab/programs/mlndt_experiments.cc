@@ -25,6 +25,7 @@
 #include "lab/experiments/run_batch.h"
 #include "lab/experiments/trace_experiment.h"
 #include "lab/report/gnuplot.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/tool_main.h"
 #include "tools/cli/tool_utils.h"
 
@@ -69,8 +70,10 @@ int Run() {
   if (!RunTraceExperiment(datasets, &trace, &error))
     std::cerr << "mlndt_experiments: Figs. 10-13: " << error << "\n";
   std::vector<RunRecord> records;
-  if (!RunJobs(datasets, jobs, &records, &error))
-    return tools::Fail(kTool, error);
+  tools::ProgressPrinter progress(kTool);
+  const bool ran = RunJobs(datasets, jobs, &progress, &records, &error);
+  progress.Finish();
+  if (!ran) return tools::Fail(kTool, error);
   header.run_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();

@@ -55,6 +55,7 @@
 #include "mlndt/common/pose.h"
 #include "tools/cli/list_flags.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/tool_main.h"
 
@@ -87,9 +88,10 @@ namespace {
 
 constexpr char kTool[] = "mlndt_scaling";
 
-// --sizes, --repetitions, the tolerances, --motion and the registration
-// flags; false with *error for a bad value.
+// --sizes, --repetitions, the tolerances, --seed, --motion and the
+// registration flags; false with *error for a bad value.
 bool ParseFlags(std::vector<size_t>* sizes,
+                ScalingSettings* settings,
                 Isometry3d* reference_from_input,
                 MatcherOptions* options,
                 std::string* error) {
@@ -110,6 +112,10 @@ bool ParseFlags(std::vector<size_t>* sizes,
              "[m],alpha,beta,gamma [deg]";
     return false;
   }
+  settings->seed = tools::Uint64Flag("seed");
+  settings->repetitions = FLAGS_repetitions;
+  settings->max_translation_error_m = FLAGS_max_translation_error;
+  settings->max_rotation_error_deg = FLAGS_max_rotation_error;
   *reference_from_input = PoseVectorToIsometry(PoseVectorFromDegrees(
       motion[0], motion[1], motion[2], motion[3], motion[4], motion[5]));
   return tools::MatcherOptionsFromFlags(options, error);
@@ -150,12 +156,12 @@ int WriteOutputs(const MatcherOptions& options,
 
 int Run() {
   std::vector<size_t> sizes;
+  ScalingSettings settings;
   Isometry3d reference_from_input;
   MatcherOptions options;
   std::string error;
-  if (!ParseFlags(&sizes, &reference_from_input, &options, &error)) {
+  if (!ParseFlags(&sizes, &settings, &reference_from_input, &options, &error))
     return tools::Refuse(kTool, error);
-  }
   if (!FLAGS_output_dir.empty()) {
     if (!tools::PrepareOutputDir(
             "output_dir", FLAGS_output_dir, {"scaling.csv"}, &error)) {
@@ -183,21 +189,18 @@ int Run() {
                              std::to_string(merged.size()) + " points");
   }
 
-  ScalingSettings settings;
-  settings.seed = tools::Uint64Flag("seed");
-  settings.repetitions = FLAGS_repetitions;
-  settings.max_translation_error_m = FLAGS_max_translation_error;
-  settings.max_rotation_error_deg = FLAGS_max_rotation_error;
   std::vector<SizeResult> results;
-  if (!MeasureSizes(settings,
-                    options,
-                    merged,
-                    sizes,
-                    reference_from_input,
-                    &results,
-                    &error)) {
-    return tools::Fail(kTool, error);
-  }
+  tools::ProgressPrinter progress(kTool);
+  const bool measured = MeasureSizes(settings,
+                                     options,
+                                     merged,
+                                     sizes,
+                                     reference_from_input,
+                                     &progress,
+                                     &results,
+                                     &error);
+  progress.Finish();
+  if (!measured) return tools::Fail(kTool, error);
 
   std::printf("merged cloud: %zu points from %zu scans (%s); %s\n\n",
               merged.size(),

@@ -42,6 +42,7 @@
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/list_flags.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/progress_printer.h"
 #include "tools/cli/registration_flags.h"
 #include "tools/cli/suite_plan_flags.h"
 #include "tools/cli/tool_main.h"
@@ -187,9 +188,10 @@ int Run() {
   std::fflush(stdout);
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::vector<SuiteRunResult>> results;
-  if (!RunSuiteWithProgress(config.matcher, loaded, &results, &error)) {
-    return tools::Fail(kTool, error);
-  }
+  tools::ProgressPrinter progress(kTool);
+  const bool ok = RunSuite(config.matcher, loaded, &progress, &results, &error);
+  progress.Finish();
+  if (!ok) return tools::Fail(kTool, error);
 
   size_t runs = 0;
   const SuiteScore score =

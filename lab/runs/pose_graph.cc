@@ -106,22 +106,30 @@ double CostAt(ceres::Problem* problem,
   return cost;
 }
 
-// Forwards Ceres' iterations to PoseGraphOptions::on_iteration.
+// Forwards Ceres' iterations of one joint stage to PoseGraphOptions::progress,
+// numbered after the `before` iterations of the earlier stages.
 class IterationForwarder : public ceres::IterationCallback {
  public:
-  IterationForwarder(const PoseGraphOptions& options, std::string stage)
-      : options_(options), stage_(std::move(stage)) {}
+  IterationForwarder(const PoseGraphOptions& options,
+                     std::string stage,
+                     size_t before)
+      : options_(options), stage_(std::move(stage)), before_(before) {}
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& summary) override {
-    if (options_.on_iteration) {
-      options_.on_iteration(stage_, summary.iteration, summary.cost);
-    }
+    const size_t done = before_ + static_cast<size_t>(summary.iteration);
+    ReportProgress(options_.progress,
+                   {done,
+                    done,
+                    static_cast<size_t>(options_.joint_layers) *
+                        static_cast<size_t>(options_.max_iterations),
+                    stage_ + " cost " + std::to_string(summary.cost)});
     return ceres::SOLVER_CONTINUE;
   }
 
  private:
   const PoseGraphOptions& options_;
   std::string stage_;
+  size_t before_ = 0;
 };
 
 void SolveJointly(const PoseGraphOptions& o,
@@ -139,7 +147,10 @@ void SolveJointly(const PoseGraphOptions& o,
     solver.max_num_iterations = o.max_iterations;
     solver.num_threads = o.registration.num_threads;
     const std::string stage = "layer n-" + std::to_string(offset);
-    IterationForwarder callback(o, stage);
+    IterationForwarder callback(
+        o,
+        stage,
+        static_cast<size_t>((o.joint_layers - 1 - offset) * o.max_iterations));
     solver.callbacks.push_back(&callback);
     ceres::Solver::Summary report;
     ceres::Solve(solver, &problem, &report);

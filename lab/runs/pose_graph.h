@@ -20,13 +20,13 @@
 // (c) Verdict: the joint poses against each pair's own optimum and
 //     information and against the odometry factors (pose_graph_check.h).
 
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "lab/runs/pose_graph_check.h"
 #include "lab/runs/pose_graph_factors.h"
+#include "mlndt/common/progress.h"
 #include "mlndt/common/types.h"
 #include "mlndt/cost/add_pair_residuals.h"
 #include "mlndt/registration/registration_options.h"
@@ -52,9 +52,10 @@ struct PoseGraphOptions {
   OdometryNoise odometry_noise;
   // Start from the odometry instead of the chained registrations.
   bool init_from_odometry = false;
-  // Called after every joint iteration: stage ("layer n-0"), iteration,
-  // cost.
-  std::function<void(const std::string&, int, double)> on_iteration;
+  // Hears of every joint iteration (may be null, not owned): Ceres'
+  // iterations of all stages, max_iterations per stage, each status the
+  // stage and its cost ("layer n-0 cost 12.5").
+  ProgressCallback* progress = nullptr;
 
   // The ranges of PoseGraphOwnOptionsTable, then (by `num_scans`) the
   // extra pairs and the odometry poses, and the registration's IsValid.

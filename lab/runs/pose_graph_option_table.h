@@ -12,7 +12,7 @@ namespace mlndt {
 
 const OptionTable& OdometryNoiseTable();
 // PoseGraphOptions without registration, extra_pairs, odometry and
-// on_iteration.
+// progress.
 const OptionTable& PoseGraphOwnOptionsTable();
 
 }  // namespace mlndt

@@ -6,7 +6,6 @@
 // start layer (adaptive_start_layer.h, which states the exact rule). Used by
 // mlndt_sequence and mlndt_experiments.
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +15,7 @@
 #include "lab/runs/matcher.h"
 #include "lab/runs/pair_registration.h"
 #include "lab/runs/scan_store.h"
+#include "mlndt/common/progress.h"
 
 namespace mlndt {
 
@@ -57,19 +57,18 @@ struct PairResult {
   std::vector<IterationRecord> trace;
 };
 
-// Called after each pair with its result, the number done and the total.
-using PairCallback = std::function<void(const PairResult&, size_t, size_t)>;
-
 // Runs every pair (i, i + step). `truth` (world_from_scan per scan) and
 // `odometry` (for InitMode::POSES) may be null; they must hold at least
-// store->size() poses when given. `on_pair` may be empty. A FAILURE leaves
+// store->size() poses when given. `progress` (may be null, not owned) hears
+// of each pair once it is registered: "pair 0->1 CONVERGENCE, 37 it, 338 ms"
+// (and its error with truth). A FAILURE leaves
 // no usable pose: the pair keeps its guess as its estimate. False with
 // *error on unreadable scans, unusable maps or missing poses.
 bool RunSequence(const SequenceOptions& options,
                  ScanStore* store,
                  const std::vector<Isometry3d>* truth,
                  const std::vector<Isometry3d>* odometry,
-                 const PairCallback& on_pair,
+                 ProgressCallback* progress,
                  std::vector<PairResult>* results,
                  std::string* error);
 

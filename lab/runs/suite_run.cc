@@ -1,12 +1,10 @@
 #include "lab/runs/suite_run.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
 
-#include "lab/report/progress.h"
-#include "lab/report/text_format.h"
+#include "lab/report/chained_progress.h"
 
 namespace mlndt {
 
@@ -67,41 +65,29 @@ std::string SuitePlanText(const std::vector<LoadedSuiteDataset>& datasets) {
   return out + std::to_string(total) + " runs\n\n";
 }
 
-bool RunSuiteWithProgress(const MatcherOptions& options,
-                          const std::vector<LoadedSuiteDataset>& datasets,
-                          std::vector<std::vector<SuiteRunResult>>* results,
-                          std::string* error) {
-  size_t total = 0, done = 0;
+bool RunSuite(const MatcherOptions& options,
+              const std::vector<LoadedSuiteDataset>& datasets,
+              ProgressCallback* progress,
+              std::vector<std::vector<SuiteRunResult>>* results,
+              std::string* error) {
+  size_t total = 0;
   for (const LoadedSuiteDataset& set : datasets) total += set.runs.size();
-  Progress progress("mlndt_suite", total);
-  const auto start = std::chrono::steady_clock::now();
+  ChainedProgress chained(progress, total);
   results->clear();
   for (const LoadedSuiteDataset& set : datasets) {
-    const auto callback = [&](const SuiteRun& run, const SuiteRunResult& r) {
-      ++done;
-      const double elapsed = std::chrono::duration<double>(
-                                 std::chrono::steady_clock::now() - start)
-                                 .count();
-      progress.Update(done,
-                      set.dataset.name + " " + run.pair_key + " " + run.start +
-                          ": " +
-                          TerminationTypeToString(r.outcome.termination) +
-                          (r.outcome.right ? " right" : " wrong") + ", ETA " +
-                          FormatDuration(elapsed / done * (total - done)));
-    };
+    chained.Next(set.dataset.name);
     results->emplace_back();
     if (!RunSuiteDataset(options,
                          set.dataset.criterion,
                          set.scan_paths,
                          set.runs,
-                         callback,
+                         &chained,
                          &results->back(),
                          error)) {
       *error = set.dataset.name + ": " + *error;
       return false;
     }
   }
-  progress.Finish();
   return true;
 }
 

@@ -1,8 +1,7 @@
 #pragma once
 
-// Loading mlndt_suite's data sets, running them one after the other with a
-// progress line (and its ETA) on stderr, the lines that say what will run,
-// and their score.
+// Loading mlndt_suite's data sets, running them one after the other, the
+// lines that say what will run, and their score.
 
 #include <string>
 #include <vector>
@@ -29,12 +28,15 @@ bool LoadSuiteDataset(const SuiteDataset& dataset,
 std::string SuitePlanText(const std::vector<LoadedSuiteDataset>& datasets);
 
 // Runs every data set's runs (RunSuiteDataset) in order; (*results)[d]
-// holds data set d's results. False with *error naming the data set when
-// one cannot run (an unreadable scan).
-bool RunSuiteWithProgress(const MatcherOptions& options,
-                          const std::vector<LoadedSuiteDataset>& datasets,
-                          std::vector<std::vector<SuiteRunResult>>* results,
-                          std::string* error);
+// holds data set d's results. `progress` (may be null, not owned) hears of
+// every run, numbered across the suite, its status led by the data set's
+// name. False with *error naming the data set when one cannot run (an
+// unreadable scan).
+bool RunSuite(const MatcherOptions& options,
+              const std::vector<LoadedSuiteDataset>& datasets,
+              ProgressCallback* progress,
+              std::vector<std::vector<SuiteRunResult>>* results,
+              std::string* error);
 
 // ScoreSuite of the runs of every loaded data set; *runs counts them.
 SuiteScore ScoreLoadedSuite(

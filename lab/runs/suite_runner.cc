@@ -24,7 +24,7 @@ bool RunSuiteDataset(const MatcherOptions& options,
                      const SuccessCriterion& criterion,
                      const std::map<int64_t, std::string>& scan_paths,
                      const std::vector<SuiteRun>& runs,
-                     const SuiteRunCallback& callback,
+                     ProgressCallback* progress,
                      std::vector<SuiteRunResult>* results,
                      std::string* error) {
   CHECK(results != nullptr);
@@ -79,7 +79,13 @@ bool RunSuiteDataset(const MatcherOptions& options,
                                    summary.reference_from_input,
                                    summary.total_time_s * 1e3);
     results->push_back(result);
-    if (callback) callback(run, results->back());
+    ReportProgress(progress,
+                   {k,
+                    k + 1,
+                    runs.size(),
+                    run.pair_key + " " + run.start + ": " +
+                        TerminationTypeToString(result.outcome.termination) +
+                        (result.outcome.right ? " right" : " wrong")});
   }
   return true;
 }

@@ -5,7 +5,6 @@
 // reference scan and map options, reused by all its pairs and starts), in
 // the plan's order, each scored (eval/suite_score.h).
 
-#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "lab/eval/suite_score.h"
 #include "lab/runs/matcher.h"
 #include "lab/runs/pair_registration.h"
+#include "mlndt/common/progress.h"
 #include "mlndt/cost/fit_quality.h"
 
 namespace mlndt {
@@ -37,22 +37,19 @@ struct SuiteRunResult {
 MatcherOptions SuiteRunOptions(const MatcherOptions& options,
                                const SuiteRun& run);
 
-// Called after every run with the run and its result.
-using SuiteRunCallback =
-    std::function<void(const SuiteRun& run, const SuiteRunResult& result)>;
-
 // Runs `runs` (all of one data set) with `options`, scoring each with
 // `criterion`. `scan_paths` maps every scan number the runs name to its
 // file. Scans are read when first needed and released once no later run
 // needs them; maps are built once per reference scan. Appends one result
-// per run to *results, in order. False with *error naming the file when a
-// scan cannot be read or its map cannot be built (a registration FAILURE
-// is a result, not an error).
+// per run to *results, in order. `progress` (may be null, not owned) hears
+// of each run once it is scored ("0_1 identity: CONVERGENCE right"). False with
+// *error naming the file when a scan cannot be read or its map cannot be built
+// (a registration FAILURE is a result, not an error).
 bool RunSuiteDataset(const MatcherOptions& options,
                      const SuccessCriterion& criterion,
                      const std::map<int64_t, std::string>& scan_paths,
                      const std::vector<SuiteRun>& runs,
-                     const SuiteRunCallback& callback,
+                     ProgressCallback* progress,
                      std::vector<SuiteRunResult>* results,
                      std::string* error);
 

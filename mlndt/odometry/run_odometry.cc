@@ -2,12 +2,33 @@
 
 #include <glog/logging.h>
 
+#include <cstdio>
+
 namespace mlndt {
+namespace {
+
+// The progress line of a scan:
+// "CONVERGENCE (prediction used), layer 4, +-0.10 m 2.0 deg, 443 ms".
+std::string StatusLine(const OdometryResult& r) {
+  char line[160];
+  std::snprintf(line,
+                sizeof(line),
+                "%s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
+                TerminationTypeToString(r.termination_type),
+                r.fallback ? " (prediction used)" : "",
+                r.registration.start_layer,
+                r.uncertainty.translation_m,
+                r.uncertainty.rotation_deg,
+                r.total_time_s * 1e3);
+  return line;
+}
+
+}  // namespace
 
 bool RunOdometry(const OdometryOptions& options,
                  size_t num_scans,
                  const OdometryScanLoader& load_scan,
-                 const OdometryCallback& on_result,
+                 ProgressCallback* progress,
                  std::vector<OdometryResult>* results,
                  OdometrySummary* summary,
                  std::string* error) {
@@ -36,7 +57,7 @@ bool RunOdometry(const OdometryOptions& options,
     }
     results->push_back(result);
     summary->Add(result);
-    if (on_result) on_result(results->back());
+    ReportProgress(progress, {k, k + 1, num_scans, StatusLine(result)});
   }
   return true;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/common/progress.h"
 #include "mlndt/odometry/odometry.h"
 
 namespace mlndt {
@@ -21,18 +22,17 @@ using OdometryScanLoader =
                        std::vector<double>* point_times_s,
                        double* stamp_s,
                        std::string* error)>;
-using OdometryCallback = std::function<void(const OdometryResult&)>;
 
 // Runs scans 0..num_scans-1, replacing the pose of each scan a later one
 // bridged by the interpolated one (and setting its `interpolated`).
-// `on_result` is called with each scan's result as it is made (before any
-// later scan bridges it) and may be empty. False with *error on
-// invalid options, a scan that cannot be loaded or is unusable input
-// (Odometry::Process); the results so far are kept in *results.
+// `progress` (may be null, not owned) hears of each scan once it is
+// processed: its verdict, start layer, prediction uncertainty and time. False
+// with *error on invalid options, a scan that cannot be loaded or is unusable
+// input (Odometry::Process); the results so far are kept in *results.
 bool RunOdometry(const OdometryOptions& options,
                  size_t num_scans,
                  const OdometryScanLoader& load_scan,
-                 const OdometryCallback& on_result,
+                 ProgressCallback* progress,
                  std::vector<OdometryResult>* results,
                  OdometrySummary* summary,
                  std::string* error);

@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <algorithm>
+#include <cstdio>
 
 #include "mlndt/common/enum_table.h"
 #include "mlndt/common/pose.h"
@@ -176,6 +177,19 @@ void Localizer::LocalizeWithin(const PointCloud& scan,
 
 namespace {
 
+// The progress line of a scan: "CONVERGENCE, inliers 0.954, 52 it, 2627 ms".
+std::string StatusLine(const LocalizationResult& r) {
+  char line[160];
+  std::snprintf(line,
+                sizeof(line),
+                "%s, inliers %.3f, %d it, %.0f ms",
+                TerminationTypeToString(r.registration.termination_type),
+                r.registration.quality.inlier_fraction,
+                r.registration.num_iterations,
+                r.registration.total_time_s * 1e3);
+  return line;
+}
+
 // The loop of LocalizeScans and LocalizeScansFromGuesses: scan k from the
 // prediction, or from (*guesses)[k] when `guesses` is not null.
 bool LocalizeEach(const LocalizerOptions& options,
@@ -184,7 +198,7 @@ bool LocalizeEach(const LocalizerOptions& options,
                   size_t num_scans,
                   const std::vector<Isometry3d>* guesses,
                   const ScanLoader& load_scan,
-                  const LocalizationCallback& on_result,
+                  ProgressCallback* progress,
                   std::vector<LocalizationResult>* results,
                   std::string* error) {
   CHECK(results != nullptr);
@@ -210,7 +224,8 @@ bool LocalizeEach(const LocalizerOptions& options,
       localizer.Localize(scan, &result);
     }
     results->push_back(std::move(result));
-    if (on_result) on_result(results->back());
+    ReportProgress(progress,
+                   {k, k + 1, num_scans, StatusLine(results->back())});
   }
   return true;
 }
@@ -222,7 +237,7 @@ bool LocalizeScans(const LocalizerOptions& options,
                    const Isometry3d& first_map_from_scan,
                    size_t num_scans,
                    const ScanLoader& load_scan,
-                   const LocalizationCallback& on_result,
+                   ProgressCallback* progress,
                    std::vector<LocalizationResult>* results,
                    std::string* error) {
   return LocalizeEach(options,
@@ -231,7 +246,7 @@ bool LocalizeScans(const LocalizerOptions& options,
                       num_scans,
                       nullptr,
                       load_scan,
-                      on_result,
+                      progress,
                       results,
                       error);
 }
@@ -240,7 +255,7 @@ bool LocalizeScansFromGuesses(const LocalizerOptions& options,
                               const LayeredGrid& map,
                               const std::vector<Isometry3d>& guesses,
                               const ScanLoader& load_scan,
-                              const LocalizationCallback& on_result,
+                              ProgressCallback* progress,
                               std::vector<LocalizationResult>* results,
                               std::string* error) {
   const Isometry3d first =
@@ -251,7 +266,7 @@ bool LocalizeScansFromGuesses(const LocalizerOptions& options,
                       guesses.size(),
                       &guesses,
                       load_scan,
-                      on_result,
+                      progress,
                       results,
                       error);
 }

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/common/progress.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/odometry/motion_prediction.h"
@@ -186,12 +187,12 @@ class Localizer {
 // Loads scan `index` (in its sensor frame) into *scan; false with *error.
 using ScanLoader =
     std::function<bool(size_t index, PointCloud* scan, std::string* error)>;
-// Receives each result as soon as it is computed.
-using LocalizationCallback = std::function<void(const LocalizationResult&)>;
 
 // Localises scans 0..num_scans-1 in order, loading each one when its turn
-// comes into one reused cloud, each from the prediction. `on_result` may be
-// empty; `results` gets every result (cleared first). False with *error on
+// comes into one reused cloud, each from the prediction. `progress` (may be
+// null, not owned) hears of each scan once it is localised (its verdict,
+// inliers, iterations and time); `results` gets every result (cleared
+// first). False with *error on
 // invalid options, an empty map or a scan that cannot be loaded (the results so
 // far are kept).
 bool LocalizeScans(const LocalizerOptions& options,
@@ -199,7 +200,7 @@ bool LocalizeScans(const LocalizerOptions& options,
                    const Isometry3d& first_map_from_scan,
                    size_t num_scans,
                    const ScanLoader& load_scan,
-                   const LocalizationCallback& on_result,
+                   ProgressCallback* progress,
                    std::vector<LocalizationResult>* results,
                    std::string* error);
 
@@ -209,7 +210,7 @@ bool LocalizeScansFromGuesses(const LocalizerOptions& options,
                               const LayeredGrid& map,
                               const std::vector<Isometry3d>& guesses,
                               const ScanLoader& load_scan,
-                              const LocalizationCallback& on_result,
+                              ProgressCallback* progress,
                               std::vector<LocalizationResult>* results,
                               std::string* error);
 

@@ -97,7 +97,7 @@ bool BuildMapFromScans(const MapBuildOptions& options,
                        const std::vector<std::string>& scan_paths,
                        const ScanLoader& load_scan,
                        const std::vector<Isometry3d>& world_from_scan,
-                       const MapBuildProgress& on_scan,
+                       ProgressCallback* progress,
                        LayeredGrid* map,
                        MapBuildSummary* summary,
                        std::string* error) {
@@ -157,7 +157,9 @@ bool BuildMapFromScans(const MapBuildOptions& options,
     const Isometry3d& pose = world_from_scan[k];
     for (const Eigen::Vector3d& p : scan.points()) merged.push_back(pose * p);
     ++summary->scans;
-    if (on_scan) on_scan(k + 1, scan_paths.size());
+    ReportProgress(
+        progress,
+        {k, k + 1, scan_paths.size(), std::to_string(scan.size()) + " points"});
   }
   scan = PointCloud();
   summary->read_time_s = NowSeconds() - start;
@@ -169,15 +171,21 @@ bool BuildMapFromScans(const MapBuildOptions& options,
 bool BuildMapFromScans(const MapBuildOptions& options,
                        const std::vector<std::string>& scan_paths,
                        const std::vector<Isometry3d>& world_from_scan,
-                       const MapBuildProgress& on_scan,
+                       ProgressCallback* progress,
                        LayeredGrid* map,
                        MapBuildSummary* summary,
                        std::string* error) {
   const ScanLoader read = [&](size_t k, PointCloud* scan, std::string* e) {
     return ReadPointCloud(scan_paths[k], scan, nullptr, e);
   };
-  return BuildMapFromScans(
-      options, scan_paths, read, world_from_scan, on_scan, map, summary, error);
+  return BuildMapFromScans(options,
+                           scan_paths,
+                           read,
+                           world_from_scan,
+                           progress,
+                           map,
+                           summary,
+                           error);
 }
 
 bool BuildMapFromCloud(const MapBuildOptions& options,

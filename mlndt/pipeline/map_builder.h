@@ -15,12 +15,12 @@
 // says how much it needs, before allocating it.
 
 #include <cstddef>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/cloud/range_filter.h"
+#include "mlndt/common/progress.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/grid/map_memory.h"
@@ -67,23 +67,21 @@ struct MapBuildSummary {
   double total_time_s = 0.0;
 };
 
-// Called after each scan is merged: scans done, scans in all.
-using MapBuildProgress = std::function<void(size_t done, size_t total)>;
-
 // Reads scan_paths[k] (any format ReadPointCloud reads), crops it, maps it
 // with world_from_scan[k] and merges it, for every k; then filters and
 // builds. world_from_scan needs a pose for every scan (extra poses are
 // ignored), each a rigid transform by ToRigidTransform
-// (mlndt/common/rigid_transform.h: no 1e300 translation). `on_scan` may be
-// empty. False with *error (naming the file, the pose, the option or the
-// memory needed) on invalid options, a bad pose, a scan that cannot be
+// (mlndt/common/rigid_transform.h: no 1e300 translation). `progress` (may
+// be null, not owned) hears of each scan once it is merged: its index and
+// "N points" kept. False with *error (naming the file, the pose, the option or
+// the memory needed) on invalid options, a bad pose, a scan that cannot be
 // read, no points left, what exceeds the memory limit, or a map that
 // CheckMapUsable (grid/map_check.h) refuses (0 occupied cells); *map is
 // then unchanged.
 bool BuildMapFromScans(const MapBuildOptions& options,
                        const std::vector<std::string>& scan_paths,
                        const std::vector<Isometry3d>& world_from_scan,
-                       const MapBuildProgress& on_scan,
+                       ProgressCallback* progress,
                        LayeredGrid* map,
                        MapBuildSummary* summary,
                        std::string* error);
@@ -94,7 +92,7 @@ bool BuildMapFromScans(const MapBuildOptions& options,
                        const std::vector<std::string>& scan_names,
                        const ScanLoader& load_scan,
                        const std::vector<Isometry3d>& world_from_scan,
-                       const MapBuildProgress& on_scan,
+                       ProgressCallback* progress,
                        LayeredGrid* map,
                        MapBuildSummary* summary,
                        std::string* error);

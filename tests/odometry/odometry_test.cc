@@ -60,10 +60,13 @@ TEST(Odometry, BundledKittiFramesFollowTheConsensusChain) {
   std::vector<OdometryResult> results;
   OdometrySummary summary;
   std::string error;
+  std::vector<ProgressEvent> events;
+  ProgressFunction progress(
+      [&](const ProgressEvent& e) { events.push_back(e); });
   ASSERT_TRUE(RunOdometry(OdometryOptions(),
                           paths.size(),
                           KittiLoader(paths),
-                          {},
+                          &progress,
                           &results,
                           &summary,
                           &error))
@@ -71,6 +74,15 @@ TEST(Odometry, BundledKittiFramesFollowTheConsensusChain) {
   const std::vector<Isometry3d> reference = ReferenceChain(paths.size());
   ASSERT_EQ(results.size(), reference.size());
   EXPECT_EQ(summary.fallbacks, 0u);
+  // One event a scan: its index, the count and its verdict line.
+  ASSERT_EQ(events.size(), paths.size());
+  for (size_t k = 0; k < events.size(); ++k) {
+    EXPECT_EQ(events[k].index, k);
+    EXPECT_EQ(events[k].done, k + 1);
+    EXPECT_EQ(events[k].total, paths.size());
+    EXPECT_EQ(events[k].status.rfind("CONVERGENCE, layer ", 0), 0u)
+        << events[k].status;
+  }
   for (size_t k = 0; k < results.size(); ++k) {
     EXPECT_FALSE(results[k].fallback) << k << ": " << results[k].message;
     EXPECT_LT(TranslationErrorM(results[k].world_from_sensor, reference[k]),

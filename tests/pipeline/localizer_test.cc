@@ -192,20 +192,29 @@ TEST(LocalizeScans, StopsAtAScanThatCannotBeLoaded) {
     *scan = drive.scans[k];
     return true;
   };
-  std::vector<size_t> reported;
+  std::vector<ProgressEvent> reported;
+  ProgressFunction progress(
+      [&](const ProgressEvent& e) { reported.push_back(e); });
   std::string error;
-  EXPECT_FALSE(LocalizeScans(
-      LocalizerOptions(),
-      drive.map,
-      drive.map_from_scan[0],
-      drive.scans.size(),
-      load,
-      [&](const LocalizationResult& r) { reported.push_back(r.index); },
-      &results,
-      &error));
+  EXPECT_FALSE(LocalizeScans(LocalizerOptions(),
+                             drive.map,
+                             drive.map_from_scan[0],
+                             drive.scans.size(),
+                             load,
+                             &progress,
+                             &results,
+                             &error));
   EXPECT_EQ(error, "scan 2: unreadable");
   EXPECT_EQ(calls, (std::vector<size_t>{0, 1, 2}));
-  EXPECT_EQ(reported, (std::vector<size_t>{0, 1}));
+  // One event a localised scan: its index, the count and its verdict line.
+  ASSERT_EQ(reported.size(), 2u);
+  for (size_t k = 0; k < reported.size(); ++k) {
+    EXPECT_EQ(reported[k].index, k);
+    EXPECT_EQ(reported[k].done, k + 1);
+    EXPECT_EQ(reported[k].total, drive.scans.size());
+    EXPECT_EQ(reported[k].status.rfind("CONVERGENCE, inliers ", 0), 0u)
+        << reported[k].status;
+  }
   EXPECT_EQ(results.size(), 2u);
 }
 

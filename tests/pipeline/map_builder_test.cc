@@ -101,21 +101,27 @@ TEST(BuildMapFromScans, CropsMovesMergesAndBuilds) {
   options.range_filter = Crop(3.0, 20.0);
   LayeredGrid map;
   MapBuildSummary summary;
-  std::vector<size_t> progress;
+  std::vector<ProgressEvent> events;
+  ProgressFunction progress(
+      [&](const ProgressEvent& e) { events.push_back(e); });
   std::string error;
-  ASSERT_TRUE(BuildMapFromScans(
-      options,
-      scans.paths,
-      scans.world_from_scan,
-      [&](size_t done, size_t total) {
-        EXPECT_EQ(total, 3u);
-        progress.push_back(done);
-      },
-      &map,
-      &summary,
-      &error))
+  ASSERT_TRUE(BuildMapFromScans(options,
+                                scans.paths,
+                                scans.world_from_scan,
+                                &progress,
+                                &map,
+                                &summary,
+                                &error))
       << error;
-  EXPECT_EQ(progress, (std::vector<size_t>{1, 2, 3}));
+  ASSERT_EQ(events.size(), 3u);
+  size_t kept = 0;
+  for (size_t k = 0; k < events.size(); ++k) {
+    EXPECT_EQ(events[k].index, k);
+    EXPECT_EQ(events[k].done, k + 1);
+    EXPECT_EQ(events[k].total, 3u);
+    kept += std::stoul(events[k].status);  // "N points": kept after the crop.
+    EXPECT_NE(events[k].status.find(" points"), std::string::npos);
+  }
   size_t cropped = 0;
   const PointCloud expected = ExpectedMerge(options.range_filter, &cropped);
   EXPECT_EQ(summary.scans, 3u);
@@ -124,6 +130,7 @@ TEST(BuildMapFromScans, CropsMovesMergesAndBuilds) {
       scans.clouds[0].size() + scans.clouds[1].size() + scans.clouds[2].size());
   EXPECT_GT(cropped, 0u);
   EXPECT_EQ(summary.cropped_points, cropped);
+  EXPECT_EQ(kept, summary.input_points - cropped);
   EXPECT_EQ(summary.merged_points, expected.size());
   EXPECT_EQ(summary.map_points, expected.size());
   EXPECT_EQ(summary.map_bytes, map.MemoryBytes());

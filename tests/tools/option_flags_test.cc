@@ -23,8 +23,16 @@
 namespace mlndt {
 namespace {
 
-using tools::FlagOfPath;
 using tools::OptionFlags;
+
+// The flag of an option path ("objective.loss_scale"; ndt: of NdtOptions),
+// nullptr when it has none.
+const tools::OptionFlag* FlagOfPath(const std::string& path, bool ndt) {
+  for (const tools::OptionFlag& flag : OptionFlags()) {
+    if ((ndt ? flag.ndt_path : flag.mlndt_path) == path) return &flag;
+  }
+  return nullptr;
+}
 
 struct Leaf {
   std::string path;

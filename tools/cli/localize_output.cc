@@ -8,7 +8,6 @@
 #include "lab/eval/statistics.h"
 #include "lab/eval/trajectory_io.h"
 #include "lab/report/gnuplot.h"
-#include "lab/report/progress.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
@@ -52,21 +51,6 @@ Json LocalizationScansJson(const std::vector<std::string>& files,
   Json json = ToolJson("mlndt_localize");
   json["scans"] = std::move(scans);
   return json;
-}
-
-// The progress line's detail of a scan: file, verdict, inliers, time.
-std::string LocalizationProgressDetail(const std::vector<std::string>& paths,
-                                       const LocalizationResult& r) {
-  char detail[200];
-  std::snprintf(detail,
-                sizeof(detail),
-                "%s %s, inliers %.3f, %d it, %.0f ms",
-                std::filesystem::path(paths[r.index]).filename().c_str(),
-                TerminationTypeToString(r.registration.termination_type),
-                r.registration.quality.inlier_fraction,
-                r.registration.num_iterations,
-                r.registration.total_time_s * 1e3);
-  return detail;
 }
 
 // trajectory_xy.png: the finest layer's cell means (every k-th, at most
@@ -215,35 +199,6 @@ std::string UnusableScansMessage(const VerdictCounts& verdicts) {
          verdicts.Line() +
          "): their poses in the trajectories are the predictions; "
          "see the registration.termination_type column of scans.csv";
-}
-
-bool LocalizeScansWithProgress(const LocalizerOptions& options,
-                               const LayeredGrid& map,
-                               const Isometry3d& first_guess,
-                               const std::vector<Isometry3d>& guesses,
-                               ScanInput* input,
-                               std::vector<LocalizationResult>* results,
-                               std::string* error) {
-  const std::vector<std::string>& paths = input->names();
-  Progress progress("mlndt_localize", paths.size());
-  const ScanLoader load = input->Loader();
-  const LocalizationCallback report = [&](const LocalizationResult& r) {
-    progress.Update(r.index + 1, LocalizationProgressDetail(paths, r));
-  };
-  const bool ok =
-      guesses.empty()
-          ? LocalizeScans(options,
-                          map,
-                          first_guess,
-                          paths.size(),
-                          load,
-                          report,
-                          results,
-                          error)
-          : LocalizeScansFromGuesses(
-                options, map, guesses, load, report, results, error);
-  progress.Finish();
-  return ok;
 }
 
 VerdictCounts PrintLocalizationTable(

@@ -40,16 +40,6 @@ void PrintMapLine(const std::string& map_path, const LayeredGrid& map);
 // The failure message when some scans have no usable pose.
 std::string UnusableScansMessage(const VerdictCounts& verdicts);
 
-// LocalizeScans over the scans of `input`, with a progress line; with
-// `guesses` (one per scan) LocalizeScansFromGuesses.
-bool LocalizeScansWithProgress(const LocalizerOptions& options,
-                               const LayeredGrid& map,
-                               const Isometry3d& first_guess,
-                               const std::vector<Isometry3d>& guesses,
-                               ScanInput* input,
-                               std::vector<LocalizationResult>* results,
-                               std::string* error);
-
 // One line a scan and the summary line on stdout; the scans by verdict.
 VerdictCounts PrintLocalizationTable(
     const std::vector<std::string>& paths,

@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <iostream>
 
-#include "lab/report/progress.h"
 #include "lab/report/text_format.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/map_memory.h"
@@ -117,31 +116,6 @@ void PrintMapBuild(const MapBuildOptions& options,
       summary.estimate_time_s,
       summary.build_time_s,
       summary.total_time_s);
-}
-
-// --output_json (docs/json_schema.md, "mlndt_map").
-bool BuildMapWithProgress(const MapBuildOptions& options,
-                          ScanInput* input,
-                          const std::vector<Isometry3d>& poses,
-                          LayeredGrid* map,
-                          MapBuildSummary* summary,
-                          std::string* error) {
-  const std::vector<std::string>& paths = input->names();
-  Progress progress("mlndt_map", paths.size());
-  const bool ok = BuildMapFromScans(
-      options,
-      paths,
-      input->Loader(/*allow_empty=*/true),
-      poses,
-      [&](size_t done, size_t) {
-        progress.Update(
-            done, std::filesystem::path(paths[done - 1]).filename().string());
-      },
-      map,
-      summary,
-      error);
-  progress.Finish();
-  return ok;
 }
 
 void WarnScansWithoutPoints(const ScanInput& input,

@@ -22,14 +22,6 @@ void PrintMapBuild(const MapBuildOptions& options,
                    const MapBuildSummary& summary,
                    const LayeredGrid& map);
 
-// BuildMapFromScans with a progress line of the scans read.
-bool BuildMapWithProgress(const MapBuildOptions& options,
-                          ScanInput* input,
-                          const std::vector<Isometry3d>& poses,
-                          LayeredGrid* map,
-                          MapBuildSummary* summary,
-                          std::string* error);
-
 // A warning on stderr for every scan without a finite point.
 void WarnScansWithoutPoints(const ScanInput& input,
                             const MapBuildSummary& summary);

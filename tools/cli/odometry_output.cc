@@ -6,7 +6,6 @@
 #include "lab/eval/statistics.h"
 #include "lab/eval/trajectory_io.h"
 #include "lab/report/gnuplot.h"
-#include "lab/report/progress.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
@@ -45,24 +44,6 @@ Json OdometryScansJson(const ScanInput& input,
   Json json = ToolJson("mlndt_odometry");
   json["scans"] = std::move(scans);
   return json;
-}
-
-// The progress line's detail of a scan: name, verdict, start layer,
-// uncertainty, time.
-std::string OdometryProgressDetail(const ScanInput& input,
-                                   const OdometryResult& r) {
-  char detail[200];
-  std::snprintf(detail,
-                sizeof(detail),
-                "%s %s%s, layer %d, +-%.2f m %.1f deg, %.0f ms",
-                input.name(r.index).c_str(),
-                TerminationTypeToString(r.termination_type),
-                r.fallback ? " (prediction used)" : "",
-                r.registration.start_layer,
-                r.uncertainty.translation_m,
-                r.uncertainty.rotation_deg,
-                r.total_time_s * 1e3);
-  return detail;
 }
 
 }  // namespace
@@ -235,35 +216,6 @@ bool WriteOdometryPlot(const std::string& gnuplot,
   script += "\n";
   return RunGnuplot(
       gnuplot, data_dir + "/trajectory_xy.gp", script, {png}, error);
-}
-
-bool RunOdometryWithProgress(const OdometryOptions& options,
-                             ScanInput* input,
-                             std::vector<OdometryResult>* results,
-                             OdometrySummary* summary,
-                             std::string* error) {
-  Progress progress("mlndt_odometry", input->size());
-  const OdometryScanLoader load = [&](size_t i,
-                                      PointCloud* cloud,
-                                      std::vector<double>* times,
-                                      double* stamp_s,
-                                      std::string* e) {
-    if (!input->Load(i, cloud, times, e)) return false;
-    *stamp_s = input->StampOf(i);
-    return true;
-  };
-  const bool ok = RunOdometry(
-      options,
-      input->size(),
-      load,
-      [&](const OdometryResult& r) {
-        progress.Update(r.index + 1, OdometryProgressDetail(*input, r));
-      },
-      results,
-      summary,
-      error);
-  progress.Finish();
-  return ok;
 }
 
 }  // namespace tools

@@ -41,13 +41,5 @@ bool WriteOdometryPlot(const std::string& gnuplot,
                        const std::vector<Isometry3d>& reference,
                        std::string* error);
 
-// RunOdometry over the scans of `input` (stamped by it), with a progress
-// line.
-bool RunOdometryWithProgress(const OdometryOptions& options,
-                             ScanInput* input,
-                             std::vector<OdometryResult>* results,
-                             OdometrySummary* summary,
-                             std::string* error);
-
 }  // namespace tools
 }  // namespace mlndt

@@ -137,13 +137,6 @@ const std::vector<OptionFlag>& OptionFlags() {
   return flags;
 }
 
-const OptionFlag* FlagOfPath(const std::string& path, bool ndt) {
-  for (const OptionFlag& flag : OptionFlags()) {
-    if ((ndt ? flag.ndt_path : flag.mlndt_path) == path) return &flag;
-  }
-  return nullptr;
-}
-
 const OptionFlag* FlagOfName(const std::string& name) {
   for (const OptionFlag& flag : OptionFlags()) {
     if (flag.name == name) return &flag;

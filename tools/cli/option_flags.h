@@ -38,9 +38,6 @@ struct OptionFlag {
 
 // Every flag made from the option tables, in the tables' order.
 const std::vector<OptionFlag>& OptionFlags();
-// The flag of an option path ("objective.loss_scale"; ndt: of NdtOptions),
-// nullptr when it has none.
-const OptionFlag* FlagOfPath(const std::string& path, bool ndt);
 // The flag named `name`, nullptr when no flag is made from the tables.
 const OptionFlag* FlagOfName(const std::string& name);
 

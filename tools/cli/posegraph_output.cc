@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
+#include "lab/eval/posegraph_metrics.h"
 #include "mlndt/cloud/pose_io.h"
-#include "tools/cli/posegraph_metrics_json.h"
 
 namespace mlndt {
 namespace tools {
@@ -12,6 +12,37 @@ namespace {
 // "chained" or "odometry": how the initial poses were found.
 std::string InitialName(const PoseGraphSummary& summary) {
   return summary.initial_is_chained ? "chained" : "odometry";
+}
+
+// The mean RPE of consecutive scans as JSON.
+Json RpeJson(const PoseGraphAccuracy& accuracy) {
+  return {{"translation_m", Number(accuracy.rpe_translation_m)},
+          {"rotation_deg", Number(accuracy.rpe_rotation_deg)}};
+}
+
+// Adds ate_alignment, ate_{initial,joint}_m and rpe_{initial,joint}
+// ({"translation_m", "rotation_deg"}) to *json, `initial_name` naming the
+// initial trajectory ("chained" or "odometry"): the ATE after aligning the
+// first poses and the mean RPE of consecutive scans
+// (EvaluatePoseGraphAccuracy, lab/eval/posegraph_metrics.h); false with
+// *error when a trajectory does not match the truth.
+bool AddTrajectoryMetrics(const std::string& initial_name,
+                          const std::vector<Isometry3d>& initial,
+                          const std::vector<Isometry3d>& joint,
+                          const std::vector<Isometry3d>& truth,
+                          Json* json,
+                          std::string* error) {
+  PoseGraphAccuracy initial_accuracy, joint_accuracy;
+  if (!EvaluatePoseGraphAccuracy(initial, truth, &initial_accuracy, error) ||
+      !EvaluatePoseGraphAccuracy(joint, truth, &joint_accuracy, error)) {
+    return false;
+  }
+  (*json)["ate_alignment"] = "first_pose";
+  (*json)["ate_" + initial_name + "_m"] = Number(initial_accuracy.ate_m);
+  (*json)["ate_joint_m"] = Number(joint_accuracy.ate_m);
+  (*json)["rpe_" + initial_name] = RpeJson(initial_accuracy);
+  (*json)["rpe_joint"] = RpeJson(joint_accuracy);
+  return true;
 }
 
 }  // namespace

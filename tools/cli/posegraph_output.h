@@ -18,7 +18,8 @@ bool WritePoseGraphTrajectories(const std::string& dir,
                                 std::string* error);
 
 // The settings, the joint problem's facts and the times; with `truth`
-// (empty: none) the trajectory metrics (posegraph_metrics_json.h).
+// (empty: none) the trajectory metrics (ATE and RPE,
+// lab/eval/posegraph_metrics.h).
 bool PoseGraphJson(const PoseGraphOptions& options,
                    const PoseGraphSummary& summary,
                    const std::vector<Isometry3d>& truth,

@@ -168,6 +168,18 @@ ScanLoader ScanInput::Loader(bool allow_empty) {
   };
 }
 
+OdometryScanLoader ScanInput::StampedLoader() {
+  return [this](size_t i,
+                PointCloud* cloud,
+                std::vector<double>* point_times_s,
+                double* stamp_s,
+                std::string* error) {
+    if (!Load(i, cloud, point_times_s, error)) return false;
+    *stamp_s = StampOf(i);
+    return true;
+  };
+}
+
 double ScanInput::StampOf(size_t i) const {
   const double stamp = stamps_s_.at(i);
   return std::isnan(stamp) ? static_cast<double>(i) : stamp;

@@ -16,6 +16,7 @@
 
 #include "lab/io/ros_bag_scans.h"
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/odometry/run_odometry.h"
 #include "mlndt/pipeline/localizer.h"
 
 DECLARE_string(bag);
@@ -46,6 +47,8 @@ class ScanInput {
   // `allow_empty` a scan without a finite point loads as an empty cloud
   // (mlndt_map reports it and goes on) instead of being an error.
   ScanLoader Loader(bool allow_empty = false);
+  // Load with the point times and StampOf the scan, for RunOdometry.
+  OdometryScanLoader StampedLoader();
 
   // For a bag: reads the header stamps of the scans now and checks that
   // they are finite and increase strictly, as ReadScanTimes checks a

@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "lab/eval/trajectory_io.h"
-#include "lab/report/progress.h"
 #include "lab/report/text_format.h"
 #include "lab/runs/sequence_totals.h"
 #include "mlndt/cloud/pose_io.h"
@@ -21,27 +20,6 @@ Json ErrorsJson(const std::vector<Stats>& errors) {
   Json o;
   for (int k = 0; k < 8; ++k) o[ErrorNames()[k]] = StatsJson(errors[k]);
   return o;
-}
-
-// One progress line per pair: pair, verdict, iterations, time, error.
-std::string SequencePairDetail(const PairResult& r) {
-  char detail[160];
-  int used = std::snprintf(detail,
-                           sizeof(detail),
-                           "pair %zu->%zu %s, %d it, %.0f ms",
-                           r.reference,
-                           r.input,
-                           TerminationTypeToString(r.termination),
-                           r.iterations,
-                           r.times.total_ms);
-  if (r.has_truth && used > 0 && used < static_cast<int>(sizeof(detail))) {
-    std::snprintf(detail + used,
-                  sizeof(detail) - used,
-                  ", error %.1f cm %.2f deg",
-                  r.error.translation_m * 100.0,
-                  r.error.rotation_rad * kRadToDeg);
-  }
-  return detail;
 }
 
 // pairs.csv: one row per pair. Error columns (signed components of the
@@ -237,28 +215,6 @@ void PrintSequenceTotals(const SequenceOptions& options,
               verdicts.usable(),
               verdicts.total());
   std::printf("output: %s\n", output_dir.c_str());
-}
-
-// The schema header and the run's settings, first in summary.json.
-bool RunSequenceWithProgress(const SequenceOptions& options,
-                             ScanStore* store,
-                             const std::vector<Isometry3d>& truth,
-                             const std::vector<Isometry3d>& odometry,
-                             std::vector<PairResult>* results,
-                             std::string* error) {
-  Progress progress("mlndt_sequence", store->size() - options.step);
-  const auto on_pair = [&](const PairResult& r, size_t done, size_t) {
-    progress.Update(done, SequencePairDetail(r));
-  };
-  const bool ok = RunSequence(options,
-                              store,
-                              truth.empty() ? nullptr : &truth,
-                              odometry.empty() ? nullptr : &odometry,
-                              on_pair,
-                              results,
-                              error);
-  progress.Finish();
-  return ok;
 }
 
 Json SequenceSummaryHeader(const SequenceOptions& options,

@@ -31,15 +31,6 @@ struct SequenceSource {
   int start_layer_flag = 0;
 };
 
-// RunSequence on `store` (truth and odometry may be empty) with a progress
-// line of the pairs.
-bool RunSequenceWithProgress(const SequenceOptions& options,
-                             ScanStore* store,
-                             const std::vector<Isometry3d>& truth,
-                             const std::vector<Isometry3d>& odometry,
-                             std::vector<PairResult>* results,
-                             std::string* error);
-
 // The schema header and the run's settings, first in summary.json.
 Json SequenceSummaryHeader(const SequenceOptions& options,
                            const SequenceSource& source,

@@ -49,7 +49,7 @@ TEST(RunJobs, RecordsTheRightRegistrationOfThePairFromTwoStarts) {
   const std::string pair = set.PairsByStep().at(0);
   std::vector<RunRecord> records;
   std::string error;
-  ASSERT_TRUE(RunJobs({set}, {Koide3Job(set, pair)}, &records, &error))
+  ASSERT_TRUE(RunJobs({set}, {Koide3Job(set, pair)}, nullptr, &records, &error))
       << error;
   ASSERT_EQ(records.size(), 2u);
   EXPECT_EQ(records[0].start, "prior");
@@ -94,7 +94,8 @@ TEST(RunJobs, AnUnreadableScanStopsTheBatchNamingTheDataSet) {
       testing::BundledDataPath("koide3/no_such_scan.pcd");
   std::vector<RunRecord> records;
   std::string error;
-  EXPECT_FALSE(RunJobs({set}, {Koide3Job(set, pair)}, &records, &error));
+  EXPECT_FALSE(
+      RunJobs({set}, {Koide3Job(set, pair)}, nullptr, &records, &error));
   EXPECT_EQ(error.rfind("koide3: ", 0), 0u) << error;
   EXPECT_NE(error.find("no_such_scan.pcd"), std::string::npos) << error;
   EXPECT_TRUE(records.empty());

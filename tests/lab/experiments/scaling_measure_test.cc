@@ -108,6 +108,7 @@ TEST(MeasureSizes, MeasuresEverySizeInOrder) {
                            scan,
                            {5000, 15000},
                            Motion(),
+                           nullptr,
                            &results,
                            &error))
       << error;

@@ -46,20 +46,20 @@ class SequenceTest : public ::testing::Test {
 TEST_F(SequenceTest, RegistersEveryPairOnceOnMapsBuiltOnce) {
   ScanStore store(sequence_.paths);
   SequenceOptions options;
-  std::vector<std::pair<size_t, size_t>> progress;
+  std::vector<ProgressEvent> progress;
+  ProgressFunction record(
+      [&](const ProgressEvent& e) { progress.push_back(e); });
   std::vector<PairResult> results;
   std::string error;
-  ASSERT_TRUE(RunSequence(
-      options,
-      &store,
-      &sequence_.world_from_scan,
-      nullptr,
-      [&](const PairResult&, size_t done, size_t total) {
-        progress.emplace_back(done, total);
-      },
-      &results,
-      &error))
+  ASSERT_TRUE(RunSequence(options,
+                          &store,
+                          &sequence_.world_from_scan,
+                          nullptr,
+                          &record,
+                          &results,
+                          &error))
       << error;
+  ASSERT_EQ(progress.size(), kScans - 1u);
   ASSERT_EQ(results.size(), kScans - 1u);
   for (size_t p = 0; p < results.size(); ++p) {
     const PairResult& r = results[p];
@@ -70,7 +70,16 @@ TEST_F(SequenceTest, RegistersEveryPairOnceOnMapsBuiltOnce) {
     EXPECT_TRUE(r.success);
     EXPECT_TRUE(r.strict_success) << r.error.translation_m;
     EXPECT_FALSE(r.guess_check_failed);
-    EXPECT_EQ(progress[p], std::make_pair(p + 1, size_t{kScans - 1}));
+    EXPECT_EQ(progress[p].index, p);
+    EXPECT_EQ(progress[p].done, p + 1);
+    EXPECT_EQ(progress[p].total, kScans - 1u);
+    EXPECT_EQ(
+        progress[p].status.rfind("pair " + std::to_string(p) + "->" +
+                                     std::to_string(p + 1) + " CONVERGENCE, ",
+                                 0),
+        0u)
+        << progress[p].status;
+    EXPECT_NE(progress[p].status.find(", error "), std::string::npos);
   }
   EXPECT_EQ(store.num_maps_built(), kScans - 1u);  // The last is no reference.
   EXPECT_GT(results[0].times.map_ms, 0.0);

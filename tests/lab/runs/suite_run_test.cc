@@ -83,15 +83,27 @@ TEST(SuitePlanText, NamesEveryDataSetAndTheTotal) {
                 "4 runs\n\n");
 }
 
-TEST(RunSuiteWithProgress, RunsAndScoresEveryPlannedRun) {
+TEST(RunSuite, RunsAndScoresEveryPlannedRun) {
   const SuitePlanOptions plan = Plan();
   const std::vector<LoadedSuiteDataset> sets = {Load("koide3", 0, plan),
                                                 Load("room", 1, plan)};
+  std::vector<ProgressEvent> events;
+  ProgressFunction progress(
+      [&](const ProgressEvent& e) { events.push_back(e); });
   std::vector<std::vector<SuiteRunResult>> results;
   std::string error;
-  ASSERT_TRUE(RunSuiteWithProgress(MatcherOptions(), sets, &results, &error))
+  ASSERT_TRUE(RunSuite(MatcherOptions(), sets, &progress, &results, &error))
       << error;
   ASSERT_EQ(results.size(), 2u);
+  // The runs numbered across the suite, each led by its data set's name.
+  ASSERT_EQ(events.size(), 4u);
+  for (size_t k = 0; k < events.size(); ++k) {
+    EXPECT_EQ(events[k].index, k);
+    EXPECT_EQ(events[k].done, k + 1);
+    EXPECT_EQ(events[k].total, 4u);
+    const std::string name = k < 2 ? "koide3 " : "room ";
+    EXPECT_EQ(events[k].status.rfind(name, 0), 0u) << events[k].status;
+  }
   size_t right = 0, wrong_convergence = 0;
   for (size_t d = 0; d < sets.size(); ++d) {
     ASSERT_EQ(results[d].size(), sets[d].runs.size());
@@ -121,13 +133,13 @@ TEST(RunSuiteWithProgress, RunsAndScoresEveryPlannedRun) {
   EXPECT_EQ(score.reach[0].all.right, 0u);
 }
 
-TEST(RunSuiteWithProgress, NamesTheDataSetOfAnUnreadableScan) {
+TEST(RunSuite, NamesTheDataSetOfAnUnreadableScan) {
   const SuitePlanOptions plan = Plan();
   std::vector<LoadedSuiteDataset> sets = {Load("room", 0, plan)};
   sets[0].scan_paths.begin()->second = "/nonexistent/scan.pcd";
   std::vector<std::vector<SuiteRunResult>> results;
   std::string error;
-  EXPECT_FALSE(RunSuiteWithProgress(MatcherOptions(), sets, &results, &error));
+  EXPECT_FALSE(RunSuite(MatcherOptions(), sets, nullptr, &results, &error));
   EXPECT_EQ(error.rfind("room: ", 0), 0u) << error;
   EXPECT_NE(error.find("/nonexistent/scan.pcd"), std::string::npos) << error;
 }

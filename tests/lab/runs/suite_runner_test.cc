@@ -58,26 +58,30 @@ TEST(RunSuiteDataset, RunsThePlanInOrderAndScoresEachRun) {
   MatcherOptions options;
   options.mlndt.retry.yaw_seeds_deg.clear();
   std::vector<std::string> seen;
+  ProgressFunction progress([&](const ProgressEvent& e) {
+    EXPECT_EQ(e.done, seen.size() + 1);
+    EXPECT_EQ(e.total, runs.size());
+    seen.push_back(e.status);
+  });
   std::vector<SuiteRunResult> results;
-  ASSERT_TRUE(RunSuiteDataset(
-      options,
-      SuccessCriterion{0.05, 1.0},
-      scans,
-      runs,
-      [&](const SuiteRun& run, const SuiteRunResult& result) {
-        seen.push_back(run.pair_key + " " + run.start);
-        EXPECT_EQ(result.outcome.kind, run.kind);
-      },
-      &results,
-      &error))
+  ASSERT_TRUE(RunSuiteDataset(options,
+                              SuccessCriterion{0.05, 1.0},
+                              scans,
+                              runs,
+                              &progress,
+                              &results,
+                              &error))
       << error;
   ASSERT_EQ(results.size(), runs.size());
-  EXPECT_EQ(seen.front(), "0_1 identity");
-  EXPECT_EQ(seen.back(), "1_2 x=50");
+  ASSERT_EQ(seen.size(), runs.size());
+  EXPECT_EQ(seen.front(), "0_1 identity: CONVERGENCE right");
+  EXPECT_EQ(seen.back().rfind("1_2 x=50: ", 0), 0u) << seen.back();
+  EXPECT_NE(seen.back().find(" wrong"), std::string::npos) << seen.back();
   size_t built = 0;
   for (size_t k = 0; k < runs.size(); ++k) {
     const SuiteRunResult& r = results[k];
     EXPECT_EQ(r.outcome.dataset, 1u);
+    EXPECT_EQ(r.outcome.kind, runs[k].kind);
     EXPECT_EQ(r.outcome.offset_index, runs[k].offset_index);
     EXPECT_NEAR(r.outcome.error.translation_m,
                 TranslationErrorM(runs[k].reference_from_input, r.estimate),
