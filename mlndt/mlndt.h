@@ -14,6 +14,7 @@
 #include "mlndt/common/fast_floor.h"
 #include "mlndt/common/option_table.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/common/progress.h"
 #include "mlndt/common/rigid_transform.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/common/types.h"
