@@ -14,6 +14,7 @@
 #include "mlndt/registration/internal/attempts.h"
 #include "mlndt/registration/internal/input_anchor.h"
 #include "mlndt/registration/internal/registration_steps.h"
+#include "mlndt/registration/prepared_input.h"
 
 namespace mlndt {
 namespace {
@@ -92,56 +93,44 @@ void Judge(const RegistrationOptions& options,
   }
 }
 
-// Sampled points relative to their centroid, and that centroid.
-std::vector<Eigen::Vector3d> CentredPoints(const PointCloud& sampled,
-                                           Eigen::Vector3d* centre,
-                                           double* rms_range_m) {
-  *centre = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : sampled.points()) *centre += p;
-  *centre /= static_cast<double>(sampled.size());
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(sampled.size());
-  double squares = 0.0;
-  for (const Eigen::Vector3d& p : sampled.points()) {
-    points.push_back(p - *centre);
-    squares += points.back().squaredNorm();
+// The map's check and the backend; null after Fail.
+std::unique_ptr<Backend> CheckedBackend(const RegistrationOptions& options,
+                                        const LayeredGrid& reference_map,
+                                        RegistrationSummary* summary) {
+  std::string error;
+  if (!internal::CheckMap(reference_map, &error)) {
+    Fail(error, summary);
+    return nullptr;
   }
-  *rms_range_m = std::sqrt(squares / static_cast<double>(sampled.size()));
-  return points;
+  std::unique_ptr<Backend> backend = CreateBackend(options.backend, &error);
+  if (!backend) Fail(error, summary);
+  return backend;
 }
 
-// The whole ML-NDT registration after the map exists (Table 1); times are
-// added to *summary. `buffer`: memory for the input's range filter (see
-// SampleInput), or null.
-void RegisterOnMap(const RegistrationOptions& options,
-                   const LayeredGrid& reference_map,
-                   const PointCloud& input,
-                   const Isometry3d& initial_reference_from_input,
-                   double start_time_s,
-                   RegistrationSummary* summary,
-                   PointCloud* buffer = nullptr) {
+// The whole ML-NDT registration of a prepared input once the backend exists
+// (Table 1); times are added to *summary. The input's problems, then the
+// guess's, then the sampling's fail it, in SampleInput's order.
+void RegisterPrepared(const RegistrationOptions& options,
+                      const LayeredGrid& reference_map,
+                      Backend* backend,
+                      const PreparedInput& input,
+                      const Isometry3d& initial_reference_from_input,
+                      double start_time_s,
+                      RegistrationSummary* summary) {
+  if (!input.input_error.empty()) return Fail(input.input_error, summary);
   std::string error;
-  if (!internal::CheckMap(reference_map, &error)) return Fail(error, summary);
-  std::unique_ptr<Backend> backend = CreateBackend(options.backend, &error);
-  if (!backend) return Fail(error, summary);
-  PointCloud sampled;
-  if (!internal::SampleInput(options.range_filter,
-                             options.sampling,
-                             input,
-                             initial_reference_from_input,
-                             &sampled,
-                             summary,
-                             &error,
-                             buffer)) {
+  if (!internal::CheckInitialGuess(initial_reference_from_input, &error)) {
     return Fail(error, summary);
   }
-  Eigen::Vector3d centre;
-  double rms_range_m = 0.0;
-  const std::vector<Eigen::Vector3d> points =
-      CentredPoints(sampled, &centre, &rms_range_m);
-  const internal::InputAnchor anchor(centre);
+  summary->input_points = input.input_points;
+  summary->range_filtered_points = input.range_filtered_points;
+  summary->sampled_points = input.sampled_points;
+  summary->sampling_time_s = input.sampling_time_s;
+  if (!input.sampling_error.empty()) return Fail(input.sampling_error, summary);
+  const std::vector<Eigen::Vector3d>& points = input.points;
+  const internal::InputAnchor anchor(input.centre);
   const Problem problem{
-      reference_map, points, anchor, backend.get(), rms_range_m, {}};
+      reference_map, points, anchor, backend, input.rms_range_m, {}};
   const Vector6d initial_xi =
       IsometryToPoseVector(initial_reference_from_input);
   const Vector6d initial_local = anchor.ToLocal(initial_xi);
@@ -173,6 +162,31 @@ void RegisterOnMap(const RegistrationOptions& options,
   Judge(options, attempt, summary);
 }
 
+// RegisterPrepared after preparing `input` (prepared_input.h): the one path
+// of both Register entry points. `buffer`: memory for the input's range
+// filter (see SampleInput), or null.
+void RegisterOnMap(const RegistrationOptions& options,
+                   const LayeredGrid& reference_map,
+                   const PointCloud& input,
+                   const Isometry3d& initial_reference_from_input,
+                   double start_time_s,
+                   RegistrationSummary* summary,
+                   PointCloud* buffer = nullptr) {
+  const std::unique_ptr<Backend> backend =
+      CheckedBackend(options, reference_map, summary);
+  if (!backend) return;
+  PreparedInput prepared;
+  internal::FilterSampleAndCentre(
+      options.range_filter, options.sampling, input, &prepared, buffer);
+  RegisterPrepared(options,
+                   reference_map,
+                   backend.get(),
+                   prepared,
+                   initial_reference_from_input,
+                   start_time_s,
+                   summary);
+}
+
 }  // namespace
 
 void Register(const RegistrationOptions& options,
@@ -193,6 +207,30 @@ void Register(const RegistrationOptions& options,
                   initial_reference_from_input,
                   start,
                   summary);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
+void Register(const RegistrationOptions& options,
+              const LayeredGrid& reference_map,
+              const PreparedInput& input,
+              const Isometry3d& initial_reference_from_input,
+              RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  const double start = NowSeconds();
+  std::string error;
+  if (!options.IsValid(&error)) {
+    Fail(error, summary);
+  } else if (const std::unique_ptr<Backend> backend =
+                 CheckedBackend(options, reference_map, summary)) {
+    RegisterPrepared(options,
+                     reference_map,
+                     backend.get(),
+                     input,
+                     initial_reference_from_input,
+                     start,
+                     summary);
   }
   summary->total_time_s = NowSeconds() - start;
 }
