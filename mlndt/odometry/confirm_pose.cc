@@ -62,7 +62,7 @@ MinimaSeparation ReturnedWithin(const MotionPredictionOptions& prediction) {
 Confirmation ConfirmPose(const RegistrationOptions& options,
                          const MotionPredictionOptions& prediction,
                          const LayeredGrid& map,
-                         const PointCloud& cloud,
+                         const PreparedInput& input,
                          const PredictionUncertainty& uncertainty,
                          const Isometry3d& predicted,
                          const Isometry3d& pose) {
@@ -71,7 +71,7 @@ Confirmation ConfirmPose(const RegistrationOptions& options,
   RegistrationSummary summary;
   Register(options,
            map,
-           cloud,
+           input,
            ConfirmationStart(uncertainty, predicted, pose),
            &summary);
   confirmation.time_s = summary.total_time_s;

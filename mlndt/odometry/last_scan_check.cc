@@ -10,13 +10,13 @@ namespace mlndt {
 Confirmation CheckAgainstLastScan(const RegistrationOptions& options,
                                   const MotionPredictionOptions& prediction,
                                   const LayeredGrid& last_scan_map,
-                                  const PointCloud& cloud,
+                                  const PreparedInput& input,
                                   const Isometry3d& predicted,
                                   const Isometry3d& pose) {
   Confirmation check;
   check.ran = true;
   RegistrationSummary summary;
-  Register(options, last_scan_map, cloud, predicted, &summary);
+  Register(options, last_scan_map, input, predicted, &summary);
   check.time_s = summary.total_time_s;
   if (!summary.IsSolutionUsable()) return check;  // No evidence.
   check.distance_m = TranslationErrorM(pose, summary.reference_from_input);

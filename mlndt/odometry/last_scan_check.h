@@ -21,23 +21,23 @@
 
 #include <string>
 
-#include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/odometry/confirm_pose.h"
 #include "mlndt/odometry/motion_prediction.h"
+#include "mlndt/registration/prepared_input.h"
 #include "mlndt/registration/registration_options.h"
 
 namespace mlndt {
 
-// Registers `cloud` onto `last_scan_map` (the map of the last registered
-// scan alone, in the world frame) from `predicted` with `options` (whose
-// initial uncertainty is the prediction's) and compares the result with
+// Registers the prepared scan `input` onto `last_scan_map` (the map of the last
+// registered scan alone, in the world frame) from `predicted` with `options`
+// (whose initial uncertainty is the prediction's) and compares the result with
 // `pose`.
 Confirmation CheckAgainstLastScan(const RegistrationOptions& options,
                                   const MotionPredictionOptions& prediction,
                                   const LayeredGrid& last_scan_map,
-                                  const PointCloud& cloud,
+                                  const PreparedInput& input,
                                   const Isometry3d& predicted,
                                   const Isometry3d& pose);
 

@@ -45,6 +45,7 @@
 #include "mlndt/odometry/local_map.h"
 #include "mlndt/odometry/motion_prediction.h"
 #include "mlndt/odometry/odometry_options.h"
+#include "mlndt/registration/prepared_input.h"
 #include "mlndt/registration/registration_summary.h"
 
 namespace mlndt {
@@ -158,25 +159,26 @@ class Odometry {
  private:
   RegistrationOptions ScanRegistrationOptions(
       const PredictionUncertainty& uncertainty) const;
-  // Registers `cloud` from `start` and applies the verdict (gate around
-  // result->predicted, confirmation, last-scan check) into *result.
+  // Registers the scan (prepared once per scan: every registration of it
+  // samples the same points) from `start` and applies the verdict (gate
+  // around result->predicted, confirmation, last-scan check) into *result.
   void Register(const LayeredGrid& map,
-                const PointCloud& cloud,
+                const PreparedInput& input,
                 const Isometry3d& start,
                 bool always_confirm,
                 OdometryResult* result);
   void Gate(OdometryResult* result) const;
-  void Search(const PointCloud& cloud, OdometryResult* result);
+  void Search(const PreparedInput& input, OdometryResult* result);
   bool BuildLastScanMap();
-  bool AgreesWithLocalMap(const PointCloud& cloud, OdometryResult* result);
+  bool AgreesWithLocalMap(const PreparedInput& input, OdometryResult* result);
   void Confirm(const RegistrationOptions& options,
                const LayeredGrid& map,
-               const PointCloud& cloud,
+               const PreparedInput& input,
                const Isometry3d& start,
                bool always_confirm,
                OdometryResult* result);
   Confirmation AgreesWithLastScan(const RegistrationOptions& options,
-                                  const PointCloud& cloud,
+                                  const PreparedInput& input,
                                   OdometryResult* result);
   bool UpdateMap(const PointCloud& cloud,
                  OdometryResult* result,
