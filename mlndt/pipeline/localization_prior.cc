@@ -10,6 +10,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/common/timer.h"
 #include "mlndt/registration/prepared_input.h"
+#include "mlndt/registration/prepared_registration.h"
 #include "mlndt/registration/rival_minima.h"
 
 namespace mlndt {
@@ -173,13 +174,15 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
   }
   RegistrationOptions with_prior = registration;
   with_prior.initial_uncertainty = prior;
-  // Every run registers the same samples (prepared_input.h): filtered and
-  // sampled once.
+  // Every run registers the same samples with the same options: the scan
+  // is filtered and sampled once (prepared_input.h), and the solver set up
+  // once (prepared_registration.h).
   const double prepare_start_s = NowSeconds();
   PreparedInput prepared;
   PrepareInput(with_prior, scan, &prepared);
+  PreparedRegistration runs(with_prior, prepared);
   const double prepare_time_s = NowSeconds() - prepare_start_s;
-  Register(with_prior, map, prepared, guess, summary);
+  runs.Register(map, guess, summary);
   const double min_inliers =
       options.min_fit_ratio *
       GaussianInlierShare(registration.quality_check.inlier_gate);
@@ -199,7 +202,7 @@ void RegisterWithinPrior(const PriorCheckOptions& options,
   for (const Isometry3d& start :
        ExploreStarts(options, prior, summary->finest_cell_size_m, guess)) {
     RegistrationSummary s;
-    Register(with_prior, map, prepared, start, &s);
+    runs.Register(map, start, &s);
     ++c.explored_starts;
     c.explored_time_s += s.total_time_s;
     keep(s);

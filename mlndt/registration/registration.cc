@@ -15,6 +15,7 @@
 #include "mlndt/registration/internal/input_anchor.h"
 #include "mlndt/registration/internal/registration_steps.h"
 #include "mlndt/registration/prepared_input.h"
+#include "mlndt/registration/prepared_registration.h"
 
 namespace mlndt {
 namespace {
@@ -110,13 +111,16 @@ std::unique_ptr<Backend> CheckedBackend(const RegistrationOptions& options,
 // The whole ML-NDT registration of a prepared input once the backend exists
 // (Table 1); times are added to *summary. The input's problems, then the
 // guess's, then the sampling's fail it, in SampleInput's order.
+// `problem_is_set`: the backend holds input.points and options' objective
+// already (PreparedRegistration), else they are set here.
 void RegisterPrepared(const RegistrationOptions& options,
                       const LayeredGrid& reference_map,
                       Backend* backend,
                       const PreparedInput& input,
                       const Isometry3d& initial_reference_from_input,
                       double start_time_s,
-                      RegistrationSummary* summary) {
+                      RegistrationSummary* summary,
+                      bool problem_is_set = false) {
   if (!input.input_error.empty()) return Fail(input.input_error, summary);
   std::string error;
   if (!internal::CheckInitialGuess(initial_reference_from_input, &error)) {
@@ -144,7 +148,9 @@ void RegisterPrepared(const RegistrationOptions& options,
                                .score;
 
   const double t0 = NowSeconds();
-  backend->SetProblem(points, options.objective, options.num_threads);
+  if (!problem_is_set) {
+    backend->SetProblem(points, options.objective, options.num_threads);
+  }
   internal::AttemptsCost cost;
   const Attempt attempt = internal::SolveAttempts(
       options, problem, initial_local, start_time_s, &cost);
@@ -266,6 +272,48 @@ void Register(const RegistrationOptions& options,
                   start,
                   summary,
                   &filtered);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
+PreparedRegistration::PreparedRegistration(const RegistrationOptions& options,
+                                           const PreparedInput& input)
+    : options_(options), input_(input) {
+  if (!options_.IsValid(&options_error_)) return;
+  backend_ = CreateBackend(options_.backend, &backend_error_);
+  if (backend_ != nullptr && input_.ok()) {
+    backend_->SetProblem(
+        input_.points, options_.objective, options_.num_threads);
+  }
+}
+
+PreparedRegistration::~PreparedRegistration() = default;
+
+void PreparedRegistration::Register(
+    const LayeredGrid& reference_map,
+    const Isometry3d& initial_reference_from_input,
+    RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  const double start = NowSeconds();
+  std::string error;
+  // Register's checks in Register's order: the options, the map, the
+  // backend.
+  if (!options_error_.empty()) {
+    Fail(options_error_, summary);
+  } else if (!internal::CheckMap(reference_map, &error)) {
+    Fail(error, summary);
+  } else if (backend_ == nullptr) {
+    Fail(backend_error_, summary);
+  } else {
+    RegisterPrepared(options_,
+                     reference_map,
+                     backend_.get(),
+                     input_,
+                     initial_reference_from_input,
+                     start,
+                     summary,
+                     /*problem_is_set=*/true);
   }
   summary->total_time_s = NowSeconds() - start;
 }

@@ -8,6 +8,7 @@
 
 #include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
+#include "mlndt/registration/prepared_registration.h"
 #include "mlndt/registration/registration.h"
 #include "tests/testing/test_data.h"
 
@@ -215,6 +216,75 @@ TEST_F(PreparedVelodynePair, PreparedWithInvalidOptionsFails) {
   EXPECT_NE(summary.message.find("prepared with invalid options"),
             std::string::npos)
       << summary.message;
+}
+
+// PreparedRegistration: one backend for every run, each run as Register on
+// the cloud from its start, whatever ran before it (another start, another
+// map), for each backend and with the Ceres blocks evaluated by two threads.
+TEST_F(PreparedVelodynePair, SharedSetUpGivesRegistersResultFromEveryStart) {
+  RegistrationOptions with_prior;
+  with_prior.initial_uncertainty.given = true;
+  with_prior.initial_uncertainty.translation_m = 1.0;
+  with_prior.initial_uncertainty.rotation_deg = 15.0;
+  RegistrationOptions lm = with_prior;
+  lm.backend.type = BackendType::LEVENBERG_MARQUARDT;
+  RegistrationOptions two_threads = with_prior;
+  two_threads.num_threads = 2;
+  LayeredGrid source_map;  // Another map: the source's own.
+  std::string error;
+  ASSERT_TRUE(
+      LayeredGrid::Build(with_prior.grid, source_, 1, &source_map, &error));
+  std::vector<Isometry3d> starts = Starts();
+  starts.push_back(starts.front());
+  for (const RegistrationOptions& options : {with_prior, lm, two_threads}) {
+    PreparedInput prepared;
+    ASSERT_TRUE(PrepareInput(options, source_, &prepared));
+    PreparedRegistration runs(options, prepared);
+    for (const Isometry3d& start : starts) {
+      RegistrationSummary plain, shared;
+      Register(options, map_, source_, start, &plain);
+      runs.Register(map_, start, &shared);
+      ASSERT_TRUE(plain.IsSolutionUsable()) << plain.message;
+      ExpectSameSummary(plain, shared);
+      Register(options, source_map, source_, start, &plain);
+      runs.Register(source_map, start, &shared);
+      ExpectSameSummary(plain, shared);
+    }
+  }
+}
+
+TEST_F(PreparedVelodynePair, SharedSetUpFailsAsRegister) {
+  RegistrationOptions invalid;
+  invalid.num_threads = 0;
+  RegistrationOptions options;
+  PreparedInput prepared, empty;
+  ASSERT_TRUE(PrepareInput(options, source_, &prepared));
+  PrepareInput(options, PointCloud(), &empty);
+  const LayeredGrid no_map;
+  const Isometry3d nan_guess = Isometry3d(
+      Eigen::Matrix4d::Constant(std::numeric_limits<double>::quiet_NaN()));
+  struct Case {
+    RegistrationOptions options;
+    const PointCloud* input;
+    const PreparedInput* prepared;
+    const LayeredGrid* map;
+    Isometry3d guess;
+  };
+  const PointCloud no_points;
+  const std::vector<Case> cases = {
+      {invalid, &source_, &prepared, &map_, Isometry3d::Identity()},
+      {options, &source_, &prepared, &no_map, Isometry3d::Identity()},
+      {options, &source_, &prepared, &map_, nan_guess},
+      {options, &no_points, &empty, &map_, nan_guess},
+  };
+  for (const Case& c : cases) {
+    RegistrationSummary plain, shared;
+    Register(c.options, *c.map, *c.input, c.guess, &plain);
+    PreparedRegistration(c.options, *c.prepared)
+        .Register(*c.map, c.guess, &shared);
+    EXPECT_EQ(plain.termination_type, TerminationType::FAILURE);
+    ExpectSameSummary(plain, shared);
+  }
 }
 
 }  // namespace
