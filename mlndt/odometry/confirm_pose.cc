@@ -59,21 +59,17 @@ MinimaSeparation ReturnedWithin(const MotionPredictionOptions& prediction) {
 
 }  // namespace
 
-Confirmation ConfirmPose(const RegistrationOptions& options,
-                         const MotionPredictionOptions& prediction,
+Confirmation ConfirmPose(const MotionPredictionOptions& prediction,
                          const LayeredGrid& map,
-                         const PointCloud& cloud,
+                         PreparedRegistration* scan,
                          const PredictionUncertainty& uncertainty,
                          const Isometry3d& predicted,
                          const Isometry3d& pose) {
   Confirmation confirmation;
   confirmation.ran = true;
   RegistrationSummary summary;
-  Register(options,
-           map,
-           cloud,
-           ConfirmationStart(uncertainty, predicted, pose),
-           &summary);
+  scan->Register(
+      map, ConfirmationStart(uncertainty, predicted, pose), &summary);
   confirmation.time_s = summary.total_time_s;
   confirmation.distance_m =
       TranslationErrorM(pose, summary.reference_from_input);

@@ -20,10 +20,10 @@
 
 #include <string>
 
-#include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/odometry/motion_prediction.h"
+#include "mlndt/registration/prepared_registration.h"
 #include "mlndt/registration/registration_options.h"
 
 namespace mlndt {
@@ -73,12 +73,12 @@ Isometry3d ConfirmationStart(const PredictionUncertainty& uncertainty,
                              const Isometry3d& predicted,
                              const Isometry3d& pose);
 
-// Runs the second registration of `cloud` onto `map` (with `options`, whose
-// initial uncertainty is the prediction's) and compares it with `pose`.
-Confirmation ConfirmPose(const RegistrationOptions& options,
-                         const MotionPredictionOptions& prediction,
+// Runs the second registration of the scan onto `map` with `scan`
+// (prepared_registration.h: the scan's samples and options, whose initial
+// uncertainty is the prediction's) and compares it with `pose`.
+Confirmation ConfirmPose(const MotionPredictionOptions& prediction,
                          const LayeredGrid& map,
-                         const PointCloud& cloud,
+                         PreparedRegistration* scan,
                          const PredictionUncertainty& uncertainty,
                          const Isometry3d& predicted,
                          const Isometry3d& pose);

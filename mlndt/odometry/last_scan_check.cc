@@ -7,16 +7,15 @@
 
 namespace mlndt {
 
-Confirmation CheckAgainstLastScan(const RegistrationOptions& options,
-                                  const MotionPredictionOptions& prediction,
+Confirmation CheckAgainstLastScan(const MotionPredictionOptions& prediction,
                                   const LayeredGrid& last_scan_map,
-                                  const PointCloud& cloud,
+                                  PreparedRegistration* scan,
                                   const Isometry3d& predicted,
                                   const Isometry3d& pose) {
   Confirmation check;
   check.ran = true;
   RegistrationSummary summary;
-  Register(options, last_scan_map, cloud, predicted, &summary);
+  scan->Register(last_scan_map, predicted, &summary);
   check.time_s = summary.total_time_s;
   if (!summary.IsSolutionUsable()) return check;  // No evidence.
   check.distance_m = TranslationErrorM(pose, summary.reference_from_input);

@@ -21,23 +21,21 @@
 
 #include <string>
 
-#include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/odometry/confirm_pose.h"
 #include "mlndt/odometry/motion_prediction.h"
-#include "mlndt/registration/registration_options.h"
+#include "mlndt/registration/prepared_registration.h"
 
 namespace mlndt {
 
-// Registers `cloud` onto `last_scan_map` (the map of the last registered
-// scan alone, in the world frame) from `predicted` with `options` (whose
-// initial uncertainty is the prediction's) and compares the result with
-// `pose`.
-Confirmation CheckAgainstLastScan(const RegistrationOptions& options,
-                                  const MotionPredictionOptions& prediction,
+// Registers the scan onto `last_scan_map` (the map of the last registered
+// scan alone, in the world frame) from `predicted` with `scan`
+// (prepared_registration.h: the scan's samples and options, whose initial
+// uncertainty is the prediction's) and compares the result with `pose`.
+Confirmation CheckAgainstLastScan(const MotionPredictionOptions& prediction,
                                   const LayeredGrid& last_scan_map,
-                                  const PointCloud& cloud,
+                                  PreparedRegistration* scan,
                                   const Isometry3d& predicted,
                                   const Isometry3d& pose);
 

@@ -98,14 +98,12 @@ RegistrationOptions Odometry::ScanRegistrationOptions(
 
 // Registers onto the local map from `start` and applies the verdict.
 void Odometry::Register(const LayeredGrid& map,
-                        const PointCloud& cloud,
+                        PreparedRegistration* scan,
                         const Isometry3d& start,
                         bool always_confirm,
                         OdometryResult* result) {
-  const RegistrationOptions options =
-      ScanRegistrationOptions(result->uncertainty);
   RegistrationSummary& summary = result->registration;
-  mlndt::Register(options, map, cloud, start, &summary);
+  scan->Register(map, start, &summary);
   result->termination_type = summary.termination_type;
   result->message = summary.message;
   result->registration_time_s += summary.total_time_s;
@@ -116,7 +114,7 @@ void Odometry::Register(const LayeredGrid& map,
                                             summary.reference_from_input);
   if (summary.IsSolutionUsable()) Gate(result);
   if (result->termination_type == TerminationType::CONVERGENCE) {
-    Confirm(options, map, cloud, start, always_confirm, result);
+    Confirm(map, scan, start, always_confirm, result);
   }
 }
 
@@ -164,7 +162,7 @@ void Odometry::Gate(OdometryResult* result) const {
 // Registers a scan the prediction did not register from wider starts
 // (recovery.h); the first whose verdict is CONVERGENCE (always confirmed)
 // registers it. Otherwise the first attempt's verdict stands.
-void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
+void Odometry::Search(PreparedRegistration* scan, OdometryResult* result) {
   std::vector<Isometry3d> starts = SearchStarts(
       options_.recovery,
       result->predicted_world_from_sensor,
@@ -176,7 +174,7 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
 
   for (size_t k = 0; k < starts.size(); ++k) {
     OdometryResult attempt = *result;
-    Register(local_map_.grid(), cloud, starts[k], true, &attempt);
+    Register(local_map_.grid(), scan, starts[k], true, &attempt);
     result->registration_time_s = attempt.registration_time_s;
     ++result->search_starts;
     if (attempt.termination_type != TerminationType::CONVERGENCE) continue;
@@ -192,14 +190,14 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
   if (options_.recovery.register_onto_last_scan && BuildLastScanMap()) {
     OdometryResult attempt = *result;
     Register(last_scan_map_.grid(),
-             cloud,
+             scan,
              result->predicted_world_from_sensor,
              true,
              &attempt);
     result->registration_time_s = attempt.registration_time_s;
     ++result->search_starts;
     if (attempt.termination_type == TerminationType::CONVERGENCE &&
-        AgreesWithLocalMap(cloud, &attempt)) {
+        AgreesWithLocalMap(scan, &attempt)) {
       const std::string first_message = result->message;
       const int tried = result->search_starts;
       *result = attempt;
@@ -223,14 +221,10 @@ void Odometry::Search(const PointCloud& cloud, OdometryResult* result) {
 // registered onto the local map from it (the last-scan check the other way
 // round): that registration usable and within the prediction's smallest
 // uncertainty of the pose.
-bool Odometry::AgreesWithLocalMap(const PointCloud& cloud,
+bool Odometry::AgreesWithLocalMap(PreparedRegistration* scan,
                                   OdometryResult* result) {
   RegistrationSummary summary;
-  mlndt::Register(ScanRegistrationOptions(result->uncertainty),
-                  local_map_.grid(),
-                  cloud,
-                  result->world_from_sensor,
-                  &summary);
+  scan->Register(local_map_.grid(), result->world_from_sensor, &summary);
   result->registration_time_s += summary.total_time_s;
   if (!summary.IsSolutionUsable()) return false;
   return TranslationErrorM(summary.reference_from_input,
@@ -258,9 +252,8 @@ bool Odometry::BuildLastScanMap() {
 
 // CONVERGENCE only for a pose the registration returns to (confirm_pose.h);
 // an unconfirmed pose is NO_CONVERGENCE.
-void Odometry::Confirm(const RegistrationOptions& options,
-                       const LayeredGrid& map,
-                       const PointCloud& cloud,
+void Odometry::Confirm(const LayeredGrid& map,
+                       PreparedRegistration* scan,
                        const Isometry3d& start,
                        bool always_confirm,
                        OdometryResult* result) {
@@ -272,10 +265,9 @@ void Odometry::Confirm(const RegistrationOptions& options,
     return;
   }
   if (!options_.confirmation.enabled) return;
-  const Confirmation confirmation = ConfirmPose(options,
-                                                options_.prediction,
+  const Confirmation confirmation = ConfirmPose(options_.prediction,
                                                 map,
-                                                cloud,
+                                                scan,
                                                 result->uncertainty,
                                                 start,
                                                 result->world_from_sensor);
@@ -285,7 +277,7 @@ void Odometry::Confirm(const RegistrationOptions& options,
   const bool second_view = &map != &last_scan_map_.grid();
   if (!confirmation.confirmed) {
     if (second_view && options_.confirmation.last_scan_confirms &&
-        AgreesWithLastScan(options, cloud, result).agreed) {
+        AgreesWithLastScan(scan, result).agreed) {
       AppendMessage("confirmed by the last registered scan alone",
                     &result->message);
       return;
@@ -295,7 +287,7 @@ void Odometry::Confirm(const RegistrationOptions& options,
     return;
   }
   if (!second_view || !options_.confirmation.check_last_scan) return;
-  const Confirmation check = AgreesWithLastScan(options, cloud, result);
+  const Confirmation check = AgreesWithLastScan(scan, result);
   if (check.confirmed) return;
   result->termination_type = TerminationType::NO_CONVERGENCE;
   AppendMessage(check.message, &result->message);
@@ -304,15 +296,13 @@ void Odometry::Confirm(const RegistrationOptions& options,
 // The scan registered onto the last registered scan alone, compared with
 // its pose (last_scan_check.h); not run (confirmed, not agreed) without a
 // last scan or its map.
-Confirmation Odometry::AgreesWithLastScan(const RegistrationOptions& options,
-                                          const PointCloud& cloud,
+Confirmation Odometry::AgreesWithLastScan(PreparedRegistration* scan,
                                           OdometryResult* result) {
   if (!BuildLastScanMap()) return Confirmation();  // No evidence.
   const Confirmation check =
-      CheckAgainstLastScan(options,
-                           options_.prediction,
+      CheckAgainstLastScan(options_.prediction,
                            last_scan_map_.grid(),
-                           cloud,
+                           scan,
                            result->predicted_world_from_sensor,
                            result->world_from_sensor);
   result->registration_time_s += check.time_s;
@@ -418,13 +408,22 @@ bool Odometry::Process(const OdometryScan& scan,
     result->termination_type = TerminationType::FAILURE;
     result->message = "no points";
   } else {
+    // Every registration of the scan (the search's, the confirmation's)
+    // samples the same points with the same options: the scan is filtered
+    // and sampled once, and the solver set up once.
+    const double prepare_start_s = NowSeconds();
+    PreparedInput input;
+    PrepareInput(options_.registration, cloud, &input);
+    PreparedRegistration scan_registration(
+        ScanRegistrationOptions(result->uncertainty), input);
+    result->registration_time_s += NowSeconds() - prepare_start_s;
     Register(local_map_.grid(),
-             cloud,
+             &scan_registration,
              result->predicted_world_from_sensor,
              false,
              result);
     if (result->termination_type != TerminationType::CONVERGENCE) {
-      Search(cloud, result);
+      Search(&scan_registration, result);
     }
   }
   if (untimed > 0) {

@@ -45,6 +45,7 @@
 #include "mlndt/odometry/local_map.h"
 #include "mlndt/odometry/motion_prediction.h"
 #include "mlndt/odometry/odometry_options.h"
+#include "mlndt/registration/prepared_registration.h"
 #include "mlndt/registration/registration_summary.h"
 
 namespace mlndt {
@@ -158,25 +159,25 @@ class Odometry {
  private:
   RegistrationOptions ScanRegistrationOptions(
       const PredictionUncertainty& uncertainty) const;
-  // Registers `cloud` from `start` and applies the verdict (gate around
-  // result->predicted, confirmation, last-scan check) into *result.
+  // Registers the scan from `start` and applies the verdict (gate around
+  // result->predicted, confirmation, last-scan check) into *result. `scan`:
+  // the scan prepared once, with the scan's options (every registration of
+  // it samples the same points and shares the solver's set-up).
   void Register(const LayeredGrid& map,
-                const PointCloud& cloud,
+                PreparedRegistration* scan,
                 const Isometry3d& start,
                 bool always_confirm,
                 OdometryResult* result);
   void Gate(OdometryResult* result) const;
-  void Search(const PointCloud& cloud, OdometryResult* result);
+  void Search(PreparedRegistration* scan, OdometryResult* result);
   bool BuildLastScanMap();
-  bool AgreesWithLocalMap(const PointCloud& cloud, OdometryResult* result);
-  void Confirm(const RegistrationOptions& options,
-               const LayeredGrid& map,
-               const PointCloud& cloud,
+  bool AgreesWithLocalMap(PreparedRegistration* scan, OdometryResult* result);
+  void Confirm(const LayeredGrid& map,
+               PreparedRegistration* scan,
                const Isometry3d& start,
                bool always_confirm,
                OdometryResult* result);
-  Confirmation AgreesWithLastScan(const RegistrationOptions& options,
-                                  const PointCloud& cloud,
+  Confirmation AgreesWithLastScan(PreparedRegistration* scan,
                                   OdometryResult* result);
   bool UpdateMap(const PointCloud& cloud,
                  OdometryResult* result,

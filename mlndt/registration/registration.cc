@@ -14,6 +14,8 @@
 #include "mlndt/registration/internal/attempts.h"
 #include "mlndt/registration/internal/input_anchor.h"
 #include "mlndt/registration/internal/registration_steps.h"
+#include "mlndt/registration/prepared_input.h"
+#include "mlndt/registration/prepared_registration.h"
 
 namespace mlndt {
 namespace {
@@ -92,56 +94,47 @@ void Judge(const RegistrationOptions& options,
   }
 }
 
-// Sampled points relative to their centroid, and that centroid.
-std::vector<Eigen::Vector3d> CentredPoints(const PointCloud& sampled,
-                                           Eigen::Vector3d* centre,
-                                           double* rms_range_m) {
-  *centre = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : sampled.points()) *centre += p;
-  *centre /= static_cast<double>(sampled.size());
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(sampled.size());
-  double squares = 0.0;
-  for (const Eigen::Vector3d& p : sampled.points()) {
-    points.push_back(p - *centre);
-    squares += points.back().squaredNorm();
+// The map's check and the backend; null after Fail.
+std::unique_ptr<Backend> CheckedBackend(const RegistrationOptions& options,
+                                        const LayeredGrid& reference_map,
+                                        RegistrationSummary* summary) {
+  std::string error;
+  if (!internal::CheckMap(reference_map, &error)) {
+    Fail(error, summary);
+    return nullptr;
   }
-  *rms_range_m = std::sqrt(squares / static_cast<double>(sampled.size()));
-  return points;
+  std::unique_ptr<Backend> backend = CreateBackend(options.backend, &error);
+  if (!backend) Fail(error, summary);
+  return backend;
 }
 
-// The whole ML-NDT registration after the map exists (Table 1); times are
-// added to *summary. `buffer`: memory for the input's range filter (see
-// SampleInput), or null.
-void RegisterOnMap(const RegistrationOptions& options,
-                   const LayeredGrid& reference_map,
-                   const PointCloud& input,
-                   const Isometry3d& initial_reference_from_input,
-                   double start_time_s,
-                   RegistrationSummary* summary,
-                   PointCloud* buffer = nullptr) {
+// The whole ML-NDT registration of a prepared input once the backend exists
+// (Table 1); times are added to *summary. The input's problems, then the
+// guess's, then the sampling's fail it, in SampleInput's order.
+// `problem_is_set`: the backend holds input.points and options' objective
+// already (PreparedRegistration), else they are set here.
+void RegisterPrepared(const RegistrationOptions& options,
+                      const LayeredGrid& reference_map,
+                      Backend* backend,
+                      const PreparedInput& input,
+                      const Isometry3d& initial_reference_from_input,
+                      double start_time_s,
+                      RegistrationSummary* summary,
+                      bool problem_is_set = false) {
+  if (!input.input_error.empty()) return Fail(input.input_error, summary);
   std::string error;
-  if (!internal::CheckMap(reference_map, &error)) return Fail(error, summary);
-  std::unique_ptr<Backend> backend = CreateBackend(options.backend, &error);
-  if (!backend) return Fail(error, summary);
-  PointCloud sampled;
-  if (!internal::SampleInput(options.range_filter,
-                             options.sampling,
-                             input,
-                             initial_reference_from_input,
-                             &sampled,
-                             summary,
-                             &error,
-                             buffer)) {
+  if (!internal::CheckInitialGuess(initial_reference_from_input, &error)) {
     return Fail(error, summary);
   }
-  Eigen::Vector3d centre;
-  double rms_range_m = 0.0;
-  const std::vector<Eigen::Vector3d> points =
-      CentredPoints(sampled, &centre, &rms_range_m);
-  const internal::InputAnchor anchor(centre);
+  summary->input_points = input.input_points;
+  summary->range_filtered_points = input.range_filtered_points;
+  summary->sampled_points = input.sampled_points;
+  summary->sampling_time_s = input.sampling_time_s;
+  if (!input.sampling_error.empty()) return Fail(input.sampling_error, summary);
+  const std::vector<Eigen::Vector3d>& points = input.points;
+  const internal::InputAnchor anchor(input.centre);
   const Problem problem{
-      reference_map, points, anchor, backend.get(), rms_range_m, {}};
+      reference_map, points, anchor, backend, input.rms_range_m, {}};
   const Vector6d initial_xi =
       IsometryToPoseVector(initial_reference_from_input);
   const Vector6d initial_local = anchor.ToLocal(initial_xi);
@@ -155,7 +148,9 @@ void RegisterOnMap(const RegistrationOptions& options,
                                .score;
 
   const double t0 = NowSeconds();
-  backend->SetProblem(points, options.objective, options.num_threads);
+  if (!problem_is_set) {
+    backend->SetProblem(points, options.objective, options.num_threads);
+  }
   internal::AttemptsCost cost;
   const Attempt attempt = internal::SolveAttempts(
       options, problem, initial_local, start_time_s, &cost);
@@ -171,6 +166,31 @@ void RegisterOnMap(const RegistrationOptions& options,
   }
   ReportSolution(problem, attempt, summary);
   Judge(options, attempt, summary);
+}
+
+// RegisterPrepared after preparing `input` (prepared_input.h): the one path
+// of both Register entry points. `buffer`: memory for the input's range
+// filter (see SampleInput), or null.
+void RegisterOnMap(const RegistrationOptions& options,
+                   const LayeredGrid& reference_map,
+                   const PointCloud& input,
+                   const Isometry3d& initial_reference_from_input,
+                   double start_time_s,
+                   RegistrationSummary* summary,
+                   PointCloud* buffer = nullptr) {
+  const std::unique_ptr<Backend> backend =
+      CheckedBackend(options, reference_map, summary);
+  if (!backend) return;
+  PreparedInput prepared;
+  internal::FilterSampleAndCentre(
+      options.range_filter, options.sampling, input, &prepared, buffer);
+  RegisterPrepared(options,
+                   reference_map,
+                   backend.get(),
+                   prepared,
+                   initial_reference_from_input,
+                   start_time_s,
+                   summary);
 }
 
 }  // namespace
@@ -193,6 +213,30 @@ void Register(const RegistrationOptions& options,
                   initial_reference_from_input,
                   start,
                   summary);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
+void Register(const RegistrationOptions& options,
+              const LayeredGrid& reference_map,
+              const PreparedInput& input,
+              const Isometry3d& initial_reference_from_input,
+              RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  const double start = NowSeconds();
+  std::string error;
+  if (!options.IsValid(&error)) {
+    Fail(error, summary);
+  } else if (const std::unique_ptr<Backend> backend =
+                 CheckedBackend(options, reference_map, summary)) {
+    RegisterPrepared(options,
+                     reference_map,
+                     backend.get(),
+                     input,
+                     initial_reference_from_input,
+                     start,
+                     summary);
   }
   summary->total_time_s = NowSeconds() - start;
 }
@@ -228,6 +272,48 @@ void Register(const RegistrationOptions& options,
                   start,
                   summary,
                   &filtered);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
+PreparedRegistration::PreparedRegistration(const RegistrationOptions& options,
+                                           const PreparedInput& input)
+    : options_(options), input_(input) {
+  if (!options_.IsValid(&options_error_)) return;
+  backend_ = CreateBackend(options_.backend, &backend_error_);
+  if (backend_ != nullptr && input_.ok()) {
+    backend_->SetProblem(
+        input_.points, options_.objective, options_.num_threads);
+  }
+}
+
+PreparedRegistration::~PreparedRegistration() = default;
+
+void PreparedRegistration::Register(
+    const LayeredGrid& reference_map,
+    const Isometry3d& initial_reference_from_input,
+    RegistrationSummary* summary) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  const double start = NowSeconds();
+  std::string error;
+  // Register's checks in Register's order: the options, the map, the
+  // backend.
+  if (!options_error_.empty()) {
+    Fail(options_error_, summary);
+  } else if (!internal::CheckMap(reference_map, &error)) {
+    Fail(error, summary);
+  } else if (backend_ == nullptr) {
+    Fail(backend_error_, summary);
+  } else {
+    RegisterPrepared(options_,
+                     reference_map,
+                     backend_.get(),
+                     input_,
+                     initial_reference_from_input,
+                     start,
+                     summary,
+                     /*problem_is_set=*/true);
   }
   summary->total_time_s = NowSeconds() - start;
 }

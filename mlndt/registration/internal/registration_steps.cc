@@ -26,6 +26,13 @@ bool SampleInput(const RangeFilterOptions& range_filter,
                  RegistrationSummary* summary,
                  std::string* error,
                  PointCloud* buffer) {
+  return CheckInput(input, error) &&
+         CheckInitialGuess(initial_reference_from_input, error) &&
+         FilterAndSample(
+             range_filter, options, input, sampled, summary, error, buffer);
+}
+
+bool CheckInput(const PointCloud& input, std::string* error) {
   if (input.empty()) {
     *error = "the input cloud is empty";
     return false;
@@ -34,6 +41,11 @@ bool SampleInput(const RangeFilterOptions& range_filter,
     *error = "the input cloud has non-finite points";
     return false;
   }
+  return true;
+}
+
+bool CheckInitialGuess(const Isometry3d& initial_reference_from_input,
+                       std::string* error) {
   if (!initial_reference_from_input.matrix().allFinite()) {
     *error = "the initial guess is not finite";
     return false;
@@ -47,6 +59,16 @@ bool SampleInput(const RangeFilterOptions& range_filter,
     *error = "the initial guess is not a rigid transform: " + problem;
     return false;
   }
+  return true;
+}
+
+bool FilterAndSample(const RangeFilterOptions& range_filter,
+                     const SamplingOptions& options,
+                     const PointCloud& input,
+                     PointCloud* sampled,
+                     RegistrationSummary* summary,
+                     std::string* error,
+                     PointCloud* buffer) {
   const double t0 = NowSeconds();
   RangeFilterSummary filter_summary;
   PointCloud own_buffer;

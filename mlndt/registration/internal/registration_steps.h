@@ -9,6 +9,7 @@
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/cloud/range_filter.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/registration/prepared_input.h"
 #include "mlndt/registration/registration_summary.h"
 #include "mlndt/sampling/point_sampler.h"
 
@@ -26,7 +27,7 @@ void Fail(const char* entry_point,
 // sampling time. False (and the message in *error) when nothing usable is
 // left. `buffer` (optional) holds the range filter's output: its memory
 // is reused (Register passes the filtered reference's, no longer needed once
-// the map exists).
+// the map exists). CheckInput, then CheckInitialGuess, then FilterAndSample.
 bool SampleInput(const RangeFilterOptions& range_filter,
                  const SamplingOptions& options,
                  const PointCloud& input,
@@ -35,6 +36,36 @@ bool SampleInput(const RangeFilterOptions& range_filter,
                  RegistrationSummary* summary,
                  std::string* error,
                  PointCloud* buffer = nullptr);
+
+// SampleInput's first step: false with *error for an empty input or one with
+// a non-finite point.
+bool CheckInput(const PointCloud& input, std::string* error);
+
+// SampleInput's second step: false with *error for a guess that is not
+// finite or not a rigid transform.
+bool CheckInitialGuess(const Isometry3d& initial_reference_from_input,
+                       std::string* error);
+
+// SampleInput's last step: the range filter, then the sampling; fills
+// summary's input_points, range_filtered_points, sampled_points and
+// sampling_time_s (as far as it got). False with *error when nothing is
+// left.
+bool FilterAndSample(const RangeFilterOptions& range_filter,
+                     const SamplingOptions& options,
+                     const PointCloud& input,
+                     PointCloud* sampled,
+                     RegistrationSummary* summary,
+                     std::string* error,
+                     PointCloud* buffer = nullptr);
+
+// PrepareInput's work (prepared_input.h) with the range filter's output in
+// `buffer` (optional; as SampleInput's): CheckInput, then FilterAndSample,
+// then the samples about their centroid. Returns prepared->ok().
+bool FilterSampleAndCentre(const RangeFilterOptions& range_filter,
+                           const SamplingOptions& options,
+                           const PointCloud& input,
+                           PreparedInput* prepared,
+                           PointCloud* buffer = nullptr);
 
 // The reference scan without the returns the range filter rejects; false
 // with *error when none is left.
