@@ -66,7 +66,8 @@ void Values(const OptionTable& table,
 
 // OdometryOptions' registration starts from OdometryRegistrationOptions():
 // the library's defaults but the probe of weak directions, the search along
-// them and the mean-score check (no shadow fields of the odometry's own).
+// them, the mean-score check and the localizability test (no shadow fields
+// of the odometry's own).
 TEST(OdometryOptions, RegistrationDefaultsAreTheOdometryPreset) {
   const RegistrationOptions library;
   const RegistrationOptions preset = OdometryRegistrationOptions();
@@ -85,6 +86,7 @@ TEST(OdometryOptions, RegistrationDefaultsAreTheOdometryPreset) {
   EXPECT_EQ(differ,
             (std::vector<std::string>{"quality_check.max_flatness=0.8",
                                       "quality_check.max_mean_score=11",
+                                      "quality_check.min_localizability=0",
                                       "retry.weak_direction_rounds=0"}));
   EXPECT_EQ(OdometryOwnOptionsTable().Find("max_flatness"), nullptr);
 }
