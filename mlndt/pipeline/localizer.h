@@ -192,9 +192,8 @@ using ScanLoader =
 // comes into one reused cloud, each from the prediction. `progress` (may be
 // null, not owned) hears of each scan once it is localised (its verdict,
 // inliers, iterations and time); `results` gets every result (cleared
-// first). False with *error on
-// invalid options, an empty map or a scan that cannot be loaded (the results so
-// far are kept).
+// first). False with *error on invalid options, an empty map or a scan that
+// cannot be loaded (the results so far are kept).
 bool LocalizeScans(const LocalizerOptions& options,
                    const LayeredGrid& map,
                    const Isometry3d& first_map_from_scan,
