@@ -20,7 +20,9 @@
 #include <glog/logging.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <system_error>
 
 #include "lab/runs/matcher.h"
 #include "mlndt/cloud/io.h"
@@ -66,6 +68,16 @@ constexpr char kBundledReference[] = "koide3/251370668.pcd";
 constexpr char kBundledInput[] = "koide3/251371071.pcd";
 constexpr char kBundledExpected[] = "koide3/T_target_source.txt";
 
+// The bundled pair's folder: share/mlndt/data beside the executable's
+// folder (tools/CMakeLists.txt puts it there in the build tree and in the
+// installation).
+std::string BundledDataDir() {
+  std::error_code error;  // Without /proc: relative to the working folder.
+  const std::filesystem::path exe =
+      std::filesystem::read_symlink("/proc/self/exe", error);
+  return (exe.parent_path().parent_path() / "share/mlndt/data/").string();
+}
+
 struct Inputs {
   std::string reference;
   std::string input;
@@ -98,7 +110,7 @@ bool InputsFromCommandLine(int argc, char** argv, Inputs* in, std::string* e) {
   }
   in->expected = FLAGS_expected_matrix_file;
   if (in->reference.empty()) {
-    const std::string data_dir = std::string(MLNDT_DATA_DIR) + "/";
+    const std::string data_dir = BundledDataDir();
     in->reference = data_dir + kBundledReference;
     in->input = data_dir + kBundledInput;
     if (in->expected.empty()) in->expected = data_dir + kBundledExpected;
