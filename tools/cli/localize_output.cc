@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "lab/eval/statistics.h"
 #include "lab/eval/trajectory_io.h"
@@ -13,6 +14,7 @@
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/map_memory.h"
+#include "tools/cli/output_set.h"
 #include "tools/cli/result_csv.h"
 #include "tools/cli/result_json.h"
 #include "tools/cli/start_layer_check.h"
@@ -251,13 +253,29 @@ VerdictCounts PrintLocalizationTable(
   return verdicts;
 }
 
-const std::vector<std::string>& LocalizationOutputFiles() {
-  static const std::vector<std::string> files = {"scans.csv",
-                                                 "scans.json",
-                                                 "summary.json",
-                                                 "trajectory_kitti.txt",
-                                                 "trajectory_tum.txt"};
+// What WriteLocalizationFiles writes, in the order summary.json names them.
+const std::vector<std::string>& WrittenFiles() {
+  static const std::vector<std::string> files = {
+      "trajectory_kitti.txt", "trajectory_tum.txt", "scans.csv", "scans.json"};
   return files;
+}
+
+const std::vector<std::string>& LocalizationOutputFiles() {
+  static const std::vector<std::string> files = [] {
+    std::vector<std::string> all = WrittenFiles();
+    all.push_back("summary.json");
+    return all;
+  }();
+  return files;
+}
+
+bool FinishLocalizationOutputs(const std::string& dir,
+                               bool plotted,
+                               Json summary,
+                               std::string* error) {
+  std::vector<std::string> files = WrittenFiles();
+  if (plotted) files.push_back("trajectory_xy.png");
+  return FinishOutputSet(dir, files, std::move(summary), error);
 }
 
 bool LoadLocalizationMap(const std::string& path,

@@ -47,6 +47,12 @@ VerdictCounts PrintLocalizationTable(
 
 // The files mlndt_localize writes besides the plot (PrepareOutputDir).
 const std::vector<std::string>& LocalizationOutputFiles();
+// summary.json last (FinishOutputSet, output_set.h), naming the files
+// written: WriteLocalizationFiles' and, when `plotted`, trajectory_xy.png.
+bool FinishLocalizationOutputs(const std::string& dir,
+                               bool plotted,
+                               Json summary,
+                               std::string* error);
 // The map at `path`, with a start layer within its layers (the library
 // would clamp a start layer beyond them).
 bool LoadLocalizationMap(const std::string& path,
