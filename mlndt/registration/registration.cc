@@ -193,6 +193,25 @@ void RegisterOnMap(const RegistrationOptions& options,
                    summary);
 }
 
+// What every Register entry point does around its work: the summary
+// reset, the options checked (FAILURE naming the problem), work(start)
+// when they are valid, and the total time.
+template <typename Work>
+void RegisterFrame(const RegistrationOptions& options,
+                   RegistrationSummary* summary,
+                   const Work& work) {
+  CHECK(summary != nullptr);
+  *summary = RegistrationSummary();
+  const double start = NowSeconds();
+  std::string error;
+  if (!options.IsValid(&error)) {
+    Fail(error, summary);
+  } else {
+    work(start);
+  }
+  summary->total_time_s = NowSeconds() - start;
+}
+
 }  // namespace
 
 void Register(const RegistrationOptions& options,
@@ -200,21 +219,14 @@ void Register(const RegistrationOptions& options,
               const PointCloud& input,
               const Isometry3d& initial_reference_from_input,
               RegistrationSummary* summary) {
-  CHECK(summary != nullptr);
-  *summary = RegistrationSummary();
-  const double start = NowSeconds();
-  std::string error;
-  if (!options.IsValid(&error)) {
-    Fail(error, summary);
-  } else {
+  RegisterFrame(options, summary, [&](double start) {
     RegisterOnMap(options,
                   reference_map,
                   input,
                   initial_reference_from_input,
                   start,
                   summary);
-  }
-  summary->total_time_s = NowSeconds() - start;
+  });
 }
 
 void Register(const RegistrationOptions& options,
@@ -222,23 +234,18 @@ void Register(const RegistrationOptions& options,
               const PreparedInput& input,
               const Isometry3d& initial_reference_from_input,
               RegistrationSummary* summary) {
-  CHECK(summary != nullptr);
-  *summary = RegistrationSummary();
-  const double start = NowSeconds();
-  std::string error;
-  if (!options.IsValid(&error)) {
-    Fail(error, summary);
-  } else if (const std::unique_ptr<Backend> backend =
-                 CheckedBackend(options, reference_map, summary)) {
-    RegisterPrepared(options,
-                     reference_map,
-                     backend.get(),
-                     input,
-                     initial_reference_from_input,
-                     start,
-                     summary);
-  }
-  summary->total_time_s = NowSeconds() - start;
+  RegisterFrame(options, summary, [&](double start) {
+    if (const std::unique_ptr<Backend> backend =
+            CheckedBackend(options, reference_map, summary)) {
+      RegisterPrepared(options,
+                       reference_map,
+                       backend.get(),
+                       input,
+                       initial_reference_from_input,
+                       start,
+                       summary);
+    }
+  });
 }
 
 void Register(const RegistrationOptions& options,
@@ -246,24 +253,21 @@ void Register(const RegistrationOptions& options,
               const PointCloud& input,
               const Isometry3d& initial_reference_from_input,
               RegistrationSummary* summary) {
-  CHECK(summary != nullptr);
-  *summary = RegistrationSummary();
-  const double start = NowSeconds();
-  std::string error;
-  // The filtered reference, then the filtered input (RegisterOnMap's
-  // buffer): reserved for the larger cloud, so the input's copy lands on
-  // the pages the reference's touched (reserving touches none).
-  PointCloud filtered;
-  filtered.Reserve(std::max(reference.size(), input.size()));
-  LayeredGrid map;
-  if (!options.IsValid(&error)) {
-    Fail(error, summary);
-  } else if (!internal::FilterReference(
-                 options.range_filter, reference, &filtered, &error) ||
-             !LayeredGrid::Build(
-                 options.grid, filtered, options.num_threads, &map, &error)) {
-    Fail("reference map: " + error, summary);
-  } else {
+  RegisterFrame(options, summary, [&](double start) {
+    // The filtered reference, then the filtered input (RegisterOnMap's
+    // buffer): reserved for the larger cloud, so the input's copy lands on
+    // the pages the reference's touched (reserving touches none).
+    PointCloud filtered;
+    filtered.Reserve(std::max(reference.size(), input.size()));
+    LayeredGrid map;
+    std::string error;
+    if (!internal::FilterReference(
+            options.range_filter, reference, &filtered, &error) ||
+        !LayeredGrid::Build(
+            options.grid, filtered, options.num_threads, &map, &error)) {
+      Fail("reference map: " + error, summary);
+      return;
+    }
     summary->map_time_s = NowSeconds() - start;
     RegisterOnMap(options,
                   map,
@@ -272,8 +276,7 @@ void Register(const RegistrationOptions& options,
                   start,
                   summary,
                   &filtered);
-  }
-  summary->total_time_s = NowSeconds() - start;
+  });
 }
 
 PreparedRegistration::PreparedRegistration(const RegistrationOptions& options,
