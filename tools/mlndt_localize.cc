@@ -139,6 +139,19 @@ bool CheckFlags(LocalizerOptions* options,
                                         error);
 }
 
+// trajectory_xy.png; exit code 1 when gnuplot is missing or fails.
+int Plot(bool gnuplot_ok,
+         const LayeredGrid& map,
+         const std::vector<LocalizationResult>& results) {
+  return tools::WriteLocalizationPlotOrFail(kTool,
+                                            gnuplot_ok,
+                                            FLAGS_output_dir,
+                                            map,
+                                            results,
+                                            FLAGS_plot_max_cells,
+                                            FLAGS_gnuplot);
+}
+
 int Run() {
   const double start = NowSeconds();
   LocalizerOptions options;
@@ -194,15 +207,7 @@ int Run() {
   }
   const VerdictCounts verdicts = tools::PrintLocalizationTable(paths, results);
   std::printf("output: %s\n", FLAGS_output_dir.c_str());
-  const int plot =
-      FLAGS_plots ? tools::WriteLocalizationPlotOrFail(kTool,
-                                                       gnuplot_ok,
-                                                       FLAGS_output_dir,
-                                                       map,
-                                                       results,
-                                                       FLAGS_plot_max_cells,
-                                                       FLAGS_gnuplot)
-                  : 0;
+  const int plot = FLAGS_plots ? Plot(gnuplot_ok, map, results) : 0;
   if (!tools::FinishLocalizationOutputs(
           FLAGS_output_dir,
           FLAGS_plots && plot == 0,
