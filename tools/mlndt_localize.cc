@@ -1,8 +1,9 @@
 // mlndt_localize: registers every scan of a folder (or a list file) onto a
 // saved layered map (mlndt_map) with ML-NDT, one scan at a time.
 //
-//   mlndt_localize --map=map.mlndt (--scans=DIR [--times=FILE]
-//                  | --bag=FILE --topic=NAME) --output_dir=OUT
+//   mlndt_localize --map=map.mlndt DIR_OR_BAG (or --scans=DIR
+//                  [--times=FILE] | --bag=FILE [--topic=NAME])
+//                  [--output_dir=OUT]
 //                  [--initial_guess=tx,ty,tz,a,b,g | --initial_matrix=...
 //                   | --initial_poses=FILE [--poses_are_camera
 //                   --calib=calib.txt]]
@@ -235,7 +236,7 @@ int main(int argc, char** argv) {
   mlndt::tools::ShowRegistrationDefaults(mlndt::LocalizerRegistrationOptions());
   const char* usage =
       "Registers every scan of a folder onto a saved map (mlndt_map).\n"
-      "  mlndt_localize --map=map.mlndt --scans=DIR --output_dir=OUT "
+      "  mlndt_localize --map=map.mlndt DIR_OR_BAG [--output_dir=OUT] "
       "[--initial_guess=tx,ty,tz,a,b,g]\n"
       "Exit 1 when any scan's result is not usable (LOW_QUALITY, DEGENERATE "
       "or FAILURE; counted by verdict in the summary and summary.json): its "

@@ -1,8 +1,9 @@
 // mlndt_odometry: scan-to-local-map LiDAR odometry with ML-NDT over a folder
 // of scans or a ROS 1 bag (mlndt/odometry/odometry.h has the method).
 //
-//   mlndt_odometry (--scans=DIR [--times=FILE] | --bag=FILE --topic=NAME)
-//                  --output_dir=OUT [--gt_poses=poses.txt [--poses_are_camera
+//   mlndt_odometry DIR_OR_BAG (or --scans=DIR [--times=FILE] | --bag=FILE)
+//                  [--topic=NAME] [--output_dir=OUT] [--gt_poses=poses.txt
+//                  [--poses_are_camera
 //                  --calib=calib.txt]] [--max_scans=N] [odometry flags]
 //                  [any mlndt_align registration flag]
 //
@@ -73,8 +74,8 @@ bool OptionsFromFlags(OdometryOptions* options,
                       std::string* error) {
   if ((FLAGS_scans.empty() && FLAGS_bag.empty()) || FLAGS_output_dir.empty()) {
     *error =
-        "give --scans=DIR (or --bag=FILE --topic=NAME) and "
-        "--output_dir=DIR";
+        "give the scans: a folder or a bag (or --scans=DIR, --bag=FILE) "
+        "and --output_dir=DIR";
     return false;
   }
   if (FLAGS_max_scans < 0 || FLAGS_rpe_delta < 1) {
@@ -233,8 +234,8 @@ int main(int argc, char** argv) {
   if (!mlndt::tools::StartTool(
           "Scan-to-local-map LiDAR odometry with ML-NDT over a folder or a "
           "ROS 1 bag.\n"
-          "  mlndt_odometry (--scans=DIR [--times=FILE] | --bag=FILE "
-          "--topic=NAME) --output_dir=OUT [--gt_poses=FILE]",
+          "  mlndt_odometry DIR_OR_BAG [--times=FILE] [--topic=NAME] "
+          "[--output_dir=OUT] [--gt_poses=FILE]",
           true,
           &argc,
           &argv)) {

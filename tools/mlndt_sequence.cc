@@ -2,8 +2,8 @@
 // scan i), chains the estimates into a trajectory and, with ground truth,
 // reports per-pair errors and totals in the layout of the paper's Tables 2-4.
 //
-//   mlndt_sequence (--scans=DIR [--times=FILE] | --bag=FILE --topic=NAME)
-//                  --output_dir=OUT [--gt_poses=poses.txt [--calib=...]]
+//   mlndt_sequence DIR_OR_BAG (or --scans=DIR [--times=FILE] | --bag=FILE)
+//                  [--topic=NAME] [--output_dir=OUT] [--gt_poses=FILE]
 //                  [--step=1] [--init=zero|gt_fraction:c|...]
 //                  [--adaptive_start_layer] [any mlndt_align registration flag]
 //
@@ -80,8 +80,8 @@ constexpr char kTool[] = "mlndt_sequence";
 bool SequenceOptionsFromFlags(SequenceOptions* options, std::string* error) {
   if ((FLAGS_scans.empty() && FLAGS_bag.empty()) || FLAGS_output_dir.empty()) {
     *error =
-        "Usage: mlndt_sequence (--scans=DIR | --bag=FILE --topic=NAME) "
-        "--output_dir=OUT [--gt_poses=FILE] ...";
+        "Usage: mlndt_sequence DIR_OR_BAG [--topic=NAME] "
+        "[--output_dir=OUT] [--gt_poses=FILE] ...";
     return false;
   }
   if (FLAGS_max_scans < 0) {
@@ -123,7 +123,7 @@ int WriteOutputs(const SequenceOptions& options,
                  bool gnuplot_ok) {
   std::string error;
   const tools::SequenceSource source = {
-      FLAGS_scans, FLAGS_bag, FLAGS_topic, tools::IntFlag("start_layer")};
+      FLAGS_scans, FLAGS_bag, input.topic(), tools::IntFlag("start_layer")};
   const tools::Json header =
       tools::SequenceSummaryHeader(options, source, store.size());
   if (!tools::WriteSequenceFiles(FLAGS_output_dir,
@@ -235,8 +235,8 @@ int main(int argc, char** argv) {
   if (!mlndt::tools::StartTool(
           "Registers a scan sequence pair by pair and evaluates it against "
           "ground truth.\n"
-          "  mlndt_sequence (--scans=DIR | --bag=FILE --topic=NAME) "
-          "--output_dir=OUT [--gt_poses=FILE] "
+          "  mlndt_sequence DIR_OR_BAG [--topic=NAME] "
+          "[--output_dir=OUT] [--gt_poses=FILE] "
           "[--step=1] [--init=zero]\n"
           "Exit 1 when any pair's result is not usable (LOW_QUALITY, "
           "DEGENERATE or FAILURE; counted by verdict in the summary and "

@@ -59,6 +59,27 @@ std::string DescribeTopics(const rosbag::Bag& bag) {
   return text.empty() ? "none" : text;
 }
 
+// The bag's one PointCloud2 topic into *topic; false with *error naming the
+// topics when it has none or several.
+bool OnlyPointCloudTopic(const rosbag::Bag& bag,
+                         std::string* topic,
+                         std::string* error) {
+  rosbag::View all(bag);
+  std::set<std::string> clouds;
+  for (const rosbag::ConnectionInfo* info : all.getConnections()) {
+    if (info->datatype == kPointCloud2) clouds.insert(info->topic);
+  }
+  if (clouds.size() == 1) {
+    *topic = *clouds.begin();
+    return true;
+  }
+  *error = (clouds.empty() ? std::string("no ")
+                           : std::to_string(clouds.size()) + " ") +
+           kPointCloud2 + " topics, give one with --topic; the bag has " +
+           DescribeTopics(bag);
+  return false;
+}
+
 }  // namespace
 
 struct RosBagScans::Impl {
@@ -70,12 +91,17 @@ struct RosBagScans::Impl {
 bool RosBagSupported() { return true; }
 
 bool RosBagScans::Open(const std::string& path,
-                       const std::string& topic,
+                       const std::string& given_topic,
                        std::unique_ptr<RosBagScans>* scans,
                        std::string* error) {
   auto impl = std::make_unique<Impl>();
+  std::string topic = given_topic;
   try {
     impl->bag.open(path, rosbag::bagmode::Read);
+    if (topic.empty() && !OnlyPointCloudTopic(impl->bag, &topic, error)) {
+      *error = path + ": " + *error;
+      return false;
+    }
     impl->view =
         std::make_unique<rosbag::View>(impl->bag, rosbag::TopicQuery(topic));
     for (const rosbag::ConnectionInfo* info : impl->view->getConnections()) {

@@ -25,9 +25,10 @@ using BagScan = PointCloud2Scan;
 
 class RosBagScans {
  public:
-  // Opens `path` and indexes the messages on `topic`. False with *error
-  // naming the file and, when the topic is missing or of another type, the
-  // point-cloud topics the bag has.
+  // Opens `path` and indexes the messages on `topic`; an empty `topic` is
+  // the bag's one sensor_msgs/PointCloud2 topic (an error naming them when
+  // it has none or several). False with *error naming the file and, when
+  // the topic is missing or of another type, the topics the bag has.
   static bool Open(const std::string& path,
                    const std::string& topic,
                    std::unique_ptr<RosBagScans>* scans,

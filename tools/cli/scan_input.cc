@@ -13,7 +13,8 @@
 // clang-format off
 DEFINE_string(bag, "", "ROS 1 bag to read the scans from (sensor_msgs/PointCloud2 on --topic), "
               "instead of a folder");
-DEFINE_string(topic, "", "With --bag: the PointCloud2 topic");
+DEFINE_string(topic, "", "With --bag: the PointCloud2 topic (default: the bag's one PointCloud2 "
+              "topic)");
 DEFINE_string(times, "", "Text file of scan time stamps [s], one line per scan (KITTI times.txt); "
               "without it and without --bag, TUM outputs use the scan index");
 // clang-format on
@@ -28,10 +29,6 @@ bool OpenBag(size_t max_scans,
              std::vector<std::string>* names,
              std::shared_ptr<RosBagScans>* bag,
              std::string* error) {
-  if (FLAGS_topic.empty()) {
-    *error = "--bag needs --topic=NAME (the sensor_msgs/PointCloud2 topic)";
-    return false;
-  }
   if (!FLAGS_times.empty()) {
     *error =
         "--times does not apply to --bag (the bag's header stamps are "
@@ -46,7 +43,7 @@ bool OpenBag(size_t max_scans,
   size_t n = scans->size();
   if (max_scans > 0 && n > max_scans) n = max_scans;
   for (size_t i = 0; i < n; ++i) {
-    names->push_back(FLAGS_topic + "#" + std::to_string(i));
+    names->push_back(scans->topic() + "#" + std::to_string(i));
   }
   *bag = std::move(scans);
   return true;
@@ -68,8 +65,9 @@ bool ScanInputFromFlags(bool folder_given,
     }
     if (!OpenBag(max_scans, &input->names_, &input->bag_, error)) return false;
     input->stamps_s_.assign(input->names_.size(), kUnknown);
+    input->topic_ = input->bag_->topic();
     input->time_source_ =
-        "bag " + FLAGS_bag + " topic " + FLAGS_topic + ": header stamps";
+        "bag " + FLAGS_bag + " topic " + input->topic_ + ": header stamps";
     return true;
   }
   if (!FLAGS_topic.empty()) {
@@ -152,7 +150,7 @@ bool ScanInput::ReadBagStamps(std::string* error) {
                     stamp_s,
                     i,
                     i > 0 ? stamps_s_[i - 1] : stamp_s);
-      *error = "--bag=" + FLAGS_bag + " --topic=" + FLAGS_topic + ": " + text +
+      *error = "--bag=" + FLAGS_bag + " --topic=" + topic_ + ": " + text +
                " (the scans need strictly increasing time stamps; a driver "
                "that does not stamp its messages gives 0)";
       return false;

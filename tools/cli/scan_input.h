@@ -2,7 +2,7 @@
 
 // Where a tool's scans come from, shared by mlndt_sequence, mlndt_odometry,
 // mlndt_map and mlndt_localize: a folder (or list) of point-cloud files, or
-// a ROS 1 bag's PointCloud2 topic (--bag=FILE --topic=NAME), and the scans'
+// a ROS 1 bag's PointCloud2 topic (--bag=FILE [--topic=NAME]), and the scans'
 // time stamps: the bag's header stamps, a --times file (one stamp per scan)
 // or, when neither is given, the scan indices (TUM outputs then say so in
 // their header).
@@ -30,6 +30,9 @@ class ScanInput {
  public:
   size_t size() const { return names_.size(); }
   bool from_bag() const { return bag_ != nullptr; }
+  // The bag's topic read (--topic, or the bag's one PointCloud2 topic);
+  // empty for a folder.
+  const std::string& topic() const { return topic_; }
   // The file paths (folder input; empty for a bag).
   const std::vector<std::string>& paths() const { return paths_; }
   // File name, or "<topic>#<i>" for a bag.
@@ -84,6 +87,7 @@ class ScanInput {
   std::vector<double> stamps_s_;  // NaN until known.
   std::string time_source_;
   std::shared_ptr<RosBagScans> bag_;
+  std::string topic_;
 };
 
 // The scans from the flags: --bag with --topic, or the tool's own folder

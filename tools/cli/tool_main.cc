@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "tools/cli/data_argument.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/input_files.h"
 
@@ -224,6 +225,10 @@ bool StartTool(const char* usage,
   FLAGS_logtostderr = true;
   std::string error;
   if (!RefuseGivenFlags(UnreadFlags(), UnreadFlagsReason(), &error)) {
+    std::cerr << tool << ": " << error << "\n";
+    return false;
+  }
+  if (!ApplyDataArgument(tool, argc, *argv, &error)) {
     std::cerr << tool << ": " << error << "\n";
     return false;
   }

@@ -36,7 +36,9 @@ extern const char kExitCodesHelp[];
 //    with their defaults, and exits with 0; --helpfull lists every flag,
 //    glog's and gflags' included.
 //  - --version prints "mlndt <PROJECT_VERSION>" and exits with 0.
-// With `reject_arguments`, an argument left after the flags is reported on
+// A tool reading scans into an output folder takes its data as an argument
+// and has a default output folder (data_argument.h). With
+// `reject_arguments`, an argument left after the flags is reported on
 // stderr as "<tool>: unexpected argument 'x' (flags are --name=value)" and
 // false is returned (the tool exits with kExitUsage).
 bool StartTool(const char* usage,
