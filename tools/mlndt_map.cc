@@ -44,6 +44,7 @@
 
 #include <cmath>
 
+#include "mlndt/cloud/cloud_format.h"
 #include "mlndt/cloud/io.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/pipeline/map_builder.h"
@@ -142,6 +143,14 @@ bool CheckFlags(MapBuildOptions* options, std::string* error) {
   if (!tools::CheckOutputFolderExists("output", FLAGS_output, error) ||
       !tools::CheckOutputFile("output", FLAGS_output, error) ||
       !tools::CheckOutputFile("output_json", FLAGS_output_json, error)) {
+    return false;
+  }
+  CloudFormat cloud_format;
+  if (CloudFormatFromPath(FLAGS_output, &cloud_format, error)) {
+    *error = "--output=" + FLAGS_output +
+             ": a map is not a point cloud: name it .mlndt (every reader "
+             "takes a " +
+             CloudFormatToString(cloud_format) + " name for a cloud)";
     return false;
   }
   return options->IsValid(error);

@@ -374,6 +374,8 @@ TEST(MlndtMap, RefusesBadFlags) {
        "--sampling does not apply to mlndt_map"},
       {scans + " --method=ndt" + to, "--method does not apply to mlndt_map"},
       {scans + " --num_threads=0" + to, "--num_threads must be in [1, 256]"},
+      {scans + " --output=" + Quote(dir + "/map.pcd"),
+       "map.pcd: a map is not a point cloud"},
       {scans + " --output=/nonexistent/folder/map.mlndt",
        "folder /nonexistent/folder does not exist"},
       {"--scans=/nonexistent --poses=" + Quote(poses) + to,
