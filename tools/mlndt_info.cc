@@ -1,13 +1,14 @@
 // mlndt_info: describes point-cloud files, one JSON object per line.
 //
-//   mlndt_info [--layers [--num_layers=4 | --finest_cell_size_m=1]
+//   mlndt_info [--layers [--finest_cell_size_m=0 --num_layers=4 |
+//                         --finest_cell_size_m=1.2]
 //              [--division_constant=8] [--min_points_per_cell=5]] FILE...
 //
 // The map flags are the shared ones of LayeredGridOptions (option_flags.h:
-// --finest_cell_size_m, --num_layers, ...); the map
-// starts from the paper's (PaperLayeredGridOptions: n = 4, no finest cell
-// size, coarse weighting by points), the defaults --help shows. The other
-// registration flags are refused.
+// --finest_cell_size_m, --num_layers, ...); the map is the one mlndt_align
+// builds from the file as its reference: the library's map options (the
+// defaults --help shows) over the points the default range filter keeps
+// (range_filter.h). The other registration flags are refused.
 //
 // For every file:
 //   {"schema_version": 2, "tool": "mlndt_info", "version": ..., "command": ...,
@@ -16,7 +17,7 @@
 // (docs/json_schema.md). "points" counts the points kept (finite ones);
 // "min_m" and "max_m" are null
 // for an empty cloud. With --layers the object also holds "layers": one entry
-// per layer of the ML-NDT map (LayeredGrid) built from the cloud, coarsest
+// per layer of the ML-NDT map (LayeredGrid) built as above, coarsest
 // first, with "layer", "cell_size_m", "dims", "occupied_cells",
 // "sparse_cells" and "degenerate_cells" (layered_grid.h LayerInfo).
 //
@@ -36,6 +37,7 @@
 #include <vector>
 
 #include "mlndt/cloud/io.h"
+#include "mlndt/cloud/range_filter.h"
 #include "mlndt/grid/layered_grid.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/json_output.h"
@@ -103,8 +105,11 @@ bool GridOptionsFromFlags(LayeredGridOptions* grid, std::string* error) {
     return false;
   }
   if (tools::FlagGiven("num_layers") && grid->finest_cell_size_m > 0.0) {
-    *error = "give --num_layers or " +
-             tools::GivenFlagName("finest_cell_size_m") + ", not both";
+    *error = "--num_layers is ignored while " +
+             tools::GivenFlagName("finest_cell_size_m") +
+             " > 0 (n is derived from it): give " +
+             tools::GivenFlagName("finest_cell_size_m") +
+             "=0 with --num_layers";
     return false;
   }
   std::string why;
@@ -160,8 +165,11 @@ bool DescribeFile(const std::string& path,
 
   bool ok = true;
   if (FLAGS_layers) {
+    RangeFilterSummary dropped;
+    const PointCloud kept =
+        FilterByRange(RangeFilterOptions(), cloud, &dropped);
     LayeredGrid grid;
-    if (LayeredGrid::Build(grid_options, cloud, &grid, &error)) {
+    if (LayeredGrid::Build(grid_options, kept, &grid, &error)) {
       json["layers"] = LayersJson(grid);
     } else {
       error = path + ": cannot build the layered map: " + error;
@@ -175,7 +183,7 @@ bool DescribeFile(const std::string& path,
 }
 
 int Run(const std::vector<std::string>& files) {
-  LayeredGridOptions grid_options = PaperLayeredGridOptions();
+  LayeredGridOptions grid_options;
   std::string error;
   if (!GridOptionsFromFlags(&grid_options, &error)) {
     PrintError(error);
@@ -206,13 +214,13 @@ int main(int argc, char** argv) {
       "Prints one JSON line per point-cloud file: format, point count, "
       "bounding box and, with "
       "--layers, the layers of its ML-NDT map.\n"
-      "  mlndt_info [--layers [--num_layers=4 | --finest_cell_size_m=1]] "
+      "  mlndt_info [--layers [--finest_cell_size_m=1.2 | =0 --num_layers=4]] "
       "FILE...\n"
       "Exit 2 when a FILE is missing or cannot be opened (before any is "
       "described), 1 when one cannot be parsed or its map cannot be built "
       "(the others are still described).";
   mlndt::tools::HideFlagsFromHelp(mlndt::SharedFlags(/*grid=*/false));
-  mlndt::SetGridFlagDefaults(mlndt::PaperLayeredGridOptions());
+  mlndt::SetGridFlagDefaults(mlndt::LayeredGridOptions());
   if (!mlndt::tools::StartTool(usage, false, &argc, &argv)) {
     return mlndt::tools::kExitUsage;
   }

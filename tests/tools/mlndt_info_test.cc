@@ -147,14 +147,33 @@ TEST(MlndtInfo, DescribesBundledScans) {
   EXPECT_EQ(run.lines[0].back(), '}');
 }
 
-TEST(MlndtInfo, LayersOfPaperMapHalveTheCellSize) {
+// --layers describes the map mlndt_align registers on when the file is its
+// reference: as many layers and occupied cells (the koide3 reference has
+// returns at the sensor, which the range filter drops from that map).
+TEST(MlndtInfo, LayersAreThoseOfTheMapMlndtAlignBuilds) {
   const std::string reference = testing::BundledDataPath(kReference);
   const ToolRun run = RunInfo("--layers " + Quote(reference));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
   ExpectCloudLine(run.lines[0], reference, "PCD", 69088);
   const std::vector<Layer> layers = ParseLayers(run.lines[0]);
-  ASSERT_EQ(layers.size(), 4u) << run.lines[0];
+  const std::string json = TempPath("align.json");
+  const ToolRun align = testing::RunTool(
+      "mlndt_align",
+      Quote(reference) + " " + Quote(testing::BundledDataPath(kInput)) +
+          " --output_json=" + Quote(json));
+  ASSERT_EQ(align.exit_code, 0) << align.err;
+  const std::string text = testing::ReadWholeFile(json);
+  double occupied = 0.0;
+  for (const Layer& layer : layers) occupied += layer.occupied_cells;
+  EXPECT_NE(text.find("\"num_layers\": " + std::to_string(layers.size())),
+            std::string::npos)
+      << run.lines[0];
+  EXPECT_NE(text.find("\"map_occupied_cells\": " +
+                      std::to_string(static_cast<int>(occupied))),
+            std::string::npos)
+      << run.lines[0];
+  ASSERT_GE(layers.size(), 4u) << run.lines[0];
   for (size_t i = 0; i < layers.size(); ++i) {
     SCOPED_TRACE("layer " + std::to_string(i + 1));
     EXPECT_EQ(layers[i].layer, static_cast<int>(i + 1));
@@ -175,8 +194,9 @@ TEST(MlndtInfo, LayersOfPaperMapHalveTheCellSize) {
 }
 
 TEST(MlndtInfo, NumLayersFlagSetsTheLayerCount) {
-  const ToolRun run = RunInfo("--layers --num_layers=2 " +
-                              Quote(testing::BundledDataPath(kReference)));
+  const ToolRun run =
+      RunInfo("--layers --num_layers=2 --finest_cell_size_m=0 " +
+              Quote(testing::BundledDataPath(kReference)));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   ASSERT_EQ(run.lines.size(), 1u);
   EXPECT_EQ(ParseLayers(run.lines[0]).size(), 2u) << run.lines[0];
@@ -295,7 +315,8 @@ TEST(MlndtInfo, RejectsBadFlagCombinations) {
        {"--num_layers=3",
         "--layers --num_layers=3 --finest_cell_size_m=1",
         "--layers --division_constant=1",
-        "--layers --num_layers=0"}) {
+        "--layers --num_layers=0 --finest_cell_size_m=0",
+        "--layers --num_layers=2"}) {
     SCOPED_TRACE(flags);
     const ToolRun run = RunInfo(flags + " " + reference);
     EXPECT_EQ(run.exit_code, 2);
