@@ -118,6 +118,12 @@ TEST(MlndtAlign, HelpShowsOwnAndSharedFlagsWithDefaultsAndVersionPrints) {
   EXPECT_NE(help.out.find("--initial_guess=\"\""), std::string::npos);
   EXPECT_NE(help.out.find("--backend=\"ceres\""), std::string::npos);
   EXPECT_NE(help.out.find("--start_layer=1"), std::string::npos);
+  // Shared flags by purpose, doubles as typed (not "0.94999999999999996").
+  EXPECT_NE(help.out.find("\nVerdict:\n"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("\nMap:\n"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("--max_flatness=0.95  (double)"), std::string::npos)
+      << help.out;
+  EXPECT_EQ(help.out.find("99999999"), std::string::npos) << help.out;
   EXPECT_NE(help.out.find("Exit codes: 0"), std::string::npos);
   // glog's and gflags' own flags stay behind --helpfull.
   EXPECT_EQ(help.out.find("--logtostderr"), std::string::npos) << help.out;
@@ -174,6 +180,14 @@ TEST(MlndtAlign, FailedRegistrationWritesNoOutputCloud) {
             std::string::npos)
       << run.err;
   EXPECT_FALSE(std::filesystem::exists(cloud));
+  // The tool reports the failure once; the library logs no glog error line
+  // ("E1207 ...") for a failure it returns.
+  const std::string reason = "the range filter dropped every";
+  const size_t first = run.err.find(reason);
+  EXPECT_NE(first, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find(reason, first + 1), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("registration_steps.cc"), std::string::npos)
+      << run.err;
 }
 
 // Issue 41 item 9: a FAILURE prints no pose matrix (its pose is the start,

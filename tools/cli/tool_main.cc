@@ -3,6 +3,7 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "tools/cli/data_argument.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/input_files.h"
+#include "tools/cli/option_flags.h"
 
 // gflags' own help flags (gflags_reporting.cc).
 DECLARE_bool(help);
@@ -87,10 +89,24 @@ std::string ShortPath(const std::string& path) {
   return at == std::string::npos ? FileName(path) : path.substr(at);
 }
 
+// The shortest text that reads back as the same double: "0.95", not
+// gflags' "0.94999999999999996".
+std::string ShortestDouble(const std::string& text) {
+  const double value = std::strtod(text.c_str(), nullptr);
+  char buffer[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+    if (std::strtod(buffer, nullptr) == value) break;
+  }
+  return buffer;
+}
+
 void AppendFlag(const gflags::CommandLineFlagInfo& flag, std::ostream* out) {
   *out << "  --" << flag.name;
   if (flag.type == "string") {
     *out << "=\"" << flag.default_value << "\"";
+  } else if (flag.type == "double") {
+    *out << "=" << ShortestDouble(flag.default_value);
   } else {
     *out << "=" << flag.default_value;
   }
@@ -145,7 +161,37 @@ bool IsLabProgram(const std::string& tool) {
 // "mlndt <PROJECT_VERSION>".
 std::string VersionLine() { return std::string("mlndt ") + MLNDT_VERSION; }
 
-// The --help text of the tool `tool` (its file is MainFile(tool)).
+// What a shared flag is for, the heading --help lists it under: the
+// options it sets (the first part of its option path, option_flags.h) or
+// the file that defines it.
+std::string Purpose(const gflags::CommandLineFlagInfo& flag,
+                    const std::string& path) {
+  static const std::map<std::string, std::string> kHeadings = {
+      {"range_filter", "2 Range filter"},
+      {"grid", "3 Map"},
+      {"sampling", "4 Sampling of the input"},
+      {"schedule", "5 Layer schedule"},
+      {"objective", "6 Objective"},
+      {"backend", "7 Solver backend"},
+      {"retry", "8 Retries"},
+      {"quality_check", "9 Verdict"},
+      {"tools/cli/scan_input.cc", "0 Scans"},
+      {"tools/cli/pose_flags.cc", "1 Poses"},
+      {"tools/cli/verdict_flags.cc", "9 Verdict"},
+  };
+  std::string key = path;
+  if (const OptionFlag* option = FlagOfName(flag.name)) {
+    if (option->mlndt_path.empty()) return "7 Conventional NDT (--method=ndt)";
+    const std::string& option_path =
+        option->mlndt_path.empty() ? option->ndt_path : option->mlndt_path;
+    key = option_path.substr(0, option_path.find('.'));
+  }
+  const auto found = kHeadings.find(key);
+  return found != kHeadings.end() ? found->second : "7 Registration";
+}
+
+// The --help text of the tool `tool` (its file is MainFile(tool)): its own
+// flags, then the shared ones by purpose.
 std::string ToolHelp(const std::string& tool) {
   std::vector<gflags::CommandLineFlagInfo> flags;
   gflags::GetAllFlags(&flags);
@@ -157,7 +203,7 @@ std::string ToolHelp(const std::string& tool) {
       own.push_back(flag);
     } else if (path.rfind("tools/cli/", 0) == 0 &&
                HiddenFlags().count(flag.name) == 0) {
-      shared[path].push_back(flag);
+      shared[Purpose(flag, path)].push_back(flag);
     }
   }
   std::ostringstream out;
@@ -170,9 +216,9 @@ std::string ToolHelp(const std::string& tool) {
     out << "\nFlags of " << tool << ":\n";
     for (const auto& flag : own) AppendFlag(flag, &out);
   }
-  for (const auto& [path, file_flags] : shared) {
-    out << "\nShared flags (" << path << "):\n";
-    for (const auto& flag : file_flags) AppendFlag(flag, &out);
+  for (const auto& [purpose, group] : shared) {
+    out << "\n" << purpose.substr(2) << ":\n";
+    for (const auto& flag : group) AppendFlag(flag, &out);
   }
   out << "\n  --help, -h  this text;  --version  print \"" << VersionLine()
       << "\";  --helpfull  every flag, glog's and gflags' included\n";
