@@ -7,7 +7,6 @@
 #include <utility>
 
 #include "lab/eval/statistics.h"
-#include "lab/eval/trajectory_io.h"
 #include "lab/report/gnuplot.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
@@ -15,8 +14,7 @@
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/map_memory.h"
 #include "tools/cli/output_set.h"
-#include "tools/cli/result_csv.h"
-#include "tools/cli/result_json.h"
+#include "tools/cli/scan_files.h"
 #include "tools/cli/start_layer_check.h"
 #include "tools/cli/tool_main.h"
 #include "tools/cli/tool_utils.h"
@@ -25,35 +23,6 @@
 namespace mlndt {
 namespace tools {
 namespace {
-
-// The scans' file names, one per result.
-CsvColumn FileColumn(const std::vector<std::string>& files,
-                     const std::vector<LocalizationResult>& results) {
-  CsvColumn column{"file", {}};
-  for (const LocalizationResult& r : results) {
-    column.cells.push_back(
-        std::filesystem::path(files[r.index]).filename().string());
-  }
-  return column;
-}
-
-// scans.json: the tool's header and one object per scan, the file's name
-// and every field of LocalizationResultTable but the registration's trace
-// (about 25 kB a scan; as in scans.csv).
-Json LocalizationScansJson(const std::vector<std::string>& files,
-                           const std::vector<LocalizationResult>& results) {
-  const CsvColumn file = FileColumn(files, results);
-  Json scans = Json::array();
-  for (size_t k = 0; k < results.size(); ++k) {
-    Json scan = ResultJsonOf(LocalizationResultTable(), results[k]);
-    scan["registration"].erase("trace");
-    scan["file"] = file.cells[k];
-    scans.push_back(std::move(scan));
-  }
-  Json json = ToolJson("mlndt_localize");
-  json["scans"] = std::move(scans);
-  return json;
-}
 
 // trajectory_xy.png: the finest layer's cell means (every k-th, at most
 // plot_max_cells) and the trajectory, seen from above.
@@ -160,31 +129,17 @@ bool WriteLocalizationFiles(const std::string& dir,
                             const ScanInput& input,
                             const std::vector<LocalizationResult>& results,
                             std::string* error) {
-  const std::string out = dir + "/";
-  Trajectory trajectory;
-  for (const LocalizationResult& r : results) {
-    if (!trajectory.TryAdd(input.StampOf(r.index), r.map_from_scan, error)) {
-      *error = "scan " + input.name(r.index) + ": " + *error;
-      return false;
-    }
-  }
-  return WriteTrajectory(out + "trajectory_kitti.txt",
-                         TrajectoryFormat::KITTI,
-                         trajectory,
-                         error) &&
-         WriteTrajectory(out + "trajectory_tum.txt",
-                         TrajectoryFormat::TUM,
-                         trajectory,
-                         input.TumComment(),
-                         error) &&
-         WriteFileAtomically(out + "scans.csv",
-                             ResultCsvOf(LocalizationResultTable(),
-                                         results,
-                                         {FileColumn(input.names(), results)}),
-                             error) &&
-         WriteJsonFile(out + "scans.json",
-                       LocalizationScansJson(input.names(), results),
-                       error);
+  return WriteScanFilesOf(dir,
+                          "mlndt_localize",
+                          input,
+                          LocalizationResultTable(),
+                          results,
+                          [&input](const LocalizationResult& r) {
+                            return ScanPose{r.index,
+                                            input.StampOf(r.index),
+                                            r.map_from_scan};
+                          },
+                          error);
 }
 
 void PrintMapLine(const std::string& map_path, const LayeredGrid& map) {

@@ -4,77 +4,30 @@
 #include <filesystem>
 
 #include "lab/eval/statistics.h"
-#include "lab/eval/trajectory_io.h"
 #include "lab/report/gnuplot.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/odometry/run_odometry.h"
-#include "tools/cli/result_csv.h"
-#include "tools/cli/result_json.h"
+#include "tools/cli/scan_files.h"
 #include "tools/cli/tool_utils.h"
 
 namespace mlndt {
 namespace tools {
-namespace {
-
-// The scans' names, one per result.
-CsvColumn FileColumn(const ScanInput& input,
-                     const std::vector<OdometryResult>& results) {
-  CsvColumn column{"file", {}};
-  for (const OdometryResult& r : results) {
-    column.cells.push_back(input.name(r.index));
-  }
-  return column;
-}
-
-// scans.json: the tool's header and one object per scan, the scan's name
-// and every field of OdometryResultTable but the registration's trace (as
-// in scans.csv).
-Json OdometryScansJson(const ScanInput& input,
-                       const std::vector<OdometryResult>& results) {
-  const CsvColumn file = FileColumn(input, results);
-  Json scans = Json::array();
-  for (size_t k = 0; k < results.size(); ++k) {
-    Json scan = ResultJsonOf(OdometryResultTable(), results[k]);
-    scan["registration"].erase("trace");
-    scan["file"] = file.cells[k];
-    scans.push_back(std::move(scan));
-  }
-  Json json = ToolJson("mlndt_odometry");
-  json["scans"] = std::move(scans);
-  return json;
-}
-
-}  // namespace
-
 bool WriteOdometryFiles(const std::string& dir,
                         const ScanInput& input,
                         const std::vector<OdometryResult>& results,
                         std::string* error) {
-  Trajectory trajectory;
-  for (const OdometryResult& r : results) {
-    if (!trajectory.TryAdd(r.stamp_s, r.world_from_sensor, error)) {
-      *error = "scan " + input.name(r.index) + ": " + *error;
-      return false;
-    }
-  }
-  return WriteTrajectory(dir + "/trajectory_kitti.txt",
-                         TrajectoryFormat::KITTI,
-                         trajectory,
-                         error) &&
-         WriteTrajectory(dir + "/trajectory_tum.txt",
-                         TrajectoryFormat::TUM,
-                         trajectory,
-                         input.TumComment(),
-                         error) &&
-         WriteFileAtomically(
-             dir + "/scans.csv",
-             ResultCsvOf(
-                 OdometryResultTable(), results, {FileColumn(input, results)}),
-             error) &&
-         WriteJsonFile(
-             dir + "/scans.json", OdometryScansJson(input, results), error);
+  return WriteScanFilesOf(dir,
+                          "mlndt_odometry",
+                          input,
+                          OdometryResultTable(),
+                          results,
+                          [](const OdometryResult& r) {
+                            return ScanPose{
+                                r.index, r.stamp_s, r.world_from_sensor};
+                          },
+                          error);
 }
 
 Json OdometrySummaryJson(const OdometrySummary& summary,
