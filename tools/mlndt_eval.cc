@@ -172,9 +172,9 @@ bool ParseFlags(EvalFlags* flags, std::string* error) {
   std::vector<double> parsed;
   if (tools::FlagGiven(lengths) &&
       !tools::ParseLengthList(tools::GivenFlagName(lengths),
-                                  tools::FlagText(lengths),
-                                  &parsed,
-                                  error)) {
+                              tools::FlagText(lengths),
+                              &parsed,
+                              error)) {
     return false;
   }
   return tools::TrajectoryEvaluationFlags().Apply(&flags->options, error);

@@ -129,17 +129,16 @@ bool WriteLocalizationFiles(const std::string& dir,
                             const ScanInput& input,
                             const std::vector<LocalizationResult>& results,
                             std::string* error) {
-  return WriteScanFilesOf(dir,
-                          "mlndt_localize",
-                          input,
-                          LocalizationResultTable(),
-                          results,
-                          [&input](const LocalizationResult& r) {
-                            return ScanPose{r.index,
-                                            input.StampOf(r.index),
-                                            r.map_from_scan};
-                          },
-                          error);
+  return WriteScanFilesOf(
+      dir,
+      "mlndt_localize",
+      input,
+      LocalizationResultTable(),
+      results,
+      [&input](const LocalizationResult& r) {
+        return ScanPose{r.index, input.StampOf(r.index), r.map_from_scan};
+      },
+      error);
 }
 
 void PrintMapLine(const std::string& map_path, const LayeredGrid& map) {

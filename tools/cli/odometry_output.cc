@@ -18,16 +18,16 @@ bool WriteOdometryFiles(const std::string& dir,
                         const ScanInput& input,
                         const std::vector<OdometryResult>& results,
                         std::string* error) {
-  return WriteScanFilesOf(dir,
-                          "mlndt_odometry",
-                          input,
-                          OdometryResultTable(),
-                          results,
-                          [](const OdometryResult& r) {
-                            return ScanPose{
-                                r.index, r.stamp_s, r.world_from_sensor};
-                          },
-                          error);
+  return WriteScanFilesOf(
+      dir,
+      "mlndt_odometry",
+      input,
+      OdometryResultTable(),
+      results,
+      [](const OdometryResult& r) {
+        return ScanPose{r.index, r.stamp_s, r.world_from_sensor};
+      },
+      error);
 }
 
 Json OdometrySummaryJson(const OdometrySummary& summary,

@@ -58,9 +58,8 @@ bool WriteScanFiles(const std::string& dir,
                          error) &&
          WriteFileAtomically(
              dir + "/scans.csv", ResultCsv(table, results, {file}), error) &&
-         WriteJsonFile(dir + "/scans.json",
-                       ScansJson(tool, table, results, file),
-                       error);
+         WriteJsonFile(
+             dir + "/scans.json", ScansJson(tool, table, results, file), error);
 }
 
 }  // namespace tools
