@@ -50,21 +50,13 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
     total_ms.push_back(r.total_time_s * 1e3);
   json["time_per_scan_ms"] = StatsJson(ComputeStats(total_ms));
   if (metrics == nullptr) return json;
-  Json lengths = Json::array();
-  for (const KittiLengthErrors& l : metrics->segments.lengths) {
-    lengths.push_back(
-        {{"length_m", Number(l.length_m)},
-         {"segments", l.num_segments},
-         {"translation_percent", Number(l.translation_error_percent)},
-         {"rotation_deg_per_m", Number(l.rotation_error_deg_per_m)}});
-  }
   json["metrics"] = {
       {"ate_se3_rmse_m", Number(metrics->ate.rmse_m)},
       {"ate_se3_max_m", Number(metrics->ate.errors.max)},
       {"rpe_delta_scans", metrics->rpe_delta},
       {"rpe_translation_rmse_m", Number(metrics->rpe.translation_rmse_m)},
       {"rpe_rotation_rmse_deg", Number(metrics->rpe.rotation_rmse_deg)},
-      {"segments", lengths}};
+      {"segments", KittiLengthsJson(metrics->segments.lengths)}};
   return json;
 }
 
