@@ -52,10 +52,10 @@
 #include "lab/eval/trajectory_evaluation.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/atomic_file.h"
-#include "tools/cli/eval_flags.h"
 #include "tools/cli/eval_output.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/json_output.h"
+#include "tools/cli/list_flags.h"
 #include "tools/cli/map_inputs.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/tool_main.h"
@@ -146,8 +146,8 @@ bool ParseFileFlags(EvalFlags* flags, std::string* error) {
   flags->files.reference = FLAGS_reference;
   flags->files.reference_calib = FLAGS_reference_calib;
   flags->files.reference_times = FLAGS_reference_times;
-  if (!tools::SplitEstimateList(
-          FLAGS_estimate, &flags->files.estimates, error)) {
+  if (!tools::SplitFileList(
+          "--estimate", FLAGS_estimate, &flags->files.estimates, error)) {
     return false;
   }
   return tools::ParseTrajectoryFormatFlag("format",
@@ -171,10 +171,10 @@ bool ParseFlags(EvalFlags* flags, std::string* error) {
   const std::string lengths = "segments_lengths_m";
   std::vector<double> parsed;
   if (tools::FlagGiven(lengths) &&
-      !tools::ParseSegmentLengths(tools::GivenFlagName(lengths),
-                                  tools::FlagText(lengths),
-                                  &parsed,
-                                  error)) {
+      !tools::ParseLengthList(tools::GivenFlagName(lengths),
+                              tools::FlagText(lengths),
+                              &parsed,
+                              error)) {
     return false;
   }
   return tools::TrajectoryEvaluationFlags().Apply(&flags->options, error);

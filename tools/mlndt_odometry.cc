@@ -39,6 +39,7 @@
 
 #include "lab/eval/dataset.h"
 #include "lab/report/gnuplot.h"
+#include "lab/report/run_plots.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/list_flags.h"
 #include "tools/cli/odometry_flags.h"
@@ -142,7 +143,7 @@ int WritePlot(bool gnuplot_ok,
     return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot));
   }
   std::string error;
-  if (!tools::WriteOdometryPlot(
+  if (!WriteOdometryPlot(
           FLAGS_gnuplot, FLAGS_output_dir, results, reference, &error)) {
     return tools::Fail(kTool, error);
   }

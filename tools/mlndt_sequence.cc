@@ -135,7 +135,7 @@ int WriteOutputs(const SequenceOptions& options,
                                  &error)) {
     return tools::Fail(kTool, error);
   }
-  tools::PrintSequenceTotals(options, results, FLAGS_output_dir);
+  PrintSequenceTotals(options, results, FLAGS_output_dir);
   std::string plot_error;
   std::vector<std::string> pngs;
   bool plotted = false;

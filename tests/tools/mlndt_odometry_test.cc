@@ -59,7 +59,8 @@ TEST(MlndtOdometry, KittiFramesWithTimesGiveStampedTrajectoriesAndMetrics) {
       RunTool("mlndt_odometry",
               "--scans=" + Quote(KittiPcd()) + " --times=" + Quote(times) +
                   " --gt_poses=" + Quote(ReferenceChain(dir)) +
-                  " --output_dir=" + Quote(dir + "/out") + " --plots=false");
+                  " --output_dir=" + Quote(dir + "/out") +
+                  " --plots=false --segment_lengths=2,5");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("CONVERGENCE 8,"), std::string::npos) << run.out;
   const std::string tum_text = ReadWholeFile(dir + "/out/trajectory_tum.txt");
@@ -73,6 +74,12 @@ TEST(MlndtOdometry, KittiFramesWithTimesGiveStampedTrajectoriesAndMetrics) {
   EXPECT_EQ(summary["fallbacks"].get<int>(), 0);
   // Against the consensus chain: a few centimetres after alignment.
   EXPECT_LT(summary["metrics"]["ate_se3_rmse_m"].get<double>(), 0.05);
+  // The segment errors under mlndt_eval's names (KittiLengthsJson).
+  ASSERT_EQ(summary["metrics"]["segments"].size(), 2u);
+  for (const Json& length : summary["metrics"]["segments"]) {
+    EXPECT_TRUE(length.contains("translation_error_percent")) << length;
+    EXPECT_TRUE(length.contains("rotation_error_deg_per_m")) << length;
+  }
   const std::string csv = ReadWholeFile(dir + "/out/scans.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
 }

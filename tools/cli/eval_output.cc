@@ -12,14 +12,6 @@ namespace {
 
 // One estimate's entry of the JSON's "estimates".
 Json ResultJson(const TrajectoryEvaluation& r) {
-  Json lengths = Json::array();
-  for (const KittiLengthErrors& l : r.kitti.lengths) {
-    lengths.push_back(
-        {{"length_m", Number(l.length_m)},
-         {"segments", l.num_segments},
-         {"translation_error_percent", Number(l.translation_error_percent)},
-         {"rotation_error_deg_per_m", Number(l.rotation_error_deg_per_m)}});
-  }
   const bool has_rpe = r.rpe_pairs > 0;
   const double nan = std::nan("");
   return {
@@ -50,7 +42,7 @@ Json ResultJson(const TrajectoryEvaluation& r) {
         {"translation_error_percent",
          Number(r.kitti.translation_error_percent)},
         {"rotation_error_deg_per_m", Number(r.kitti.rotation_error_deg_per_m)},
-        {"lengths", lengths}}}};
+        {"lengths", KittiLengthsJson(r.kitti.lengths)}}}};
 }
 
 void PrintSegmentLines(const TrajectoryEvaluationOptions& options,

@@ -75,6 +75,18 @@ Json StatsJson(const Stats& stats) {
           {"p95", Number(stats.p95)}};
 }
 
+Json KittiLengthsJson(const std::vector<KittiLengthErrors>& lengths) {
+  Json json = Json::array();
+  for (const KittiLengthErrors& l : lengths) {
+    json.push_back(
+        {{"length_m", Number(l.length_m)},
+         {"segments", l.num_segments},
+         {"translation_error_percent", Number(l.translation_error_percent)},
+         {"rotation_error_deg_per_m", Number(l.rotation_error_deg_per_m)}});
+  }
+  return json;
+}
+
 Json RegistrationSummaryJson(const RegistrationSummary& summary,
                              bool with_trace) {
   std::vector<std::string> skip;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/kitti_segment_errors.h"
 #include "lab/eval/statistics.h"
 #include "mlndt/common/types.h"
 #include "mlndt/registration/registration_summary.h"
@@ -43,6 +44,11 @@ Json PoseJson(const Isometry3d& transform);
 
 // {"count", "mean", "median", "min", "max", "std", "p95"}.
 Json StatsJson(const Stats& stats);
+
+// The KITTI devkit's errors per segment length, one object each:
+// {"length_m", "segments", "translation_error_percent",
+//  "rotation_error_deg_per_m"} (mlndt_eval's and mlndt_odometry's JSON).
+Json KittiLengthsJson(const std::vector<KittiLengthErrors>& lengths);
 
 // The one JSON form of a registration's result (docs/json_schema.md,
 // "registration"): ResultJson of RegistrationSummaryTable(), every field of

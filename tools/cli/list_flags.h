@@ -39,5 +39,19 @@ bool ParseSizes(const std::string& text,
                 std::vector<size_t>* sizes,
                 std::string* error);
 
+// "a.txt,b.tum" into file names as given (a name may hold blanks); false
+// with *error naming `flag`=`text` ("--estimate=...") on an empty name.
+bool SplitFileList(const std::string& flag,
+                   const std::string& text,
+                   std::vector<std::string>* files,
+                   std::string* error);
+
+// "100,200,..." into lengths [m] (mlndt_eval's KITTI segments); false with
+// *error naming `flag`=`text` when one is not > 0 or is given twice.
+bool ParseLengthList(const std::string& flag,
+                     const std::string& text,
+                     std::vector<double>* lengths,
+                     std::string* error);
+
 }  // namespace tools
 }  // namespace mlndt

@@ -7,16 +7,15 @@
 #include <utility>
 
 #include "lab/eval/statistics.h"
-#include "lab/eval/trajectory_io.h"
 #include "lab/report/gnuplot.h"
+#include "lab/report/run_plots.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/map_memory.h"
 #include "tools/cli/output_set.h"
-#include "tools/cli/result_csv.h"
-#include "tools/cli/result_json.h"
+#include "tools/cli/scan_files.h"
 #include "tools/cli/start_layer_check.h"
 #include "tools/cli/tool_main.h"
 #include "tools/cli/tool_utils.h"
@@ -24,92 +23,6 @@
 
 namespace mlndt {
 namespace tools {
-namespace {
-
-// The scans' file names, one per result.
-CsvColumn FileColumn(const std::vector<std::string>& files,
-                     const std::vector<LocalizationResult>& results) {
-  CsvColumn column{"file", {}};
-  for (const LocalizationResult& r : results) {
-    column.cells.push_back(
-        std::filesystem::path(files[r.index]).filename().string());
-  }
-  return column;
-}
-
-// scans.json: the tool's header and one object per scan, the file's name
-// and every field of LocalizationResultTable but the registration's trace
-// (about 25 kB a scan; as in scans.csv).
-Json LocalizationScansJson(const std::vector<std::string>& files,
-                           const std::vector<LocalizationResult>& results) {
-  const CsvColumn file = FileColumn(files, results);
-  Json scans = Json::array();
-  for (size_t k = 0; k < results.size(); ++k) {
-    Json scan = ResultJsonOf(LocalizationResultTable(), results[k]);
-    scan["registration"].erase("trace");
-    scan["file"] = file.cells[k];
-    scans.push_back(std::move(scan));
-  }
-  Json json = ToolJson("mlndt_localize");
-  json["scans"] = std::move(scans);
-  return json;
-}
-
-// trajectory_xy.png: the finest layer's cell means (every k-th, at most
-// plot_max_cells) and the trajectory, seen from above.
-bool WriteLocalizationPlot(const std::string& dir,
-                           const LayeredGrid& map,
-                           const std::vector<LocalizationResult>& results,
-                           int plot_max_cells,
-                           const std::string& gnuplot,
-                           std::string* error) {
-  std::string data_dir;
-  if (!MakePlotDataDir(dir, &data_dir, error)) return false;
-  const std::vector<NdtCell>& cells = map.layer(map.num_layers()).cells();
-  const size_t max_cells = static_cast<size_t>(plot_max_cells);
-  const size_t stride =
-      max_cells == 0
-          ? 0
-          : std::max<size_t>(1, (cells.size() + max_cells - 1) / max_cells);
-  {
-    std::ostringstream out;
-    out << "# x_m y_m z_m (finest-layer cell means, every " << stride
-        << "-th)\n";
-    for (size_t c = 0; stride > 0 && c < cells.size(); c += stride) {
-      out << cells[c].mean.x() << " " << cells[c].mean.y() << " "
-          << cells[c].mean.z() << "\n";
-    }
-    std::ostringstream trajectory;
-    trajectory << "# x_m y_m converged(1/0)\n";
-    for (const LocalizationResult& r : results) {
-      trajectory << r.map_from_scan.translation().x() << " "
-                 << r.map_from_scan.translation().y() << " "
-                 << (r.registration.termination_type ==
-                     TerminationType::CONVERGENCE)
-                 << "\n";
-    }
-    if (!WriteFileAtomically(data_dir + "/map_cells.dat", out.str(), error) ||
-        !WriteFileAtomically(
-            data_dir + "/trajectory.dat", trajectory.str(), error)) {
-      return false;
-    }
-  }
-  std::ostringstream script;
-  const std::string png = dir + "/trajectory_xy.png";
-  script << GnuplotPngHeader(1000, 800) << GnuplotSetOutput(png)
-         << "set title 'Map (finest cell means) and trajectory, top view'\n"
-         << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
-         << "plot " << GnuplotQuote(data_dir + "/map_cells.dat")
-         << " using 1:2 with points pt 7 ps 0.3 lc rgb '#a0a0a0' title 'map "
-            "cells', "
-         << GnuplotQuote(data_dir + "/trajectory.dat")
-         << " using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#c00000' "
-            "title 'trajectory'\n";
-  return RunGnuplot(gnuplot, data_dir + "/plot.gp", script.str(), {png}, error);
-}
-
-}  // namespace
-
 Json LocalizationSummaryJson(const LocalizerOptions& options,
                              const std::string& map_path,
                              const LayeredGrid& map,
@@ -160,31 +73,16 @@ bool WriteLocalizationFiles(const std::string& dir,
                             const ScanInput& input,
                             const std::vector<LocalizationResult>& results,
                             std::string* error) {
-  const std::string out = dir + "/";
-  Trajectory trajectory;
-  for (const LocalizationResult& r : results) {
-    if (!trajectory.TryAdd(input.StampOf(r.index), r.map_from_scan, error)) {
-      *error = "scan " + input.name(r.index) + ": " + *error;
-      return false;
-    }
-  }
-  return WriteTrajectory(out + "trajectory_kitti.txt",
-                         TrajectoryFormat::KITTI,
-                         trajectory,
-                         error) &&
-         WriteTrajectory(out + "trajectory_tum.txt",
-                         TrajectoryFormat::TUM,
-                         trajectory,
-                         input.TumComment(),
-                         error) &&
-         WriteFileAtomically(out + "scans.csv",
-                             ResultCsvOf(LocalizationResultTable(),
-                                         results,
-                                         {FileColumn(input.names(), results)}),
-                             error) &&
-         WriteJsonFile(out + "scans.json",
-                       LocalizationScansJson(input.names(), results),
-                       error);
+  return WriteScanFilesOf(
+      dir,
+      "mlndt_localize",
+      input,
+      LocalizationResultTable(),
+      results,
+      [&input](const LocalizationResult& r) {
+        return ScanPose{r.index, input.StampOf(r.index), r.map_from_scan};
+      },
+      error);
 }
 
 void PrintMapLine(const std::string& map_path, const LayeredGrid& map) {

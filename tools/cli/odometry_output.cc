@@ -1,80 +1,31 @@
 #include "tools/cli/odometry_output.h"
 
 #include <cstdio>
-#include <filesystem>
 
 #include "lab/eval/statistics.h"
-#include "lab/eval/trajectory_io.h"
-#include "lab/report/gnuplot.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/odometry/run_odometry.h"
-#include "tools/cli/result_csv.h"
-#include "tools/cli/result_json.h"
+#include "tools/cli/scan_files.h"
 #include "tools/cli/tool_utils.h"
 
 namespace mlndt {
 namespace tools {
-namespace {
-
-// The scans' names, one per result.
-CsvColumn FileColumn(const ScanInput& input,
-                     const std::vector<OdometryResult>& results) {
-  CsvColumn column{"file", {}};
-  for (const OdometryResult& r : results) {
-    column.cells.push_back(input.name(r.index));
-  }
-  return column;
-}
-
-// scans.json: the tool's header and one object per scan, the scan's name
-// and every field of OdometryResultTable but the registration's trace (as
-// in scans.csv).
-Json OdometryScansJson(const ScanInput& input,
-                       const std::vector<OdometryResult>& results) {
-  const CsvColumn file = FileColumn(input, results);
-  Json scans = Json::array();
-  for (size_t k = 0; k < results.size(); ++k) {
-    Json scan = ResultJsonOf(OdometryResultTable(), results[k]);
-    scan["registration"].erase("trace");
-    scan["file"] = file.cells[k];
-    scans.push_back(std::move(scan));
-  }
-  Json json = ToolJson("mlndt_odometry");
-  json["scans"] = std::move(scans);
-  return json;
-}
-
-}  // namespace
-
 bool WriteOdometryFiles(const std::string& dir,
                         const ScanInput& input,
                         const std::vector<OdometryResult>& results,
                         std::string* error) {
-  Trajectory trajectory;
-  for (const OdometryResult& r : results) {
-    if (!trajectory.TryAdd(r.stamp_s, r.world_from_sensor, error)) {
-      *error = "scan " + input.name(r.index) + ": " + *error;
-      return false;
-    }
-  }
-  return WriteTrajectory(dir + "/trajectory_kitti.txt",
-                         TrajectoryFormat::KITTI,
-                         trajectory,
-                         error) &&
-         WriteTrajectory(dir + "/trajectory_tum.txt",
-                         TrajectoryFormat::TUM,
-                         trajectory,
-                         input.TumComment(),
-                         error) &&
-         WriteFileAtomically(
-             dir + "/scans.csv",
-             ResultCsvOf(
-                 OdometryResultTable(), results, {FileColumn(input, results)}),
-             error) &&
-         WriteJsonFile(
-             dir + "/scans.json", OdometryScansJson(input, results), error);
+  return WriteScanFilesOf(
+      dir,
+      "mlndt_odometry",
+      input,
+      OdometryResultTable(),
+      results,
+      [](const OdometryResult& r) {
+        return ScanPose{r.index, r.stamp_s, r.world_from_sensor};
+      },
+      error);
 }
 
 Json OdometrySummaryJson(const OdometrySummary& summary,
@@ -99,21 +50,13 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
     total_ms.push_back(r.total_time_s * 1e3);
   json["time_per_scan_ms"] = StatsJson(ComputeStats(total_ms));
   if (metrics == nullptr) return json;
-  Json lengths = Json::array();
-  for (const KittiLengthErrors& l : metrics->segments.lengths) {
-    lengths.push_back(
-        {{"length_m", Number(l.length_m)},
-         {"segments", l.num_segments},
-         {"translation_percent", Number(l.translation_error_percent)},
-         {"rotation_deg_per_m", Number(l.rotation_error_deg_per_m)}});
-  }
   json["metrics"] = {
       {"ate_se3_rmse_m", Number(metrics->ate.rmse_m)},
       {"ate_se3_max_m", Number(metrics->ate.errors.max)},
       {"rpe_delta_scans", metrics->rpe_delta},
       {"rpe_translation_rmse_m", Number(metrics->rpe.translation_rmse_m)},
       {"rpe_rotation_rmse_deg", Number(metrics->rpe.rotation_rmse_deg)},
-      {"segments", lengths}};
+      {"segments", KittiLengthsJson(metrics->segments.lengths)}};
   return json;
 }
 
@@ -169,53 +112,6 @@ void PrintOdometrySummary(const OdometrySummary& summary,
         l.translation_error_percent,
         l.rotation_error_deg_per_m);
   }
-}
-
-bool WriteOdometryPlot(const std::string& gnuplot,
-                       const std::string& dir,
-                       const std::vector<OdometryResult>& results,
-                       const std::vector<Isometry3d>& reference,
-                       std::string* error) {
-  const std::string data_dir = dir + "/plot_data";
-  std::filesystem::create_directories(data_dir);
-  std::string estimate, fallbacks, truth;
-  for (const OdometryResult& r : results) {
-    const Vector3d& t = r.world_from_sensor.translation();
-    const std::string line = Num(t.x()) + " " + Num(t.y()) + "\n";
-    estimate += line;
-    if (r.fallback) fallbacks += line;
-  }
-  if (!reference.empty()) {
-    const Isometry3d first_inverse = reference.front().inverse();
-    for (size_t k = 0; k < results.size() && k < reference.size(); ++k) {
-      const Vector3d t = (first_inverse * reference[k]).translation();
-      truth += Num(t.x()) + " " + Num(t.y()) + "\n";
-    }
-  }
-  if (fallbacks.empty()) fallbacks = "NaN NaN\n";
-  if (!WriteFileAtomically(data_dir + "/estimate.dat", estimate, error) ||
-      !WriteFileAtomically(data_dir + "/fallbacks.dat", fallbacks, error) ||
-      (!truth.empty() &&
-       !WriteFileAtomically(data_dir + "/reference.dat", truth, error))) {
-    return false;
-  }
-  const std::string png = dir + "/trajectory_xy.png";
-  std::string script = GnuplotPngHeader(900, 700) + GnuplotSetOutput(png) +
-                       "set size ratio -1\nset xlabel 'x [m]'\n"
-                       "set ylabel 'y [m]'\nset title 'mlndt_odometry: top "
-                       "view (first scan frame)' noenhanced\nplot " +
-                       GnuplotQuote(data_dir + "/estimate.dat") +
-                       " with linespoints pt 7 ps 0.4 title 'odometry', " +
-                       GnuplotQuote(data_dir + "/fallbacks.dat") +
-                       " with points pt 6 ps 1.5 lc rgb 'red' title "
-                       "'prediction used (fallback)'";
-  if (!truth.empty()) {
-    script += ", " + GnuplotQuote(data_dir + "/reference.dat") +
-              " with lines lc rgb 'black' title 'reference'";
-  }
-  script += "\n";
-  return RunGnuplot(
-      gnuplot, data_dir + "/trajectory_xy.gp", script, {png}, error);
 }
 
 }  // namespace tools

@@ -1,15 +1,16 @@
 #pragma once
 
-// Files written for a sequence run (mlndt_sequence): pairs.csv,
-// summary.json and trace.csv, and the totals on stdout. The summary's numbers
-// are computed from the same values pairs.csv holds (ComputeTotals,
-// pipeline/sequence_totals.h), printed with 10 significant digits in both.
-// Figures: lab/report/sequence_plots.h.
+// Files written for a sequence run (mlndt_sequence): summary.json, and
+// the trajectories with pairs.csv and trace.csv (lab/report/sequence_tables.h).
+// The summary's numbers are computed from the same values pairs.csv holds
+// (ComputeTotals, lab/runs/sequence_totals.h), printed with 10 significant
+// digits in both. Figures: lab/report/sequence_plots.h.
 
 #include <string>
 #include <vector>
 
 #include "lab/eval/statistics.h"
+#include "lab/report/sequence_tables.h"
 #include "lab/runs/scan_store.h"
 #include "lab/runs/sequence_registration.h"
 #include "tools/cli/json_output.h"
@@ -51,12 +52,6 @@ bool WriteSequenceFiles(const std::string& dir,
 // listed), else "".
 std::string UnusablePairsMessage(const SequenceOptions& options,
                                  const std::vector<PairResult>& results);
-
-// The run's totals on stdout (pairs, success rates, errors, times) and the
-// output folder.
-void PrintSequenceTotals(const SequenceOptions& options,
-                         const std::vector<PairResult>& results,
-                         const std::string& output_dir);
 
 // Every file mlndt_sequence writes into --output_dir, checked before the
 // run (a pose or times file there is refused, not overwritten).

@@ -84,18 +84,6 @@ std::vector<std::string> TableFlags::RegisteredFlags() const {
   return flags;
 }
 
-void TableFlags::ShowFieldDefaultsOnSharedFlags() const {
-  for (const auto& [path, flag] : set_by_tool_flag_) {
-    if (!Shared(flag)) continue;
-    const void* owner = Owner(path, table_.defaults());
-    const std::string value = table_.FindPath(path)->Format(owner);
-    CHECK(!gflags::SetCommandLineOptionWithMode(
-               flag.c_str(), value.c_str(), gflags::SET_FLAGS_DEFAULT)
-               .empty())
-        << "--" << flag << "=" << value;
-  }
-}
-
 bool TableFlags::Apply(void* s, std::string* error) const {
   for (const Field& f : fields_) {
     const std::string flag = FlagOf(f.path);

@@ -75,15 +75,6 @@ class TableFlags {
   // [0.001, 1000] or 0 (m), not -1").
   bool Apply(void* s, std::string* error) const;
 
-  // The shared registration flags that set a field of the table in its
-  // place (set_by_tool_flag: mlndt_odometry's --max_flatness sets
-  // OdometryOptions::max_flatness, which replaces the registration's per
-  // scan) take the field's default as theirs, so that --help shows the
-  // value the tool uses when they are not given. Only the default changes
-  // (gflags' SET_FLAGS_DEFAULT): the flag is still not given, and the
-  // shared flags are applied only when given. Call before StartTool.
-  void ShowFieldDefaultsOnSharedFlags() const;
-
  private:
   const OptionTable& table_;
   std::string tool_;
