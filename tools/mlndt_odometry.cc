@@ -39,7 +39,6 @@
 
 #include "lab/eval/dataset.h"
 #include "lab/report/gnuplot.h"
-#include "lab/report/run_plots.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/list_flags.h"
 #include "tools/cli/odometry_flags.h"
@@ -143,7 +142,7 @@ int WritePlot(bool gnuplot_ok,
     return tools::Fail(kTool, PlotSkippedMessage(FLAGS_gnuplot));
   }
   std::string error;
-  if (!WriteOdometryPlot(
+  if (!tools::WriteOdometryPlot(
           FLAGS_gnuplot, FLAGS_output_dir, results, reference, &error)) {
     return tools::Fail(kTool, error);
   }

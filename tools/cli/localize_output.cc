@@ -8,7 +8,6 @@
 
 #include "lab/eval/statistics.h"
 #include "lab/report/gnuplot.h"
-#include "lab/report/run_plots.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
@@ -23,6 +22,63 @@
 
 namespace mlndt {
 namespace tools {
+namespace {
+
+// trajectory_xy.png: the finest layer's cell means (every k-th, at most
+// plot_max_cells) and the trajectory, seen from above.
+bool WriteLocalizationPlot(const std::string& dir,
+                           const LayeredGrid& map,
+                           const std::vector<LocalizationResult>& results,
+                           int plot_max_cells,
+                           const std::string& gnuplot,
+                           std::string* error) {
+  std::string data_dir;
+  if (!MakePlotDataDir(dir, &data_dir, error)) return false;
+  const std::vector<NdtCell>& cells = map.layer(map.num_layers()).cells();
+  const size_t max_cells = static_cast<size_t>(plot_max_cells);
+  const size_t stride =
+      max_cells == 0
+          ? 0
+          : std::max<size_t>(1, (cells.size() + max_cells - 1) / max_cells);
+  {
+    std::ostringstream out;
+    out << "# x_m y_m z_m (finest-layer cell means, every " << stride
+        << "-th)\n";
+    for (size_t c = 0; stride > 0 && c < cells.size(); c += stride) {
+      out << cells[c].mean.x() << " " << cells[c].mean.y() << " "
+          << cells[c].mean.z() << "\n";
+    }
+    std::ostringstream trajectory;
+    trajectory << "# x_m y_m converged(1/0)\n";
+    for (const LocalizationResult& r : results) {
+      trajectory << r.map_from_scan.translation().x() << " "
+                 << r.map_from_scan.translation().y() << " "
+                 << (r.registration.termination_type ==
+                     TerminationType::CONVERGENCE)
+                 << "\n";
+    }
+    if (!WriteFileAtomically(data_dir + "/map_cells.dat", out.str(), error) ||
+        !WriteFileAtomically(
+            data_dir + "/trajectory.dat", trajectory.str(), error)) {
+      return false;
+    }
+  }
+  std::ostringstream script;
+  const std::string png = dir + "/trajectory_xy.png";
+  script << GnuplotPngHeader(1000, 800) << GnuplotSetOutput(png)
+         << "set title 'Map (finest cell means) and trajectory, top view'\n"
+         << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
+         << "plot " << GnuplotQuote(data_dir + "/map_cells.dat")
+         << " using 1:2 with points pt 7 ps 0.3 lc rgb '#a0a0a0' title 'map "
+            "cells', "
+         << GnuplotQuote(data_dir + "/trajectory.dat")
+         << " using 1:2 with linespoints lw 2 pt 7 ps 0.6 lc rgb '#c00000' "
+            "title 'trajectory'\n";
+  return RunGnuplot(gnuplot, data_dir + "/plot.gp", script.str(), {png}, error);
+}
+
+}  // namespace
+
 Json LocalizationSummaryJson(const LocalizerOptions& options,
                              const std::string& map_path,
                              const LayeredGrid& map,

@@ -1,8 +1,10 @@
 #include "tools/cli/odometry_output.h"
 
 #include <cstdio>
+#include <filesystem>
 
 #include "lab/eval/statistics.h"
+#include "lab/report/gnuplot.h"
 #include "lab/report/text_format.h"
 #include "mlndt/common/atomic_file.h"
 #include "mlndt/common/pose.h"
@@ -112,6 +114,53 @@ void PrintOdometrySummary(const OdometrySummary& summary,
         l.translation_error_percent,
         l.rotation_error_deg_per_m);
   }
+}
+
+bool WriteOdometryPlot(const std::string& gnuplot,
+                       const std::string& dir,
+                       const std::vector<OdometryResult>& results,
+                       const std::vector<Isometry3d>& reference,
+                       std::string* error) {
+  const std::string data_dir = dir + "/plot_data";
+  std::filesystem::create_directories(data_dir);
+  std::string estimate, fallbacks, truth;
+  for (const OdometryResult& r : results) {
+    const Vector3d& t = r.world_from_sensor.translation();
+    const std::string line = Num(t.x()) + " " + Num(t.y()) + "\n";
+    estimate += line;
+    if (r.fallback) fallbacks += line;
+  }
+  if (!reference.empty()) {
+    const Isometry3d first_inverse = reference.front().inverse();
+    for (size_t k = 0; k < results.size() && k < reference.size(); ++k) {
+      const Vector3d t = (first_inverse * reference[k]).translation();
+      truth += Num(t.x()) + " " + Num(t.y()) + "\n";
+    }
+  }
+  if (fallbacks.empty()) fallbacks = "NaN NaN\n";
+  if (!WriteFileAtomically(data_dir + "/estimate.dat", estimate, error) ||
+      !WriteFileAtomically(data_dir + "/fallbacks.dat", fallbacks, error) ||
+      (!truth.empty() &&
+       !WriteFileAtomically(data_dir + "/reference.dat", truth, error))) {
+    return false;
+  }
+  const std::string png = dir + "/trajectory_xy.png";
+  std::string script = GnuplotPngHeader(900, 700) + GnuplotSetOutput(png) +
+                       "set size ratio -1\nset xlabel 'x [m]'\n"
+                       "set ylabel 'y [m]'\nset title 'mlndt_odometry: top "
+                       "view (first scan frame)' noenhanced\nplot " +
+                       GnuplotQuote(data_dir + "/estimate.dat") +
+                       " with linespoints pt 7 ps 0.4 title 'odometry', " +
+                       GnuplotQuote(data_dir + "/fallbacks.dat") +
+                       " with points pt 6 ps 1.5 lc rgb 'red' title "
+                       "'prediction used (fallback)'";
+  if (!truth.empty()) {
+    script += ", " + GnuplotQuote(data_dir + "/reference.dat") +
+              " with lines lc rgb 'black' title 'reference'";
+  }
+  script += "\n";
+  return RunGnuplot(
+      gnuplot, data_dir + "/trajectory_xy.gp", script, {png}, error);
 }
 
 }  // namespace tools

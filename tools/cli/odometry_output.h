@@ -3,7 +3,7 @@
 // What mlndt_odometry writes: the trajectories (KITTI, and TUM stamped with
 // the scans' times), scans.csv and scans.json (one row per scan, from its
 // result table), the trajectory metrics against a reference
-// (lab/eval/odometry_metrics.h); the top-view plot: lab/report/run_plots.h.
+// (lab/eval/odometry_metrics.h), and the top-view plot.
 
 #include <string>
 #include <vector>
@@ -33,6 +33,13 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
 void PrintOdometrySummary(const OdometrySummary& summary,
                           const std::vector<OdometryResult>& results,
                           const OdometryMetrics* metrics);
+
+// trajectory_xy.png: the estimate (fallbacks marked) and the reference.
+bool WriteOdometryPlot(const std::string& gnuplot,
+                       const std::string& dir,
+                       const std::vector<OdometryResult>& results,
+                       const std::vector<Isometry3d>& reference,
+                       std::string* error);
 
 }  // namespace tools
 }  // namespace mlndt
