@@ -35,11 +35,12 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
                          const OdometryMetrics* metrics) {
   Json json = ToolJson("mlndt_odometry");
   json["scans"] = summary.scans;
-  json["verdicts"] = {{"CONVERGENCE", summary.convergence},
-                      {"NO_CONVERGENCE", summary.no_convergence},
-                      {"LOW_QUALITY", summary.low_quality},
-                      {"DEGENERATE", summary.degenerate},
-                      {"FAILURE", summary.failure}};
+  // As mlndt_localize's and mlndt_sequence's summary.json.
+  json["terminations"] = {{"CONVERGENCE", summary.convergence},
+                          {"NO_CONVERGENCE", summary.no_convergence},
+                          {"LOW_QUALITY", summary.low_quality},
+                          {"DEGENERATE", summary.degenerate},
+                          {"FAILURE", summary.failure}};
   json["fallbacks"] = summary.fallbacks;
   json["keyframes"] = summary.keyframes;
   json["recovery"] = {
@@ -50,7 +51,7 @@ Json OdometrySummaryJson(const OdometrySummary& summary,
   std::vector<double> total_ms;
   for (const OdometryResult& r : results)
     total_ms.push_back(r.total_time_s * 1e3);
-  json["time_per_scan_ms"] = StatsJson(ComputeStats(total_ms));
+  json["time_ms_stats"] = {{"scan", StatsJson(ComputeStats(total_ms))}};
   if (metrics == nullptr) return json;
   json["metrics"] = {
       {"ate_se3_rmse_m", Number(metrics->ate.rmse_m)},
