@@ -27,15 +27,15 @@
 // lab/runs/adaptive_start_layer.h, tools/cli/adaptive_start_layer_flags.h).
 //
 // Writes into --output_dir: pairs.csv, summary.json, trace.csv,
-// trajectory.txt (chained estimates of scans 0, step, 2 step, ...; KITTI,
+// trajectory_kitti.txt (chained estimates of scans 0, step, 2 step, ...; KITTI,
 // first pose identity), trajectory_tum.txt (the same, stamped as its header
-// line says), gt_trajectory.txt (from the ground truth), and with --plots
+// line says), gt_trajectory_kitti.txt (from the ground truth), and with --plots
 // the PNGs errors_translation, errors_rotation, trajectory_xy and
 // score_vs_iteration (gnuplot; data and scripts in plot_data/). Pairs are
 // counted by verdict (summary.json "terminations", the printed "verdicts:"
 // line); a pair whose result is not usable (LOW_QUALITY, DEGENERATE,
 // FAILURE) keeps its --init guess as its estimate, chained into
-// trajectory.txt, and is flagged in pairs.csv and summary.json.
+// trajectory_kitti.txt, and is flagged in pairs.csv and summary.json.
 //
 // Exit codes: 2 on input refused before any work; 1 when a pair's result
 // is not usable, data cannot be read or gnuplot is missing for --plots (the
@@ -222,7 +222,7 @@ int Run() {
       WriteOutputs(options, input, store, results, truth, gnuplot_ok);
   if (written != 0) return written;
   // A pair without a usable result (LOW_QUALITY, DEGENERATE, FAILURE) has
-  // its --init guess in trajectory.txt, flagged in pairs.csv and
+  // its --init guess in trajectory_kitti.txt, flagged in pairs.csv and
   // summary.json.
   const std::string unusable = tools::UnusablePairsMessage(options, results);
   return unusable.empty() ? 0 : tools::Fail(kTool, unusable);
@@ -240,7 +240,7 @@ int main(int argc, char** argv) {
           "[--step=1] [--init=zero]\n"
           "Exit 1 when any pair's result is not usable (LOW_QUALITY, "
           "DEGENERATE or FAILURE; counted by verdict in the summary and "
-          "summary.json): trajectory.txt holds its --init guess instead.",
+          "summary.json): trajectory_kitti.txt holds its --init guess instead.",
           true,
           &argc,
           &argv)) {

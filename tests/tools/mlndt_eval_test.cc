@@ -1,6 +1,6 @@
 // Runs the built mlndt_eval: its `chain` mode against the pairs chained
 // here from the JSON; its ATE, RPE and KITTI segment errors on a
-// trajectory.txt written by mlndt_sequence against values computed here
+// trajectory_kitti.txt written by mlndt_sequence against values computed here
 // with Eigen alone (Eigen::umeyama, the devkit's segment rule written out);
 // TUM files and timestamp association; and every flag it refuses.
 
@@ -43,9 +43,9 @@ std::vector<Isometry3d> ReadPoses(const std::string& path) {
   return poses;
 }
 
-// The trajectory.txt of mlndt_sequence on the bundled KITTI frames, written
-// once per test process (ctest runs each test in its own process, so the
-// folder is named after the test).
+// The trajectory_kitti.txt of mlndt_sequence on the bundled KITTI frames,
+// written once per test process (ctest runs each test in its own process, so
+// the folder is named after the test).
 const std::string& SequenceTrajectory() {
   static const std::string path = [] {
     const std::string dir = testing::ScratchPath("sequence");
@@ -55,7 +55,7 @@ const std::string& SequenceTrajectory() {
         "--scans=" + Quote(KittiPcd()) + " --gt_poses=" + Quote(KittiGt()) +
             " --output_dir=" + Quote(dir) + " --plots=false");
     EXPECT_EQ(run.exit_code, 0) << run.err;
-    return dir + "/trajectory.txt";
+    return dir + "/trajectory_kitti.txt";
   }();
   return path;
 }

@@ -41,9 +41,9 @@ TEST(MlndtSequenceBag, BagOfTheKittiFramesGivesTheFolderPoses) {
           " --output_dir=" + Quote(dir + "/bag") + " --plots=false");
   ASSERT_EQ(folder.exit_code, 0) << folder.err;
   ASSERT_EQ(bag.exit_code, 0) << bag.err;
-  const std::string poses = ReadWholeFile(dir + "/bag/trajectory.txt");
+  const std::string poses = ReadWholeFile(dir + "/bag/trajectory_kitti.txt");
   EXPECT_EQ(std::count(poses.begin(), poses.end(), '\n'), 8);
-  EXPECT_EQ(poses, ReadWholeFile(dir + "/folder/trajectory.txt"));
+  EXPECT_EQ(poses, ReadWholeFile(dir + "/folder/trajectory_kitti.txt"));
   // The folder had no times: its TUM file says its stamps are indices.
   EXPECT_TRUE(TumStampsAreScanIndices(dir + "/folder/trajectory_tum.txt"));
   EXPECT_FALSE(TumStampsAreScanIndices(dir + "/bag/trajectory_tum.txt"));

@@ -230,8 +230,8 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
   for (const char* file : {"pairs.csv",
                            "summary.json",
                            "trace.csv",
-                           "trajectory.txt",
-                           "gt_trajectory.txt"}) {
+                           "trajectory_kitti.txt",
+                           "gt_trajectory_kitti.txt"}) {
     EXPECT_TRUE(fs::is_regular_file(dir + "/" + file)) << file;
   }
   if (plots) {
@@ -322,13 +322,13 @@ TEST(MlndtSequence, KittiStepOneFromZero) {
   EXPECT_GE(summary.Number("strict_success_rate_percent"), 95.0);
 
   // Trajectories: 8 poses, the first the identity, GT = the velodyne poses.
-  ASSERT_EQ(CountLines(dir + "/trajectory.txt"), 8u);
-  ASSERT_EQ(CountLines(dir + "/gt_trajectory.txt"), 8u);
+  ASSERT_EQ(CountLines(dir + "/trajectory_kitti.txt"), 8u);
+  ASSERT_EQ(CountLines(dir + "/gt_trajectory_kitti.txt"), 8u);
   std::vector<Eigen::Isometry3d> estimate, truth, velo;
   std::string error;
-  ASSERT_TRUE(ReadKittiPoses(dir + "/trajectory.txt", &estimate, &error))
+  ASSERT_TRUE(ReadKittiPoses(dir + "/trajectory_kitti.txt", &estimate, &error))
       << error;
-  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory.txt", &truth, &error))
+  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory_kitti.txt", &truth, &error))
       << error;
   ASSERT_TRUE(ReadKittiPoses(
       testing::BundledDataPath("kitti/poses_velo.txt"), &velo, &error));
@@ -435,7 +435,7 @@ TEST(MlndtSequence, CameraPosesWithCalibMatchVelodynePoses) {
   EXPECT_EQ(summary.Number("scans"), 3.0);
   std::vector<Eigen::Isometry3d> truth, velo;
   std::string error;
-  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory.txt", &truth, &error))
+  ASSERT_TRUE(ReadKittiPoses(dir + "/gt_trajectory_kitti.txt", &truth, &error))
       << error;
   ASSERT_TRUE(ReadKittiPoses(
       testing::BundledDataPath("kitti/poses_velo.txt"), &velo, &error));
@@ -571,7 +571,7 @@ TEST(MlndtSequence, UnusablePairsAreCountedFlaggedAndExitOne) {
             std::string::npos)
       << run.out;
   EXPECT_NE(run.err.find("2 of 2 pairs have no usable result (0->1 "
-                         "LOW_QUALITY, 1->2 LOW_QUALITY): trajectory.txt "
+                         "LOW_QUALITY, 1->2 LOW_QUALITY): trajectory_kitti.txt "
                          "chains their --init=zero guess"),
             std::string::npos)
       << run.err;

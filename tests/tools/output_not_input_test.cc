@@ -37,9 +37,9 @@ TEST(OutputNotInput, PoseAndTimesFilesAtOutputPathsAreRefused) {
     const char* file;  // In the output folder, holding the input.
     const char* flag;  // Given the file.
   } cases[] = {
-      {"mlndt_sequence", "trajectory.txt", "gt_poses"},
+      {"mlndt_sequence", "trajectory_kitti.txt", "gt_poses"},
       {"mlndt_sequence", "trajectory_tum.txt", "gt_poses"},
-      {"mlndt_sequence", "gt_trajectory.txt", "gt_poses"},
+      {"mlndt_sequence", "gt_trajectory_kitti.txt", "gt_poses"},
       {"mlndt_odometry", "trajectory_kitti.txt", "gt_poses"},
       {"mlndt_odometry", "trajectory_tum.txt", "gt_poses"},
   };

@@ -70,9 +70,9 @@ TEST(OutputSet, SequenceSummaryIsWrittenLastAndNamesItsFiles) {
   ExpectSummaryLastAndNaming(out,
                              {"pairs.csv",
                               "trace.csv",
-                              "trajectory.txt",
+                              "trajectory_kitti.txt",
                               "trajectory_tum.txt",
-                              "gt_trajectory.txt"});
+                              "gt_trajectory_kitti.txt"});
 }
 
 TEST(OutputSet, LocalizeSummaryIsWrittenLastAndNamesItsFiles) {

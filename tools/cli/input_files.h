@@ -28,7 +28,7 @@ bool CheckNotAnInput(const std::string& flag,
 // False, with *error naming --`flag`=`dir` and the input, when the folder
 // `dir` exists and is one the run reads (an argument or a string flag as
 // above naming the same folder, by device and inode): a later run would
-// read the outputs as inputs (a trajectory.txt in the scan folder).
+// read the outputs as inputs (a trajectory_kitti.txt in the scan folder).
 bool CheckNotAnInputFolder(const std::string& flag,
                            const std::string& dir,
                            std::string* error);

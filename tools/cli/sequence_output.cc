@@ -83,7 +83,7 @@ Json SummaryJson(const Json& header, const std::vector<PairResult>& results) {
   o["unusable_pair_list"] = unusable;
   o["unusable_estimate"] =
       "the pair's --init guess (pairs.csv estimate_source 'guess'), chained "
-      "into trajectory.txt in place of a registration";
+      "into trajectory_kitti.txt in place of a registration";
   o["registration_failures"] = t.registration_failures;
   o["guess_check_failures"] = t.guess_check_failures;
   o["time_note"] = "per pair: pair = map + registration; p95 = nearest rank";
@@ -143,13 +143,13 @@ bool WriteSequenceFiles(const std::string& dir,
   }
   const std::vector<Isometry3d> chained =
       ChainTrajectory(results, options.step, false);
-  if (!WriteKittiPoses(out + "trajectory.txt", chained, error) ||
+  if (!WriteKittiPoses(out + "trajectory_kitti.txt", chained, error) ||
       !WriteTumTrajectory(
           out + "trajectory_tum.txt", chained, options.step, input, error)) {
     return false;
   }
   return !has_truth ||
-         WriteKittiPoses(out + "gt_trajectory.txt",
+         WriteKittiPoses(out + "gt_trajectory_kitti.txt",
                          ChainTrajectory(results, options.step, true),
                          error);
 }
@@ -169,7 +169,7 @@ std::string UnusablePairsMessage(const SequenceOptions& options,
   if (verdicts.unusable() == 0) return "";
   return std::to_string(verdicts.unusable()) + " of " +
          std::to_string(verdicts.total()) + " pairs have no usable result (" +
-         pairs + "): trajectory.txt chains their --init=" +
+         pairs + "): trajectory_kitti.txt chains their --init=" +
          InitSpecToString(options.init) +
          " guess instead (estimate_source 'guess' in pairs.csv)";
 }
@@ -178,9 +178,9 @@ std::vector<std::string> SequenceOutputFiles(bool has_truth, bool plots) {
   std::vector<std::string> outputs = {"pairs.csv",
                                       "summary.json",
                                       "trace.csv",
-                                      "trajectory.txt",
+                                      "trajectory_kitti.txt",
                                       "trajectory_tum.txt"};
-  if (has_truth) outputs.push_back("gt_trajectory.txt");
+  if (has_truth) outputs.push_back("gt_trajectory_kitti.txt");
   if (plots) {
     outputs.insert(outputs.end(),
                    {"errors_translation.png",

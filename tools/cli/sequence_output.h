@@ -37,8 +37,8 @@ Json SequenceSummaryHeader(const SequenceOptions& options,
                            const SequenceSource& source,
                            size_t num_scans);
 
-// pairs.csv, trace.csv and the trajectories (trajectory.txt,
-// trajectory_tum.txt, with truth gt_trajectory.txt) into `dir`; the tool
+// pairs.csv, trace.csv and the trajectories (trajectory_kitti.txt,
+// trajectory_tum.txt, with truth gt_trajectory_kitti.txt) into `dir`; the tool
 // writes summary.json (SummaryJson) last (output_set.h).
 bool WriteSequenceFiles(const std::string& dir,
                         const SequenceOptions& options,

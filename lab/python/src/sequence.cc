@@ -276,7 +276,7 @@ void DefineSequence(py::module_& m) {
       "chain_trajectory(results, step=1, use_truth=False) -> numpy.ndarray\n\n"
       "Chains the estimates (or the truths) of a run into poses of scans 0, "
       "step,\n2 step, ... relative to scan 0 ((K, 4, 4); mlndt_sequence's "
-      "trajectory.txt).");
+      "trajectory_kitti.txt).");
 }
 
 }  // namespace python

@@ -1,5 +1,5 @@
 """mlndt_lab.run_sequence gives mlndt_sequence's run on the bundled KITTI
-frames 0-7: the chained trajectory number for number (trajectory.txt has 17
+frames 0-7: the chained trajectory number for number (trajectory_kitti.txt has 17
 significant digits), the same verdicts, iterations and start layers per
 pair, and pair errors against the reference pairs within tolerance. A
 ScanStore builds each map once across runs; bad arguments raise errors
@@ -48,8 +48,8 @@ def test_run_sequence_matches_mlndt_sequence(tmp_path, truth, case):
     step = arguments.get("step", 1)
     assert [(r.reference, r.input) for r in results] == [(i, i + step) for i in range(8 - step)]
     chained = lab.chain_trajectory(results, step)
-    assert np.array_equal(read_kitti_lines(tmp_path / "trajectory.txt"), chained)
-    assert np.array_equal(read_kitti_lines(tmp_path / "gt_trajectory.txt"), lab.chain_trajectory(results, step, True))
+    assert np.array_equal(read_kitti_lines(tmp_path / "trajectory_kitti.txt"), chained)
+    assert np.array_equal(read_kitti_lines(tmp_path / "gt_trajectory_kitti.txt"), lab.chain_trajectory(results, step, True))
     with open(tmp_path / "pairs.csv") as rows:
         table = list(csv.DictReader(rows))
     assert [row["termination"] for row in table] == [r.termination for r in results]
