@@ -104,12 +104,7 @@ bool GridOptionsFromFlags(LayeredGridOptions* grid, std::string* error) {
           LayeredGridOptionsTable(), "grid.", false, grid, error)) {
     return false;
   }
-  if (tools::FlagGiven("num_layers") && grid->finest_cell_size_m > 0.0) {
-    *error = "--num_layers is ignored while " +
-             tools::GivenFlagName("finest_cell_size_m") +
-             " > 0 (n is derived from it): give " +
-             tools::GivenFlagName("finest_cell_size_m") +
-             "=0 with --num_layers";
+  if (!tools::CheckLayerCountFlags(grid->finest_cell_size_m, error)) {
     return false;
   }
   std::string why;

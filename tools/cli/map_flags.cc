@@ -2,6 +2,7 @@
 
 #include <gflags/gflags.h>
 
+#include "tools/cli/option_flags.h"
 #include "tools/cli/registration_flags.h"
 
 namespace mlndt {
@@ -71,13 +72,7 @@ bool GridOptionsFromFlags(const std::string& tool,
           LayeredGridOptionsTable(), "grid.", false, grid, error)) {
     return false;
   }
-  if (FlagGiven("num_layers") && grid->finest_cell_size_m > 0.0) {
-    *error = "--num_layers is ignored while " +
-             GivenFlagName("finest_cell_size_m") +
-             " > 0 (n is derived from it): give " +
-             GivenFlagName("finest_cell_size_m") + "=0 with --num_layers";
-    return false;
-  }
+  if (!CheckLayerCountFlags(grid->finest_cell_size_m, error)) return false;
   std::string why;
   if (grid->IsValid(&why)) return true;
   // Name the flag behind the option ("regularization.min_eigenvalue_m2").

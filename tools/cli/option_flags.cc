@@ -167,6 +167,15 @@ bool ApplyGivenFlags(const OptionTable& table,
   return true;
 }
 
+bool CheckLayerCountFlags(double finest_cell_size_m, std::string* error) {
+  if (!FlagGiven("num_layers") || finest_cell_size_m <= 0.0) return true;
+  const std::string finest = GivenFlagName("finest_cell_size_m");
+  *error = "--num_layers is ignored while " + finest +
+           " > 0 (n is derived from it): give " + finest +
+           "=0 with --num_layers";
+  return false;
+}
+
 int IntFlag(const std::string& name) { return std::stoi(FlagText(name)); }
 double DoubleFlag(const std::string& name) { return std::stod(FlagText(name)); }
 uint64_t Uint64Flag(const std::string& name) {

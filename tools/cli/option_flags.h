@@ -53,6 +53,11 @@ bool ApplyGivenFlags(const OptionTable& table,
                      void* s,
                      std::string* error);
 
+// The one rule between the map's two layer-count flags: false with *error
+// when --num_layers is given while `finest_cell_size_m` (the map options'
+// value after the flags) is > 0, which derives n and would ignore it.
+bool CheckLayerCountFlags(double finest_cell_size_m, std::string* error);
+
 // The values of flags made from the tables, for tools that read one
 // directly.
 int IntFlag(const std::string& name);

@@ -109,14 +109,8 @@ bool CheckMlNdt(const RegistrationOptions& options, std::string* error) {
              "; it would be ignored)";
     return false;
   }
-  if (FlagGiven("num_layers") && options.grid.finest_cell_size_m > 0.0) {
-    *error = "--num_layers is ignored while " +
-             GivenFlagName("finest_cell_size_m") +
-             " > 0 (n is derived from it): give " +
-             GivenFlagName("finest_cell_size_m") + "=0 with --num_layers";
-    return false;
-  }
-  return CheckSampling(options.sampling, error) &&
+  return CheckLayerCountFlags(options.grid.finest_cell_size_m, error) &&
+         CheckSampling(options.sampling, error) &&
          CheckQualityCheck(options.quality_check, error);
 }
 
