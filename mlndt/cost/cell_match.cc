@@ -57,6 +57,20 @@ const NdtCell* MatchCell(const NdtLayer& layer,
     const int64_t step_y = layer.dims().x();
     const int64_t step_z = step_y * layer.dims().y();
     const int64_t centre = layer.LinearKey(ijk);
+    if (const int32_t* slots = layer.dense_slots()) {
+      // A dense index: three loads a row, no per-key test of the index's
+      // kind (the search's cost is these 27 probes; few are occupied).
+      const NdtCell* cells = layer.cells().data();
+      for (int64_t dz = -step_z; dz <= step_z; dz += step_z) {
+        for (int64_t dy = -step_y; dy <= step_y; dy += step_y) {
+          const int32_t* row = slots + (centre + dz + dy - 1);
+          for (int dx = 0; dx < 3; ++dx) {
+            if (row[dx] >= 0) nearest.Consider(point, cells + row[dx]);
+          }
+        }
+      }
+      return nearest.cell;
+    }
     for (int64_t dz = -step_z; dz <= step_z; dz += step_z) {
       for (int64_t dy = -step_y; dy <= step_y; dy += step_y) {
         const int64_t row = centre + dz + dy;

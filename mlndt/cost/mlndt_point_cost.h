@@ -56,6 +56,25 @@ void WhitenedCellResidual(const NdtLayer& layer,
   r = cell->whitening.cast<T>() * (x - cell->mean.cast<T>());
 }
 
+// The same for Jets, with W and mu as the constants they are
+// (JetTimesConstant, jet_utils.h): the same values, fewer products.
+template <int N>
+void WhitenedCellResidual(const NdtLayer& layer,
+                          UnmatchedPolicy policy,
+                          const Eigen::Matrix<ceres::Jet<double, N>, 3, 1>& x,
+                          ceres::Jet<double, N>* residual) {
+  const Eigen::Vector3d value(x(0).a, x(1).a, x(2).a);
+  const NdtCell* cell = MatchCell(layer, value, policy);
+  Eigen::Map<Eigen::Matrix<ceres::Jet<double, N>, 3, 1>> r(residual);
+  if (cell == nullptr) {
+    r.setZero();
+    return;
+  }
+  Eigen::Matrix<ceres::Jet<double, N>, 3, 1> e = x;
+  for (int i = 0; i < 3; ++i) e(i).a -= cell->mean(i);  // x - mu, Eq. (9).
+  r = JetTimesConstant(cell->whitening, e);
+}
+
 class MlNdtPointCost {
  public:
   MlNdtPointCost(LayerSource layer,

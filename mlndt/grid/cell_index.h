@@ -53,6 +53,12 @@ class CellIndex {
   }
 
   bool is_dense() const { return !dense_.empty(); }
+  // The dense table (slot or -1 per key), or nullptr for a hashed index:
+  // for scans over neighbouring keys without a branch per key on the kind
+  // of index (cell_match.h).
+  const int32_t* dense_slots() const {
+    return dense_.empty() ? nullptr : dense_.data();
+  }
   // Keys stored in the hash table (0 for a dense index).
   size_t num_hashed() const { return num_hashed_; }
 

@@ -73,6 +73,10 @@ class NdtLayer {
     return slot < 0 ? nullptr : &cells_[static_cast<size_t>(slot)];
   }
 
+  // The cell index's dense table (CellIndex::dense_slots: the slot in
+  // cells() of every linear key, or -1), or nullptr when it is hashed.
+  const int32_t* dense_slots() const { return index_.dense_slots(); }
+
   // True when `ijk` and its 26 neighbours all lie inside the grid, so that
   // the neighbours' keys are LinearKey(ijk) plus fixed offsets.
   bool NeighboursInside(const Eigen::Vector3i& ijk) const {

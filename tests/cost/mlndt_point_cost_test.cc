@@ -480,5 +480,42 @@ TEST(CachedEulerRotation, MatchesEulerRotationForChangingJets) {
             EulerRotation(plain[0], plain[1], plain[2]));
 }
 
+// The Jet versions of CachedTransformPoint and WhitenedCellResidual skip
+// the products with a constant's zero derivative part: the residual's
+// scalar part keeps its bits and the derivatives their values (== also
+// equates a zero's two signs), against Eigen's products with the constants
+// cast to Jets (the generic versions' expressions).
+TEST(JetTimesConstant, SameValuesAsTheGenericJetProducts) {
+  using Jet = ceres::Jet<double, 6>;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    Jet xi[6];
+    for (int i = 0; i < 6; ++i) {
+      xi[i] = Jet(u(rng) * (i < 3 ? 1.0 : 0.5), i);
+      xi[i].v(trial % 6) += u(rng);  // Derivative parts of any shape.
+    }
+    const Eigen::Vector3d x(u(rng) * 20.0, u(rng) * 20.0, u(rng));
+    const Eigen::Matrix<Jet, 3, 1> fast = CachedTransformPoint(xi, x);
+    const Eigen::Matrix<Jet, 3, 1> generic =
+        CachedEulerRotation(xi + 3) * x.cast<Jet>() +
+        Eigen::Matrix<Jet, 3, 1>(xi[0], xi[1], xi[2]);
+    Eigen::Matrix3d w;
+    w << u(rng), u(rng), u(rng), 0.0, u(rng), u(rng), 0.0, 0.0, u(rng);
+    const Eigen::Vector3d mu(u(rng), u(rng), u(rng));
+    Eigen::Matrix<Jet, 3, 1> e = fast;
+    for (int i = 0; i < 3; ++i) e(i).a -= mu(i);
+    const Eigen::Matrix<Jet, 3, 1> r = JetTimesConstant(w, e);
+    const Eigen::Matrix<Jet, 3, 1> r_generic =
+        w.cast<Jet>() * (generic - mu.cast<Jet>());
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_TRUE(SameBits(fast(i).a, generic(i).a)) << "trial " << trial;
+      EXPECT_EQ(fast(i).v, generic(i).v) << "trial " << trial;
+      EXPECT_TRUE(SameBits(r(i).a, r_generic(i).a)) << "trial " << trial;
+      EXPECT_EQ(r(i).v, r_generic(i).v) << "trial " << trial;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mlndt
