@@ -10,6 +10,7 @@
 #include "mlndt/cost/score.h"
 #include "mlndt/registration/internal/cell_shape.h"
 #include "mlndt/registration/internal/direction_probe.h"
+#include "mlndt/registration/internal/prior_hold.h"
 #include "mlndt/registration/quality_check.h"
 #include "mlndt/registration/rival_minima.h"
 
@@ -622,6 +623,18 @@ void FlagUnlocalizable(const Context& c,
   best->verdict_message = std::move(judgement.message);
 }
 
+// Step 8 above (prior_hold.h), its message added to the verdict's.
+void HoldPrior(const RegistrationOptions& options,
+               const Problem& problem,
+               const Vector6d& initial_local,
+               Attempt* best) {
+  if (HoldPriorAlongFreeDirections(options, problem, initial_local, best) > 0) {
+    best->verdict_message +=
+        "; the pose keeps the prior's value along the free directions, and "
+        "the covariance the prior's there";
+  }
+}
+
 // The guess turned by `yaw_deg` about the z axis at the input's centroid.
 Vector6d TurnedGuess(const Vector6d& guess, double yaw_deg) {
   Isometry3d turned = PoseVectorToIsometry(guess);
@@ -664,6 +677,7 @@ Attempt SolveAttempts(const RegistrationOptions& options,
   }
   FlagUnlocalizable(c, options.quality_check, &best);
   FlagRivalMinimum(c, &best);
+  HoldPrior(options, problem, initial_local, &best);
   return best;
 }
 
