@@ -53,7 +53,9 @@
 //     iteration cap stops goes on once from where it stopped;
 //  8. HoldPriorAlongFreeDirections (prior_hold.h), when the initial guess
 //     has a stated uncertainty: along the directions the chosen result's
-//     analysis names free (steps 6-7 and the quality check's), the pose
+//     analysis names free (steps 6-7 and the quality check's; for a
+//     DEGENERATE result the localizability's as well, which steps 1-5 and
+//     7 did not test), the pose
 //     keeps the guess's value and the covariance the prior's; the rest is
 //     minimised again with those held. The verdict stands.
 
