@@ -44,8 +44,13 @@ void ReportSolution(const Problem& problem,
   summary->quality = attempt.fit;
   // 2 H^-1: the Laplace approximation for whitened residuals of unit
   // variance.
+  // Held at the prior along free directions (attempts.h step 8): the
+  // prior's covariance there, the Laplace one on the rest.
   const Matrix6d local_covariance =
-      LaplaceCovariance(final.hessian, 2.0, summary->constraints);
+      attempt.prior_held_directions > 0 && attempt.held_covariance.allFinite()
+          ? attempt.held_covariance
+          : LaplaceCovariance(final.hessian, 2.0, summary->constraints);
+  summary->prior_held_directions = attempt.prior_held_directions;
   summary->reference_from_input =
       PoseVectorToIsometry(problem.anchor.ToGlobal(local));
   // Angles wrapped to (-pi, pi] by the round trip.

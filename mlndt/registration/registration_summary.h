@@ -40,6 +40,11 @@ struct RegistrationSummary {
   // (a stage over every s-th sample counts a 1/s share). 0 for NDT.
   int64_t point_iterations = 0;
   int start_layer = 0;
+  // With a prior (RegistrationOptions::initial_uncertainty): the free
+  // directions along which the pose kept the initial guess's value and the
+  // covariance the prior's (registration/internal/prior_hold.h); 0 when
+  // none or no prior.
+  int prior_held_directions = 0;
   int num_layers = 0;
   double finest_cell_size_m = 0.0;  // Cell edge of the last layer [m].
 
@@ -73,7 +78,7 @@ struct RegistrationSummary {
   // NDT: the full Newton Hessian of the Gaussian score (Magnusson Eq. 6.13),
   // and H^-1 as the covariance (zero unless H is positive definite).
   // Units m and rad. Along degenerate directions the variances are
-  // infinite.
+  // infinite, or the prior's when one was given (prior_held_directions).
   Matrix6d hessian = Matrix6d::Zero();
   Matrix6d covariance = Matrix6d::Zero();
 

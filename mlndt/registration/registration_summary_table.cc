@@ -64,6 +64,11 @@ void AddIterations(Builder* b) {
                "Sampled points evaluated, summed over every iteration of "
                "every attempt (0 for NDT).")
       .Integer("start_layer", &S::start_layer, "", "The layer it started on.")
+      .Integer("prior_held_directions",
+               &S::prior_held_directions,
+               "",
+               "Free directions along which the pose kept the prior's value "
+               "(and the covariance the prior's); 0 without a prior.")
       .Integer("num_layers", &S::num_layers, "", "Layers of the map.")
       .Number("finest_cell_size_m",
               &S::finest_cell_size_m,

@@ -206,6 +206,9 @@ class RegistrationResult:
     def start_layer(self) -> int:
         """The layer it started on."""
     @property
+    def prior_held_directions(self) -> int:
+        """Free directions along which the pose kept the prior's value (and the covariance the prior's); 0 without a prior."""
+    @property
     def num_layers(self) -> int:
         """Layers of the map."""
     @property

@@ -50,7 +50,14 @@
 //     cell away) and fits as well (not clearly fewer inliers:
 //     InlierGainEvidence >= -1); the direction to it is unbounded in the
 //     covariance (rival_minima.h). A last-layer run of steps 2-4 that the
-//     iteration cap stops goes on once from where it stopped.
+//     iteration cap stops goes on once from where it stopped;
+//  8. HoldPriorAlongFreeDirections (prior_hold.h), when the initial guess
+//     has a stated uncertainty: along the directions the chosen result's
+//     analysis names free (steps 6-7 and the quality check's; for a
+//     DEGENERATE result the localizability's as well, which steps 1-5 and
+//     7 did not test), the pose
+//     keeps the guess's value and the covariance the prior's; the rest is
+//     minimised again with those held. The verdict stands.
 
 #include <cstdint>
 #include <memory>
@@ -92,6 +99,11 @@ struct Attempt {
   ConstraintAnalysis constraints;
   TerminationType verdict = TerminationType::FAILURE;  // CheckQuality's.
   std::string verdict_message;
+  // Free directions kept at the prior's value (step 8; prior_hold.h), and
+  // the covariance of xi_local it gives (Laplace on the rest, the prior's
+  // on them); unused when 0.
+  int prior_held_directions = 0;
+  Matrix6d held_covariance = Matrix6d::Zero();
   bool usable() const {
     return verdict == TerminationType::CONVERGENCE ||
            verdict == TerminationType::NO_CONVERGENCE;
@@ -105,7 +117,7 @@ struct AttemptsCost {
   int64_t point_iterations = 0;
 };
 
-// Runs 1-7 above.
+// Runs 1-8 above.
 Attempt SolveAttempts(const RegistrationOptions& options,
                       const Problem& problem,
                       const Vector6d& initial_local,
