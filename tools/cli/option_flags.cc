@@ -104,11 +104,22 @@ std::string HelpText(const OptionFlag& flag) {
   return help;
 }
 
+// The flag's option path for --help's headings (tool_main.h): ML-NDT's,
+// or "ndt:" and NDT's for a flag of conventional NDT only.
+std::string OptionPathOf(const std::string& name) {
+  for (const OptionFlag& flag : OptionFlags()) {
+    if (flag.name != name) continue;
+    return flag.mlndt_path.empty() ? "ndt:" + flag.ndt_path : flag.mlndt_path;
+  }
+  return "";
+}
+
 // Registers the shared flags with gflags at static-initialisation time
 // (what the DEFINE_ macros do).
 class FlagRegistry {
  public:
   FlagRegistry() {
+    SetOptionPathOfFlag(&OptionPathOf);
     for (const OptionFlag& flag : OptionFlags()) {
       RegisterOptionFlag(flag.name,
                          HelpText(flag),

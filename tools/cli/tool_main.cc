@@ -16,7 +16,6 @@
 #include "tools/cli/data_argument.h"
 #include "tools/cli/flag_utils.h"
 #include "tools/cli/input_files.h"
-#include "tools/cli/option_flags.h"
 
 // gflags' own help flags (gflags_reporting.cc).
 DECLARE_bool(help);
@@ -61,6 +60,11 @@ int Refuse(const std::string& tool, const std::string& message) {
 }
 
 namespace {
+
+OptionPathOfFlag& OptionPathLookup() {
+  static OptionPathOfFlag lookup = nullptr;
+  return lookup;
+}
 
 std::set<std::string>& HiddenFlags() {
   static std::set<std::string> hidden;
@@ -180,12 +184,12 @@ std::string Purpose(const gflags::CommandLineFlagInfo& flag,
       {"tools/cli/verdict_flags.cc", "9 Verdict"},
   };
   std::string key = path;
-  if (const OptionFlag* option = FlagOfName(flag.name)) {
-    if (option->mlndt_path.empty()) return "7 Conventional NDT (--method=ndt)";
-    const std::string& option_path =
-        option->mlndt_path.empty() ? option->ndt_path : option->mlndt_path;
-    key = option_path.substr(0, option_path.find('.'));
+  const std::string option_path =
+      OptionPathLookup() != nullptr ? OptionPathLookup()(flag.name) : "";
+  if (option_path.rfind("ndt:", 0) == 0) {
+    return "7 Conventional NDT (--method=ndt)";
   }
+  if (!option_path.empty()) key = option_path.substr(0, option_path.find('.'));
   const auto found = kHeadings.find(key);
   return found != kHeadings.end() ? found->second : "7 Registration";
 }
@@ -229,6 +233,10 @@ std::string ToolHelp(const std::string& tool) {
 
 std::string MainFile(const std::string& tool) {
   return (IsLabProgram(tool) ? "lab/programs/" : "tools/") + tool + ".cc";
+}
+
+void SetOptionPathOfFlag(OptionPathOfFlag lookup) {
+  OptionPathLookup() = lookup;
 }
 
 void HideFlagsFromHelp(const std::vector<std::string>& flags) {

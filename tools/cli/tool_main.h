@@ -75,6 +75,13 @@ void HideFlagsFromHelp(const std::vector<std::string>& flags);
 void RefuseUnreadFlags(const std::vector<std::string>& flags,
                        const std::string& reason);
 
+// The option path of a shared flag made from the option tables
+// ("grid.finest_cell_size_m"; "" for another flag), for --help's headings.
+// Set by option_flags.cc when a tool links it: tool_main.cc does not refer
+// to those flags, so a program without them does not link them.
+using OptionPathOfFlag = std::string (*)(const std::string& flag);
+void SetOptionPathOfFlag(OptionPathOfFlag lookup);
+
 // The main's file of `tool`: "lab/programs/<tool>.cc" for a lab program,
 // "tools/<tool>.cc" for a tool.
 std::string MainFile(const std::string& tool);
