@@ -102,6 +102,7 @@ LayerScheduleOptions PaperLayerScheduleOptions() {
   options.start_layer = 2;
   options.iterations_per_layer = 3;
   options.max_coarse_point_stride = 1;
+  options.coarse_rejected_step_cells = 0.0;
   options.step_tolerance = 1e-4;
   return options;
 }

@@ -41,7 +41,7 @@ RegistrationSummary Align(double coarse_rejected_step_cells) {
 // the converged one).
 TEST(CoarseRejectedStep, FewerEvaluationsForTheSamePoseOnKoide3) {
   const RegistrationSummary off = Align(0.0);
-  const RegistrationSummary on = Align(0.01);
+  const RegistrationSummary on = Align(0.003);
   ASSERT_TRUE(off.IsSolutionUsable()) << off.message;
   ASSERT_TRUE(on.IsSolutionUsable()) << on.message;
   EXPECT_EQ(on.termination_type, off.termination_type);
