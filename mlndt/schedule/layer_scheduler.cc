@@ -26,6 +26,18 @@ StageControl StageControlFor(const LayerScheduleOptions& options,
   return control;
 }
 
+StageControl StageControlOn(const LayerScheduleOptions& options,
+                            const LayeredGrid& map,
+                            int layer) {
+  const int n = map.num_layers();
+  StageControl control = StageControlFor(options, layer, n);
+  if (layer < n) {
+    control.rejected_step_tolerance =
+        options.coarse_rejected_step_cells * map.layer(layer).cell_size();
+  }
+  return control;
+}
+
 const OptionTable& LayerScheduleOptionsTable() {
   using S = LayerScheduleOptions;
   static const OptionTable table =
@@ -59,6 +71,12 @@ const OptionTable& LayerScheduleOptionsTable() {
                 &S::end_coarse_layer_on_rejected_step,
                 "A coarse layer ends at its first rejected step (its minimum "
                 "at its resolution).")
+          .Double("coarse_rejected_step_cells",
+                  &S::coarse_rejected_step_cells,
+                  "cells",
+                  Closed(0.0, 1.0),
+                  "A coarse layer also ends at a rejected step shorter than "
+                  "this many of its cell edges; 0: off.")
           .Int("max_coarse_point_stride",
                &S::max_coarse_point_stride,
                Closed(1, 1024),
@@ -84,6 +102,7 @@ LayerScheduleOptions PaperLayerScheduleOptions() {
   options.start_layer = 2;
   options.iterations_per_layer = 3;
   options.max_coarse_point_stride = 1;
+  options.coarse_rejected_step_cells = 0.0;
   options.step_tolerance = 1e-4;
   return options;
 }
@@ -121,7 +140,7 @@ void RunLayerSchedule(const LayerScheduleOptions& options,
     const double stage_start_s = NowSeconds() - start_time_s;
     StageSummary stage;
     backend->SolveStage(reference_map.layer(layer),
-                        StageControlFor(options, layer, n),
+                        StageControlOn(options, reference_map, layer),
                         reference_from_input_xi,
                         &stage);
     summary->iterations_per_layer[static_cast<size_t>(layer - 1)] =

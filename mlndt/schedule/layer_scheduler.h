@@ -45,6 +45,15 @@ struct LayerScheduleOptions {
   // default, docs/performance.md says why) runs the iterations the
   // tolerances allow, as the paper.
   bool end_coarse_layer_on_rejected_step = false;
+  // > 0: a coarse layer also ends at a rejected step shorter than this many
+  // of its cell edges (||delta xi||, metres and radians): a step that short
+  // is below what the layer resolves, and Ceres' shrinking trust region
+  // would only retry nearly the same step (StageControl::
+  // rejected_step_tolerance). Chosen on the simulator's train seeds (0.003
+  // and 0.01 tried; lab/records/rejected_steps.md): KITTI 0->1 37 -> 28
+  // iterations for the same pose. 0 runs the iterations the tolerances
+  // allow, as the paper. In [0, 1].
+  double coarse_rejected_step_cells = 0.003;
   // Layer i of n uses every s-th sampled point, s = min(2^(n - i), this):
   // a cell twice as large needs fewer points to be located. 1 uses every
   // sampled point on every layer, as the paper. In [1, 1024].
@@ -80,6 +89,13 @@ int StartLayerForUncertainty(const LayerScheduleOptions& options,
 StageControl StageControlFor(const LayerScheduleOptions& options,
                              int layer,
                              int n);
+
+// StageControlFor's control for `layer` of `map`, with the rejected-step
+// tolerance of a coarse layer (coarse_rejected_step_cells times its cell
+// edge).
+StageControl StageControlOn(const LayerScheduleOptions& options,
+                            const LayeredGrid& map,
+                            int layer);
 
 struct ScheduleSummary {
   TerminationType termination_type = TerminationType::FAILURE;

@@ -30,7 +30,8 @@ StageEnd StageControl::EndAfter(double step_norm,
       step_norm < step_tolerance) {
     return StageEnd::CONVERGED;
   }
-  if (!step_is_successful && end_on_rejected_step) {
+  if (!step_is_successful &&
+      (end_on_rejected_step || step_norm < rejected_step_tolerance)) {
     return StageEnd::LAYER_MINIMUM;
   }
   return StageEnd::NONE;

@@ -53,7 +53,8 @@ const ResultTable& IterationRecordTable();
 enum class StageEnd {
   NONE,           // It goes on.
   CONVERGED,      // A successful step below step_tolerance.
-  LAYER_MINIMUM,  // A rejected step, with end_on_rejected_step.
+  LAYER_MINIMUM,  // A rejected step, with end_on_rejected_step or below
+                  // rejected_step_tolerance.
 };
 
 // How long one stage runs.
@@ -71,6 +72,11 @@ struct StageControl {
   // a coarse layer a rejected step means the layer's minimum is reached at
   // the layer's resolution, and the finer layers go on from there.
   bool end_on_rejected_step = false;
+  // > 0: the stage also ends (CONVERGENCE) at a rejected step with
+  // ||delta xi|| below this: a step that short is below what the layer
+  // resolves, and Ceres' shrinking trust region would only try nearly the
+  // same step again (layer_scheduler.h sets it from the cell edge). 0: off.
+  double rejected_step_tolerance = 0.0;
   // The stage uses every point_stride-th input point (coarse layers need
   // fewer, layer_scheduler.h). >= 1.
   int point_stride = 1;

@@ -197,6 +197,30 @@ TEST(RunLayerSchedule, StageControlsFollowTheOptions) {
   EXPECT_FALSE(PaperLayerScheduleOptions().end_coarse_layer_on_rejected_step);
 }
 
+// Catches: the rejected-step tolerance not scaled by the layer's own cell
+// edge, or applied to the last layer (which must end on a taken step).
+TEST(RunLayerSchedule, RejectedStepToleranceFollowsEachCoarseCell) {
+  LayerScheduleOptions options;
+  options.start_layer = 1;
+  options.coarse_rejected_step_cells = 0.01;
+  FakeBackend backend(Script({1, 1, 1, 1}));
+  Vector6d xi = Vector6d::Zero();
+  RunSchedule(options, &backend, &xi);
+  ASSERT_EQ(backend.calls().size(), 4u);
+  for (int layer = 1; layer <= 4; ++layer) {
+    SCOPED_TRACE(layer);
+    const StageControl& control = backend.calls()[layer - 1].control;
+    EXPECT_DOUBLE_EQ(control.rejected_step_tolerance,
+                     layer == 4 ? 0.0 : 0.01 * Map().layer(layer).cell_size());
+  }
+  options.coarse_rejected_step_cells = 0.0;
+  FakeBackend off(Script({1, 1, 1, 1}));
+  RunSchedule(options, &off, &xi);
+  for (const StageCall& call : off.calls()) {
+    EXPECT_EQ(call.control.rejected_step_tolerance, 0.0);
+  }
+}
+
 // Catches: iterations numbered per stage or from 0, records not stamped with
 // their layer (or with the stage index), times not offset by the stage's
 // start or offset by the absolute clock, records reordered or dropped,

@@ -28,6 +28,11 @@ TEST(StageControl, EndAfterFollowsItsFields) {
   EXPECT_EQ(control.EndAfter(5e-3, true), StageEnd::NONE);
   control.step_tolerance = 0.0;  // Coarse: no tolerance.
   EXPECT_EQ(control.EndAfter(1e-9, true), StageEnd::NONE);
+  control.end_on_rejected_step = false;
+  control.rejected_step_tolerance = 1e-2;
+  EXPECT_EQ(control.EndAfter(5e-3, false), StageEnd::LAYER_MINIMUM);
+  EXPECT_EQ(control.EndAfter(2e-2, false), StageEnd::NONE);
+  EXPECT_EQ(control.EndAfter(5e-3, true), StageEnd::NONE);
 
   StageSummary summary;
   EndStage(StageEnd::LAYER_MINIMUM, &summary);
