@@ -54,6 +54,7 @@ class LayerScheduleOptions(TypedDict, total=False):
     step_tolerance: float
     coarse_step_tolerance: float
     end_coarse_layer_on_rejected_step: bool
+    coarse_rejected_step_cells: float
     max_coarse_point_stride: int
     cells_per_uncertainty: float
 
@@ -65,6 +66,7 @@ class ObjectiveOptions(TypedDict, total=False):
 class CeresBackendOptions(TypedDict, total=False):
     linear_solver_type: str  # ceres::LinearSolverType names
     trust_region_strategy_type: str  # LEVENBERG_MARQUARDT | DOGLEG
+    initial_trust_region_radius: float
 
 class NewtonOptions(TypedDict, total=False):
     line_search: bool

@@ -490,6 +490,10 @@ def test_localizer_alone_refuses_to_jump_and_takes_the_initial_pose(ros, bags, w
     wait_for(lambda: len(verdicts(diagnostics, name)) == len(expected), "7 diagnostics",
              alive=[localizer])
     wait_for(lambda: pose.count() == len(usable), "6 poses", alive=[localizer])
+    # /pose and /tf are two topics: the last transform may arrive after the
+    # last pose.
+    wait_for(lambda: len(transform_rows(tf, "map", FRAME)) == len(usable),
+             "6 map -> sensor", alive=[localizer])
     initial.unregister()
 
     assert [pose_row(m.header.stamp, m.pose.pose.position, m.pose.pose.orientation)
