@@ -6,7 +6,6 @@
 #include <limits>
 #include <vector>
 
-#include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/prepared_registration.h"
 #include "mlndt/registration/registration.h"
@@ -14,15 +13,6 @@
 
 namespace mlndt {
 namespace {
-
-PointCloud Load(const std::string& relative) {
-  PointCloud cloud;
-  std::string error;
-  EXPECT_TRUE(ReadPointCloud(
-      testing::BundledDataPath(relative), &cloud, nullptr, &error))
-      << error;
-  return cloud;
-}
 
 // Bit for bit (NaN and infinities included): memcmp of the doubles.
 template <typename Matrix>
@@ -77,8 +67,8 @@ void ExpectSameSummary(const RegistrationSummary& plain,
 class PreparedVelodynePair : public ::testing::Test {
  protected:
   void SetUp() override {
-    target_ = Load("koide3/251370668.pcd");
-    source_ = Load("koide3/251371071.pcd");
+    target_ = testing::LoadBundledCloud("koide3/251370668.pcd");
+    source_ = testing::LoadBundledCloud("koide3/251371071.pcd");
     std::string error;
     ASSERT_TRUE(LayeredGrid::Build(
         RegistrationOptions().grid, target_, 1, &map_, &error))

@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <vector>
 
-#include "mlndt/cloud/io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
@@ -15,20 +14,12 @@
 namespace mlndt {
 namespace {
 
-PointCloud Load(const std::string& relative) {
-  PointCloud cloud;
-  std::string error;
-  EXPECT_TRUE(ReadPointCloud(
-      testing::BundledDataPath(relative), &cloud, nullptr, &error))
-      << error;
-  return cloud;
-}
-
 class KittiFrames : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     for (int i = 0; i < 8; ++i) {
-      scans_.push_back(Load("kitti/pcd/00000" + std::to_string(i) + ".pcd"));
+      scans_.push_back(testing::LoadBundledCloud("kitti/pcd/00000" +
+                                                 std::to_string(i) + ".pcd"));
     }
     std::string error;
     ASSERT_TRUE(ReadKittiPoses(
@@ -52,8 +43,8 @@ std::vector<Isometry3d> KittiFrames::poses_;
 
 TEST(VelodynePair, MatchesReferenceResultFromIdentity) {
   // small_gicp's T_target_source: 5 cm and 0.5 deg, as fast_gicp's own test.
-  const PointCloud target = Load("koide3/251370668.pcd");
-  const PointCloud source = Load("koide3/251371071.pcd");
+  const PointCloud target = testing::LoadBundledCloud("koide3/251370668.pcd");
+  const PointCloud source = testing::LoadBundledCloud("koide3/251371071.pcd");
   Isometry3d expected;
   std::string error;
   std::vector<Isometry3d> unused;

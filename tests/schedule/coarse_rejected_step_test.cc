@@ -8,7 +8,6 @@
 
 #include <string>
 
-#include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
 #include "tests/testing/test_data.h"
@@ -16,18 +15,11 @@
 namespace mlndt {
 namespace {
 
-PointCloud Load(const std::string& relative) {
-  PointCloud cloud;
-  std::string error;
-  EXPECT_TRUE(ReadPointCloud(
-      testing::BundledDataPath(relative), &cloud, nullptr, &error))
-      << error;
-  return cloud;
-}
-
 RegistrationSummary Align(double coarse_rejected_step_cells) {
-  static const PointCloud target = Load("koide3/251370668.pcd");
-  static const PointCloud source = Load("koide3/251371071.pcd");
+  static const PointCloud target =
+      testing::LoadBundledCloud("koide3/251370668.pcd");
+  static const PointCloud source =
+      testing::LoadBundledCloud("koide3/251371071.pcd");
   RegistrationOptions options;
   options.schedule.coarse_rejected_step_cells = coarse_rejected_step_cells;
   RegistrationSummary summary;

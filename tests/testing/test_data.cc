@@ -1,13 +1,26 @@
 #include "tests/testing/test_data.h"
 
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <filesystem>
+
+#include "mlndt/cloud/io.h"
 
 namespace mlndt {
 namespace testing {
 
 std::string BundledDataPath(const std::string& relative) {
   return std::string(MLNDT_BUNDLED_DATA_DIR) + "/" + relative;
+}
+
+PointCloud LoadBundledCloud(const std::string& relative) {
+  PointCloud cloud;
+  std::string error;
+  if (!ReadPointCloud(BundledDataPath(relative), &cloud, nullptr, &error)) {
+    ADD_FAILURE() << error;
+  }
+  return cloud;
 }
 
 std::string SharedDataDir() {

@@ -8,11 +8,17 @@
 
 #include <string>
 
+#include "mlndt/cloud/point_cloud.h"
+
 namespace mlndt {
 namespace testing {
 
 // Absolute path of `relative` inside the repository's data/ folder.
 std::string BundledDataPath(const std::string& relative);
+
+// The cloud at BundledDataPath(relative); a test failure naming the file
+// (and an empty cloud) when it cannot be read.
+PointCloud LoadBundledCloud(const std::string& relative);
 
 // The folder named by MLNDT_DATA_DIR, or "" when it is unset or missing.
 std::string SharedDataDir();
