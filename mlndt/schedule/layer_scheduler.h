@@ -49,10 +49,9 @@ struct LayerScheduleOptions {
   // of its cell edges (||delta xi||, metres and radians): a step that short
   // is below what the layer resolves, and Ceres' shrinking trust region
   // would only retry nearly the same step (StageControl::
-  // rejected_step_tolerance). Chosen on the simulator's train seeds (0.003
-  // and 0.01 tried; lab/records/rejected_steps.md): KITTI 0->1 37 -> 28
-  // iterations for the same pose. 0 runs the iterations the tolerances
-  // allow, as the paper. In [0, 1].
+  // rejected_step_tolerance; docs/defaults.md says how the default was
+  // chosen). 0 runs the iterations the tolerances allow, as the paper.
+  // In [0, 1].
   double coarse_rejected_step_cells = 0.003;
   // Layer i of n uses every s-th sampled point, s = min(2^(n - i), this):
   // a cell twice as large needs fewer points to be located. 1 uses every

@@ -72,7 +72,7 @@ struct StageControl {
   // a coarse layer a rejected step means the layer's minimum is reached at
   // the layer's resolution, and the finer layers go on from there.
   bool end_on_rejected_step = false;
-  // > 0: the stage also ends (CONVERGENCE) at a rejected step with
+  // > 0: the stage also ends (LAYER_MINIMUM) at a rejected step with
   // ||delta xi|| below this: a step that short is below what the layer
   // resolves, and Ceres' shrinking trust region would only try nearly the
   // same step again (layer_scheduler.h sets it from the cell edge). 0: off.

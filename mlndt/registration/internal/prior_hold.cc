@@ -172,12 +172,10 @@ int HoldPriorAlongFreeDirections(const RegistrationOptions& options,
   const Vector6d update = Delta(initial_local, attempt->xi_local, lever);
   Vector6d xi =
       Moved(initial_local, update - free * (free.transpose() * update), lever);
-  if (v.cols() > 0) {
-    MinimiseOver(LastLayerScore{problem, options.objective}, v, lever, &xi);
-  }
+  const LastLayerScore objective{problem, options.objective};
+  attempt->evaluation = v.cols() > 0 ? MinimiseOver(objective, v, lever, &xi)
+                                     : objective.At(xi);
   attempt->xi_local = xi;
-  attempt->evaluation =
-      EvaluateScore(problem.last(), problem.points, xi, options.objective);
   attempt->fit = FitQualityOf(
       MatchAtSolution(problem.last(), problem.points, xi, options.objective),
       options.quality_check.inlier_gate);
