@@ -172,12 +172,6 @@ const OptionTable& CeresBackendOptionsTable() {
                                              &S::trust_region_strategy_type,
                                              trust_regions,
                                              "Ceres trust-region strategy.")
-                                       .Double("initial_trust_region_radius",
-                                               &S::initial_trust_region_radius,
-                                               "",
-                                               Closed(1e-4, 1e16),
-                                               "Ceres' trust region at the "
-                                               "start of each stage.")
                                        .Validator(&S::IsValid)
                                        .Build();
   return table;
@@ -190,7 +184,6 @@ bool CeresBackendOptions::IsValid(std::string* error) const {
   solver_options.trust_region_strategy_type = trust_region_strategy_type;
   solver_options.minimizer_type = minimizer_type;
   solver_options.line_search_direction_type = line_search_direction_type;
-  solver_options.initial_trust_region_radius = initial_trust_region_radius;
   if (!solver_options.IsValid(error)) {
     *error = "invalid Ceres options: " + *error;
     return false;
@@ -233,8 +226,6 @@ void CeresBackend::SolveStage(const NdtLayer& layer,
   solver_options.minimizer_type = options_.minimizer_type;
   solver_options.line_search_direction_type =
       options_.line_search_direction_type;
-  solver_options.initial_trust_region_radius =
-      options_.initial_trust_region_radius;
   // Ceres' evaluator threads would sum the cost in scheduler-dependent
   // partial sums; the blocks are evaluated in parallel by the Problem's
   // PointEvaluationCache instead, and Ceres sums on one thread.

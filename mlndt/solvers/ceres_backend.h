@@ -35,11 +35,6 @@ struct CeresBackendOptions {
   // do not apply.
   ceres::MinimizerType minimizer_type = ceres::TRUST_REGION;
   ceres::LineSearchDirectionType line_search_direction_type = ceres::LBFGS;
-  // The trust region each stage starts with (Ceres' default). LM damps the
-  // normal equations by diag(J^T J) / radius, so a rejected step at a large
-  // radius is retried nearly unchanged until the radius is about 1 (it
-  // shrinks by 2, 4, 8, ...). In [1e-4, 1e16].
-  double initial_trust_region_radius = 1e4;
   // Hand-written Jacobians (mlndt_point_cost_analytic.h) instead of
   // auto-diff of the same residual.
   bool analytic_jacobians = false;

@@ -66,7 +66,6 @@ class ObjectiveOptions(TypedDict, total=False):
 class CeresBackendOptions(TypedDict, total=False):
     linear_solver_type: str  # ceres::LinearSolverType names
     trust_region_strategy_type: str  # LEVENBERG_MARQUARDT | DOGLEG
-    initial_trust_region_radius: float
 
 class NewtonOptions(TypedDict, total=False):
     line_search: bool
