@@ -13,7 +13,6 @@
 
 #include <cmath>
 #include <initializer_list>
-#include <random>
 
 #include "mlndt/common/pose.h"
 #include "mlndt/registration/registration.h"
@@ -21,35 +20,6 @@
 
 namespace mlndt {
 namespace {
-
-// Uniform samples of a box's extent.
-PointCloud Slab(const Eigen::Vector3d& low,
-                const Eigen::Vector3d& high,
-                int n,
-                uint32_t seed) {
-  std::mt19937 rng(seed);
-  PointCloud cloud;
-  for (int i = 0; i < n; ++i) {
-    Eigen::Vector3d p;
-    for (int a = 0; a < 3; ++a) {
-      p(a) = std::uniform_real_distribution<double>(low(a), high(a))(rng);
-    }
-    cloud.Add(p);
-  }
-  return cloud;
-}
-
-// Two walls 4 m apart and the floor, x in [-30, 30]: the axis x is free.
-PointCloud FiniteCorridor(uint32_t seed) {
-  PointCloud merged;
-  for (const PointCloud& c :
-       {Slab({-30, -2.01, 0}, {30, -1.99, 3}, 15000, seed),
-        Slab({-30, 1.99, 0}, {30, 2.01, 3}, 15000, seed + 10),
-        Slab({-30, -2, -0.01}, {30, 2, 0.01}, 15000, seed + 20)}) {
-    for (const Eigen::Vector3d& p : c.points()) merged.Add(p);
-  }
-  return merged;
-}
 
 Isometry3d Pose(const Eigen::Vector3d& t, double yaw_deg) {
   Isometry3d pose = Isometry3d::Identity();
@@ -68,8 +38,8 @@ const Isometry3d kGuess = Pose({1.3, 0.25, -0.04}, 1.0);
 RegistrationSummary RegisterCorridor(const RegistrationOptions& options) {
   RegistrationSummary summary;
   Register(options,
-           FiniteCorridor(1),
-           TransformCloud(kTruth.inverse(), FiniteCorridor(2)),
+           testing::SlabCorridor(1),
+           TransformCloud(kTruth.inverse(), testing::SlabCorridor(2)),
            kGuess,
            &summary);
   return summary;

@@ -18,31 +18,6 @@
 namespace mlndt {
 namespace {
 
-// Uniform samples of a box's extent with noise along the thin axes.
-PointCloud Slab(const Eigen::Vector3d& low,
-                const Eigen::Vector3d& high,
-                int n,
-                uint32_t seed) {
-  std::mt19937 rng(seed);
-  PointCloud cloud;
-  for (int i = 0; i < n; ++i) {
-    Eigen::Vector3d p;
-    for (int a = 0; a < 3; ++a) {
-      p(a) = std::uniform_real_distribution<double>(low(a), high(a))(rng);
-    }
-    cloud.Add(p);
-  }
-  return cloud;
-}
-
-PointCloud Merge(std::initializer_list<PointCloud> clouds) {
-  PointCloud merged;
-  for (const PointCloud& c : clouds) {
-    for (const Eigen::Vector3d& p : c.points()) merged.Add(p);
-  }
-  return merged;
-}
-
 RegistrationSummary RegisterShifted(
     const PointCloud& reference,
     const PointCloud& second_sample,
@@ -61,8 +36,10 @@ RegistrationSummary RegisterShifted(
 
 TEST(QualityCheck, APlaneIsDegenerateAlongItself) {
   const Eigen::Vector3d low(-20, -20, -0.01), high(20, 20, 0.01);
-  const RegistrationSummary s = RegisterShifted(
-      Slab(low, high, 40000, 1), Slab(low, high, 40000, 2), {0.5, 0.3, 0.1});
+  const RegistrationSummary s =
+      RegisterShifted(testing::UniformBox(low, high, 40000, 1),
+                      testing::UniformBox(low, high, 40000, 2),
+                      {0.5, 0.3, 0.1});
   EXPECT_EQ(s.termination_type, TerminationType::DEGENERATE) << s.message;
   EXPECT_FALSE(s.IsSolutionUsable());
   EXPECT_LT(s.constraints.constraint_ratio, 0.01);
@@ -82,9 +59,7 @@ TEST(QualityCheck, APlaneIsDegenerateAlongItself) {
 
 TEST(QualityCheck, ACorridorIsDegenerateAlongItsLength) {
   const auto corridor = [](uint32_t seed) {
-    return Merge({Slab({-30, -2.01, 0}, {30, -1.99, 3}, 15000, seed),
-                  Slab({-30, 1.99, 0}, {30, 2.01, 3}, 15000, seed + 10),
-                  Slab({-30, -2, -0.01}, {30, 2, 0.01}, 15000, seed + 20)});
+    return testing::SlabCorridor(seed);
   };
   const RegistrationSummary s =
       RegisterShifted(corridor(1), corridor(2), {1.0, 0.2, 0.0});

@@ -91,5 +91,32 @@ PointCloud Corridor(double half_length, int num_points, uint32_t seed) {
   return cloud;
 }
 
+PointCloud UniformBox(const Eigen::Vector3d& low,
+                      const Eigen::Vector3d& high,
+                      int n,
+                      uint32_t seed) {
+  std::mt19937 rng(seed);
+  PointCloud cloud;
+  for (int i = 0; i < n; ++i) {
+    Eigen::Vector3d p;
+    for (int a = 0; a < 3; ++a) {
+      p(a) = std::uniform_real_distribution<double>(low(a), high(a))(rng);
+    }
+    cloud.Add(p);
+  }
+  return cloud;
+}
+
+PointCloud SlabCorridor(uint32_t seed) {
+  PointCloud merged;
+  for (const PointCloud& slab :
+       {UniformBox({-30, -2.01, 0}, {30, -1.99, 3}, 15000, seed),
+        UniformBox({-30, 1.99, 0}, {30, 2.01, 3}, 15000, seed + 10),
+        UniformBox({-30, -2, -0.01}, {30, 2, 0.01}, 15000, seed + 20)}) {
+    for (const Eigen::Vector3d& p : slab.points()) merged.Add(p);
+  }
+  return merged;
+}
+
 }  // namespace testing
 }  // namespace mlndt

@@ -22,5 +22,15 @@ PointCloud StreetScene(int num_points, double noise_m, uint32_t seed);
 // samples (a third on each surface) 1 cm thick. Nothing fixes x.
 PointCloud Corridor(double half_length, int num_points, uint32_t seed);
 
+// `n` uniform samples of the box [low, high] (a slab when one side is thin).
+PointCloud UniformBox(const Eigen::Vector3d& low,
+                      const Eigen::Vector3d& high,
+                      int n,
+                      uint32_t seed);
+
+// Corridor's surfaces as three slabs of UniformBox, 15000 samples each
+// (seeds seed, seed + 10, seed + 20), x in [-30, 30]: x is free.
+PointCloud SlabCorridor(uint32_t seed);
+
 }  // namespace testing
 }  // namespace mlndt
