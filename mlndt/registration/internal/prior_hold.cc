@@ -173,8 +173,8 @@ int HoldPriorAlongFreeDirections(const RegistrationOptions& options,
   Vector6d xi =
       Moved(initial_local, update - free * (free.transpose() * update), lever);
   const LastLayerScore objective{problem, options.objective};
-  attempt->evaluation = v.cols() > 0 ? MinimiseOver(objective, v, lever, &xi)
-                                     : objective.At(xi);
+  attempt->evaluation =
+      v.cols() > 0 ? MinimiseOver(objective, v, lever, &xi) : objective.At(xi);
   attempt->xi_local = xi;
   attempt->fit = FitQualityOf(
       MatchAtSolution(problem.last(), problem.points, xi, options.objective),
