@@ -54,9 +54,10 @@ RunRecord MakeRecord(const Job& job,
   record.paper_right = record.translation_m < kPaperSuccessTranslationM;
   record.diverged =
       !(record.translation_m <= 1.0) || !(record.rotation_deg <= 15.0);
-  record.paper_error = PaperAxesError(run.reference_from_input, r.estimate);
+  record.paper_error = PaperAxesError(run.reference_from_input,
+                                      r.registration.reference_from_input);
   record.time_ms = r.outcome.time_ms;
-  record.iterations = r.iterations;
+  record.iterations = r.registration.num_iterations;
   return record;
 }
 

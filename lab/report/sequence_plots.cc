@@ -130,9 +130,9 @@ bool WriteTraceData(const std::vector<PairResult>& results,
            "translation_error_cm\n";
   for (size_t index : traced) {
     const PairResult& r = results[index];
-    const double points =
-        std::max<double>(1.0, static_cast<double>(r.sampled_points));
-    for (const IterationRecord& it : r.trace) {
+    const double points = std::max<double>(
+        1.0, static_cast<double>(r.registration.sampled_points));
+    for (const IterationRecord& it : r.registration.trace) {
       const double error_cm =
           has_truth
               ? TranslationErrorM(

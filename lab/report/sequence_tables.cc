@@ -41,17 +41,19 @@ bool WriteSequencePairsCsv(const std::string& path,
     } else {
       out << ",,,,,,,,,,";
     }
-    out << TerminationTypeToString(r.termination) << "," << r.iterations << ","
-        << r.start_layer << "," << r.num_layers << "," << r.sampled_points
-        << "," << Num(r.times.total_ms) << "," << Num(r.times.map_ms) << ","
-        << Num(r.times.sampling_ms) << "," << Num(r.times.solve_ms) << ","
-        << Num(r.guess_deviation_m) << "," << Num(r.guess_deviation_deg) << ","
-        << int(r.guess_check_failed) << "," << Num(r.running_fail_rate);
+    out << TerminationTypeToString(r.registration.termination_type) << ","
+        << r.registration.num_iterations << "," << r.registration.start_layer
+        << "," << r.registration.num_layers << ","
+        << r.registration.sampled_points << "," << Num(r.times.total_ms) << ","
+        << Num(r.times.map_ms) << "," << Num(r.times.sampling_ms) << ","
+        << Num(r.times.solve_ms) << "," << Num(r.guess_deviation_m) << ","
+        << Num(r.guess_deviation_deg) << "," << int(r.guess_check_failed) << ","
+        << Num(r.running_fail_rate);
     const Vector6d xi = IsometryToPoseVector(r.estimate);
     for (int k = 0; k < 6; ++k)
       out << "," << Num(k < 3 ? xi(k) : xi(k) * kRadToDeg);
     // An unusable result keeps its --init guess as its estimate: say so.
-    const bool usable = IsUsableTermination(r.termination);
+    const bool usable = IsUsableTermination(r.registration.termination_type);
     out << "," << int(usable) << "," << (usable ? "registration" : "guess")
         << "\n";
   }
@@ -65,7 +67,7 @@ bool WriteSequenceTraceCsv(const std::string& path,
   out << "reference,input,iteration,layer,score,step_norm,step_is_successful,"
          "tx_m,ty_m,tz_m,alpha_deg,beta_deg,gamma_deg,time_ms\n";
   for (const PairResult& r : results) {
-    for (const IterationRecord& it : r.trace) {
+    for (const IterationRecord& it : r.registration.trace) {
       out << r.reference << "," << r.input << "," << it.iteration << ","
           << it.layer << "," << Num(it.score) << "," << Num(it.step_norm) << ","
           << int(it.step_is_successful);
@@ -119,7 +121,8 @@ void PrintSequenceTotals(const SequenceOptions& options,
       t.map_time_ms.mean,
       t.iterations.mean);
   VerdictCounts verdicts;
-  for (const PairResult& r : results) verdicts.Add(r.termination);
+  for (const PairResult& r : results)
+    verdicts.Add(r.registration.termination_type);
   std::printf("verdicts: %s; usable %zu of %zu\n",
               verdicts.Line().c_str(),
               verdicts.usable(),

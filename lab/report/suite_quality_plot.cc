@@ -20,8 +20,8 @@ std::vector<double> Measure(
   std::vector<double> values;
   for (const auto& set : results) {
     for (const SuiteRunResult& r : set) {
-      const double v = r.quality.*field;
-      if (r.outcome.right == right && r.quality.points > 0 &&
+      const double v = r.registration.quality.*field;
+      if (r.outcome.right == right && r.registration.quality.points > 0 &&
           std::isfinite(v)) {
         values.push_back(v);
       }

@@ -35,20 +35,11 @@ bool CheckInputs(const SequenceOptions& options,
   return true;
 }
 
-// Copies what a pair reports from the registration summary and scores it
-// against the guess and, when known, the truth.
-void FillResult(const SequenceOptions& options,
-                const RegistrationSummary& summary,
-                PairResult* r) {
-  const bool usable = summary.IsSolutionUsable();
-  r->termination = summary.termination_type;
-  r->message = summary.message;
-  r->estimate = usable ? summary.reference_from_input : r->guess;
-  r->iterations = summary.num_iterations;
-  r->start_layer = summary.start_layer;
-  r->num_layers = summary.num_layers;
-  r->sampled_points = summary.sampled_points;
-  r->trace = summary.trace;
+// Scores a pair's registration (r->registration) against the guess and,
+// when known, the truth.
+void ScoreResult(const SequenceOptions& options, PairResult* r) {
+  const bool usable = r->registration.IsSolutionUsable();
+  r->estimate = usable ? r->registration.reference_from_input : r->guess;
   const GuessCheck check =
       CheckGuess(options.adaptive, usable, r->guess, r->estimate);
   r->guess_deviation_m = check.deviation_m;
@@ -66,14 +57,15 @@ void FillResult(const SequenceOptions& options,
 // deg").
 std::string StatusLine(const PairResult& r) {
   char line[160];
-  int used = std::snprintf(line,
-                           sizeof(line),
-                           "pair %zu->%zu %s, %d it, %.0f ms",
-                           r.reference,
-                           r.input,
-                           TerminationTypeToString(r.termination),
-                           r.iterations,
-                           r.times.total_ms);
+  int used =
+      std::snprintf(line,
+                    sizeof(line),
+                    "pair %zu->%zu %s, %d it, %.0f ms",
+                    r.reference,
+                    r.input,
+                    TerminationTypeToString(r.registration.termination_type),
+                    r.registration.num_iterations,
+                    r.times.total_ms);
   if (r.has_truth && used > 0 && used < static_cast<int>(sizeof(line))) {
     std::snprintf(line + used,
                   sizeof(line) - used,
@@ -125,14 +117,19 @@ bool RunSequence(const SequenceOptions& options,
       r.running_fail_rate = adaptive.running_fail_rate();
       registration.mlndt.schedule.start_layer = adaptive.StartLayer();
     }
-    RegistrationSummary summary;
-    if (!RegisterPair(
-            registration, store, i, j, r.guess, &summary, &r.times, error)) {
+    if (!RegisterPair(registration,
+                      store,
+                      i,
+                      j,
+                      r.guess,
+                      &r.registration,
+                      &r.times,
+                      error)) {
       return false;
     }
-    FillResult(options, summary, &r);
+    ScoreResult(options, &r);
     adaptive.Record(r.guess_check_failed);
-    guesses.Record(summary.IsSolutionUsable(), r.estimate);
+    guesses.Record(r.registration.IsSolutionUsable(), r.estimate);
     results->push_back(std::move(r));
     if (options.release_used_scans) store->ReleaseBefore(i + 1);
     ReportProgress(progress,

@@ -42,19 +42,15 @@ struct PairResult {
   PoseError error;              // Valid when has_truth.
   bool success = false;         // Translation error < 0.5 m (has_truth).
   bool strict_success = false;  // < 0.2 m and < 1 deg (has_truth).
-  TerminationType termination = TerminationType::FAILURE;
-  std::string message;
-  int iterations = 0;
-  int start_layer = 0;  // 1-based layer the registration started on.
-  int num_layers = 0;
-  size_t sampled_points = 0;
+  // The registration's own summary (verdict, message, iterations, layers,
+  // samples, trace); `estimate` is its pose only when that is usable.
+  RegistrationSummary registration;
   PairTimes times;
   // Distance of the estimate from the guess, and the adaptive rule's verdict.
   double guess_deviation_m = 0.0;
   double guess_deviation_deg = 0.0;
   bool guess_check_failed = false;
   double running_fail_rate = 0.0;  // Before this pair (adaptive rule).
-  std::vector<IterationRecord> trace;
 };
 
 // Runs every pair (i, i + step). `truth` (world_from_scan per scan) and

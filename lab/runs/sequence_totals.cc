@@ -35,12 +35,13 @@ SequenceTotals ComputeTotals(const std::vector<PairResult>& results) {
   std::vector<std::vector<double>> errors_successful(kNumErrorValues);
   std::vector<double> time, map, registration, iterations;
   for (const PairResult& r : results) {
-    t.registration_failures += r.termination == TerminationType::FAILURE;
+    t.registration_failures +=
+        r.registration.termination_type == TerminationType::FAILURE;
     t.guess_check_failures += r.guess_check_failed;
     time.push_back(r.times.total_ms);
     map.push_back(r.times.map_ms);
     registration.push_back(r.times.total_ms - r.times.map_ms);
-    iterations.push_back(r.iterations);
+    iterations.push_back(r.registration.num_iterations);
     if (!r.has_truth) continue;
     t.successes += r.success;
     t.strict_successes += r.strict_success;

@@ -53,26 +53,18 @@ bool RunSuiteDataset(const MatcherOptions& options,
   for (size_t k = 0; k < runs.size(); ++k) {
     const SuiteRun& run = runs[k];
     store.ReleaseBefore(first_needed[k]);
-    RegistrationSummary summary;
     SuiteRunResult result;
+    const RegistrationSummary& summary = result.registration;
     if (!RegisterPair(SuiteRunOptions(options, run),
                       &store,
                       at(run.reference_index),
                       at(run.input_index),
                       run.initial_reference_from_input,
-                      &summary,
+                      &result.registration,
                       &result.times,
                       error)) {
       return false;
     }
-    result.estimate = summary.reference_from_input;
-    result.message = summary.message;
-    result.quality = summary.quality;
-    result.constraint_ratio = summary.constraints.constraint_ratio;
-    result.flatness = summary.constraints.flatness;
-    result.probe_evidence = summary.constraints.probe_evidence;
-    result.attempts = summary.attempts;
-    result.iterations = summary.num_iterations;
     result.outcome = ScoreSuiteRun(run,
                                    criterion,
                                    summary.termination_type,

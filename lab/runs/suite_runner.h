@@ -14,21 +14,16 @@
 #include "lab/runs/matcher.h"
 #include "lab/runs/pair_registration.h"
 #include "mlndt/common/progress.h"
-#include "mlndt/cost/fit_quality.h"
+#include "mlndt/registration/registration_summary.h"
 
 namespace mlndt {
 
-// One run's result: the scored outcome and the verdict's evidence.
+// One run's result: the scored outcome and the registration's own summary
+// (its verdict, message, pose, fit and constraint evidence), not a copy of
+// its fields.
 struct SuiteRunResult {
   SuiteOutcome outcome;
-  std::string message;                           // The registration's.
-  Isometry3d estimate = Isometry3d::Identity();  // reference_from_input.
-  FitQuality quality;
-  double constraint_ratio = 0.0;
-  double flatness = 0.0;
-  double probe_evidence = 0.0;
-  int attempts = 0;
-  int iterations = 0;
+  RegistrationSummary registration;
   PairTimes times;
 };
 

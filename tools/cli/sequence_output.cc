@@ -61,7 +61,8 @@ Json SummaryJson(const Json& header, const std::vector<PairResult>& results) {
     o["strict_success_rate_percent"] = nullptr;
   }
   std::map<int, int> start_layers;
-  for (const PairResult& r : results) ++start_layers[r.start_layer];
+  for (const PairResult& r : results)
+    ++start_layers[r.registration.start_layer];
   Json layers = Json::object();
   for (const auto& [layer, count] : start_layers) {
     layers[std::to_string(layer)] = count;
@@ -69,12 +70,13 @@ Json SummaryJson(const Json& header, const std::vector<PairResult>& results) {
   VerdictCounts verdicts;
   Json unusable = Json::array();
   for (const PairResult& r : results) {
-    verdicts.Add(r.termination);
-    if (!IsUsableTermination(r.termination)) {
+    verdicts.Add(r.registration.termination_type);
+    if (!IsUsableTermination(r.registration.termination_type)) {
       unusable.push_back(
           {{"reference", r.reference},
            {"input", r.input},
-           {"termination", TerminationTypeToString(r.termination)}});
+           {"termination",
+            TerminationTypeToString(r.registration.termination_type)}});
     }
   }
   o["terminations"] = VerdictCountsJson(verdicts);
@@ -159,11 +161,12 @@ std::string UnusablePairsMessage(const SequenceOptions& options,
   VerdictCounts verdicts;
   std::string pairs;
   for (const PairResult& r : results) {
-    verdicts.Add(r.termination);
-    if (!IsUsableTermination(r.termination) && pairs.size() < 200) {
+    verdicts.Add(r.registration.termination_type);
+    if (!IsUsableTermination(r.registration.termination_type) &&
+        pairs.size() < 200) {
       pairs += (pairs.empty() ? "" : ", ") + std::to_string(r.reference) +
                "->" + std::to_string(r.input) + " " +
-               TerminationTypeToString(r.termination);
+               TerminationTypeToString(r.registration.termination_type);
     }
   }
   if (verdicts.unusable() == 0) return "";

@@ -209,16 +209,25 @@ void DefinePairResult(py::module_& m) {
       .def_readonly("strict_success",
                     &PairResult::strict_success,
                     "< 0.2 m and < 1 deg (with truth).")
+      .def_property_readonly("termination",
+                             [](const PairResult& r) {
+                               return std::string(TerminationTypeToString(
+                                   r.registration.termination_type));
+                             })
       .def_property_readonly(
-          "termination",
-          [](const PairResult& r) {
-            return std::string(TerminationTypeToString(r.termination));
-          })
-      .def_readonly("message", &PairResult::message)
-      .def_readonly("iterations", &PairResult::iterations)
-      .def_readonly("start_layer", &PairResult::start_layer)
-      .def_readonly("num_layers", &PairResult::num_layers)
-      .def_readonly("sampled_points", &PairResult::sampled_points)
+          "message", [](const PairResult& r) { return r.registration.message; })
+      .def_property_readonly(
+          "iterations",
+          [](const PairResult& r) { return r.registration.num_iterations; })
+      .def_property_readonly(
+          "start_layer",
+          [](const PairResult& r) { return r.registration.start_layer; })
+      .def_property_readonly(
+          "num_layers",
+          [](const PairResult& r) { return r.registration.num_layers; })
+      .def_property_readonly(
+          "sampled_points",
+          [](const PairResult& r) { return r.registration.sampled_points; })
       .def_property_readonly(
           "total_ms", [](const PairResult& r) { return r.times.total_ms; })
       .def_property_readonly("map_ms",
@@ -226,7 +235,7 @@ void DefinePairResult(py::module_& m) {
       .def("__repr__", [](const PairResult& r) {
         return "<mlndt_lab.PairResult " + std::to_string(r.reference) + "->" +
                std::to_string(r.input) + " " +
-               TerminationTypeToString(r.termination) + ">";
+               TerminationTypeToString(r.registration.termination_type) + ">";
       });
 }
 

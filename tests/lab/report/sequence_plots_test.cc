@@ -46,14 +46,14 @@ std::vector<PairResult> Results(const std::vector<Isometry3d>& poses,
     r.estimate = r.truth * PoseVectorToIsometry(PoseVectorFromDegrees(
                                0.01 * (k + 1), 0, 0, 0, 0, 0.1 * (k + 1)));
     r.error = ComputePoseError(r.truth, r.estimate);
-    r.sampled_points = 1000;
+    r.registration.sampled_points = 1000;
     for (int i = 1; i <= 3; ++i) {
       IterationRecord it;
       it.iteration = i;
       it.layer = i;
       it.score = 100.0 * (4 - i);
       it.reference_from_input_xi = IsometryToPoseVector(r.estimate);
-      r.trace.push_back(it);
+      r.registration.trace.push_back(it);
     }
     results.push_back(r);
   }

@@ -36,9 +36,9 @@ std::string ReadText(const std::string& path) {
 SuiteRunResult Run(bool right, size_t points, double inliers, double distance) {
   SuiteRunResult r;
   r.outcome.right = right;
-  r.quality.points = points;
-  r.quality.inlier_fraction = inliers;
-  r.quality.median_distance = distance;
+  r.registration.quality.points = points;
+  r.registration.quality.inlier_fraction = inliers;
+  r.registration.quality.median_distance = distance;
   return r;
 }
 

@@ -121,14 +121,14 @@ TEST_F(SequenceTest, AdaptiveRuleMovesTheStartLayer) {
   options.registration.mlndt.grid.min_covered_fraction = 0.0;
   const std::vector<PairResult> results = Run(options, &store);
   ASSERT_EQ(results.size(), kScans - 1u);
-  const int last = results[0].num_layers;
+  const int last = results[0].registration.num_layers;
   ASSERT_GE(last, 3);
   EXPECT_EQ(results[0].running_fail_rate, 0.0);
-  EXPECT_EQ(results[0].start_layer, last);
+  EXPECT_EQ(results[0].registration.start_layer, last);
   for (size_t p = 1; p < results.size(); ++p) {
     EXPECT_TRUE(results[p].guess_check_failed);
     EXPECT_EQ(results[p].running_fail_rate, 1.0);
-    EXPECT_EQ(results[p].start_layer, last - 2);
+    EXPECT_EQ(results[p].registration.start_layer, last - 2);
   }
 }
 

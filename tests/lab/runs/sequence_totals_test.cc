@@ -20,12 +20,12 @@ PairResult Pair(double error_tx_m, bool success, double total_ms) {
   r.error.rotation_rad = 0.01;
   r.success = success;
   r.strict_success = success && error_tx_m < 0.2;
-  r.termination =
+  r.registration.termination_type =
       success ? TerminationType::CONVERGENCE : TerminationType::FAILURE;
   r.guess_check_failed = !success;
   r.times.total_ms = total_ms;
   r.times.map_ms = 1.0;
-  r.iterations = 10;
+  r.registration.num_iterations = 10;
   return r;
 }
 

@@ -84,13 +84,14 @@ TEST(RunSuiteDataset, RunsThePlanInOrderAndScoresEachRun) {
     EXPECT_EQ(r.outcome.kind, runs[k].kind);
     EXPECT_EQ(r.outcome.offset_index, runs[k].offset_index);
     EXPECT_NEAR(r.outcome.error.translation_m,
-                TranslationErrorM(runs[k].reference_from_input, r.estimate),
+                TranslationErrorM(runs[k].reference_from_input,
+                                  r.registration.reference_from_input),
                 1e-12);
-    EXPECT_GT(r.quality.points, 0u);
-    EXPECT_GE(r.attempts, 1);
+    EXPECT_GT(r.registration.quality.points, 0u);
+    EXPECT_GE(r.registration.attempts, 1);
     built += r.times.map_ms > 0.0 ? 1 : 0;
     if (runs[k].start != "x=50") {
-      EXPECT_TRUE(r.outcome.right) << seen[k] << ": " << r.message;
+      EXPECT_TRUE(r.outcome.right) << seen[k] << ": " << r.registration.message;
       EXPECT_EQ(r.outcome.termination, TerminationType::CONVERGENCE) << seen[k];
     } else {
       EXPECT_FALSE(r.outcome.right) << seen[k];
