@@ -16,10 +16,12 @@
 #include "mlndt/cost/transform_derivatives.h"
 #include "mlndt/registration/internal/cell_shape.h"
 #include "mlndt/registration/internal/direction_probe.h"
-#include "mlndt/registration/localizability.h"
+#include "mlndt/registration/internal/unlocalizable_directions.h"
 
 namespace mlndt {
 
+using internal::AddUnlocalizableDirections;
+using internal::AlreadyNamed;
 using internal::InlierFlags;
 using internal::MatchAtSolution;
 using internal::Probe;
@@ -138,39 +140,6 @@ ThinDirectionSums ThinDirectionInformation(
   sums.planar = sums.planar.selfadjointView<Eigen::Lower>();
   sums.lines = sums.lines.selfadjointView<Eigen::Lower>();
   return sums;
-}
-
-// True when d is within about 25 deg of one of `directions` (either sign).
-bool AlreadyNamed(const std::vector<Vector6d>& directions, const Vector6d& d) {
-  for (const Vector6d& named : directions) {
-    if (std::abs(named.dot(d)) > 0.9) return true;
-  }
-  return false;
-}
-
-// The translation's localizability (localizability.h) into *analysis; the
-// directions below options.min_localizability, unless already named, join
-// its degenerate directions.
-void AddUnlocalizableDirections(const std::vector<PointMatch>& matches,
-                                const QualityCheckOptions& options,
-                                ConstraintAnalysis* analysis) {
-  const Localizability localizability =
-      LocalizabilityOf(matches, options.inlier_gate);
-  if (localizability.planar_points == 0) return;
-  Eigen::Index least = 0;
-  analysis->localizability = localizability.share.minCoeff(&least);
-  analysis->least_localizable_direction.head<3>() =
-      localizability.directions.col(least);
-  for (int k = 0; k < 3; ++k) {
-    Vector6d d = Vector6d::Zero();
-    d.head<3>() = localizability.directions.col(k);
-    if (localizability.share(k) >= options.min_localizability ||
-        AlreadyNamed(analysis->degenerate_directions, d)) {
-      continue;
-    }
-    analysis->degenerate_directions.push_back(d);
-    analysis->unlocalizable_directions++;
-  }
 }
 
 // AnalyseConstraints on points already matched at the pose.

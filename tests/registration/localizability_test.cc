@@ -8,11 +8,13 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/common/pose.h"
 #include "mlndt/cost/objective_options.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/registration/internal/unlocalizable_directions.h"
 #include "mlndt/registration/quality_check.h"
 #include "mlndt/registration/registration.h"
 #include "tests/testing/synthetic_scene.h"
@@ -24,21 +26,28 @@ namespace {
 // simulator's training seeds (0-3; docs/trust.md).
 constexpr double kTrainedMinLocalizability = 0.02;
 
+// The matches of `input` at the identity on the last layer of *map, built
+// from `reference` (the default map; the matches point into it).
+std::vector<PointMatch> MatchesAtIdentity(const PointCloud& reference,
+                                          const PointCloud& input,
+                                          LayeredGrid* map) {
+  std::string error;
+  EXPECT_TRUE(LayeredGrid::Build(LayeredGridOptions(), reference, map, &error))
+      << error;
+  return MatchPoints(map->layer(map->num_layers()),
+                     input.points(),
+                     Matrix3d::Identity(),
+                     Eigen::Vector3d::Zero(),
+                     ObjectiveOptions().unmatched_policy);
+}
+
 // The localizability of `input` at the identity on `reference`'s last
 // layer (the default map), inliers as the quality check's gate.
 Localizability AtIdentity(const PointCloud& reference,
                           const PointCloud& input) {
   LayeredGrid map;
-  std::string error;
-  EXPECT_TRUE(LayeredGrid::Build(LayeredGridOptions(), reference, &map, &error))
-      << error;
-  const std::vector<PointMatch> matches =
-      MatchPoints(map.layer(map.num_layers()),
-                  input.points(),
-                  Matrix3d::Identity(),
-                  Eigen::Vector3d::Zero(),
-                  ObjectiveOptions().unmatched_policy);
-  return LocalizabilityOf(matches, QualityCheckOptions().inlier_gate);
+  return LocalizabilityOf(MatchesAtIdentity(reference, input, &map),
+                          QualityCheckOptions().inlier_gate);
 }
 
 // The share of the direction closest to `axis`.
@@ -103,6 +112,38 @@ TEST(Localizability, MakesACorridorDegenerateWithoutTheProbe) {
       << s.message;
   EXPECT_GE(s.covariance(0, 0), 1.0) << s.FullReport();
   EXPECT_LT(s.covariance(1, 1), 0.01) << s.FullReport();
+}
+
+// The verdict and the prior hold name a corridor's axis through one
+// function: added once with its share, and not again when another test
+// (the probe, the ratio) already named it.
+TEST(Localizability, TheUnlocalizableAxisIsNamedOnce) {
+  LayeredGrid map;
+  const std::vector<PointMatch> matches =
+      MatchesAtIdentity(testing::Corridor(50.0, 20000, 1),
+                        testing::Corridor(20.0, 8000, 2),
+                        &map);
+  QualityCheckOptions options;
+  options.min_localizability = kTrainedMinLocalizability;
+  ConstraintAnalysis analysis;
+  const std::vector<Vector6d> added =
+      internal::AddUnlocalizableDirections(matches, options, &analysis);
+  ASSERT_EQ(added.size(), 1u);
+  EXPECT_GT(std::abs(added[0].x()), 0.99) << added[0].transpose();
+  EXPECT_EQ(analysis.unlocalizable_directions, 1);
+  ASSERT_EQ(analysis.degenerate_directions.size(), 1u);
+  EXPECT_LT(analysis.localizability, kTrainedMinLocalizability);
+  EXPECT_GT(std::abs(analysis.least_localizable_direction.x()), 0.99);
+
+  ConstraintAnalysis probed;  // The axis named by the probe, 10 deg off.
+  Vector6d axis = Vector6d::Zero();
+  axis.head<3>() = Eigen::Vector3d(std::cos(0.17), std::sin(0.17), 0.0);
+  probed.degenerate_directions.push_back(axis);
+  EXPECT_TRUE(
+      internal::AddUnlocalizableDirections(matches, options, &probed).empty());
+  EXPECT_EQ(probed.unlocalizable_directions, 0);
+  EXPECT_EQ(probed.degenerate_directions.size(), 1u);
+  EXPECT_LT(probed.localizability, kTrainedMinLocalizability);
 }
 
 // Nothing on planar cells: empty.

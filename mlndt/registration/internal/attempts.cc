@@ -11,6 +11,7 @@
 #include "mlndt/registration/internal/cell_shape.h"
 #include "mlndt/registration/internal/direction_probe.h"
 #include "mlndt/registration/internal/prior_hold.h"
+#include "mlndt/registration/internal/unlocalizable_directions.h"
 #include "mlndt/registration/quality_check.h"
 #include "mlndt/registration/rival_minima.h"
 
@@ -625,32 +626,24 @@ void FlagUnlocalizable(const Context& c,
 
 // Step 8's free directions, all of them: a result DEGENERATE by the ratio,
 // the probe or a rival minimum was judged without the localizability test
-// (steps 1-5, 7), so the translations it leaves free (localizability.h)
-// join its degenerate directions here, unless already named (within about
-// 25 deg). Only with a prior: without one the verdict already says free.
-void AddUnlocalizableDirections(const RegistrationOptions& options,
-                                const Problem& problem,
-                                Attempt* best) {
+// (steps 1-5, 7), so the translations it leaves free join its degenerate
+// directions here (AddUnlocalizableDirections, as the verdict adds them),
+// unless already named. Only with a prior: without one the verdict already
+// says free.
+void AddFreeTranslations(const RegistrationOptions& options,
+                         const Problem& problem,
+                         Attempt* best) {
   if (!options.initial_uncertainty.given ||
       best->verdict != TerminationType::DEGENERATE ||
       !(options.quality_check.min_localizability > 0.0)) {
     return;
   }
-  const Judgement full = JudgeSolution(options.quality_check,
-                                       best->schedule.termination_type,
-                                       problem.last(),
-                                       problem.points,
-                                       best->xi_local,
-                                       options.objective,
-                                       problem.rms_range_m);
-  std::vector<Vector6d>& named = best->constraints.degenerate_directions;
-  for (const Vector6d& d : full.constraints.degenerate_directions) {
-    const bool known =
-        std::any_of(named.begin(), named.end(), [&](const Vector6d& other) {
-          return std::abs(other.normalized().dot(d.normalized())) > 0.9;
-        });
-    if (known) continue;
-    named.push_back(d);
+  const std::vector<Vector6d> added = AddUnlocalizableDirections(
+      MatchAtSolution(
+          problem.last(), problem.points, best->xi_local, options.objective),
+      options.quality_check,
+      &best->constraints);
+  for (const Vector6d& d : added) {
     best->verdict_message += "; also free: " + DescribeDirection(d);
   }
 }
@@ -660,7 +653,7 @@ void HoldPrior(const RegistrationOptions& options,
                const Problem& problem,
                const Vector6d& initial_local,
                Attempt* best) {
-  AddUnlocalizableDirections(options, problem, best);
+  AddFreeTranslations(options, problem, best);
   if (HoldPriorAlongFreeDirections(options, problem, initial_local, best) > 0) {
     best->verdict_message +=
         "; the pose keeps the prior's value along the free directions, and "
