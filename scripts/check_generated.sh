@@ -12,6 +12,8 @@
 #     the OdometryResult blocks       and --format=odometry_pyi
 #   docs/json_schema.md, the          mlndt_options --format=map_markdown
 #     MapBuildSummary block
+#   docs/json_schema.md, the          mlndt_options --format=eval_markdown
+#     TrajectoryEvaluation block
 #
 #   scripts/check_generated.sh [BUILD_DIR]          # default build/
 #   scripts/check_generated.sh --write [BUILD_DIR]  # rewrites the copies
@@ -71,6 +73,7 @@ check python/mlndt/__init__.pyi localization_pyi block
 check docs/json_schema.md odometry_markdown block
 check python/mlndt/__init__.pyi odometry_pyi block
 check docs/json_schema.md map_markdown block
+check docs/json_schema.md eval_markdown block
 if ((status == 0)); then
   echo "check_generated: docs/options.md, docs/json_schema.md and the stub are current"
 fi

@@ -12,6 +12,7 @@
 //   mlndt_options --format=localization_pyi       # LocalizationResult
 //   mlndt_options --format=odometry_markdown|odometry_pyi  # OdometryResult
 //   mlndt_options --format=map_markdown  # MapBuildSummary (mlndt_map's JSON)
+//   mlndt_options --format=eval_markdown  # TrajectoryEvaluation (mlndt_eval)
 
 #include <gflags/gflags.h>
 
@@ -19,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/trajectory_evaluation.h"
 #include "mlndt/common/result_table.h"
 #include "mlndt/odometry/odometry.h"
 #include "mlndt/pipeline/localizer.h"
@@ -37,7 +39,8 @@ DEFINE_string(format,
               "RegistrationResult) | localization_markdown | "
               "localization_pyi (the same of LocalizationResult) | "
               "odometry_markdown | odometry_pyi (of OdometryResult) | "
-              "map_markdown (of MapBuildSummary)");
+              "map_markdown (of MapBuildSummary) | eval_markdown (of "
+              "TrajectoryEvaluation)");
 
 namespace {
 
@@ -72,6 +75,7 @@ std::vector<DocumentedResult> DocumentedResults() {
        "One scan of the odometry (mlndt::OdometryResult).",
        registration},
       {"map", &mlndt::MapBuildSummaryTable(), "", "", {}},
+      {"eval", &mlndt::TrajectoryEvaluationTable(), "", "", {}},
   };
 }
 
@@ -127,7 +131,7 @@ int main(int argc, char** argv) {
     std::cerr << "mlndt_options: --format=" << FLAGS_format
               << ": expected markdown, json, results_markdown, results_pyi, "
                  "localization_markdown, localization_pyi, odometry_markdown, "
-                 "odometry_pyi or map_markdown\n";
+                 "odometry_pyi, map_markdown or eval_markdown\n";
     return mlndt::tools::kExitUsage;
   }
   return mlndt::tools::kExitOk;
