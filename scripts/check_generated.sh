@@ -10,6 +10,10 @@
 #     the LocalizationResult blocks   and --format=localization_pyi
 #   docs/json_schema.md and the stub, mlndt_options --format=odometry_markdown
 #     the OdometryResult blocks       and --format=odometry_pyi
+#   docs/json_schema.md, the          mlndt_options --format=map_markdown
+#     MapBuildSummary block
+#   docs/json_schema.md, the          mlndt_options --format=eval_markdown
+#     TrajectoryEvaluation block
 #
 #   scripts/check_generated.sh [BUILD_DIR]          # default build/
 #   scripts/check_generated.sh --write [BUILD_DIR]  # rewrites the copies
@@ -68,6 +72,8 @@ check docs/json_schema.md localization_markdown block
 check python/mlndt/__init__.pyi localization_pyi block
 check docs/json_schema.md odometry_markdown block
 check python/mlndt/__init__.pyi odometry_pyi block
+check docs/json_schema.md map_markdown block
+check docs/json_schema.md eval_markdown block
 if ((status == 0)); then
   echo "check_generated: docs/options.md, docs/json_schema.md and the stub are current"
 fi

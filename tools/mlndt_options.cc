@@ -11,6 +11,8 @@
 //                                                  # scans section
 //   mlndt_options --format=localization_pyi       # LocalizationResult
 //   mlndt_options --format=odometry_markdown|odometry_pyi  # OdometryResult
+//   mlndt_options --format=map_markdown  # MapBuildSummary (mlndt_map's JSON)
+//   mlndt_options --format=eval_markdown  # TrajectoryEvaluation (mlndt_eval)
 
 #include <gflags/gflags.h>
 
@@ -18,9 +20,11 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/trajectory_evaluation.h"
 #include "mlndt/common/result_table.h"
 #include "mlndt/odometry/odometry.h"
 #include "mlndt/pipeline/localizer.h"
+#include "mlndt/pipeline/map_builder.h"
 #include "mlndt/registration/registration_summary.h"
 #include "tools/cli/option_flags.h"
 #include "tools/cli/options_doc.h"
@@ -34,45 +38,62 @@ DEFINE_string(format,
               "registration section) | results_pyi (the stub's "
               "RegistrationResult) | localization_markdown | "
               "localization_pyi (the same of LocalizationResult) | "
-              "odometry_markdown | odometry_pyi (of OdometryResult)");
+              "odometry_markdown | odometry_pyi (of OdometryResult) | "
+              "map_markdown (of MapBuildSummary) | eval_markdown (of "
+              "TrajectoryEvaluation)");
 
 namespace {
 
+// A result table whose reference is generated: --format=<name>_markdown
+// (its docs/json_schema.md block) and, when Python has it, <name>_pyi (its
+// class in the stub).
+struct DocumentedResult {
+  const char* name;
+  const mlndt::ResultTable* table;
+  const char* python_class;  // Empty: not in Python.
+  const char* python_doc;
+  std::vector<mlndt::tools::DescribedResult> described;
+};
+
+std::vector<DocumentedResult> DocumentedResults() {
+  const std::vector<mlndt::tools::DescribedResult> registration = {
+      {&mlndt::RegistrationSummaryTable(), "RegistrationResult"}};
+  return {
+      {"results",
+       &mlndt::RegistrationSummaryTable(),
+       "RegistrationResult",
+       "What a registration reports (mlndt::RegistrationSummary).",
+       {}},
+      {"localization",
+       &mlndt::LocalizationResultTable(),
+       "LocalizationResult",
+       "One scan's localisation (mlndt::LocalizationResult).",
+       registration},
+      {"odometry",
+       &mlndt::OdometryResultTable(),
+       "OdometryResult",
+       "One scan of the odometry (mlndt::OdometryResult).",
+       registration},
+      {"map", &mlndt::MapBuildSummaryTable(), "", "", {}},
+      {"eval", &mlndt::TrajectoryEvaluationTable(), "", "", {}},
+  };
+}
+
 // The reference of a result table in --format; false for another format.
 bool PrintResults(const std::string& format) {
-  using mlndt::tools::DescribedResult;
-  const std::vector<DescribedResult> registration = {
-      {&mlndt::RegistrationSummaryTable(), "RegistrationResult"}};
-  if (format == "results_markdown") {
-    std::cout << mlndt::tools::ResultsMarkdown(
-        mlndt::RegistrationSummaryTable());
-  } else if (format == "results_pyi") {
-    std::cout << mlndt::tools::ResultsStub(
-        mlndt::RegistrationSummaryTable(),
-        "RegistrationResult",
-        "What a registration reports (mlndt::RegistrationSummary).");
-  } else if (format == "localization_markdown") {
-    std::cout << mlndt::tools::ResultsMarkdown(mlndt::LocalizationResultTable(),
-                                               registration);
-  } else if (format == "localization_pyi") {
-    std::cout << mlndt::tools::ResultsStub(
-        mlndt::LocalizationResultTable(),
-        "LocalizationResult",
-        "One scan's localisation (mlndt::LocalizationResult).",
-        registration);
-  } else if (format == "odometry_markdown") {
-    std::cout << mlndt::tools::ResultsMarkdown(mlndt::OdometryResultTable(),
-                                               registration);
-  } else if (format == "odometry_pyi") {
-    std::cout << mlndt::tools::ResultsStub(
-        mlndt::OdometryResultTable(),
-        "OdometryResult",
-        "One scan of the odometry (mlndt::OdometryResult).",
-        registration);
-  } else {
-    return false;
+  for (const DocumentedResult& r : DocumentedResults()) {
+    const std::string name = r.name;
+    if (format == name + "_markdown") {
+      std::cout << mlndt::tools::ResultsMarkdown(*r.table, r.described);
+      return true;
+    }
+    if (format == name + "_pyi" && *r.python_class != '\0') {
+      std::cout << mlndt::tools::ResultsStub(
+          *r.table, r.python_class, r.python_doc, r.described);
+      return true;
+    }
   }
-  return true;
+  return false;
 }
 
 }  // namespace
@@ -109,8 +130,8 @@ int main(int argc, char** argv) {
   } else if (!PrintResults(FLAGS_format)) {
     std::cerr << "mlndt_options: --format=" << FLAGS_format
               << ": expected markdown, json, results_markdown, results_pyi, "
-                 "localization_markdown, localization_pyi, odometry_markdown "
-                 "or odometry_pyi\n";
+                 "localization_markdown, localization_pyi, odometry_markdown, "
+                 "odometry_pyi, map_markdown or eval_markdown\n";
     return mlndt::tools::kExitUsage;
   }
   return mlndt::tools::kExitOk;

@@ -26,7 +26,7 @@ bool PairsByTime(const TrajectoryEvaluationOptions& options,
                  const TrajectoryEvaluation& result,
                  bool* by_time,
                  std::string* error) {
-  const bool estimate_timed = EstimateTimed(result.format, result.path);
+  const bool estimate_timed = EstimateTimed(result.format, result.file);
   *by_time = false;
   switch (options.association) {
     case PoseAssociation::AUTO:
@@ -36,7 +36,7 @@ bool PairsByTime(const TrajectoryEvaluationOptions& options,
       break;
     case PoseAssociation::TIMESTAMP:
       if (!estimate_timed || !reference.timed) {
-        *error = (estimate_timed ? reference.path : result.path) +
+        *error = (estimate_timed ? reference.path : result.file) +
                  ": no time stamps (KITTI, or a TUM file whose header says "
                  "its stamps are scan indices): --association=timestamp "
                  "needs stamps on both sides";
@@ -96,8 +96,8 @@ bool ReadTrajectoryFiles(const TrajectoryEvaluationOptions& options,
   estimates->assign(n, Trajectory());
   for (size_t i = 0; i < n; ++i) {
     TrajectoryEvaluation& result = (*results)[i];
-    result.path = files.estimates[i];
-    if (!ReadEvaluationTrajectory(result.path,
+    result.file = files.estimates[i];
+    if (!ReadEvaluationTrajectory(result.file,
                                   files.detect_estimate,
                                   files.estimate_format,
                                   "",
@@ -106,7 +106,7 @@ bool ReadTrajectoryFiles(const TrajectoryEvaluationOptions& options,
                                   error) ||
         !CheckIndexPairing(options,
                            *reference,
-                           result.path,
+                           result.file,
                            result.format,
                            (*estimates)[i],
                            error)) {
@@ -242,7 +242,7 @@ bool EvaluateTrajectory(const TrajectoryEvaluationOptions& options,
           : AssociateByIndex(reference.trajectory, estimate);
   result->pairs = pairs.size();
   if (pairs.size() == 0) {
-    *error = result->path + ": no pose pairs with the reference (" +
+    *error = result->file + ": no pose pairs with the reference (" +
              result->association + " association)";
     return false;
   }
@@ -262,7 +262,7 @@ bool EvaluateTrajectory(const TrajectoryEvaluationOptions& options,
                                        pairs.estimate,
                                        &result->kitti,
                                        error);
-  if (!ok) *error = result->path + ": " + *error;
+  if (!ok) *error = result->file + ": " + *error;
   return ok;
 }
 

@@ -13,6 +13,7 @@
 #include "lab/eval/trajectory.h"
 #include "lab/eval/trajectory_io.h"
 #include "lab/eval/trajectory_metrics.h"
+#include "mlndt/common/result_table.h"
 
 namespace mlndt {
 
@@ -48,7 +49,7 @@ struct EvaluationReference {
 };
 
 struct TrajectoryEvaluation {
-  std::string path;  // The estimate's file.
+  std::string file;  // The estimate's file (its path).
   TrajectoryFormat format = TrajectoryFormat::KITTI;
   std::string association;  // "index" or "timestamp": as paired.
   size_t poses = 0;
@@ -59,6 +60,11 @@ struct TrajectoryEvaluation {
   size_t rpe_pairs = 0;  // 0: fewer than delta + 1 pairs, no RPE.
   KittiSegmentSummary kitti;
 };
+
+// TrajectoryEvaluation's fields (result_table.h), the ATE, RPE and KITTI
+// summaries nested: mlndt_eval's "estimates" and docs/json_schema.md come
+// from it.
+const ResultTable& TrajectoryEvaluationTable();
 
 // The files of an evaluation (mlndt_eval's flags of the same names).
 struct TrajectoryFiles {
@@ -73,7 +79,7 @@ struct TrajectoryFiles {
 };
 
 // Reads the reference (converted, stamped) and every estimate; results get
-// each estimate's path and format. False with *error, naming the file and
+// each estimate's file and format. False with *error, naming the file and
 // the flag, on anything that cannot be evaluated (CheckIndexPairing).
 bool ReadTrajectoryFiles(const TrajectoryEvaluationOptions& options,
                          const TrajectoryFiles& files,
@@ -110,7 +116,7 @@ bool CheckIndexPairing(const TrajectoryEvaluationOptions& options,
                        const Trajectory& estimate,
                        std::string* error);
 
-// Scores `estimate`, read from result->path in result->format. False with
+// Scores `estimate`, read from result->file in result->format. False with
 // *error when TIMESTAMP lacks stamps, no pose pairs up, or a metric fails.
 bool EvaluateTrajectory(const TrajectoryEvaluationOptions& options,
                         const EvaluationReference& reference,

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "mlndt/cloud/point_cloud.h"
+#include "mlndt/common/result_table.h"
 #include "mlndt/grid/layered_grid.h"
 
 namespace mlndt {
@@ -61,6 +62,10 @@ struct MapMemoryEstimate {
   // The cloud plus the build's peak: what the process needs to build.
   size_t total_bytes() const { return cloud_bytes + build_peak_bytes; }
 };
+
+// MapMemoryEstimate's fields (result_table.h), LayerMemoryEstimate's
+// nested: the estimate in mlndt_map's JSON and docs/json_schema.md.
+const ResultTable& MapMemoryEstimateTable();
 
 // Estimates the memory of LayeredGrid::Build(options, cloud). With
 // max_total_bytes > 0, returns false with *error (saying how much is needed

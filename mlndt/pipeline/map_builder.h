@@ -21,6 +21,7 @@
 #include "mlndt/cloud/point_cloud.h"
 #include "mlndt/cloud/range_filter.h"
 #include "mlndt/common/progress.h"
+#include "mlndt/common/result_table.h"
 #include "mlndt/common/types.h"
 #include "mlndt/grid/layered_grid.h"
 #include "mlndt/grid/map_memory.h"
@@ -66,6 +67,10 @@ struct MapBuildSummary {
   double build_time_s = 0.0;     // LayeredGrid::Build.
   double total_time_s = 0.0;
 };
+
+// MapBuildSummary's fields (result_table.h), the memory estimate's table
+// nested: mlndt_map's --output_json and docs/json_schema.md come from it.
+const ResultTable& MapBuildSummaryTable();
 
 // Reads scan_paths[k] (any format ReadPointCloud reads), crops it, maps it
 // with world_from_scan[k] and merges it, for every k; then filters and

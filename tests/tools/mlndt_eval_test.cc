@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "lab/eval/trajectory_evaluation.h"
 #include "lab/eval/trajectory_io.h"
 #include "mlndt/cloud/pose_io.h"
 #include "tests/testing/run_tool.h"
@@ -219,6 +220,15 @@ TEST(MlndtEval, ReproducesAteAndRpeOfASequenceTrajectory) {
       EXPECT_EQ(json["schema_version"], 2);
       EXPECT_EQ(json["tool"], "mlndt_eval");
       const Json& e = json["estimates"][0];
+      // Its keys are TrajectoryEvaluationTable's (the test's Json sorts
+      // them; the order is the table's, docs/json_schema.md).
+      std::vector<std::string> keys, fields;
+      for (const auto& item : e.items()) keys.push_back(item.key());
+      for (const ResultField& f : TrajectoryEvaluationTable().fields()) {
+        fields.push_back(f.name);
+      }
+      std::sort(fields.begin(), fields.end());
+      EXPECT_EQ(keys, fields);
       EXPECT_EQ(e["pairs"].get<int>(), 8);
       EXPECT_EQ(e["association"].get<std::string>(), "index");
       double scale = 0.0;
@@ -238,6 +248,21 @@ TEST(MlndtEval, ReproducesAteAndRpeOfASequenceTrajectory) {
       EXPECT_NE(run.out.find("KITTI segments: none"), std::string::npos);
     }
   }
+}
+
+// Fewer poses than delta + 1: no RPE, its numbers null (RpeSummaryTable).
+TEST(MlndtEval, WritesNoRpeWhenDeltaExceedsThePairs) {
+  const std::string json_path = TestDir() + "/eval.json";
+  const ToolRun run =
+      testing::RunTool("mlndt_eval",
+                       "--reference=" + Quote(KittiGt()) +
+                           " --estimate=" + Quote(SequenceTrajectory()) +
+                           " --delta=10 --output_json=" + Quote(json_path));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json rpe = ReadJson(json_path)["estimates"][0]["rpe"];
+  EXPECT_EQ(rpe["pairs"].get<int>(), 0);
+  EXPECT_TRUE(rpe["translation_rmse_m"].is_null());
+  EXPECT_TRUE(rpe["rotation_max_deg"].is_null());
 }
 
 TEST(MlndtEval, ReproducesKittiSegmentErrorsOverShortLengths) {

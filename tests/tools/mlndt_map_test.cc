@@ -20,6 +20,7 @@
 #include "mlndt/cloud/pose_io.h"
 #include "mlndt/grid/grid_io.h"
 #include "mlndt/grid/layered_grid.h"
+#include "mlndt/pipeline/map_builder.h"
 #include "mlndt/sampling/point_sampler.h"
 #include "tests/testing/run_tool.h"
 #include "tests/testing/test_data.h"
@@ -157,16 +158,23 @@ TEST(MlndtMap, BuildsTheKittiMapFromChainedPoses) {
   const Json json = ReadJson(dir + "/map.json");
   EXPECT_EQ(json["schema_version"], 2);
   EXPECT_EQ(json["tool"], "mlndt_map");
-  EXPECT_GT(json["time_ms"]["total"].get<double>(),
-            json["time_ms"]["build"].get<double>());
+  EXPECT_GT(json["total_time_s"].get<double>(),
+            json["build_time_s"].get<double>());
+  // The summary's keys are its table's (MapBuildSummaryTable).
+  for (const ResultField& field : MapBuildSummaryTable().fields()) {
+    EXPECT_TRUE(json.contains(field.name)) << field.name;
+  }
+  EXPECT_EQ(json["scans_without_points"].size(), 0u);
   EXPECT_EQ(json["scans"].get<size_t>(), 8u);
   EXPECT_EQ(json["input_points"].get<size_t>(), read);
   EXPECT_EQ(json["cropped_points"].get<size_t>(), cropped);
   EXPECT_GT(cropped, 0u);
   EXPECT_EQ(json["merged_points"].get<size_t>(), merged.size());
   EXPECT_EQ(json["map_points"].get<size_t>(), filtered.size());
-  EXPECT_EQ(json["estimate"]["map_bytes"].get<size_t>(),
+  EXPECT_EQ(json["memory"]["map_bytes"].get<size_t>(),
             json["map_bytes"].get<size_t>());
+  EXPECT_EQ(json["memory"]["layers"].size(), json["layers"].size());
+  EXPECT_EQ(json["max_memory_bytes"].get<size_t>(), size_t{8000000000});
 
   LayeredGrid here;
   ASSERT_TRUE(LayeredGrid::Build(LayeredGridOptions(), filtered, &here, &error))

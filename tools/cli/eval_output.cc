@@ -5,45 +5,11 @@
 #include <cstdio>
 
 #include "lab/report/text_format.h"
+#include "tools/cli/result_json.h"
 
 namespace mlndt {
 namespace tools {
 namespace {
-
-// One estimate's entry of the JSON's "estimates".
-Json ResultJson(const TrajectoryEvaluation& r) {
-  const bool has_rpe = r.rpe_pairs > 0;
-  const double nan = std::nan("");
-  return {
-      {"file", r.path},
-      {"format", TrajectoryFormatToString(r.format)},
-      {"association", r.association},
-      {"poses", r.poses},
-      {"pairs", r.pairs},
-      {"path_length_m", Number(r.path_length_m)},
-      {"ate",
-       {{"rmse_m", Number(r.ate.rmse_m)},
-        {"mean_m", Number(r.ate.errors.mean)},
-        {"median_m", Number(r.ate.errors.median)},
-        {"max_m", Number(r.ate.errors.max)},
-        {"scale", Number(r.ate.reference_from_estimate.scale)}}},
-      {"rpe",
-       {{"pairs", r.rpe_pairs},
-        {"translation_rmse_m",
-         Number(has_rpe ? r.rpe.translation_rmse_m : nan)},
-        {"translation_mean_m",
-         Number(has_rpe ? r.rpe.translation_m.mean : nan)},
-        {"translation_max_m", Number(has_rpe ? r.rpe.translation_m.max : nan)},
-        {"rotation_rmse_deg", Number(has_rpe ? r.rpe.rotation_rmse_deg : nan)},
-        {"rotation_mean_deg", Number(has_rpe ? r.rpe.rotation_deg.mean : nan)},
-        {"rotation_max_deg", Number(has_rpe ? r.rpe.rotation_deg.max : nan)}}},
-      {"kitti",
-       {{"segments", r.kitti.segments.size()},
-        {"translation_error_percent",
-         Number(r.kitti.translation_error_percent)},
-        {"rotation_error_deg_per_m", Number(r.kitti.rotation_error_deg_per_m)},
-        {"lengths", KittiLengthsJson(r.kitti.lengths)}}}};
-}
 
 void PrintSegmentLines(const TrajectoryEvaluationOptions& options,
                        const std::vector<TrajectoryEvaluation>& results) {
@@ -52,13 +18,13 @@ void PrintSegmentLines(const TrajectoryEvaluationOptions& options,
       std::printf(
           "%s: KITTI segments: none (the reference path is %.1f m, shorter "
           "than %g m)\n",
-          r.path.c_str(),
+          r.file.c_str(),
           r.path_length_m,
           *std::min_element(options.segments.lengths_m.begin(),
                             options.segments.lengths_m.end()));
       continue;
     }
-    std::printf("%s: KITTI segments by length:", r.path.c_str());
+    std::printf("%s: KITTI segments by length:", r.file.c_str());
     for (const KittiLengthErrors& l : r.kitti.lengths) {
       std::printf(" %g m (%zu): %.3f %% %.5f deg/m;",
                   l.length_m,
@@ -91,7 +57,7 @@ void PrintEvaluations(const TrajectoryEvaluationOptions& options,
   for (const TrajectoryEvaluation& r : results) {
     const bool has_rpe = r.rpe_pairs > 0;
     std::printf("| %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s |\n",
-                r.path.c_str(),
+                r.file.c_str(),
                 TrajectoryFormatToString(r.format),
                 r.pairs,
                 Fmt(r.path_length_m, 2).c_str(),
@@ -127,7 +93,7 @@ Json EvaluationsJson(const TrajectoryEvaluationOptions& options,
                      const std::vector<TrajectoryEvaluation>& results) {
   Json estimates = Json::array();
   for (const TrajectoryEvaluation& r : results) {
-    estimates.push_back(ResultJson(r));
+    estimates.push_back(ResultJsonOf(TrajectoryEvaluationTable(), r));
   }
   Json json = ToolJson("mlndt_eval");
   json["reference"] = reference.path;

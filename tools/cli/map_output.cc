@@ -7,6 +7,7 @@
 #include "lab/report/text_format.h"
 #include "mlndt/grid/cell_index.h"
 #include "mlndt/grid/map_memory.h"
+#include "tools/cli/result_json.h"
 #include "tools/cli/tool_utils.h"
 
 namespace mlndt {
@@ -132,41 +133,27 @@ Json MapBuildJson(const std::string& output,
                   const MapBuildOptions& options,
                   const MapBuildSummary& s,
                   const LayeredGrid& map) {
-  Json layers = Json::array();
+  Json json = ToolJson("mlndt_map");
+  json["output"] = output;
+  json.update(ResultJsonOf(MapBuildSummaryTable(), s));
+  json["min_range_m"] = Number(options.range_filter.min_range_m);
+  json["max_range_m"] = Number(options.range_filter.max_range_m);
+  json["voxel_size_m"] = Number(options.voxel_size_m);
+  json["max_memory_bytes"] = options.max_memory_bytes;
+  const Eigen::Vector3d extent = map.bounds().sizes();
+  json["extent_m"] = {
+      Number(extent.x()), Number(extent.y()), Number(extent.z())};
+  json["layers"] = Json::array();
   for (int i = 1; i <= map.num_layers(); ++i) {
     const NdtLayer& layer = map.layer(i);
-    layers.push_back(
+    json["layers"].push_back(
         {{"layer", i},
          {"cell_size_m", Number(layer.cell_size())},
          {"dims", {layer.dims().x(), layer.dims().y(), layer.dims().z()}},
          {"occupied_cells", layer.cells().size()},
          {"bytes", layer.MemoryBytes()}});
   }
-  const Eigen::Vector3d extent = map.bounds().sizes();
-  Json json = ToolJson("mlndt_map");
-  json["output"] = output;
-  json["scans"] = s.scans;
-  json["input_points"] = s.input_points;
-  json["cropped_points"] = s.cropped_points;
-  json["merged_points"] = s.merged_points;
-  json["map_points"] = s.map_points;
-  json["min_range_m"] = Number(options.range_filter.min_range_m);
-  json["max_range_m"] = Number(options.range_filter.max_range_m);
-  json["voxel_size_m"] = Number(options.voxel_size_m);
-  json["extent_m"] = {
-      Number(extent.x()), Number(extent.y()), Number(extent.z())};
-  json["layers"] = layers;
-  json["map_bytes"] = s.map_bytes;
-  json["estimate"] = {{"map_bytes", s.memory.map_bytes},
-                      {"build_peak_bytes", s.memory.build_peak_bytes},
-                      {"cloud_bytes", s.memory.cloud_bytes},
-                      {"limit_bytes", options.max_memory_bytes}};
   json["peak_resident_bytes"] = PeakResidentBytes();
-  json["time_ms"] = {{"total", Number(s.total_time_s * 1e3)},
-                     {"read", Number(s.read_time_s * 1e3)},
-                     {"voxel", Number(s.voxel_time_s * 1e3)},
-                     {"estimate", Number(s.estimate_time_s * 1e3)},
-                     {"build", Number(s.build_time_s * 1e3)}};
   return json;
 }
 

@@ -43,9 +43,9 @@ TEST(EvaluateTrajectory, CameraPosesConvertedWithTheCalibrationMatch) {
   const EvaluationReference reference = VeloReference();
   Trajectory cam;
   TrajectoryEvaluation result;
-  result.path = Kitti("poses_cam0.txt");
+  result.file = Kitti("poses_cam0.txt");
   std::string error;
-  ASSERT_TRUE(ReadEvaluationTrajectory(result.path,
+  ASSERT_TRUE(ReadEvaluationTrajectory(result.file,
                                        true,
                                        TrajectoryFormat::KITTI,
                                        Kitti("calib.txt"),
@@ -83,7 +83,7 @@ TEST(EvaluateTrajectory, ScaledStepsShowInEveryMetric) {
   TrajectoryEvaluationOptions options = ShortSegments();
   options.alignment = TrajectoryAlignment::NONE;
   TrajectoryEvaluation raw;
-  raw.path = "drifted";
+  raw.file = "drifted";
   ASSERT_TRUE(EvaluateTrajectory(options, reference, drifted, &raw, &error))
       << error;
   // About 1 % (1.2 % here: the turns move the segment ends sideways too).
@@ -92,7 +92,7 @@ TEST(EvaluateTrajectory, ScaledStepsShowInEveryMetric) {
   EXPECT_GT(raw.rpe.translation_rmse_m, 1e-3);
   options.alignment = TrajectoryAlignment::SE3;
   TrajectoryEvaluation aligned;
-  aligned.path = "drifted";
+  aligned.file = "drifted";
   ASSERT_TRUE(EvaluateTrajectory(options, reference, drifted, &aligned, &error))
       << error;
   EXPECT_LT(aligned.ate.rmse_m, raw.ate.rmse_m);
@@ -104,7 +104,7 @@ TEST(EvaluateTrajectory, TimestampAssociationNeedsStamps) {
   TrajectoryEvaluationOptions options = ShortSegments();
   options.association = PoseAssociation::TIMESTAMP;
   TrajectoryEvaluation result;
-  result.path = reference.path;
+  result.file = reference.path;
   std::string error;
   EXPECT_FALSE(EvaluateTrajectory(
       options, reference, reference.trajectory, &result, &error));
