@@ -50,20 +50,21 @@ const ResultTable& RpeSummaryTable() {
   using R = RpeSummary;
   static const ResultTable table =
       ResultTableBuilder<R>("RpeSummary")
-          .Computed("pairs",
-                    ResultType::INTEGER,
-                    "",
-                    "Motions compared (pose pairs minus delta; 0: no RPE, "
-                    "the numbers below are NaN).",
-                    [](const R& r) {
-                      return ResultValue(
-                          static_cast<int64_t>(r.translation_m.count));
-                    })
-          .Computed("translation_rmse_m",
-                    ResultType::NUMBER,
-                    "m",
-                    "RMSE of the relative translation errors.",
-                    [](const R& r) { return RpeValue(r, r.translation_rmse_m); })
+          .Computed(
+              "pairs",
+              ResultType::INTEGER,
+              "",
+              "Motions compared (pose pairs minus delta; 0: no RPE, "
+              "the numbers below are NaN).",
+              [](const R& r) {
+                return ResultValue(static_cast<int64_t>(r.translation_m.count));
+              })
+          .Computed(
+              "translation_rmse_m",
+              ResultType::NUMBER,
+              "m",
+              "RMSE of the relative translation errors.",
+              [](const R& r) { return RpeValue(r, r.translation_rmse_m); })
           .Computed(
               "translation_mean_m",
               ResultType::NUMBER,
@@ -119,14 +120,14 @@ const ResultTable& KittiSegmentSummaryTable() {
   using K = KittiSegmentSummary;
   static const ResultTable table =
       ResultTableBuilder<K>("KittiSegmentSummary")
-          .Computed("segments",
-                    ResultType::INTEGER,
-                    "",
-                    "Segments evaluated, every length.",
-                    [](const K& k) {
-                      return ResultValue(
-                          static_cast<int64_t>(k.segments.size()));
-                    })
+          .Computed(
+              "segments",
+              ResultType::INTEGER,
+              "",
+              "Segments evaluated, every length.",
+              [](const K& k) {
+                return ResultValue(static_cast<int64_t>(k.segments.size()));
+              })
           .Number("translation_error_percent",
                   &K::translation_error_percent,
                   "%",
