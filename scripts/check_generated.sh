@@ -4,6 +4,8 @@
 #   docs/options.md                 mlndt_options (the option tables)
 #   docs/json_schema.md, the block  mlndt_options --format=results_markdown
 #     between the GENERATED markers  (the result tables)
+#   python/mlndt/__init__.pyi, the  mlndt_options --format=options_pyi
+#     block between the markers      (the option TypedDicts)
 #   python/mlndt/__init__.pyi, the  mlndt_options --format=results_pyi
 #     block between the markers      (RegistrationResult's properties)
 #   docs/json_schema.md and the stub, mlndt_options --format=localization_markdown
@@ -67,6 +69,7 @@ PY
 
 check docs/options.md markdown
 check docs/json_schema.md results_markdown block
+check python/mlndt/__init__.pyi options_pyi block
 check python/mlndt/__init__.pyi results_pyi block
 check docs/json_schema.md localization_markdown block
 check python/mlndt/__init__.pyi localization_pyi block

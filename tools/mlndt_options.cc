@@ -13,6 +13,7 @@
 //   mlndt_options --format=odometry_markdown|odometry_pyi  # OdometryResult
 //   mlndt_options --format=map_markdown  # MapBuildSummary (mlndt_map's JSON)
 //   mlndt_options --format=eval_markdown  # TrajectoryEvaluation (mlndt_eval)
+//   mlndt_options --format=options_pyi    # the stub's option TypedDicts
 
 #include <gflags/gflags.h>
 
@@ -28,6 +29,7 @@
 #include "mlndt/registration/registration_summary.h"
 #include "tools/cli/option_flags.h"
 #include "tools/cli/options_doc.h"
+#include "tools/cli/options_stub.h"
 #include "tools/cli/results_doc.h"
 #include "tools/cli/tool_main.h"
 #include "tools/cli/tool_table_flags.h"
@@ -40,7 +42,8 @@ DEFINE_string(format,
               "localization_pyi (the same of LocalizationResult) | "
               "odometry_markdown | odometry_pyi (of OdometryResult) | "
               "map_markdown (of MapBuildSummary) | eval_markdown (of "
-              "TrajectoryEvaluation)");
+              "TrajectoryEvaluation) | options_pyi (the stub's option "
+              "TypedDicts)");
 
 namespace {
 
@@ -127,11 +130,13 @@ int main(int argc, char** argv) {
     std::cout << mlndt::tools::OptionsMarkdown();
   } else if (FLAGS_format == "json") {
     std::cout << mlndt::tools::OptionsJson().dump(2) << "\n";
+  } else if (FLAGS_format == "options_pyi") {
+    std::cout << mlndt::tools::OptionsStub(mlndt::tools::PythonOptionTables());
   } else if (!PrintResults(FLAGS_format)) {
     std::cerr << "mlndt_options: --format=" << FLAGS_format
               << ": expected markdown, json, results_markdown, results_pyi, "
                  "localization_markdown, localization_pyi, odometry_markdown, "
-                 "odometry_pyi, map_markdown or eval_markdown\n";
+                 "odometry_pyi, map_markdown, eval_markdown or options_pyi\n";
     return mlndt::tools::kExitUsage;
   }
   return mlndt::tools::kExitOk;
