@@ -16,8 +16,8 @@
 // few rings that cross it, so its covariance across the rings, within the
 // surface, is the ring pattern's, not the surface's, and it moves with the
 // sensor. Scored, it pulls the input's rings onto the reference's (a
-// VLP-16's tilt between two scans came out 6-10 % short). So, on the
-// regularised eigenvalues:
+// VLP-16's tilt between two scans came out 6-10 % short). So, when set, on
+// the regularised eigenvalues:
 //  - a cell whose points lie along a line (l2 < line_ratio * l3: one ring,
 //    an edge) gives no distribution: the surface through it is not seen;
 //  - a planar cell (l1 < plane_ratio * l2) constrains its normal only: C^-1
@@ -56,12 +56,14 @@ struct CellRegularization {
   // Absolute floor on every eigenvalue [m^2] (sensor noise).
   double min_eigenvalue_m2 = 1e-3;
   // A cell with l2 < line_ratio * l3 holds points along a line and gives no
-  // distribution. 0: off (the paper). In [0, 1).
-  double line_ratio = 0.1;
+  // distribution. 0: off (the default and the paper; 0.1 removes most of the
+  // tilt bias but the verdict's fit gate is not calibrated for it,
+  // docs/defaults.md). In [0, 1).
+  double line_ratio = 0.0;
   // A cell with l1 < plane_ratio * l2 is planar and scored along its normal
   // only (in-plane eigenvalues in_plane_variance_scale * l3 in C^-1 and W).
-  // 0: off (the paper). In [0, 1).
-  double plane_ratio = 0.1;
+  // 0: off (the default and the paper; 0.1 with line_ratio). In [0, 1).
+  double plane_ratio = 0.0;
   // In-plane eigenvalue of a planar cell's C^-1, in units of l3. In
   // [1, 1e6].
   double in_plane_variance_scale = 10.0;

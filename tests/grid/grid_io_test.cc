@@ -61,7 +61,8 @@ TEST(GridIo, CellRulesRoundTripAsVersion2) {
   for (int i = 0; i < 20000; ++i)
     cloud.Add(Eigen::Vector3d(n(rng), n(rng), 0.3 * n(rng)));
   LayeredGridOptions options = PaperLayeredGridOptions();
-  options.regularization = CellRegularization();
+  options.regularization.line_ratio = 0.1;
+  options.regularization.plane_ratio = 0.1;
   options.regularization.in_plane_variance_scale = 7.0;
   LayeredGrid grid;
   std::string error;

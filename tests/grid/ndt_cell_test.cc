@@ -14,6 +14,15 @@ CellRegularization Paper() {
   return r;
 }
 
+// The cell rules on (line_ratio, plane_ratio 0.1; the library's default is
+// off).
+CellRegularization Rules() {
+  CellRegularization r;
+  r.line_ratio = 0.1;
+  r.plane_ratio = 0.1;
+  return r;
+}
+
 // A covariance with eigenvalues `l` (ascending) along a rotated basis.
 Eigen::Matrix3d Rotated(const Eigen::Vector3d& l, Eigen::Matrix3d* basis) {
   *basis = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized())
@@ -79,8 +88,7 @@ TEST(NdtCell, LineCellGivesNoDistribution) {
   const Eigen::Matrix3d line =
       Rotated(Eigen::Vector3d(4e-4, 9e-4, 1.0 / 12.0), &basis);
   NdtCell cell;
-  EXPECT_FALSE(MakeNdtCell(
-      20, Eigen::Vector3d::Zero(), line, CellRegularization(), &cell));
+  EXPECT_FALSE(MakeNdtCell(20, Eigen::Vector3d::Zero(), line, Rules(), &cell));
   EXPECT_EQ(cell.count, 0);
   // The paper's cell keeps it.
   EXPECT_TRUE(MakeNdtCell(20,
@@ -95,7 +103,7 @@ TEST(NdtCell, PlanarCellIsScoredAlongItsNormal) {
   Eigen::Matrix3d basis;
   const Eigen::Matrix3d plane =
       Rotated(Eigen::Vector3d(4e-4, 0.07, 1.0 / 12.0), &basis);
-  const CellRegularization regularization;
+  const CellRegularization regularization = Rules();
   NdtCell cell;
   ASSERT_TRUE(
       MakeNdtCell(20, Eigen::Vector3d::Zero(), plane, regularization, &cell));
