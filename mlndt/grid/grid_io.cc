@@ -17,10 +17,12 @@ namespace mlndt {
 namespace {
 
 constexpr char kMagic[8] = {'M', 'L', 'N', 'D', 'T', 'M', 'A', 'P'};
-constexpr uint32_t kVersion = 1;
+// Version 2 adds the cell rules (grid_io.h); a map that scores every cell
+// with its whole covariance is still written as version 1.
+constexpr uint32_t kVersion = 2;
 
 // Byte counts of the fixed parts (grid_io.h).
-constexpr size_t kHeaderBytes = 8 + 4 + 3 * 4 + 2 * 8 + 6 * 8 + 8;  // 96
+constexpr size_t kHeaderBytes = 8 + 4 + 3 * 4 + 2 * 8 + 6 * 8 + 8;  // 96, v1
 constexpr size_t kLayerHeaderBytes = 3 * 8 + 8 + 3 * 4 + 8;         // 52
 constexpr size_t kCellBytes = 8 + 4 + 3 * 8 + 6 * 8;                // 84
 constexpr size_t kChecksumBytes = 8;
@@ -218,13 +220,20 @@ bool SaveLayeredGrid(const std::string& path,
   CHECK(error != nullptr);
   Writer w;
   w.Raw(kMagic, sizeof(kMagic));
-  w.U32(kVersion);
   const LayeredGridOptions& o = grid.options();
+  const CellRegularization& g = o.regularization;
+  const bool cell_rules = g.line_ratio != 0.0 || g.plane_ratio != 0.0;
+  w.U32(cell_rules ? kVersion : 1);
   w.I32(o.division_constant);
   w.I32(grid.num_layers());
   w.I32(o.min_points_per_cell);
-  w.F64(o.regularization.min_eigenvalue_ratio);
-  w.F64(o.regularization.min_eigenvalue_m2);
+  w.F64(g.min_eigenvalue_ratio);
+  w.F64(g.min_eigenvalue_m2);
+  if (cell_rules) {
+    w.F64(g.line_ratio);
+    w.F64(g.plane_ratio);
+    w.F64(g.in_plane_variance_scale);
+  }
   for (int a = 0; a < 3; ++a) w.F64(grid.bounds().min()(a));
   for (int a = 0; a < 3; ++a) w.F64(grid.bounds().max()(a));
   w.U64(grid.num_points());
@@ -260,6 +269,7 @@ struct MapHeader {
 // Magic, version and checksum (FNV-1a of everything before it).
 bool CheckPreamble(const std::string& path,
                    const std::string& bytes,
+                   uint32_t* version,
                    std::string* error) {
   if (bytes.size() < sizeof(kMagic) ||
       std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
@@ -269,12 +279,12 @@ bool CheckPreamble(const std::string& path,
     return Fail(path, "truncated map file", error);
   }
   const size_t body_size = bytes.size() - kChecksumBytes;
-  uint32_t version = 0;
-  Reader(bytes.data() + sizeof(kMagic), 4).U32(&version);
-  if (version != kVersion) {
+  Reader(bytes.data() + sizeof(kMagic), 4).U32(version);
+  if (*version != 1 && *version != kVersion) {
     return Fail(path,
-                "unsupported map version " + std::to_string(version) +
-                    " (this build reads " + std::to_string(kVersion) + ")",
+                "unsupported map version " + std::to_string(*version) +
+                    " (this build reads 1 and " + std::to_string(kVersion) +
+                    ")",
                 error);
   }
   const uint64_t stored_checksum = internal::LoadUnsigned(
@@ -289,6 +299,7 @@ bool CheckPreamble(const std::string& path,
 // The map header. The file stores n itself, not the finest cell it was
 // derived from.
 bool ReadMapHeader(const std::string& path,
+                   uint32_t version,
                    Reader* r,
                    MapHeader* header,
                    std::string* error) {
@@ -299,6 +310,11 @@ bool ReadMapHeader(const std::string& path,
   bool ok = r->I32(&q) && r->I32(&n) && r->I32(&min_points) &&
             r->F64(&regularization.min_eigenvalue_ratio) &&
             r->F64(&regularization.min_eigenvalue_m2);
+  if (ok && version >= 2) {  // Version 1: whole covariances (the header's).
+    ok = r->F64(&regularization.line_ratio) &&
+         r->F64(&regularization.plane_ratio) &&
+         r->F64(&regularization.in_plane_variance_scale);
+  }
   for (int a = 0; a < 3; ++a) ok = ok && r->F64(&lo(a));
   for (int a = 0; a < 3; ++a) ok = ok && r->F64(&hi(a));
   ok = ok && r->U64(&header->num_points);
@@ -481,11 +497,12 @@ bool LoadLayeredGrid(const std::string& path,
   CHECK(error != nullptr);
   std::string bytes;
   if (!internal::ReadFileToString(path, &bytes, error)) return false;
-  if (!CheckPreamble(path, bytes, error)) return false;
+  uint32_t version = 0;
+  if (!CheckPreamble(path, bytes, &version, error)) return false;
   const size_t body_size = bytes.size() - kChecksumBytes;
   Reader r(bytes.data() + sizeof(kMagic) + 4, body_size - sizeof(kMagic) - 4);
   MapHeader map;
-  if (!ReadMapHeader(path, &r, &map, error)) return false;
+  if (!ReadMapHeader(path, version, &r, &map, error)) return false;
   const Reader cells_start = r;
   std::vector<LayerHeader> headers;
   if (!ReadLayerHeaders(path, map, &r, &headers, error)) return false;

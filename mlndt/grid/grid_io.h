@@ -11,14 +11,18 @@
 // file written before stays readable and the version is still 1.
 //
 // Layout (offsets in bytes):
-//   header, 96 bytes:
+//   header, 96 bytes (version 1) or 120 (version 2):
 //     0   char[8]  "MLNDTMAP"
-//     8   uint32   version = 1
+//     8   uint32   version: 2 when the map has cell rules (line_ratio or
+//                  plane_ratio not 0, ndt_cell.h), else 1
 //     12  int32    q (division constant)
 //     16  int32    n (layers, 1..16)
 //     20  int32    min points per cell
 //     24  double   regularisation: min eigenvalue ratio
 //     32  double   regularisation: min eigenvalue [m^2]
+//     version 2 only, shifting what follows by 24 bytes:
+//     40  double   line_ratio | 48 double plane_ratio |
+//     56  double   in_plane_variance_scale
 //     40  double   bounds min x, y, z [m]
 //     64  double   bounds max x, y, z [m]
 //     88  uint64   points the map was built from
@@ -30,7 +34,9 @@
 //     double covariance xx, xy, xz, yy, yz, zz [m^2]
 //   last: uint64 FNV-1a (64-bit) checksum of every byte before it.
 // W and C^-1 are recomputed on load (the covariance is regularised again,
-// which reproduces it to ~1e-16).
+// which reproduces it to ~1e-16; the cell rules decide on the regularised
+// eigenvalues, so they keep the same cells). A version-1 file scores every
+// cell with its whole covariance, as the builds that wrote it did.
 //
 // LoadLayeredGrid trusts nothing in the file, even with a valid checksum
 // (anyone can compute one). Before allocating anything sized by a count it

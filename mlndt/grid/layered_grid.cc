@@ -452,6 +452,10 @@ bool operator==(const LayeredGridOptions& a, const LayeredGridOptions& b) {
              b.regularization.min_eigenvalue_ratio &&
          a.regularization.min_eigenvalue_m2 ==
              b.regularization.min_eigenvalue_m2 &&
+         a.regularization.line_ratio == b.regularization.line_ratio &&
+         a.regularization.plane_ratio == b.regularization.plane_ratio &&
+         a.regularization.in_plane_variance_scale ==
+             b.regularization.in_plane_variance_scale &&
          a.coarse_weighting == b.coarse_weighting;
 }
 
@@ -460,6 +464,7 @@ LayeredGridOptions PaperLayeredGridOptions() {
   options.finest_cell_size_m = 0.0;
   options.num_layers = 4;
   options.coarse_weighting = CoarseWeighting::POINTS;
+  options.regularization = WholeCovarianceRegularization();
   return options;
 }
 

@@ -22,8 +22,35 @@ const OptionTable& CellRegularizationTable() {
                   "m^2",
                   Closed(0.0, 1e6),
                   "Absolute floor on every cell covariance eigenvalue.")
+          .Double("line_ratio",
+                  &S::line_ratio,
+                  "",
+                  RightOpen(0.0, 1.0),
+                  "A cell whose middle eigenvalue is below this fraction of "
+                  "the largest (points along one ring or an edge) gives no "
+                  "distribution; 0 = off.")
+          .Double("plane_ratio",
+                  &S::plane_ratio,
+                  "",
+                  RightOpen(0.0, 1.0),
+                  "A cell whose smallest eigenvalue is below this fraction "
+                  "of the middle one is scored along its normal only; 0 = "
+                  "off.")
+          .Double("in_plane_variance_scale",
+                  &S::in_plane_variance_scale,
+                  "",
+                  Closed(1.0, 1e6),
+                  "A planar cell's in-plane eigenvalues in C^-1, in units of "
+                  "its largest eigenvalue.")
           .Build();
   return table;
+}
+
+CellRegularization WholeCovarianceRegularization() {
+  CellRegularization regularization;
+  regularization.line_ratio = 0.0;
+  regularization.plane_ratio = 0.0;
+  return regularization;
 }
 
 bool MakeNdtCell(int32_t count,
@@ -44,14 +71,20 @@ bool MakeNdtCell(int32_t count,
                regularization.min_eigenvalue_m2);
   eigenvalues = eigenvalues.cwiseMax(floor_value);
   if (!(eigenvalues(0) > 0.0)) return false;
+  // Decided on the regularised eigenvalues, so that a cell rebuilt from its
+  // stored covariance (grid_io.h) is the same cell.
+  if (eigenvalues(1) < regularization.line_ratio * largest) return false;
+  Eigen::Vector3d scored = eigenvalues;  // The eigenvalues C^-1 and W use.
+  if (eigenvalues(0) < regularization.plane_ratio * eigenvalues(1)) {
+    scored(1) = scored(2) = regularization.in_plane_variance_scale * largest;
+  }
   const Eigen::Matrix3d& V = solver.eigenvectors();
   cell->count = count;
   cell->mean = mean;
   cell->covariance = V * eigenvalues.asDiagonal() * V.transpose();
-  cell->information =
-      V * eigenvalues.cwiseInverse().asDiagonal() * V.transpose();
+  cell->information = V * scored.cwiseInverse().asDiagonal() * V.transpose();
   cell->whitening =
-      eigenvalues.cwiseInverse().cwiseSqrt().asDiagonal() * V.transpose();
+      scored.cwiseInverse().cwiseSqrt().asDiagonal() * V.transpose();
   return true;
 }
 

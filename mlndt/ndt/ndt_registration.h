@@ -39,8 +39,9 @@ struct NdtOptions {
   double cell_size_m = 0.0;
   // Cells with fewer points keep no distribution. In [4, 1e6].
   int min_points_per_cell = 5;
-  // Covariance regularisation (ndt_cell.h), as LayeredGridOptions'.
-  CellRegularization regularization;
+  // Covariance regularisation (ndt_cell.h): LayeredGridOptions' floors,
+  // every cell scored with its whole covariance (Magnusson's NDT).
+  CellRegularization regularization = WholeCovarianceRegularization();
   // Magnusson's outlier ratio r, in (0, 1) (gaussian_score.h).
   double outlier_ratio = 0.55;
   // Cells a point is scored in: its own (DIRECT1, as the paper) or also the

@@ -27,6 +27,9 @@ class RangeFilterOptions(TypedDict, total=False):
 class CellRegularization(TypedDict, total=False):
     min_eigenvalue_ratio: float
     min_eigenvalue_m2: float
+    line_ratio: float
+    plane_ratio: float
+    in_plane_variance_scale: float
 
 class LayeredGridOptions(TypedDict, total=False):
     division_constant: int

@@ -52,6 +52,37 @@ void WriteAll(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
+TEST(GridIo, CellRulesRoundTripAsVersion2) {
+  // The same cloud with the library's cell rules (ndt_cell.h): line cells
+  // dropped, planar cells scored along their normal.
+  std::mt19937 rng(11);
+  std::normal_distribution<double> n(0.0, 5.0);
+  PointCloud cloud;
+  for (int i = 0; i < 20000; ++i)
+    cloud.Add(Eigen::Vector3d(n(rng), n(rng), 0.3 * n(rng)));
+  LayeredGridOptions options = PaperLayeredGridOptions();
+  options.regularization.line_ratio = 0.1;
+  options.regularization.plane_ratio = 0.1;
+  options.regularization.in_plane_variance_scale = 7.0;
+  LayeredGrid grid;
+  std::string error;
+  ASSERT_TRUE(LayeredGrid::Build(options, cloud, &grid, &error)) << error;
+  const std::string path = testing::ScratchPath("rules.mlndtmap");
+  ASSERT_TRUE(SaveLayeredGrid(path, grid, &error)) << error;
+  EXPECT_EQ(ReadAll(path)[8], 2);  // Version 2, little-endian.
+  LayeredGrid loaded;
+  ASSERT_TRUE(LoadLayeredGrid(path, &loaded, &error)) << error;
+  EXPECT_EQ(loaded.options().regularization.in_plane_variance_scale, 7.0);
+  EXPECT_EQ(loaded.options().regularization.line_ratio, 0.1);
+  for (int i = 1; i <= grid.num_layers(); ++i) {
+    ASSERT_EQ(grid.layer(i).keys(), loaded.layer(i).keys());
+    for (size_t c = 0; c < grid.layer(i).cells().size(); ++c) {
+      EXPECT_TRUE(grid.layer(i).cells()[c].information.isApprox(
+          loaded.layer(i).cells()[c].information, 1e-9));
+    }
+  }
+}
+
 TEST(GridIo, RoundTripKeepsEveryCell) {
   const LayeredGrid grid = MakeGrid();
   const std::string path = testing::ScratchPath("round_trip.mlndtmap");

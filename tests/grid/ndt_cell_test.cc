@@ -9,9 +9,25 @@ namespace {
 
 // Section 4.1 exactly: the relative floor only.
 CellRegularization Paper() {
-  CellRegularization r;
+  CellRegularization r = WholeCovarianceRegularization();
   r.min_eigenvalue_m2 = 0.0;
   return r;
+}
+
+// The cell rules on (line_ratio, plane_ratio 0.1; the library's default is
+// off).
+CellRegularization Rules() {
+  CellRegularization r;
+  r.line_ratio = 0.1;
+  r.plane_ratio = 0.1;
+  return r;
+}
+
+// A covariance with eigenvalues `l` (ascending) along a rotated basis.
+Eigen::Matrix3d Rotated(const Eigen::Vector3d& l, Eigen::Matrix3d* basis) {
+  *basis = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized())
+               .toRotationMatrix();
+  return *basis * l.asDiagonal() * basis->transpose();
 }
 
 Eigen::Matrix3d NonDiagonalCovariance() {
@@ -64,6 +80,59 @@ TEST(NdtCell, RejectsShapelessCovariance) {
   bad(0, 0) = std::nan("");
   EXPECT_FALSE(MakeNdtCell(5, Eigen::Vector3d::Zero(), bad, Paper(), &cell));
   EXPECT_EQ(cell.count, 0);  // Untouched.
+}
+
+TEST(NdtCell, LineCellGivesNoDistribution) {
+  // One ring across a 1 m cell: 1/12 m^2 along it, 2 cm and 3 cm across.
+  Eigen::Matrix3d basis;
+  const Eigen::Matrix3d line =
+      Rotated(Eigen::Vector3d(4e-4, 9e-4, 1.0 / 12.0), &basis);
+  NdtCell cell;
+  EXPECT_FALSE(MakeNdtCell(20, Eigen::Vector3d::Zero(), line, Rules(), &cell));
+  EXPECT_EQ(cell.count, 0);
+  // The paper's cell keeps it.
+  EXPECT_TRUE(MakeNdtCell(20,
+                          Eigen::Vector3d::Zero(),
+                          line,
+                          WholeCovarianceRegularization(),
+                          &cell));
+}
+
+TEST(NdtCell, PlanarCellIsScoredAlongItsNormal) {
+  // A wall patch: 1/12 m^2 both ways in the plane, 2 cm thick.
+  Eigen::Matrix3d basis;
+  const Eigen::Matrix3d plane =
+      Rotated(Eigen::Vector3d(4e-4, 0.07, 1.0 / 12.0), &basis);
+  const CellRegularization regularization = Rules();
+  NdtCell cell;
+  ASSERT_TRUE(
+      MakeNdtCell(20, Eigen::Vector3d::Zero(), plane, regularization, &cell));
+  const Eigen::Vector3d normal = basis.col(0);
+  const Eigen::Vector3d in_plane = basis.col(1);
+  // Along the normal: the floored thickness, 1e-3 m^2.
+  EXPECT_NEAR(normal.dot(cell.information * normal), 1e3, 1e-6);
+  // In the plane: in_plane_variance_scale times the largest eigenvalue.
+  EXPECT_NEAR(in_plane.dot(cell.information * in_plane),
+              1.0 / (regularization.in_plane_variance_scale / 12.0),
+              1e-9);
+  EXPECT_TRUE((cell.whitening.transpose() * cell.whitening)
+                  .isApprox(cell.information, 1e-12));
+  // The covariance stays the regularised distribution, and a cell rebuilt
+  // from it (a map file) is the same cell.
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cell.covariance);
+  EXPECT_NEAR(es.eigenvalues()(0), 1e-3, 1e-12);
+  EXPECT_NEAR(es.eigenvalues()(1), 0.07, 1e-12);
+  NdtCell again;
+  ASSERT_TRUE(MakeNdtCell(
+      20, Eigen::Vector3d::Zero(), cell.covariance, regularization, &again));
+  EXPECT_TRUE(again.information.isApprox(cell.information, 1e-12));
+  // Off, the in-plane direction keeps its own eigenvalue.
+  ASSERT_TRUE(MakeNdtCell(20,
+                          Eigen::Vector3d::Zero(),
+                          plane,
+                          WholeCovarianceRegularization(),
+                          &cell));
+  EXPECT_NEAR(in_plane.dot(cell.information * in_plane), 1.0 / 0.07, 1e-9);
 }
 
 }  // namespace
