@@ -13,8 +13,13 @@ PointMatch MatchPoint(const NdtLayer& layer,
   // policy; only the others need its search.
   if (m.cell == nullptr) m.cell = MatchCell(layer, x, policy);
   if (m.cell == nullptr) return m;
+  // The fit is judged on the distribution the cell holds (its whole
+  // covariance), also where the objective scores its normal only: along the
+  // normal alone, a wrong pose that lays its points on some plane fits as
+  // well as the right one.
   const Eigen::Vector3d e = x - m.cell->mean;
-  m.score = e.dot(m.cell->information * e);
+  m.score = m.cell->normal_only ? e.dot(m.cell->covariance.ldlt().solve(e))
+                                : e.dot(m.cell->information * e);
   return m;
 }
 

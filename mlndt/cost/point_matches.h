@@ -17,7 +17,9 @@ namespace mlndt {
 struct PointMatch {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();  // R p + t.
   const NdtCell* cell = nullptr;  // As the policy picks; nullptr: unmatched.
-  // s = e^T C^-1 e with e = x - mean in that cell (Eq. 10); 0 if unmatched.
+  // s = e^T C^-1 e with e = x - mean in that cell (Eq. 10), C the cell's
+  // whole covariance (also for a cell the objective scores along its normal
+  // only, NdtCell::normal_only); 0 if unmatched.
   double score = 0.0;
   bool own_cell = false;  // The cell x lies in is occupied (overlap).
 

@@ -75,7 +75,9 @@ bool MakeNdtCell(int32_t count,
   // stored covariance (grid_io.h) is the same cell.
   if (eigenvalues(1) < regularization.line_ratio * largest) return false;
   Eigen::Vector3d scored = eigenvalues;  // The eigenvalues C^-1 and W use.
-  if (eigenvalues(0) < regularization.plane_ratio * eigenvalues(1)) {
+  cell->normal_only =
+      eigenvalues(0) < regularization.plane_ratio * eigenvalues(1);
+  if (cell->normal_only) {
     scored(1) = scored(2) = regularization.in_plane_variance_scale * largest;
   }
   const Eigen::Matrix3d& V = solver.eigenvectors();

@@ -39,8 +39,11 @@ namespace mlndt {
 class OptionTable;
 
 struct NdtCell {
-  int32_t count = 0;                               // N, points in the cell.
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();  // mu, Eq. (2) [m].
+  int32_t count = 0;  // N, points in the cell.
+  // Scored along its normal only (CellRegularization::plane_ratio):
+  // `information` and `whitening` are not those of `covariance`.
+  bool normal_only = false;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();        // mu, Eq. (2) [m].
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // Regularised C [m^2].
   // C^-1 [1/m^2]; for a planar cell, of C with its in-plane eigenvalues
   // raised (CellRegularization::plane_ratio).

@@ -4,8 +4,10 @@
 
 #include <vector>
 
+#include "mlndt/cloud/io.h"
 #include "mlndt/common/pose.h"
 #include "tests/testing/koide3_pair.h"
+#include "tests/testing/test_data.h"
 
 namespace mlndt {
 namespace {
@@ -50,6 +52,50 @@ TEST(MatchPoints, AgreesWithMatchCellAndTheWhitenedResidualOnRealScans) {
       EXPECT_EQ(nearest, 0u);
     }
   }
+}
+
+// With the cell rules on (CellRegularization::plane_ratio), a planar cell's
+// objective scores its normal only; the match's score, which the verdict
+// judges the fit by, is still the Mahalanobis distance of the cell's whole
+// covariance, and it is the objective's ||W e||^2 on every other cell.
+TEST(MatchPoints, ScoreIsOfTheWholeCovarianceOnCellsScoredAlongTheirNormal) {
+  PointCloud reference;
+  std::string error;
+  ASSERT_TRUE(ReadPointCloud(testing::BundledDataPath("koide3/251370668.pcd"),
+                             &reference,
+                             nullptr,
+                             &error))
+      << error;
+  LayeredGridOptions options;
+  options.regularization.line_ratio = 0.1;
+  options.regularization.plane_ratio = 0.1;
+  LayeredGrid map;
+  ASSERT_TRUE(LayeredGrid::Build(options, reference, &map, &error)) << error;
+  const NdtLayer& layer = map.layer(map.num_layers());
+  const std::vector<Eigen::Vector3d>& samples = testing::Koide3Pair().samples;
+  const Isometry3d pose = PoseVectorToIsometry(Vector6d::Constant(0.02));
+  size_t planar = 0, whole = 0;
+  for (const PointMatch& m : MatchPoints(layer,
+                                         samples,
+                                         pose.linear(),
+                                         pose.translation(),
+                                         UnmatchedPolicy::NEAREST_CELL)) {
+    if (m.cell == nullptr) continue;
+    const Eigen::Vector3d e = m.x - m.cell->mean;
+    const double mahalanobis = e.dot(m.cell->covariance.inverse() * e);
+    const double whitened = (m.cell->whitening * e).squaredNorm();
+    if (m.cell->normal_only) {
+      ++planar;
+      ASSERT_NEAR(m.score, mahalanobis, 1e-9 * (1.0 + mahalanobis));
+    } else {
+      ++whole;
+      ASSERT_NEAR(m.score, whitened, 1e-9 * (1.0 + whitened));
+    }
+  }
+  // Both kinds are matched, and on the planar cells the objective's
+  // residual is not the fit's (the normal-only whitening ignores the plane).
+  EXPECT_GT(planar, 100u);
+  EXPECT_GT(whole, 100u);
 }
 
 }  // namespace

@@ -107,6 +107,7 @@ TEST(NdtCell, PlanarCellIsScoredAlongItsNormal) {
   NdtCell cell;
   ASSERT_TRUE(
       MakeNdtCell(20, Eigen::Vector3d::Zero(), plane, regularization, &cell));
+  EXPECT_TRUE(cell.normal_only);
   const Eigen::Vector3d normal = basis.col(0);
   const Eigen::Vector3d in_plane = basis.col(1);
   // Along the normal: the floored thickness, 1e-3 m^2.
@@ -133,6 +134,7 @@ TEST(NdtCell, PlanarCellIsScoredAlongItsNormal) {
                           WholeCovarianceRegularization(),
                           &cell));
   EXPECT_NEAR(in_plane.dot(cell.information * in_plane), 1.0 / 0.07, 1e-9);
+  EXPECT_FALSE(cell.normal_only);
 }
 
 }  // namespace
