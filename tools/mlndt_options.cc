@@ -29,7 +29,6 @@
 #include "mlndt/registration/registration_summary.h"
 #include "tools/cli/option_flags.h"
 #include "tools/cli/options_doc.h"
-#include "tools/cli/options_stub.h"
 #include "tools/cli/results_doc.h"
 #include "tools/cli/tool_main.h"
 #include "tools/cli/tool_table_flags.h"
